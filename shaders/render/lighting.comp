@@ -1,0 +1,78 @@
+#version 460
+// Deferred direct lighting: one thread per pixel, every light, shadow-map visibility.
+// Lambertian: L_o = albedo / pi * sum_lights E_light * max(0, n.l) * visibility.
+#extension GL_GOOGLE_include_directive : require
+#include "shared/types.h"
+#include "render/lights.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(set = 0, binding = 0) uniform Frame { FrameUniforms frame; };
+layout(set = 0, binding = 1, std430) readonly buffer Lights { GpuLight lights[]; };
+layout(set = 0, binding = 2) uniform sampler2D gAlbedo;
+layout(set = 0, binding = 3) uniform sampler2D gNormal;
+layout(set = 0, binding = 4) uniform sampler2D gDepth;
+layout(set = 0, binding = 5) uniform sampler2DArrayShadow shadowMaps;
+layout(set = 0, binding = 6, rgba32f) uniform writeonly image2D outImage;
+
+vec3 worldPosition(ivec2 pixel, float depth) {
+    vec2 ndc = (vec2(pixel) + 0.5) / vec2(frame.size.xy) * 2.0 - 1.0;
+    vec4 p = frame.invViewProj * vec4(ndc, depth, 1.0);
+    return p.xyz / p.w;
+}
+
+// Visibility from the light's standard shadow map; the receiver is pushed along its normal by a
+// number of shadow texels (normal offset), which removes acne on slopes without peter-panning.
+float shadowVisibility(GpuLight light, vec3 p, vec3 n) {
+    if (light.radiance.w == NO_SHADOW) return 1.0;
+    float texel = light.shadow.x;
+    if (light.spot.w > 0.5) texel *= max(dot(p - light.position.xyz, light.direction.xyz), 0.0);
+    vec4 clip = light.shadowViewProj * vec4(p + n * (light.spot.z * texel), 1.0);
+    vec3 ndc = clip.xyz / clip.w;
+    vec2 uv = ndc.xy * 0.5 + 0.5;
+    if (clip.w <= 0.0 || any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))) || ndc.z > 1.0)
+        return 1.0;
+    return texture(shadowMaps, vec4(uv, light.radiance.w, ndc.z));
+}
+
+void main() {
+    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(pixel, ivec2(frame.size.xy)))) return;
+    float depth = texelFetch(gDepth, pixel, 0).r;
+    uint aov = frame.size.w;
+    if (depth >= 1.0) {  // background
+        imageStore(outImage, pixel, vec4(0.0, 0.0, 0.0, aov == AOV_DEPTH ? frame.cameraPos.w : 0.0));
+        return;
+    }
+    vec3 albedo = texelFetch(gAlbedo, pixel, 0).rgb;
+    vec3 p = worldPosition(pixel, depth);
+    vec3 n = normalize(texelFetch(gNormal, pixel, 0).xyz);
+    vec3 toEye = frame.cameraPos.xyz - p;
+    if (dot(n, toEye) < 0.0) n = -n;  // two-sided: shade the side the camera sees
+
+    vec3 radiance = vec3(0.0);
+    float firstShadow = 1.0;
+    bool seenShadow = false;
+    for (uint i = 0; i < frame.size.z; ++i) {
+        GpuLight light = lights[i];
+        vec3 l;
+        vec3 e = incidentIrradiance(light, p, l);
+        float ndotl = max(dot(n, l), 0.0);
+        if (ndotl <= 0.0 || all(equal(e, vec3(0.0)))) {
+            if (!seenShadow && light.radiance.w != NO_SHADOW) { firstShadow = 0.0; seenShadow = true; }
+            continue;
+        }
+        float v = shadowVisibility(light, p, n);
+        if (!seenShadow && light.radiance.w != NO_SHADOW) { firstShadow = v; seenShadow = true; }
+        radiance += e * ndotl * v;
+    }
+    radiance *= albedo / PI;
+
+    vec4 outValue;
+    if (aov == AOV_DIRECT) outValue = vec4(radiance, 1.0);
+    else if (aov == AOV_ALBEDO) outValue = vec4(albedo, 1.0);
+    else if (aov == AOV_NORMAL) outValue = vec4(n, 1.0);
+    else if (aov == AOV_DEPTH) outValue = vec4(vec3(length(toEye)), 1.0);
+    else outValue = vec4(vec3(firstShadow), 1.0);
+    imageStore(outImage, pixel, outValue);
+}

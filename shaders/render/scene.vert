@@ -1,0 +1,20 @@
+#version 460
+// Shared by the G-buffer and shadow passes: world-space vertices, one view matrix per pass.
+#extension GL_GOOGLE_include_directive : require
+#include "shared/types.h"
+
+layout(location = 0) in vec3 inPosition;
+layout(location = 1) in vec3 inNormal;
+layout(location = 2) in vec2 inUv;
+
+layout(set = 0, binding = 0, std430) readonly buffer Views { mat4 viewProj[]; } views;
+layout(push_constant) uniform Push { DrawPush draw; };
+
+layout(location = 0) out vec3 outNormal;
+layout(location = 1) out vec2 outUv;
+
+void main() {
+    gl_Position = views.viewProj[draw.viewIndex] * vec4(inPosition, 1.0);
+    outNormal = inNormal;
+    outUv = inUv;
+}

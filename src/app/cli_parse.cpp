@@ -1,0 +1,94 @@
+#include "app/cli_parse.h"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace penumbra {
+namespace {
+
+std::vector<float> numbers(const std::string& text, const std::string& option) {
+    std::vector<float> out;
+    std::stringstream ss(text);
+    for (std::string item; std::getline(ss, item, ',');) {
+        size_t used = 0;
+        float v = 0.0f;
+        try {
+            v = std::stof(item, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used != item.size() || item.empty() || !std::isfinite(v))
+            throw std::invalid_argument(fmt::format("{}: '{}' is not a number", option, item));
+        out.push_back(v);
+    }
+    return out;
+}
+
+float radians(float degrees) { return degrees * 3.14159265358979f / 180.0f; }
+
+glm::vec3 unit(const glm::vec3& v, const std::string& option) {
+    if (glm::length(v) < 1e-6f) throw std::invalid_argument(option + ": direction must not be zero");
+    return glm::normalize(v);
+}
+
+}  // namespace
+
+Camera parseCamera(const std::string& value) {
+    std::vector<float> v = numbers(value, "--camera");
+    if (v.size() != 10)
+        throw std::invalid_argument("--camera expects 10 numbers: eye x,y,z, target x,y,z, up x,y,z, fovy degrees");
+    Camera c;
+    c.eye = {v[0], v[1], v[2]};
+    c.target = {v[3], v[4], v[5]};
+    c.up = unit({v[6], v[7], v[8]}, "--camera up");
+    if (glm::length(c.target - c.eye) < 1e-6f) throw std::invalid_argument("--camera: eye and target coincide");
+    if (v[9] <= 0.0f || v[9] >= 180.0f) throw std::invalid_argument("--camera: fovy must be in (0, 180) degrees");
+    c.fovy = radians(v[9]);
+    return c;
+}
+
+Light parseLight(const std::string& value) {
+    const size_t comma = value.find(',');
+    const std::string type = value.substr(0, comma);
+    std::vector<float> v = comma == std::string::npos ? std::vector<float>{} : numbers(value.substr(comma + 1), "--light");
+    Light l;
+    l.name = "--light " + type;
+    if (type == "directional" && (v.size() == 4 || v.size() == 7)) {
+        l.type = LightType::Directional;
+        l.direction = unit({v[0], v[1], v[2]}, "--light");
+        l.intensity = v[3];
+        if (v.size() == 7) l.color = {v[4], v[5], v[6]};
+    } else if (type == "spot" && (v.size() == 8 || v.size() == 9)) {
+        l.type = LightType::Spot;
+        l.position = {v[0], v[1], v[2]};
+        l.direction = unit({v[3], v[4], v[5]}, "--light");
+        l.intensity = v[6];
+        l.outerConeAngle = radians(v[7]);
+        l.innerConeAngle = v.size() == 9 ? radians(v[8]) : 0.0f;
+        if (v[7] <= 0.0f || v[7] >= 90.0f) throw std::invalid_argument("--light spot: outer angle must be in (0, 90)");
+    } else if (type == "point" && v.size() == 4) {
+        l.type = LightType::Point;
+        l.position = {v[0], v[1], v[2]};
+        l.intensity = v[3];
+    } else {
+        throw std::invalid_argument(
+            "--light expects directional,dx,dy,dz,I[,r,g,b] | spot,px,py,pz,dx,dy,dz,I,outer_deg[,inner_deg] | "
+            "point,px,py,pz,I");
+    }
+    if (l.intensity < 0.0f) throw std::invalid_argument("--light: intensity must not be negative");
+    return l;
+}
+
+std::vector<std::string> aovNames() { return {"direct", "albedo", "normal", "depth", "shadow"}; }
+
+Aov parseAov(const std::string& value) {
+    const std::vector<std::string> names = aovNames();
+    for (size_t i = 0; i < names.size(); ++i)
+        if (names[i] == value) return static_cast<Aov>(i);
+    throw std::invalid_argument(fmt::format("--aov: unknown AOV '{}' (one of: {})", value, fmt::join(names, ", ")));
+}
+
+}  // namespace penumbra

@@ -1,0 +1,24 @@
+// Parsing of the CLI's compound option values. Each throws std::invalid_argument with a message
+// that names the option and what was expected.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "render/renderer.h"
+#include "scene/scene.h"
+
+namespace penumbra {
+
+// "ex,ey,ez,tx,ty,tz,ux,uy,uz,fovy_degrees"
+Camera parseCamera(const std::string& value);
+
+// "directional,dx,dy,dz,intensity[,r,g,b]"
+// "spot,px,py,pz,dx,dy,dz,intensity,outer_deg[,inner_deg]"
+// "point,px,py,pz,intensity"
+Light parseLight(const std::string& value);
+
+// "direct", "albedo", "normal", "depth", "shadow"
+Aov parseAov(const std::string& value);
+std::vector<std::string> aovNames();
+
+}  // namespace penumbra

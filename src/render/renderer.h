@@ -1,0 +1,66 @@
+// The frame: shadow maps -> G-buffer -> deferred lighting -> tone map, wired through a FrameGraph.
+// Where the techniques go: RSM writes beside the shadow map (shadow pass), its gather and the LPV
+// passes sit between the G-buffer and lighting, deep shadow maps build and resolve before lighting.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "render/gbuffer_pass.h"
+#include "render/lighting_pass.h"
+#include "shadow/shadow_map_pass.h"
+
+namespace penumbra {
+
+enum class Aov { Direct = AOV_DIRECT, Albedo = AOV_ALBEDO, Normal = AOV_NORMAL, Depth = AOV_DEPTH, Shadow = AOV_SHADOW };
+
+struct RenderSettings {
+    uint32_t width = 1280;
+    uint32_t height = 720;
+    Aov aov = Aov::Direct;
+    float exposure = 1.0f;  // linear multiplier before the tone mapper
+    ShadowSettings shadow;
+};
+
+class Renderer {
+public:
+    Renderer(vk::Context& ctx, const Scene& scene, const RenderSettings& settings);
+    ~Renderer();
+
+    // Renders one frame and waits for it; timings() then holds its per-pass GPU times.
+    void render(const Camera& camera);
+    const std::vector<vk::ScopeTiming>& timings() const { return timings_; }
+    std::vector<float> readHdr();     // RGBA32F, row-major, top row first
+    std::vector<uint8_t> readLdr();   // RGBA8 (sRGB-encoded for radiance and colour AOVs)
+    std::string describePasses() const { return graph_.describe(); }
+    // Things the user should know (e.g. lights rendered without shadows), collected once.
+    const std::vector<std::string>& warnings() const { return warnings_; }
+    vk::Allocator& allocator() { return alloc_; }
+    const RenderSettings& settings() const { return settings_; }
+
+private:
+    void updateBuffers(const Camera& camera);
+    gpu::TonemapPush tonemapParams(float zfar) const;
+
+    vk::Context& ctx_;
+    const Scene& scene_;
+    RenderSettings settings_;
+    vk::Allocator alloc_;
+    vk::CommandContext cmd_;
+    vk::GpuTimer timer_;
+    std::unique_ptr<SceneGpu> sceneGpu_;
+    vk::DescriptorLayout drawLayout_;
+    std::unique_ptr<ShadowMapPass> shadow_;
+    std::unique_ptr<GBufferPass> gbuffer_;
+    std::unique_ptr<LightingPass> lighting_;
+    std::unique_ptr<TonemapPass> tonemap_;
+    vk::Buffer frame_, views_, lights_;
+    std::vector<int> shadowLayerOfLight_;
+    std::vector<LightProjection> projections_;
+    FrameGraph graph_;
+    std::vector<vk::ScopeTiming> timings_;
+    std::vector<std::string> warnings_;
+    float zfar_ = 1.0f;
+};
+
+}  // namespace penumbra

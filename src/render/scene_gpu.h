@@ -1,0 +1,62 @@
+// The scene's GPU copy: world-space vertices and indices, the material table and its textures.
+// Shared, read-only, by every pass that draws the scene (G-buffer, shadow maps, later RSM/DSM).
+#pragma once
+#include <vector>
+
+#include "scene/scene.h"
+#include "shared/types.h"
+#include "vk/commands.h"
+#include "vk/pipeline.h"
+
+namespace penumbra {
+
+class SceneGpu {
+public:
+    SceneGpu(vk::CommandContext& cmd, const Scene& scene);
+    SceneGpu(const SceneGpu&) = delete;
+    SceneGpu& operator=(const SceneGpu&) = delete;
+
+    const Scene& scene() const { return scene_; }
+    const vk::Buffer& vertices() const { return vertices_; }
+    const vk::Buffer& indices() const { return indices_; }
+    const vk::Buffer& materials() const { return materials_; }
+    // All base-colour textures as layers of one mip-mapped sRGB 2D array (one descriptor, which
+    // fits every device's per-stage sampler limit; lavapipe allows only 32 samplers per stage).
+    vk::Image& textures() { return textures_; }
+    VkSampler textureSampler() const { return sampler_.handle(); }
+    // Pushes set 0 of the pipelines that draw the scene: views, materials, textures.
+    void pushDrawSet(VkCommandBuffer cmd, const vk::Pipeline& pipeline, const vk::Buffer& views) const;
+    static std::vector<vk::Binding> drawSetBindings();
+
+    // Vertex input of penumbra::Vertex for GraphicsDesc.
+    static uint32_t vertexStride() { return sizeof(Vertex); }
+    static std::vector<VkVertexInputAttributeDescription> vertexAttributes();
+
+    // Binds vertex/index buffers, then calls `perDraw` for every draw (to push constants), then draws.
+    // `filter` selects draws by material (e.g. only alpha-masked ones); null draws all.
+    template <class PerDraw, class Filter>
+    void draw(VkCommandBuffer cmd, PerDraw perDraw, Filter filter) const;
+
+private:
+    void uploadTextures(vk::CommandContext& cmd);
+    const Scene& scene_;
+    vk::Context& ctx_;
+    vk::Buffer vertices_, indices_, materials_;
+    vk::Image textures_;
+    vk::Sampler sampler_;
+};
+
+template <class PerDraw, class Filter>
+void SceneGpu::draw(VkCommandBuffer cmd, PerDraw perDraw, Filter filter) const {
+    VkDeviceSize offset = 0;
+    VkBuffer vb = vertices_.handle();
+    vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &offset);
+    vkCmdBindIndexBuffer(cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
+    for (const Draw& d : scene_.draws) {
+        if (!filter(scene_.materials[d.material])) continue;
+        perDraw(d);
+        vkCmdDrawIndexed(cmd, d.indexCount, 1, d.firstIndex, 0, 0);
+    }
+}
+
+}  // namespace penumbra

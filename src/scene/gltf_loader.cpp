@@ -1,0 +1,370 @@
+// glTF 2.0 (.gltf / .glb) loading through tinygltf. The Debian libtinygltf.so is built with its
+// defaults (stb_image and stb_image_write enabled, filesystem callbacks on), so the header is
+// included without any TINYGLTF_* defines: defining TINYGLTF_NO_STB_IMAGE here would leave the
+// loader without an image decoder.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numeric>
+#include <optional>
+
+#include <fmt/format.h>
+#include <glm/gtc/constants.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <tiny_gltf.h>
+
+#include "scene/builders.h"
+#include "scene/gltf_accessor.h"
+#include "scene/scene.h"
+
+namespace penumbra {
+
+namespace {
+
+constexpr int kMaxNodeDepth = 1024;  // deeper hierarchies are treated as malformed (and spare the stack)
+
+// Required extensions that change nothing we read, or whose data we read anyway.
+bool isTolerableRequiredExtension(const std::string& name) {
+    static const std::array<const char*, 6> ok{"KHR_lights_punctual", "KHR_mesh_quantization",
+                                               "KHR_materials_emissive_strength", "KHR_materials_unlit",
+                                               "KHR_texture_transform", "KHR_materials_ior"};
+    return std::find(ok.begin(), ok.end(), name) != ok.end();
+}
+
+// tinygltf messages span several lines and may quote raw bytes of a corrupt file; the CLI prints
+// errors as one printable line.
+std::string oneLine(const std::string& text) {
+    std::string out;
+    for (char c : text) {
+        if (c == '\n' || c == '\r') {
+            if (!out.empty() && out.back() != ' ') out += "; ";
+        } else {
+            out += (c >= 0x20 && c < 0x7f) ? c : '?';
+        }
+    }
+    while (!out.empty() && (out.back() == ' ' || out.back() == ';')) out.pop_back();
+    return out.empty() ? "unknown error" : out;
+}
+
+bool hasGlbMagic(const std::string& path) {
+    std::ifstream f(path, std::ios::binary);
+    char magic[4] = {};
+    f.read(magic, 4);
+    return f.gcount() == 4 && std::equal(magic, magic + 4, "glTF");
+}
+
+tinygltf::Model parseFile(const std::string& path) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) throw SceneError(fmt::format("scene file not found: {}", path));
+    tinygltf::TinyGLTF loader;
+    tinygltf::Model model;
+    std::string err, warn;
+    bool ok = false;
+    // Sniff the content rather than trusting the extension (GLB bytes load whatever the name), but a
+    // .glb without the magic gets a clear message instead of a JSON parse error about binary junk.
+    const bool glb = hasGlbMagic(path);
+    if (!glb && std::filesystem::path(path).extension() == ".glb")
+        throw SceneError(fmt::format("{}: invalid glTF: not a binary glTF file (no 'glTF' magic)", path));
+    try {
+        ok = glb ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
+                   : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+    } catch (const std::exception& e) {
+        throw SceneError(fmt::format("{}: invalid glTF: {}", path, oneLine(e.what())));
+    }
+    // Warnings (e.g. an image file that could not be read) are not fatal; that texture is dropped.
+    if (!ok) throw SceneError(fmt::format("{}: invalid glTF: {}", path, oneLine(err.empty() ? warn : err)));
+    for (const std::string& ext : model.extensionsRequired)
+        if (!isTolerableRequiredExtension(ext))
+            throw SceneError(fmt::format("{}: requires unsupported glTF extension {}", path, ext));
+    return model;
+}
+
+glm::mat4 localTransform(const tinygltf::Node& n) {
+    if (n.matrix.size() == 16) return glm::mat4(glm::make_mat4(n.matrix.data()));  // column-major, as glTF
+    glm::mat4 m(1.0f);
+    if (n.translation.size() == 3)
+        m = glm::translate(m, glm::vec3(n.translation[0], n.translation[1], n.translation[2]));
+    if (n.rotation.size() == 4) {
+        // glTF stores (x, y, z, w); glm's constructor takes w first.
+        glm::quat q(float(n.rotation[3]), float(n.rotation[0]), float(n.rotation[1]), float(n.rotation[2]));
+        if (glm::length(q) > 0.0f) m *= glm::mat4_cast(glm::normalize(q));
+    }
+    if (n.scale.size() == 3) m = glm::scale(m, glm::vec3(n.scale[0], n.scale[1], n.scale[2]));
+    return m;
+}
+
+// Unit vector or `fallback` when v is zero, tiny or not finite (degenerate input must not give NaNs).
+glm::vec3 safeNormalize(const glm::vec3& v, const glm::vec3& fallback) {
+    const float len2 = glm::dot(v, v);
+    if (!(len2 > 1e-30f) || !std::isfinite(len2)) return fallback;
+    return v / std::sqrt(len2);
+}
+
+// Converts strips and fans to a plain triangle list (glTF 2.0 spec, section 3.7.2.1).
+std::vector<uint32_t> toTriangleList(const std::vector<uint32_t>& idx, int mode) {
+    if (mode == TINYGLTF_MODE_TRIANGLES) {
+        std::vector<uint32_t> out(idx.begin(), idx.begin() + ptrdiff_t(idx.size() / 3 * 3));
+        return out;
+    }
+    std::vector<uint32_t> out;
+    for (size_t i = 0; i + 2 < idx.size(); ++i) {
+        if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
+            // Every other strip triangle swaps its first two vertices to keep a consistent winding.
+            const bool odd = (i & 1) != 0;
+            out.insert(out.end(), {idx[odd ? i + 1 : i], idx[odd ? i : i + 1], idx[i + 2]});
+        } else {  // fan
+            out.insert(out.end(), {idx[i + 1], idx[i + 2], idx[0]});
+        }
+    }
+    return out;
+}
+
+// Area-weighted smooth normals: the unnormalised face cross product has length 2 * area.
+void generateNormals(std::vector<Vertex>& verts, const std::vector<uint32_t>& tris) {
+    for (Vertex& v : verts) v.normal = glm::vec3(0.0f);
+    for (size_t t = 0; t + 2 < tris.size(); t += 3) {
+        Vertex &a = verts[tris[t]], &b = verts[tris[t + 1]], &c = verts[tris[t + 2]];
+        const glm::vec3 n = glm::cross(b.position - a.position, c.position - a.position);
+        a.normal += n;
+        b.normal += n;
+        c.normal += n;
+    }
+}
+
+std::optional<Texture> toRgba8(const tinygltf::Image& img) {
+    const bool sixteen = img.bits == 16;
+    if (img.width <= 0 || img.height <= 0 || img.component < 1 || img.component > 4 || (img.bits != 8 && !sixteen))
+        return std::nullopt;  // not decoded (missing file, unsupported format): render untextured
+    const size_t pixels = size_t(img.width) * size_t(img.height);
+    const size_t bytesPerChannel = sixteen ? 2 : 1;
+    if (img.image.size() != pixels * size_t(img.component) * bytesPerChannel) return std::nullopt;
+    Texture tex;
+    tex.width = uint32_t(img.width);
+    tex.height = uint32_t(img.height);
+    tex.rgba8.resize(pixels * 4);
+    const int nc = img.component;
+    for (size_t p = 0; p < pixels; ++p) {
+        // High byte of little-endian 16-bit channels.
+        auto channel = [&](int c) { return img.image[(p * nc + size_t(c)) * bytesPerChannel + (sixteen ? 1 : 0)]; };
+        const bool grey = nc <= 2;
+        uint8_t* dst = &tex.rgba8[p * 4];
+        dst[0] = channel(0);
+        dst[1] = grey ? channel(0) : channel(1);
+        dst[2] = grey ? channel(0) : channel(2);
+        dst[3] = nc == 2 ? channel(1) : nc == 4 ? channel(3) : 255;
+    }
+    return tex;
+}
+
+// Walks the node hierarchy once, appending world-space geometry, lights and cameras to the scene.
+class Loader {
+public:
+    Loader(const tinygltf::Model& model, Scene& scene)
+        : m_(model), s_(scene), imageTexture_(model.images.size(), kNotConverted), onPath_(model.nodes.size()) {}
+
+    void run() {
+        loadMaterials();
+        for (int root : rootNodes()) visit(root, glm::mat4(1.0f), 0);
+    }
+
+private:
+    static constexpr int32_t kNotConverted = -2;
+
+    std::vector<int> rootNodes() const {
+        if (!m_.scenes.empty()) {
+            const int si = m_.defaultScene >= 0 ? m_.defaultScene : 0;
+            if (size_t(si) >= m_.scenes.size()) throw SceneError(fmt::format("default scene {} does not exist", si));
+            return m_.scenes[size_t(si)].nodes;
+        }
+        // No scenes: every node that is nobody's child is a root.
+        std::vector<bool> isChild(m_.nodes.size());
+        for (const auto& n : m_.nodes)
+            for (int c : n.children)
+                if (c >= 0 && size_t(c) < isChild.size()) isChild[size_t(c)] = true;
+        std::vector<int> roots;
+        for (size_t i = 0; i < m_.nodes.size(); ++i)
+            if (!isChild[i]) roots.push_back(int(i));
+        return roots;
+    }
+
+    void loadMaterials() {
+        ensureDefaultMaterial(s_);  // index 0; glTF material k becomes k + 1
+        for (const tinygltf::Material& gm : m_.materials) {
+            Material mat;
+            const auto& f = gm.pbrMetallicRoughness.baseColorFactor;
+            if (f.size() == 4) mat.baseColor = glm::vec4(f[0], f[1], f[2], f[3]);
+            mat.baseColorTexture = textureFor(gm.pbrMetallicRoughness.baseColorTexture.index);
+            if (gm.alphaMode == "MASK") mat.alphaMode = AlphaMode::Mask;
+            else if (gm.alphaMode == "BLEND") mat.alphaMode = AlphaMode::Blend;
+            mat.alphaCutoff = float(gm.alphaCutoff);
+            mat.doubleSided = gm.doubleSided;
+            s_.materials.push_back(mat);
+        }
+    }
+
+    // Scene texture index for glTF texture `index`, converting each image once; -1 when none/unusable.
+    int32_t textureFor(int index) {
+        if (index < 0) return -1;
+        if (size_t(index) >= m_.textures.size()) throw SceneError(fmt::format("texture {} does not exist", index));
+        const int source = m_.textures[size_t(index)].source;
+        if (source < 0) return -1;  // e.g. only an extension image (basisu, webp) that we do not decode
+        if (size_t(source) >= m_.images.size()) throw SceneError(fmt::format("image {} does not exist", source));
+        int32_t& slot = imageTexture_[size_t(source)];
+        if (slot == kNotConverted) {
+            std::optional<Texture> tex = toRgba8(m_.images[size_t(source)]);
+            slot = -1;
+            if (tex) {
+                slot = int32_t(s_.textures.size());
+                s_.textures.push_back(std::move(*tex));
+            }
+        }
+        return slot;
+    }
+
+    void visit(int index, const glm::mat4& parent, int depth) {
+        if (index < 0 || size_t(index) >= m_.nodes.size()) throw SceneError(fmt::format("node {} does not exist", index));
+        if (onPath_[size_t(index)] || depth > kMaxNodeDepth)
+            throw SceneError(fmt::format("node hierarchy is cyclic or too deep at node {}", index));
+        onPath_[size_t(index)] = true;
+        const tinygltf::Node& node = m_.nodes[size_t(index)];
+        const glm::mat4 world = parent * localTransform(node);
+        if (node.mesh >= 0) addMesh(node.mesh, world);
+        if (node.camera >= 0) addCamera(node.camera, world);
+        addLight(node, world);
+        for (int child : node.children) visit(child, world, depth + 1);
+        onPath_[size_t(index)] = false;
+    }
+
+    void addMesh(int index, const glm::mat4& world) {
+        if (size_t(index) >= m_.meshes.size()) throw SceneError(fmt::format("mesh {} does not exist", index));
+        const auto& prims = m_.meshes[size_t(index)].primitives;
+        for (size_t p = 0; p < prims.size(); ++p)
+            addPrimitive(prims[p], world, fmt::format("mesh {} primitive {}", index, p));
+    }
+
+    std::vector<float> optionalAttribute(const tinygltf::Primitive& p, const char* name, int comps, size_t count,
+                                         const std::string& what) {
+        const auto it = p.attributes.find(name);
+        if (it == p.attributes.end()) return {};
+        std::vector<float> data = gltf::readFloats(m_, it->second, comps, what + " " + name);
+        if (data.size() != count * size_t(comps))
+            throw SceneError(fmt::format("{}: {} count differs from POSITION count", what, name));
+        return data;
+    }
+
+    void addPrimitive(const tinygltf::Primitive& p, const glm::mat4& world, const std::string& what) {
+        const int mode = p.mode < 0 ? TINYGLTF_MODE_TRIANGLES : p.mode;
+        if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN)
+            return;  // points and lines: lines become hair strands in a later issue
+        const auto posIt = p.attributes.find("POSITION");
+        if (posIt == p.attributes.end()) return;  // nothing to draw
+        const std::vector<float> pos = gltf::readFloats(m_, posIt->second, 3, what + " POSITION");
+        const size_t n = pos.size() / 3;
+        const std::vector<float> nrm = optionalAttribute(p, "NORMAL", 3, n, what);
+        const std::vector<float> uv = optionalAttribute(p, "TEXCOORD_0", 2, n, what);
+        if (p.material < -1 || p.material >= int(m_.materials.size()))
+            throw SceneError(fmt::format("{}: material {} does not exist", what, p.material));
+
+        std::vector<uint32_t> idx(n);
+        if (p.indices >= 0) idx = gltf::readIndices(m_, p.indices);
+        else std::iota(idx.begin(), idx.end(), 0u);
+        for (uint32_t i : idx)
+            if (i >= n) throw SceneError(fmt::format("{}: index {} out of range ({} vertices)", what, i, n));
+        std::vector<uint32_t> tris = toTriangleList(idx, mode);
+        // A mirroring transform turns counter-clockwise triangles clockwise; swap to keep them front-facing.
+        const glm::mat3 linear(world);
+        if (glm::determinant(linear) < 0.0f)
+            for (size_t t = 0; t + 2 < tris.size(); t += 3) std::swap(tris[t + 1], tris[t + 2]);
+
+        const glm::mat3 normalMatrix = glm::transpose(glm::inverse(linear));
+        std::vector<Vertex> verts(n);
+        for (size_t i = 0; i < n; ++i) {
+            verts[i].position = glm::vec3(world * glm::vec4(pos[3 * i], pos[3 * i + 1], pos[3 * i + 2], 1.0f));
+            if (!nrm.empty()) verts[i].normal = normalMatrix * glm::vec3(nrm[3 * i], nrm[3 * i + 1], nrm[3 * i + 2]);
+            verts[i].uv = uv.empty() ? glm::vec2(0.0f) : glm::vec2(uv[2 * i], uv[2 * i + 1]);
+        }
+        if (nrm.empty()) generateNormals(verts, tris);
+        for (Vertex& v : verts) v.normal = safeNormalize(v.normal, glm::vec3(0, 1, 0));
+        addTriangles(s_, verts, tris, uint32_t(p.material + 1));
+    }
+
+    void addLight(const tinygltf::Node& node, const glm::mat4& world) {
+        const auto ext = node.extensions.find("KHR_lights_punctual");
+        if (ext == node.extensions.end() || !ext->second.IsObject() || !ext->second.Has("light")) return;
+        const tinygltf::Value& v = ext->second.Get("light");
+        const int index = v.IsNumber() ? v.GetNumberAsInt() : -1;
+        if (index < 0 || size_t(index) >= m_.lights.size())
+            throw SceneError(fmt::format("node '{}' refers to missing light {}", node.name, index));
+        const tinygltf::Light& gl = m_.lights[size_t(index)];
+        Light l;
+        if (gl.type == "directional") l.type = LightType::Directional;
+        else if (gl.type == "spot") l.type = LightType::Spot;
+        else if (gl.type == "point") l.type = LightType::Point;
+        else return;  // unknown light type: ignore, like an unknown extension
+        if (gl.color.size() == 3) l.color = glm::vec3(gl.color[0], gl.color[1], gl.color[2]);
+        l.intensity = std::max(0.0f, float(gl.intensity));
+        l.range = gl.range > 0.0 ? float(gl.range) : 0.0f;
+        // Keep cones valid for the shader: 0 <= inner < outer <= pi/2.
+        l.outerConeAngle = std::clamp(float(gl.spot.outerConeAngle), 1e-4f, glm::half_pi<float>());
+        l.innerConeAngle = std::clamp(float(gl.spot.innerConeAngle), 0.0f, l.outerConeAngle * 0.999f);
+        // Lights shine down their node's -Z; position is the node origin.
+        l.position = glm::vec3(world[3]);
+        l.direction = safeNormalize(glm::mat3(world) * glm::vec3(0, 0, -1), glm::vec3(0, -1, 0));
+        l.name = gl.name.empty() ? node.name : gl.name;
+        s_.lights.push_back(l);
+    }
+
+    void addCamera(int index, const glm::mat4& world) {
+        if (size_t(index) >= m_.cameras.size()) throw SceneError(fmt::format("camera {} does not exist", index));
+        const tinygltf::Camera& gc = m_.cameras[size_t(index)];
+        if (gc.type != "perspective") return;  // orthographic cameras are not supported by Camera
+        Camera cam;
+        cam.eye = glm::vec3(world[3]);
+        const glm::vec3 forward = safeNormalize(glm::mat3(world) * glm::vec3(0, 0, -1), glm::vec3(0, 0, -1));
+        cam.target = cam.eye + forward;  // distance fixed up once the bounds are known
+        cam.up = safeNormalize(glm::mat3(world) * glm::vec3(0, 1, 0), glm::vec3(0, 1, 0));
+        const auto& pc = gc.perspective;
+        if (pc.yfov > 0.0 && pc.yfov < glm::pi<double>()) cam.fovy = float(pc.yfov);
+        if (pc.znear > 0.0) cam.znear = float(pc.znear);
+        cam.zfar = pc.zfar > pc.znear ? float(pc.zfar) : 0.0f;  // 0 (infinite in glTF) = derive from bounds
+        s_.cameras.push_back(cam);
+    }
+
+    const tinygltf::Model& m_;
+    Scene& s_;
+    std::vector<int32_t> imageTexture_;  // glTF image -> Scene::textures index
+    std::vector<bool> onPath_;           // nodes on the current root-to-node path (cycle detection)
+};
+
+// glTF cameras have no target; put it at the distance of the scene centre so orbiting feels natural.
+void placeCameraTargets(Scene& scene) {
+    const glm::vec3 center = scene.bounds.center();
+    for (Camera& cam : scene.cameras) {
+        const glm::vec3 forward = cam.target - cam.eye;  // unit length from addCamera
+        const float dist = std::max(glm::length(center - cam.eye), 1e-3f);
+        cam.target = cam.eye + forward * dist;
+    }
+}
+
+}  // namespace
+
+Scene loadGltf(const std::string& path) {
+    const tinygltf::Model model = parseFile(path);
+    Scene scene;
+    scene.name = std::filesystem::path(path).stem().string();
+    try {
+        Loader(model, scene).run();
+    } catch (const SceneError& e) {
+        throw SceneError(fmt::format("{}: {}", path, e.what()));
+    }
+    if (scene.indices.empty()) throw SceneError(fmt::format("{}: no triangles in the default scene", path));
+    scene.computeBounds();
+    placeCameraTargets(scene);
+    return scene;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,114 @@
+// Scene description shared by the renderer, the CLI and (later) the reference renderer.
+// Geometry is static and flattened to world space at load time: every glTF node transform is
+// baked into the vertices, so the GPU passes need no per-draw model matrix.
+#pragma once
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace penumbra {
+
+struct Vertex {
+    glm::vec3 position;  // world space
+    glm::vec3 normal;    // world space, unit length
+    glm::vec2 uv;
+};
+
+enum class AlphaMode : uint32_t { Opaque = 0, Mask = 1, Blend = 2 };
+
+struct Texture {
+    uint32_t width = 0, height = 0;
+    std::vector<uint8_t> rgba8;  // sRGB-encoded RGBA8, row-major, top row first
+};
+
+struct Material {
+    glm::vec4 baseColor{1.0f};      // linear RGBA factor
+    int32_t baseColorTexture = -1;  // index into Scene::textures, -1 = none
+    AlphaMode alphaMode = AlphaMode::Opaque;
+    float alphaCutoff = 0.5f;
+    bool doubleSided = false;
+};
+
+// A contiguous range of Scene::indices drawn with one material.
+struct Draw {
+    uint32_t firstIndex = 0;
+    uint32_t indexCount = 0;
+    uint32_t material = 0;
+};
+
+enum class LightType : uint32_t { Directional = 0, Spot = 1, Point = 2 };
+
+// Photometric units follow KHR_lights_punctual, used radiometrically: directional `intensity` is
+// irradiance E on a surface facing the light; spot/point `intensity` is radiant intensity I, so a
+// surface at distance d facing the light receives E = I / d^2.
+struct Light {
+    LightType type = LightType::Directional;
+    glm::vec3 position{0.0f};          // spot, point
+    glm::vec3 direction{0, -1, 0};     // direction the light travels (spot, directional), unit length
+    glm::vec3 color{1.0f};
+    float intensity = 1.0f;
+    float range = 0.0f;                // 0 = infinite
+    float innerConeAngle = 0.0f;       // radians, spot only
+    float outerConeAngle = 0.7853982f; // radians, spot only
+    bool castsShadow = true;
+    std::string name;
+};
+
+struct Camera {
+    glm::vec3 eye{0, 0, 5};
+    glm::vec3 target{0, 0, 0};
+    glm::vec3 up{0, 1, 0};
+    float fovy = 0.7853982f;  // radians, vertical
+    float znear = 0.05f;
+    float zfar = 0.0f;        // 0 = derived from the scene bounds
+};
+
+struct Bounds {
+    glm::vec3 min{1e30f};
+    glm::vec3 max{-1e30f};
+    void extend(const glm::vec3& p) { min = glm::min(min, p); max = glm::max(max, p); }
+    bool empty() const { return min.x > max.x; }
+    glm::vec3 center() const { return 0.5f * (min + max); }
+    float radius() const { return 0.5f * glm::length(max - min); }
+};
+
+struct Scene {
+    std::string name;
+    std::vector<Vertex> vertices;
+    std::vector<uint32_t> indices;
+    std::vector<Draw> draws;
+    std::vector<Material> materials;  // never empty after loading: index 0 is a default white
+    std::vector<Texture> textures;
+    std::vector<Light> lights;
+    std::vector<Camera> cameras;      // from the file; the first is the default view
+    Bounds bounds;                    // world-space bounds of all vertices
+
+    void computeBounds();
+    size_t triangleCount() const { return indices.size() / 3; }
+};
+
+// Thrown for every bad scene input (missing file, malformed glTF, unknown built-in name...).
+// The CLI prints what() as its one error line.
+struct SceneError : std::runtime_error {
+    using std::runtime_error::runtime_error;
+};
+
+// Loads a .gltf or .glb file. Node transforms are baked in, missing normals are generated
+// (area-weighted vertex normals), KHR_lights_punctual lights and perspective cameras are read.
+Scene loadGltf(const std::string& path);
+
+// Built-in procedural scenes: "cornell" (the default), "plane" (unit test scene).
+std::vector<std::string> builtinSceneNames();
+Scene makeBuiltinScene(const std::string& name);
+
+// A path or a built-in name: a name without '.' or '/' that is not a file is looked up as built-in.
+Scene loadScene(const std::string& pathOrName);
+
+// Adds a default sun and camera where the scene has none, so that any glTF model renders.
+void addDefaultsIfMissing(Scene& scene);
+
+}  // namespace penumbra

@@ -1,0 +1,263 @@
+#include "vk/context.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <iostream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+namespace penumbra::vk {
+namespace {
+
+constexpr const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+
+const char* typeName(VkPhysicalDeviceType t) {
+    switch (t) {
+        case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return "discrete";
+        case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return "integrated";
+        case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return "virtual";
+        case VK_PHYSICAL_DEVICE_TYPE_CPU: return "cpu";
+        default: return "other";
+    }
+}
+
+// Higher is better: discrete GPUs first, software rasterizers last.
+int typeRank(VkPhysicalDeviceType t) {
+    switch (t) {
+        case VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU: return 4;
+        case VK_PHYSICAL_DEVICE_TYPE_INTEGRATED_GPU: return 3;
+        case VK_PHYSICAL_DEVICE_TYPE_VIRTUAL_GPU: return 2;
+        case VK_PHYSICAL_DEVICE_TYPE_CPU: return 1;
+        default: return 0;
+    }
+}
+
+bool hidden(const std::string& name) {
+    const char* env = std::getenv("PENUMBRA_HIDE_FEATURES");
+    if (!env) return false;
+    std::stringstream ss(env);
+    for (std::string item; std::getline(ss, item, ',');)
+        if (item == name) return true;
+    return false;
+}
+
+bool hasExtension(VkPhysicalDevice device, const char* name) {
+    uint32_t n = 0;
+    VK_CHECK(vkEnumerateDeviceExtensionProperties(device, nullptr, &n, nullptr));
+    std::vector<VkExtensionProperties> exts(n);
+    VK_CHECK(vkEnumerateDeviceExtensionProperties(device, nullptr, &n, exts.data()));
+    return std::any_of(exts.begin(), exts.end(),
+                       [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
+}
+
+uint32_t findQueueFamily(VkPhysicalDevice device) {
+    uint32_t n = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(device, &n, nullptr);
+    std::vector<VkQueueFamilyProperties> families(n);
+    vkGetPhysicalDeviceQueueFamilyProperties(device, &n, families.data());
+    for (uint32_t i = 0; i < n; ++i) {
+        const VkQueueFlags need = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
+        if ((families[i].queueFlags & need) == need && families[i].timestampValidBits > 0) return i;
+    }
+    return UINT32_MAX;
+}
+
+std::vector<VkPhysicalDevice> physicalDevices(VkInstance instance) {
+    uint32_t n = 0;
+    VK_CHECK(vkEnumeratePhysicalDevices(instance, &n, nullptr));
+    std::vector<VkPhysicalDevice> devices(n);
+    VK_CHECK(vkEnumeratePhysicalDevices(instance, &n, devices.data()));
+    return devices;
+}
+
+DeviceInfo describe(VkPhysicalDevice device, uint32_t index) {
+    VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
+    VkPhysicalDeviceProperties2 props{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &driver};
+    vkGetPhysicalDeviceProperties2(device, &props);
+    DeviceInfo info{index, props.properties.deviceName, typeName(props.properties.deviceType),
+                    fmt::format("{} {}", driver.driverName, driver.driverInfo), props.properties.apiVersion, {}};
+    for (const FeatureCheck& f : checkRequiredFeatures(device))
+        if (!f.present) info.missing.push_back(f.name);
+    return info;
+}
+
+}  // namespace
+
+std::vector<FeatureCheck> checkRequiredFeatures(VkPhysicalDevice device) {
+    VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    VkPhysicalDeviceVulkan12Features f12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &f13};
+    VkPhysicalDeviceFeatures2 f{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f12};
+    VkPhysicalDeviceProperties props;
+    vkGetPhysicalDeviceProperties(device, &props);
+    const bool is13 = props.apiVersion >= VK_API_VERSION_1_3;
+    if (is13) vkGetPhysicalDeviceFeatures2(device, &f);
+    VkFormatProperties depth;
+    vkGetPhysicalDeviceFormatProperties(device, VK_FORMAT_D32_SFLOAT, &depth);
+    const VkFormatFeatureFlags depthNeed =
+        VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_FORMAT_FEATURE_SAMPLED_IMAGE_BIT;
+
+    std::vector<FeatureCheck> checks = {
+        {"Vulkan 1.3", is13},
+        {"dynamicRendering", is13 && f13.dynamicRendering},
+        {"synchronization2", is13 && f13.synchronization2},
+        {"hostQueryReset", is13 && f12.hostQueryReset},
+        {"maintenance4", is13 && f13.maintenance4},
+        {"VK_KHR_push_descriptor", hasExtension(device, VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME)},
+        {"timestampComputeAndGraphics", props.limits.timestampComputeAndGraphics == VK_TRUE},
+        {"graphics+compute queue with timestamps", findQueueFamily(device) != UINT32_MAX},
+        {"D32_SFLOAT depth attachment and sampled", (depth.optimalTilingFeatures & depthNeed) == depthNeed},
+        {"fragmentStoresAndAtomics", is13 && f.features.fragmentStoresAndAtomics},
+    };
+    for (FeatureCheck& c : checks)
+        if (hidden(c.name)) c.present = false;
+    return checks;
+}
+
+VkBool32 debugCallback(VkDebugUtilsMessageSeverityFlagBitsEXT severity, VkDebugUtilsMessageTypeFlagsEXT,
+                       const VkDebugUtilsMessengerCallbackDataEXT* data, void* user) {
+    auto* ctx = static_cast<Context*>(user);
+    ctx->validationMessages_++;
+    const char* level = severity >= VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT ? "error" : "warning";
+    std::string msg = fmt::format("validation {}: {}", level, data->pMessage ? data->pMessage : "");
+    if (ctx->validationLog_.size() < 64) ctx->validationLog_.push_back(msg);
+    if (!ctx->options_.quiet) std::cerr << msg << "\n";
+    return VK_FALSE;
+}
+
+Context::Context(const ContextOptions& options) : options_(options) {
+    createInstance(options.validate);
+    pickDevice(options.device);
+    createDevice();
+}
+
+Context::Context(const ContextOptions& options, InstanceOnly) : options_(options) {
+    createInstance(options.validate);
+}
+
+Context::~Context() {
+    if (device_) vkDestroyDevice(device_, nullptr);
+    if (messenger_) {
+        auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+            vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
+        if (destroy) destroy(instance_, messenger_, nullptr);
+    }
+    if (instance_) vkDestroyInstance(instance_, nullptr);
+}
+
+void Context::createInstance(bool validate) {
+    if (validate) {
+        uint32_t n = 0;
+        VK_CHECK(vkEnumerateInstanceLayerProperties(&n, nullptr));
+        std::vector<VkLayerProperties> layers(n);
+        VK_CHECK(vkEnumerateInstanceLayerProperties(&n, layers.data()));
+        if (std::none_of(layers.begin(), layers.end(),
+                         [](const VkLayerProperties& l) { return std::strcmp(l.layerName, kValidationLayer) == 0; }))
+            throw VulkanError("--validate: the Khronos validation layer is not installed "
+                              "(Debian package vulkan-validationlayers)");
+    }
+    VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
+    app.pApplicationName = "penumbra";
+    app.pEngineName = "penumbra";
+    app.apiVersion = VK_API_VERSION_1_3;
+    const char* ext = VK_EXT_DEBUG_UTILS_EXTENSION_NAME;
+    VkDebugUtilsMessengerCreateInfoEXT dbg{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
+    dbg.messageSeverity =
+        VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
+    dbg.messageType = VK_DEBUG_UTILS_MESSAGE_TYPE_GENERAL_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_TYPE_VALIDATION_BIT_EXT |
+                      VK_DEBUG_UTILS_MESSAGE_TYPE_PERFORMANCE_BIT_EXT;
+    dbg.pfnUserCallback = debugCallback;
+    dbg.pUserData = this;
+    VkInstanceCreateInfo ci{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
+    ci.pApplicationInfo = &app;
+    if (validate) {
+        ci.enabledLayerCount = 1;
+        ci.ppEnabledLayerNames = &kValidationLayer;
+        ci.enabledExtensionCount = 1;
+        ci.ppEnabledExtensionNames = &ext;
+        ci.pNext = &dbg;  // also reports problems inside vkCreateInstance itself
+    }
+    VkResult r = vkCreateInstance(&ci, nullptr, &instance_);
+    if (r == VK_ERROR_INCOMPATIBLE_DRIVER)
+        throw VulkanError("no Vulkan driver found (install mesa-vulkan-drivers for lavapipe)");
+    VK_CHECK(r);
+    if (validate) {
+        auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+            vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
+        if (!create) throw VulkanError("VK_EXT_debug_utils is not available with --validate");
+        VK_CHECK(create(instance_, &dbg, nullptr, &messenger_));
+    }
+}
+
+std::vector<DeviceInfo> Context::enumerate(const ContextOptions& options) {
+    Context probe(options, InstanceOnly{});
+    std::vector<DeviceInfo> out;
+    auto devices = physicalDevices(probe.instance_);
+    for (uint32_t i = 0; i < devices.size(); ++i) out.push_back(describe(devices[i], i));
+    return out;
+}
+
+void Context::pickDevice(const std::string& selector) {
+    auto devices = physicalDevices(instance_);
+    if (devices.empty()) throw VulkanError("no Vulkan device found (install mesa-vulkan-drivers for lavapipe)");
+    std::vector<DeviceInfo> infos;
+    for (uint32_t i = 0; i < devices.size(); ++i) infos.push_back(describe(devices[i], i));
+    int chosen = -1;
+    if (!selector.empty()) {
+        const bool numeric = std::all_of(selector.begin(), selector.end(), ::isdigit);
+        for (const DeviceInfo& d : infos)
+            if ((numeric && std::to_string(d.index) == selector) ||
+                (!numeric && d.name.find(selector) != std::string::npos)) {
+                chosen = static_cast<int>(d.index);
+                break;
+            }
+        if (chosen < 0) throw VulkanError(fmt::format("--device {}: no such device (see `penumbra info`)", selector));
+    } else {
+        int best = -1;
+        for (const DeviceInfo& d : infos) {
+            VkPhysicalDeviceProperties p;
+            vkGetPhysicalDeviceProperties(devices[d.index], &p);
+            int score = typeRank(p.deviceType) + (d.missing.empty() ? 100 : 0);
+            if (score > best) best = score, chosen = static_cast<int>(d.index);
+        }
+    }
+    info_ = infos[chosen];
+    if (!info_.missing.empty())
+        throw VulkanError(fmt::format("device '{}' lacks required feature: {}", info_.name,
+                                      fmt::join(info_.missing, ", ")));
+    physical_ = devices[chosen];
+    vkGetPhysicalDeviceProperties(physical_, &properties_);
+    queueFamily_ = findQueueFamily(physical_);
+}
+
+void Context::createDevice() {
+    float priority = 1.0f;
+    VkDeviceQueueCreateInfo q{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
+    q.queueFamilyIndex = queueFamily_;
+    q.queueCount = 1;
+    q.pQueuePriorities = &priority;
+    VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    f13.dynamicRendering = VK_TRUE;
+    f13.synchronization2 = VK_TRUE;
+    f13.maintenance4 = VK_TRUE;  // glslc's Vulkan 1.3 SPIR-V uses LocalSizeId
+    VkPhysicalDeviceVulkan12Features f12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &f13};
+    f12.hostQueryReset = VK_TRUE;
+    VkPhysicalDeviceFeatures2 f{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f12};
+    f.features.fragmentStoresAndAtomics = VK_TRUE;
+    const char* ext = VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME;
+    VkDeviceCreateInfo ci{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &f};
+    ci.queueCreateInfoCount = 1;
+    ci.pQueueCreateInfos = &q;
+    ci.enabledExtensionCount = 1;
+    ci.ppEnabledExtensionNames = &ext;
+    VK_CHECK(vkCreateDevice(physical_, &ci, nullptr, &device_));
+    vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
+    cmdPushDescriptorSet = reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(
+        vkGetDeviceProcAddr(device_, "vkCmdPushDescriptorSetKHR"));
+    if (!cmdPushDescriptorSet) throw VulkanError("vkCmdPushDescriptorSetKHR not found");
+}
+
+void Context::waitIdle() const { VK_CHECK(vkDeviceWaitIdle(device_)); }
+
+}  // namespace penumbra::vk

@@ -1,0 +1,90 @@
+// Vulkan instance, physical-device choice and logical device. Knows nothing about techniques.
+#pragma once
+#include <atomic>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+#include "vk/check.h"
+
+namespace penumbra::vk {
+
+struct ContextOptions {
+    bool validate = false;     // enable VK_LAYER_KHRONOS_validation; every message is counted
+    std::string device;        // "" = best (discrete GPU first, lavapipe last); index or name substring
+    bool quiet = false;        // do not echo validation messages to stderr
+};
+
+struct DeviceInfo {
+    uint32_t index;
+    std::string name;
+    std::string type;          // "discrete", "integrated", "virtual", "cpu", "other"
+    std::string driver;        // driver name and info
+    uint32_t apiVersion;
+    std::vector<std::string> missing;  // required features this device lacks (empty = usable)
+};
+
+// One required capability and whether a device has it; the CLI's `info` prints these.
+struct FeatureCheck {
+    std::string name;
+    bool present;
+};
+
+class Context {
+public:
+    explicit Context(const ContextOptions& options);
+    ~Context();
+    Context(const Context&) = delete;
+    Context& operator=(const Context&) = delete;
+
+    // Devices and their required-feature checks, without creating a logical device.
+    static std::vector<DeviceInfo> enumerate(const ContextOptions& options);
+
+    VkInstance instance() const { return instance_; }
+    VkPhysicalDevice physicalDevice() const { return physical_; }
+    VkDevice device() const { return device_; }
+    VkQueue queue() const { return queue_; }
+    uint32_t queueFamily() const { return queueFamily_; }
+    const VkPhysicalDeviceProperties& properties() const { return properties_; }
+    const DeviceInfo& info() const { return info_; }
+    float timestampPeriodNs() const { return properties_.limits.timestampPeriod; }
+
+    // Validation messages (warnings and errors) seen so far; tests fail when this is non-zero.
+    uint32_t validationMessages() const { return validationMessages_.load(); }
+    const std::vector<std::string>& validationLog() const { return validationLog_; }
+
+    void waitIdle() const;
+
+    // Extension entry point (the loader exports core functions only).
+    PFN_vkCmdPushDescriptorSetKHR cmdPushDescriptorSet = nullptr;
+
+private:
+    struct InstanceOnly {};
+    Context(const ContextOptions& options, InstanceOnly);
+    friend VkBool32 debugCallback(VkDebugUtilsMessageSeverityFlagBitsEXT, VkDebugUtilsMessageTypeFlagsEXT,
+                                  const VkDebugUtilsMessengerCallbackDataEXT*, void*);
+    void createInstance(bool validate);
+    void pickDevice(const std::string& selector);
+    void createDevice();
+
+    ContextOptions options_;
+    VkInstance instance_ = VK_NULL_HANDLE;
+    VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
+    VkPhysicalDevice physical_ = VK_NULL_HANDLE;
+    VkDevice device_ = VK_NULL_HANDLE;
+    VkQueue queue_ = VK_NULL_HANDLE;
+    uint32_t queueFamily_ = 0;
+    VkPhysicalDeviceProperties properties_{};
+    DeviceInfo info_;
+    std::atomic<uint32_t> validationMessages_{0};
+    std::vector<std::string> validationLog_;
+};
+
+// The features penumbra needs, checked on one physical device. Names listed in the environment
+// variable PENUMBRA_HIDE_FEATURES (comma separated) are reported missing: a test seam for the
+// "device without a needed feature" error path, which no real test machine can otherwise reach.
+std::vector<FeatureCheck> checkRequiredFeatures(VkPhysicalDevice device);
+
+}  // namespace penumbra::vk

@@ -1,0 +1,215 @@
+#include "vk/pipeline.h"
+
+#include <array>
+#include <utility>
+
+#include "vk/shader_registry.h"
+
+namespace penumbra::vk {
+namespace {
+
+VkShaderModule createModule(VkDevice device, const std::string& key) {
+    const EmbeddedShader& s = findShader(key);
+    VkShaderModuleCreateInfo ci{VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO};
+    ci.codeSize = s.size;
+    ci.pCode = reinterpret_cast<const uint32_t*>(s.code);
+    VkShaderModule m;
+    VK_CHECK(vkCreateShaderModule(device, &ci, nullptr, &m));
+    return m;
+}
+
+VkPipelineShaderStageCreateInfo stage(VkShaderStageFlagBits s, VkShaderModule m) {
+    VkPipelineShaderStageCreateInfo info{VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO};
+    info.stage = s;
+    info.module = m;
+    info.pName = "main";
+    return info;
+}
+
+}  // namespace
+
+DescriptorLayout::DescriptorLayout(Context& ctx, const std::vector<Binding>& bindings, bool pushDescriptor)
+    : device_(ctx.device()) {
+    std::vector<VkDescriptorSetLayoutBinding> b;
+    for (const Binding& x : bindings) b.push_back({x.binding, x.type, x.count, VK_SHADER_STAGE_ALL, nullptr});
+    VkDescriptorSetLayoutCreateInfo ci{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
+    ci.flags = pushDescriptor ? VK_DESCRIPTOR_SET_LAYOUT_CREATE_PUSH_DESCRIPTOR_BIT_KHR : 0;
+    ci.bindingCount = static_cast<uint32_t>(b.size());
+    ci.pBindings = b.data();
+    VK_CHECK(vkCreateDescriptorSetLayout(device_, &ci, nullptr, &layout_));
+}
+
+DescriptorLayout& DescriptorLayout::operator=(DescriptorLayout&& o) noexcept {
+    if (this != &o) {
+        reset();
+        device_ = o.device_;
+        layout_ = std::exchange(o.layout_, VK_NULL_HANDLE);
+    }
+    return *this;
+}
+
+void DescriptorLayout::reset() {
+    if (layout_) vkDestroyDescriptorSetLayout(device_, layout_, nullptr);
+    layout_ = VK_NULL_HANDLE;
+}
+
+void Pipeline::createLayout(Context& ctx, const std::vector<VkDescriptorSetLayout>& sets, uint32_t pushBytes) {
+    device_ = ctx.device();
+    VkPushConstantRange range{VK_SHADER_STAGE_ALL, 0, pushBytes};
+    VkPipelineLayoutCreateInfo ci{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
+    ci.setLayoutCount = static_cast<uint32_t>(sets.size());
+    ci.pSetLayouts = sets.data();
+    ci.pushConstantRangeCount = pushBytes ? 1 : 0;
+    ci.pPushConstantRanges = &range;
+    VK_CHECK(vkCreatePipelineLayout(device_, &ci, nullptr, &layout_));
+}
+
+Pipeline Pipeline::compute(Context& ctx, const std::string& shader, const std::vector<VkDescriptorSetLayout>& sets,
+                           uint32_t pushBytes) {
+    Pipeline p;
+    p.createLayout(ctx, sets, pushBytes);
+    p.bindPoint_ = VK_PIPELINE_BIND_POINT_COMPUTE;
+    VkShaderModule m = createModule(ctx.device(), shader);
+    VkComputePipelineCreateInfo ci{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
+    ci.stage = stage(VK_SHADER_STAGE_COMPUTE_BIT, m);
+    ci.layout = p.layout_;
+    VkResult r = vkCreateComputePipelines(ctx.device(), VK_NULL_HANDLE, 1, &ci, nullptr, &p.pipeline_);
+    vkDestroyShaderModule(ctx.device(), m, nullptr);
+    VK_CHECK(r);
+    return p;
+}
+
+Pipeline Pipeline::graphics(Context& ctx, const GraphicsDesc& d, const std::vector<VkDescriptorSetLayout>& sets,
+                            uint32_t pushBytes) {
+    Pipeline p;
+    p.createLayout(ctx, sets, pushBytes);
+    p.bindPoint_ = VK_PIPELINE_BIND_POINT_GRAPHICS;
+    std::vector<VkShaderModule> modules{createModule(ctx.device(), d.vertexShader)};
+    std::vector<VkPipelineShaderStageCreateInfo> stages{stage(VK_SHADER_STAGE_VERTEX_BIT, modules[0])};
+    if (!d.fragmentShader.empty()) {
+        modules.push_back(createModule(ctx.device(), d.fragmentShader));
+        stages.push_back(stage(VK_SHADER_STAGE_FRAGMENT_BIT, modules[1]));
+    }
+    VkVertexInputBindingDescription vb{0, d.vertexStride, VK_VERTEX_INPUT_RATE_VERTEX};
+    VkPipelineVertexInputStateCreateInfo vi{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
+    if (d.vertexStride) {
+        vi.vertexBindingDescriptionCount = 1;
+        vi.pVertexBindingDescriptions = &vb;
+        vi.vertexAttributeDescriptionCount = static_cast<uint32_t>(d.vertexAttributes.size());
+        vi.pVertexAttributeDescriptions = d.vertexAttributes.data();
+    }
+    VkPipelineInputAssemblyStateCreateInfo ia{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
+    ia.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    VkPipelineViewportStateCreateInfo vp{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
+    vp.viewportCount = vp.scissorCount = 1;
+    VkPipelineRasterizationStateCreateInfo rs{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
+    rs.polygonMode = VK_POLYGON_MODE_FILL;
+    rs.cullMode = d.cullMode;
+    rs.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+    rs.depthBiasEnable = d.depthBias;
+    rs.depthClampEnable = d.depthClamp;
+    rs.lineWidth = 1.0f;
+    VkPipelineMultisampleStateCreateInfo ms{VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO};
+    ms.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+    VkPipelineDepthStencilStateCreateInfo ds{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
+    ds.depthTestEnable = ds.depthWriteEnable = d.depthFormat != VK_FORMAT_UNDEFINED;
+    ds.depthCompareOp = VK_COMPARE_OP_LESS_OR_EQUAL;
+    std::vector<VkPipelineColorBlendAttachmentState> blends(d.colorFormats.size());
+    for (auto& b : blends) b.colorWriteMask = 0xF;
+    VkPipelineColorBlendStateCreateInfo cb{VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO};
+    cb.attachmentCount = static_cast<uint32_t>(blends.size());
+    cb.pAttachments = blends.data();
+    std::vector<VkDynamicState> dyn{VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
+    if (d.depthBias) dyn.push_back(VK_DYNAMIC_STATE_DEPTH_BIAS);
+    VkPipelineDynamicStateCreateInfo dy{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
+    dy.dynamicStateCount = static_cast<uint32_t>(dyn.size());
+    dy.pDynamicStates = dyn.data();
+    VkPipelineRenderingCreateInfo ri{VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO};
+    ri.colorAttachmentCount = static_cast<uint32_t>(d.colorFormats.size());
+    ri.pColorAttachmentFormats = d.colorFormats.data();
+    ri.depthAttachmentFormat = d.depthFormat;
+    VkGraphicsPipelineCreateInfo ci{VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO, &ri};
+    ci.stageCount = static_cast<uint32_t>(stages.size());
+    ci.pStages = stages.data();
+    ci.pVertexInputState = &vi;
+    ci.pInputAssemblyState = &ia;
+    ci.pViewportState = &vp;
+    ci.pRasterizationState = &rs;
+    ci.pMultisampleState = &ms;
+    ci.pDepthStencilState = &ds;
+    ci.pColorBlendState = &cb;
+    ci.pDynamicState = &dy;
+    ci.layout = p.layout_;
+    VkResult r = vkCreateGraphicsPipelines(ctx.device(), VK_NULL_HANDLE, 1, &ci, nullptr, &p.pipeline_);
+    for (VkShaderModule m : modules) vkDestroyShaderModule(ctx.device(), m, nullptr);
+    VK_CHECK(r);
+    return p;
+}
+
+Pipeline& Pipeline::operator=(Pipeline&& o) noexcept {
+    if (this != &o) {
+        reset();
+        device_ = o.device_;
+        pipeline_ = std::exchange(o.pipeline_, VK_NULL_HANDLE);
+        layout_ = std::exchange(o.layout_, VK_NULL_HANDLE);
+        bindPoint_ = o.bindPoint_;
+    }
+    return *this;
+}
+
+void Pipeline::reset() {
+    if (pipeline_) vkDestroyPipeline(device_, pipeline_, nullptr);
+    if (layout_) vkDestroyPipelineLayout(device_, layout_, nullptr);
+    pipeline_ = VK_NULL_HANDLE;
+    layout_ = VK_NULL_HANDLE;
+}
+
+void Pipeline::pushConstants(VkCommandBuffer cmd, const void* data, uint32_t bytes) const {
+    vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_ALL, 0, bytes, data);
+}
+
+VkWriteDescriptorSet& DescriptorWrites::add(uint32_t binding, VkDescriptorType type) {
+    VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
+    w.dstBinding = binding;
+    w.descriptorCount = 1;
+    w.descriptorType = type;
+    writes_.push_back(w);
+    return writes_.back();
+}
+
+DescriptorWrites& DescriptorWrites::sampled(uint32_t binding, VkImageView view, VkSampler sampler,
+                                            VkImageLayout layout) {
+    images_.push_back({sampler, view, layout});
+    add(binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER).pImageInfo = &images_.back();
+    return *this;
+}
+
+DescriptorWrites& DescriptorWrites::storageImage(uint32_t binding, VkImageView view) {
+    images_.push_back({VK_NULL_HANDLE, view, VK_IMAGE_LAYOUT_GENERAL});
+    add(binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE).pImageInfo = &images_.back();
+    return *this;
+}
+
+DescriptorWrites& DescriptorWrites::storageBuffer(uint32_t binding, const Buffer& buffer) {
+    buffers_.push_back({buffer.handle(), 0, VK_WHOLE_SIZE});
+    add(binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER).pBufferInfo = &buffers_.back();
+    return *this;
+}
+
+DescriptorWrites& DescriptorWrites::uniformBuffer(uint32_t binding, const Buffer& buffer) {
+    buffers_.push_back({buffer.handle(), 0, VK_WHOLE_SIZE});
+    add(binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER).pBufferInfo = &buffers_.back();
+    return *this;
+}
+
+void DescriptorWrites::push(const Context& ctx, VkCommandBuffer cmd, const Pipeline& pipeline, uint32_t set) {
+    ctx.cmdPushDescriptorSet(cmd, pipeline.bindPoint(), pipeline.layout(), set,
+                             static_cast<uint32_t>(writes_.size()), writes_.data());
+}
+
+void DescriptorWrites::update(VkDevice device, VkDescriptorSet set) {
+    for (auto& w : writes_) w.dstSet = set;
+    vkUpdateDescriptorSets(device, static_cast<uint32_t>(writes_.size()), writes_.data(), 0, nullptr);
+}
+
+}  // namespace penumbra::vk

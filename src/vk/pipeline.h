@@ -1,0 +1,93 @@
+// Descriptor-set layouts, push-descriptor writes, compute and graphics pipelines.
+// Passes bind their per-frame resources with push descriptors (VK_KHR_push_descriptor): no pools,
+// no set lifetime to manage; only long-lived tables (material textures) use a pooled set.
+#pragma once
+#include <deque>
+#include <string>
+#include <vector>
+
+#include "vk/resources.h"
+
+namespace penumbra::vk {
+
+struct Binding {
+    uint32_t binding;
+    VkDescriptorType type;
+    uint32_t count = 1;
+};
+
+class DescriptorLayout {
+public:
+    DescriptorLayout() = default;
+    DescriptorLayout(Context& ctx, const std::vector<Binding>& bindings, bool pushDescriptor = true);
+    ~DescriptorLayout() { reset(); }
+    DescriptorLayout(DescriptorLayout&& o) noexcept { *this = std::move(o); }
+    DescriptorLayout& operator=(DescriptorLayout&& o) noexcept;
+    VkDescriptorSetLayout handle() const { return layout_; }
+    void reset();
+
+private:
+    VkDevice device_ = VK_NULL_HANDLE;
+    VkDescriptorSetLayout layout_ = VK_NULL_HANDLE;
+};
+
+struct GraphicsDesc {
+    std::string vertexShader;
+    std::string fragmentShader;  // empty: depth-only
+    std::vector<VkFormat> colorFormats;
+    VkFormat depthFormat = VK_FORMAT_UNDEFINED;
+    uint32_t vertexStride = 0;     // 0: no vertex buffer (vertex pulling or generated)
+    std::vector<VkVertexInputAttributeDescription> vertexAttributes;  // all from binding 0
+    VkCullModeFlags cullMode = VK_CULL_MODE_NONE;
+    bool depthBias = false;        // set with vkCmdSetDepthBias
+    bool depthClamp = false;
+};
+
+class Pipeline {
+public:
+    Pipeline() = default;
+    static Pipeline compute(Context& ctx, const std::string& shader, const std::vector<VkDescriptorSetLayout>& sets,
+                            uint32_t pushBytes);
+    static Pipeline graphics(Context& ctx, const GraphicsDesc& desc, const std::vector<VkDescriptorSetLayout>& sets,
+                             uint32_t pushBytes);
+    ~Pipeline() { reset(); }
+    Pipeline(Pipeline&& o) noexcept { *this = std::move(o); }
+    Pipeline& operator=(Pipeline&& o) noexcept;
+
+    VkPipeline handle() const { return pipeline_; }
+    VkPipelineLayout layout() const { return layout_; }
+    VkPipelineBindPoint bindPoint() const { return bindPoint_; }
+    void bind(VkCommandBuffer cmd) const { vkCmdBindPipeline(cmd, bindPoint_, pipeline_); }
+    void pushConstants(VkCommandBuffer cmd, const void* data, uint32_t bytes) const;
+    template <class T> void push(VkCommandBuffer cmd, const T& value) const { pushConstants(cmd, &value, sizeof(T)); }
+    void reset();
+
+private:
+    void createLayout(Context& ctx, const std::vector<VkDescriptorSetLayout>& sets, uint32_t pushBytes);
+    VkDevice device_ = VK_NULL_HANDLE;
+    VkPipeline pipeline_ = VK_NULL_HANDLE;
+    VkPipelineLayout layout_ = VK_NULL_HANDLE;
+    VkPipelineBindPoint bindPoint_ = VK_PIPELINE_BIND_POINT_COMPUTE;
+};
+
+// Collects descriptor writes for one push-descriptor set, then pushes them.
+class DescriptorWrites {
+public:
+    DescriptorWrites& sampled(uint32_t binding, VkImageView view, VkSampler sampler,
+                              VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    DescriptorWrites& storageImage(uint32_t binding, VkImageView view);
+    DescriptorWrites& storageBuffer(uint32_t binding, const Buffer& buffer);
+    DescriptorWrites& uniformBuffer(uint32_t binding, const Buffer& buffer);
+    void push(const Context& ctx, VkCommandBuffer cmd, const Pipeline& pipeline, uint32_t set = 0);
+    void update(VkDevice device, VkDescriptorSet set);  // for pooled sets
+
+private:
+    VkWriteDescriptorSet& add(uint32_t binding, VkDescriptorType type);
+    std::vector<VkWriteDescriptorSet> writes_;
+    std::deque<VkDescriptorImageInfo> images_;
+    std::deque<VkDescriptorBufferInfo> buffers_;
+};
+
+inline uint32_t divUp(uint32_t a, uint32_t b) { return (a + b - 1) / b; }
+
+}  // namespace penumbra::vk
