@@ -331,6 +331,9 @@ TEST(GltfLoader, BadInputThrowsSceneError) {
     doc["accessors"][1]["count"] = 1000;  // index accessor runs past its bufferView and buffer
     expectFails(writeGltf(dir, "index_past_end.gltf", doc), "index accessor past buffer end");
 
+    doc = testGltf("missing.bin", bin.size());
+    expectFails(writeGltf(dir, "missing_bin.gltf", doc), "missing external buffer");
+
     doc = good;
     doc["bufferViews"][0]["byteLength"] = 4000;  // bufferView past the end of its buffer
     expectFails(writeGltf(dir, "view_past_end.gltf", doc), "bufferView past buffer end");
@@ -349,6 +352,17 @@ TEST(GltfLoader, BadInputThrowsSceneError) {
     doc = good;
     doc["meshes"][0]["primitives"][0]["mode"] = 1;  // lines only: skipped, leaving no triangles
     expectFails(writeGltf(dir, "no_triangles.gltf", doc), "no triangles");
+}
+
+TEST(GltfLoader, MissingImageLoadsUntextured) {
+    TempDir dir;
+    const std::vector<uint8_t> bin = testBin();
+    json doc = testGltf(dataUri(bin), bin.size());
+    doc["images"][0]["uri"] = "missing.png";
+    const Scene s = loadGltf(writeGltf(dir, "no_image.gltf", doc));
+    expectConsistent(s);
+    EXPECT_EQ(s.materials[1].baseColorTexture, -1);
+    EXPECT_TRUE(s.textures.empty());
 }
 
 TEST(SceneLoading, UnknownBuiltinNameListsBuiltins) {

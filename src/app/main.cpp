@@ -66,6 +66,9 @@ int runRender(const RenderOptions& o, const vk::ContextOptions& vkOptions, Rende
         fmt::print("GPU time per pass:\n");
         printTimings(renderer);
         if (o.printPasses) fmt::print("passes:\n{}", renderer.describePasses());
+        const Bounds& b = scene.bounds;
+        fmt::print("scene bounds ({:.3g}, {:.3g}, {:.3g}) .. ({:.3g}, {:.3g}, {:.3g}); camera eye ({:.3g}, {:.3g}, {:.3g})\n",
+                   b.min.x, b.min.y, b.min.z, b.max.x, b.max.y, b.max.z, camera.eye.x, camera.eye.y, camera.eye.z);
     }
     if (ctx.validationMessages() > 0)
         throw std::runtime_error(fmt::format("{} validation message(s) reported", ctx.validationMessages()));

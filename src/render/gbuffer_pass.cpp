@@ -20,6 +20,8 @@ GBufferPass::GBufferPass(vk::Allocator& alloc, SceneGpu& scene, uint32_t width, 
     d.depthFormat = depth.format();
     d.vertexStride = SceneGpu::vertexStride();
     d.vertexAttributes = SceneGpu::vertexAttributes();
+    d.dynamicCullMode = true;
+    d.frontFace = SceneGpu::sceneFrontFace(true);
     pipeline_ = vk::Pipeline::graphics(alloc.context(), d, {drawLayout},
                                        sizeof(gpu::DrawPush));
 }

@@ -31,9 +31,17 @@ public:
     // Vertex input of penumbra::Vertex for GraphicsDesc.
     static uint32_t vertexStride() { return sizeof(Vertex); }
     static std::vector<VkVertexInputAttributeDescription> vertexAttributes();
+    static VkFrontFace sceneFrontFace(bool yFlippedProjection) {
+        return yFlippedProjection ? VK_FRONT_FACE_COUNTER_CLOCKWISE : VK_FRONT_FACE_CLOCKWISE;
+    }
 
     // Binds vertex/index buffers, then calls `perDraw` for every draw (to push constants), then draws.
-    // `filter` selects draws by material (e.g. only alpha-masked ones); null draws all.
+    // `filter` selects draws by material (e.g. only alpha-masked ones). Single-sided materials are
+    // drawn with back faces culled, in the camera and in the lights' views alike (glTF: a one-sided
+    // surface is invisible from behind, so it neither shows nor casts from there — a sky dome seen
+    // from outside casts no shadow); pipelines must use GraphicsDesc::dynamicCullMode.
+    // Winding: glTF fronts are counter-clockwise; views with a y-flipped projection (the camera)
+    // keep that, views without (shadow maps) see them clockwise: see sceneFrontFace().
     template <class PerDraw, class Filter>
     void draw(VkCommandBuffer cmd, PerDraw perDraw, Filter filter) const;
 
@@ -54,6 +62,7 @@ void SceneGpu::draw(VkCommandBuffer cmd, PerDraw perDraw, Filter filter) const {
     vkCmdBindIndexBuffer(cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
     for (const Draw& d : scene_.draws) {
         if (!filter(scene_.materials[d.material])) continue;
+        vkCmdSetCullMode(cmd, scene_.materials[d.material].doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
         perDraw(d);
         vkCmdDrawIndexed(cmd, d.indexCount, 1, d.firstIndex, 0, 0);
     }

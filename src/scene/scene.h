@@ -106,6 +106,7 @@ std::vector<std::string> builtinSceneNames();
 Scene makeBuiltinScene(const std::string& name);
 
 // A path or a built-in name: a name without '.' or '/' that is not a file is looked up as built-in.
+// The result has had addDefaultsIfMissing applied.
 Scene loadScene(const std::string& pathOrName);
 
 // Adds a default sun and camera where the scene has none, so that any glTF model renders.

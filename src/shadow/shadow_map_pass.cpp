@@ -11,6 +11,8 @@ ShadowMapPass::ShadowMapPass(vk::Allocator& alloc, SceneGpu& scene, const Shadow
     d.vertexStride = SceneGpu::vertexStride();
     d.vertexAttributes = SceneGpu::vertexAttributes();
     d.depthBias = true;
+    d.dynamicCullMode = true;
+    d.frontFace = SceneGpu::sceneFrontFace(false);
     vk::Context& ctx = alloc.context();
     // Opaque casters need no fragment shader at all; alpha-masked ones discard their cut-outs.
     opaque_ = vk::Pipeline::graphics(ctx, d, {drawLayout}, sizeof(gpu::DrawPush));

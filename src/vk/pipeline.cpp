@@ -105,7 +105,7 @@ Pipeline Pipeline::graphics(Context& ctx, const GraphicsDesc& d, const std::vect
     VkPipelineRasterizationStateCreateInfo rs{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
     rs.polygonMode = VK_POLYGON_MODE_FILL;
     rs.cullMode = d.cullMode;
-    rs.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+    rs.frontFace = d.frontFace;
     rs.depthBiasEnable = d.depthBias;
     rs.depthClampEnable = d.depthClamp;
     rs.lineWidth = 1.0f;
@@ -121,6 +121,7 @@ Pipeline Pipeline::graphics(Context& ctx, const GraphicsDesc& d, const std::vect
     cb.pAttachments = blends.data();
     std::vector<VkDynamicState> dyn{VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR};
     if (d.depthBias) dyn.push_back(VK_DYNAMIC_STATE_DEPTH_BIAS);
+    if (d.dynamicCullMode) dyn.push_back(VK_DYNAMIC_STATE_CULL_MODE);
     VkPipelineDynamicStateCreateInfo dy{VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO};
     dy.dynamicStateCount = static_cast<uint32_t>(dyn.size());
     dy.pDynamicStates = dyn.data();

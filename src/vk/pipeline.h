@@ -39,6 +39,8 @@ struct GraphicsDesc {
     uint32_t vertexStride = 0;     // 0: no vertex buffer (vertex pulling or generated)
     std::vector<VkVertexInputAttributeDescription> vertexAttributes;  // all from binding 0
     VkCullModeFlags cullMode = VK_CULL_MODE_NONE;
+    bool dynamicCullMode = false;  // set per draw with vkCmdSetCullMode
+    VkFrontFace frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
     bool depthBias = false;        // set with vkCmdSetDepthBias
     bool depthClamp = false;
 };
