@@ -3,7 +3,7 @@
 set -euo pipefail
 PKGS=(
   build-essential cmake pkg-config
-  libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslc spirv-tools
+  libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslc
   libglm-dev libtinygltf-dev nlohmann-json3-dev libstb-dev libtinyexr-dev libcli11-dev libfmt-dev
   libgtest-dev
 )

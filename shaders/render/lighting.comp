@@ -15,24 +15,12 @@ layout(set = 0, binding = 4) uniform sampler2D gDepth;
 layout(set = 0, binding = 5) uniform sampler2DArrayShadow shadowMaps;
 layout(set = 0, binding = 6, rgba32f) uniform writeonly image2D outImage;
 
+#include "shadow/shadow_lookup.glsl"
+
 vec3 worldPosition(ivec2 pixel, float depth) {
     vec2 ndc = (vec2(pixel) + 0.5) / vec2(frame.size.xy) * 2.0 - 1.0;
     vec4 p = frame.invViewProj * vec4(ndc, depth, 1.0);
     return p.xyz / p.w;
-}
-
-// Visibility from the light's standard shadow map; the receiver is pushed along its normal by a
-// number of shadow texels (normal offset), which removes acne on slopes without peter-panning.
-float shadowVisibility(GpuLight light, vec3 p, vec3 n) {
-    if (light.radiance.w == NO_SHADOW) return 1.0;
-    float texel = light.shadow.x;
-    if (light.spot.w > 0.5) texel *= max(dot(p - light.position.xyz, light.direction.xyz), 0.0);
-    vec4 clip = light.shadowViewProj * vec4(p + n * (light.spot.z * texel), 1.0);
-    vec3 ndc = clip.xyz / clip.w;
-    vec2 uv = ndc.xy * 0.5 + 0.5;
-    if (clip.w <= 0.0 || any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))) || ndc.z > 1.0)
-        return 1.0;
-    return texture(shadowMaps, vec4(uv, light.radiance.w, ndc.z));
 }
 
 void main() {

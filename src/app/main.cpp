@@ -1,4 +1,5 @@
 // penumbra command line: `render` (headless, PNG/EXR) and `info` (devices and required features).
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 
@@ -21,16 +22,27 @@ struct RenderOptions {
     std::vector<std::string> lights;
     std::string aov = "direct";
     bool printPasses = false;
+    int frames = 1;
     bool quiet = false;
 };
 
-void printTimings(const Renderer& r) {
-    double total = 0.0;
-    for (const vk::ScopeTiming& t : r.timings()) {
-        fmt::print("  {:<22} {:8.3f} ms\n", t.name, t.ms);
-        total += t.ms;
-    }
-    fmt::print("  {:<22} {:8.3f} ms\n", "total", total);
+// Per-pass median over the rendered frames (the first frame, which warms caches, included only
+// when it is the only one).
+void printTimings(const std::vector<std::vector<vk::ScopeTiming>>& frames) {
+    const size_t first = frames.size() > 1 ? 1 : 0;
+    auto median = [&](auto value) {
+        std::vector<double> v;
+        for (size_t f = first; f < frames.size(); ++f) v.push_back(value(frames[f]));
+        std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+        return v[v.size() / 2];
+    };
+    for (size_t i = 0; i < frames[0].size(); ++i)
+        fmt::print("  {:<22} {:8.3f} ms\n", frames[0][i].name, median([&](const auto& t) { return t[i].ms; }));
+    fmt::print("  {:<22} {:8.3f} ms\n", "total", median([](const auto& t) {
+                   double sum = 0.0;
+                   for (const vk::ScopeTiming& s : t) sum += s.ms;
+                   return sum;
+               }));
 }
 
 int runRender(const RenderOptions& o, const vk::ContextOptions& vkOptions, RenderSettings settings) {
@@ -56,15 +68,20 @@ int runRender(const RenderOptions& o, const vk::ContextOptions& vkOptions, Rende
     vk::Context ctx(vkOptions);
     Renderer renderer(ctx, scene, settings);
     for (const std::string& w : renderer.warnings()) fmt::print(stderr, "penumbra: warning: {}\n", w);
-    renderer.render(camera);
+    std::vector<std::vector<vk::ScopeTiming>> timings;
+    for (int f = 0; f < o.frames; ++f) {
+        renderer.render(camera);
+        timings.push_back(renderer.timings());
+    }
     if (ext == ".png") writePng(o.output, settings.width, settings.height, renderer.readLdr());
     else writeExr(o.output, settings.width, settings.height, renderer.readHdr());
     if (!o.quiet) {
         fmt::print("penumbra: rendered '{}' ({} triangles, {} lights) on {} at {}x{} -> {}\n", scene.name,
                    scene.triangleCount(), scene.lights.size(), ctx.info().name, settings.width, settings.height,
                    o.output);
-        fmt::print("GPU time per pass:\n");
-        printTimings(renderer);
+        fmt::print("GPU time per pass{}:\n",
+                   o.frames > 1 ? fmt::format(" (median of {} frames after 1 warm-up)", o.frames - 1) : "");
+        printTimings(timings);
         if (o.printPasses) fmt::print("passes:\n{}", renderer.describePasses());
         const Bounds& b = scene.bounds;
         fmt::print("scene bounds ({:.3g}, {:.3g}, {:.3g}) .. ({:.3g}, {:.3g}, {:.3g}); camera eye ({:.3g}, {:.3g}, {:.3g})\n",
@@ -117,6 +134,8 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(0.0, 100.0));
     render->add_option("--shadow-normal-offset", rs.shadow.normalOffset, "Receiver normal offset in shadow texels")
         ->check(CLI::Range(0.0, 100.0));
+    render->add_option("--frames", ro.frames, "Frames to render; timings are the median after the first")
+        ->check(CLI::Range(1, 100000));
     render->add_flag("--print-passes", ro.printPasses, "Print the frame's passes with their inputs and outputs");
     render->add_flag("-q,--quiet", ro.quiet, "Print nothing but warnings and errors");
     CLI::App* info = app.add_subcommand("info", "List Vulkan devices and the features penumbra needs");

@@ -126,25 +126,43 @@ VkBool32 debugCallback(VkDebugUtilsMessageSeverityFlagBitsEXT severity, VkDebugU
     return VK_FALSE;
 }
 
+namespace {
+
+void destroyHandles(VkInstance instance, VkDebugUtilsMessengerEXT messenger, VkDevice device) {
+    if (device) vkDestroyDevice(device, nullptr);
+    if (messenger) {
+        auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+            vkGetInstanceProcAddr(instance, "vkDestroyDebugUtilsMessengerEXT"));
+        if (destroy) destroy(instance, messenger, nullptr);
+    }
+    if (instance) vkDestroyInstance(instance, nullptr);
+}
+
+}  // namespace
+
+// A constructor that throws never runs the destructor: release what was already created (e.g. the
+// instance when the device lacks a feature), so callers that catch the error do not leak it.
 Context::Context(const ContextOptions& options) : options_(options) {
-    createInstance(options.validate);
-    pickDevice(options.device);
-    createDevice();
+    try {
+        createInstance(options.validate);
+        pickDevice(options.device);
+        createDevice();
+    } catch (...) {
+        destroyHandles(instance_, messenger_, device_);
+        throw;
+    }
 }
 
 Context::Context(const ContextOptions& options, InstanceOnly) : options_(options) {
-    createInstance(options.validate);
+    try {
+        createInstance(options.validate);
+    } catch (...) {
+        destroyHandles(instance_, messenger_, device_);
+        throw;
+    }
 }
 
-Context::~Context() {
-    if (device_) vkDestroyDevice(device_, nullptr);
-    if (messenger_) {
-        auto destroy = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
-            vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
-        if (destroy) destroy(instance_, messenger_, nullptr);
-    }
-    if (instance_) vkDestroyInstance(instance_, nullptr);
-}
+Context::~Context() { destroyHandles(instance_, messenger_, device_); }
 
 void Context::createInstance(bool validate) {
     if (validate) {

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Prepares what a run on the GPU machine needs (see README, "Running on the GPU machine"):
+# .gl/ holds the Vulkan loader packages (the machine has none), .device/ the portable penumbra binary,
+# the shared libraries it links that the machine lacks, and the test assets. Both folders are ignored.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+if ! ls .gl/libvulkan1_*.deb >/dev/null 2>&1; then
+  mkdir -p .gl /tmp/amd64/partial
+  o='-oAPT::Architecture=amd64 -oAPT::Architectures=amd64 -oDir::State::Lists=/tmp/amd64'
+  apt-get $o update -qq
+  (cd .gl && apt-get $o download -qq libvulkan1 libegl1 libglvnd0 libopengl0 libgl1 libglx0 libgles2)
+fi
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPENUMBRA_PORTABLE=ON >/dev/null
+cmake --build build -j"$(nproc)" --target penumbra
+rm -rf .device && mkdir -p .device/lib .device/assets
+cp build/penumbra .device/
+for lib in libfmt.so.9 libtinyexr.so.1d libtinygltf.so.2d libstb.so.0 libz.so.1; do
+  cp -L "/lib/x86_64-linux-gnu/$lib" .device/lib/
+done
+[ -d ../shared/assets ] && cp -r ../shared/assets/VC .device/assets/
+cat > .device/env.sh <<'EOS'
+# Sourced first in every device command: unpack the Vulkan loader, find the carried libraries.
+for f in .gl/*.deb; do dpkg -x "$f" /; done; ldconfig
+export LD_LIBRARY_PATH=$PWD/.device/lib
+EOS
+du -sh .gl .device

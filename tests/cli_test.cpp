@@ -1,0 +1,303 @@
+// End-to-end tests of the penumbra executable (PENUMBRA_BIN) run as a child process on lavapipe:
+// successful PNG/EXR renders read back from disk, help and info, and for every bad input exactly one
+// "penumbra: error:" line on stderr with a non-zero exit status (never a crash or a hang).
+#include <algorithm>
+#include <atomic>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+#include <stb_image.h>
+#include <tinyexr.h>
+
+extern char** environ;
+
+namespace fs = std::filesystem;
+
+namespace {
+
+constexpr int kTimeoutSeconds = 60;
+
+struct ProcessResult {
+    bool started = false;
+    bool timedOut = false;
+    bool signaled = false;  // terminated by a signal (crash)
+    int signal = 0;
+    int exitCode = -1;
+    std::string out, err;
+};
+
+std::string describe(const ProcessResult& r) {
+    std::string s;
+    if (!r.started) return "could not start the process";
+    if (r.timedOut) s += "TIMED OUT; ";
+    if (r.signaled) s += "killed by signal " + std::to_string(r.signal) + " (" + strsignal(r.signal) + "); ";
+    else s += "exit code " + std::to_string(r.exitCode) + "; ";
+    return s + "stdout:\n" + r.out + "\nstderr:\n" + r.err;
+}
+
+// Runs PENUMBRA_BIN with `args`, the current environment plus lavapipe and `extraEnv`, capturing both
+// output streams; kills the child and reports a timeout after kTimeoutSeconds.
+ProcessResult runPenumbra(const std::vector<std::string>& args, const std::vector<std::string>& extraEnv = {}) {
+    ProcessResult r;
+    // Everything the child needs is built before fork(): after it only async-signal-safe calls follow.
+    std::vector<std::string> env;
+    for (char** e = environ; *e; ++e) {
+        const std::string kv = *e;
+        if (kv.rfind("VK_DRIVER_FILES=", 0) == 0 || kv.rfind("VK_ICD_FILENAMES=", 0) == 0 ||
+            kv.rfind("PENUMBRA_HIDE_FEATURES=", 0) == 0)
+            continue;
+        env.push_back(kv);
+    }
+    env.push_back("VK_DRIVER_FILES=/usr/share/vulkan/icd.d/lvp_icd.x86_64.json");
+    for (const std::string& kv : extraEnv) env.push_back(kv);
+    std::vector<char*> envp;
+    for (std::string& kv : env) envp.push_back(kv.data());
+    envp.push_back(nullptr);
+    std::vector<std::string> argStrings{PENUMBRA_BIN};
+    argStrings.insert(argStrings.end(), args.begin(), args.end());
+    std::vector<char*> argv;
+    for (std::string& a : argStrings) argv.push_back(a.data());
+    argv.push_back(nullptr);
+
+    int outPipe[2], errPipe[2];
+    if (pipe2(outPipe, O_CLOEXEC) != 0) return r;
+    if (pipe2(errPipe, O_CLOEXEC) != 0) {
+        close(outPipe[0]), close(outPipe[1]);
+        return r;
+    }
+    const pid_t pid = fork();
+    if (pid < 0) {
+        for (int fd : {outPipe[0], outPipe[1], errPipe[0], errPipe[1]}) close(fd);
+        return r;
+    }
+    if (pid == 0) {
+        dup2(outPipe[1], STDOUT_FILENO);
+        dup2(errPipe[1], STDERR_FILENO);
+        const int devnull = open("/dev/null", O_RDONLY);
+        if (devnull >= 0) dup2(devnull, STDIN_FILENO);
+        execve(argv[0], argv.data(), envp.data());
+        _exit(127);
+    }
+    r.started = true;
+    close(outPipe[1]);
+    close(errPipe[1]);
+
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(kTimeoutSeconds);
+    pollfd fds[2] = {{outPipe[0], POLLIN, 0}, {errPipe[0], POLLIN, 0}};
+    std::string* sinks[2] = {&r.out, &r.err};
+    int openStreams = 2;
+    while (openStreams > 0) {
+        const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now());
+        if (left.count() <= 0) {
+            r.timedOut = true;
+            break;
+        }
+        const int n = poll(fds, 2, int(left.count()));
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            break;
+        }
+        for (int i = 0; i < 2; ++i) {
+            if (fds[i].fd < 0 || !(fds[i].revents & (POLLIN | POLLHUP | POLLERR))) continue;
+            char buf[4096];
+            const ssize_t got = read(fds[i].fd, buf, sizeof(buf));
+            if (got > 0) {
+                sinks[i]->append(buf, size_t(got));
+            } else if (got == 0 || errno != EINTR) {
+                close(fds[i].fd);
+                fds[i].fd = -1;
+                --openStreams;
+            }
+        }
+    }
+    for (pollfd& f : fds)
+        if (f.fd >= 0) close(f.fd);
+
+    int status = 0;
+    if (r.timedOut) {
+        kill(pid, SIGKILL);
+        waitpid(pid, &status, 0);
+        return r;
+    }
+    // Streams are closed; the child exits right after, but keep the deadline for the wait as well.
+    while (true) {
+        const pid_t w = waitpid(pid, &status, WNOHANG);
+        if (w == pid) break;
+        if (std::chrono::steady_clock::now() > deadline) {
+            r.timedOut = true;
+            kill(pid, SIGKILL);
+            waitpid(pid, &status, 0);
+            return r;
+        }
+        usleep(1000);
+    }
+    if (WIFSIGNALED(status)) {
+        r.signaled = true;
+        r.signal = WTERMSIG(status);
+    } else if (WIFEXITED(status)) {
+        r.exitCode = WEXITSTATUS(status);
+    }
+    return r;
+}
+
+struct TempDir {
+    fs::path path;
+    TempDir() {
+        static std::atomic<int> counter{0};
+        path = fs::temp_directory_path() /
+               ("penumbra_cli_test_" + std::to_string(getpid()) + "_" + std::to_string(counter++));
+        fs::create_directories(path);
+    }
+    ~TempDir() {
+        std::error_code ec;
+        fs::remove_all(path, ec);
+    }
+    std::string file(const std::string& name) const { return (path / name).string(); }
+};
+
+void expectCleanExit(const ProcessResult& r) {
+    ASSERT_TRUE(r.started);
+    EXPECT_FALSE(r.timedOut) << describe(r);
+    EXPECT_FALSE(r.signaled) << describe(r);
+    EXPECT_EQ(r.exitCode, 0) << describe(r);
+}
+
+}  // namespace
+
+TEST(Cli, RendersPngOfRequestedSize) {
+    TempDir tmp;
+    const std::string out = tmp.file("cornell.png");
+    const ProcessResult r = runPenumbra({"render", "cornell", "-o", out, "--width", "64", "--height", "48", "--validate"});
+    expectCleanExit(r);
+    EXPECT_EQ(r.err, "") << "nothing on stderr with --validate: " << describe(r);
+    int w = 0, h = 0, channels = 0;
+    unsigned char* pixels = stbi_load(out.c_str(), &w, &h, &channels, 4);
+    ASSERT_NE(pixels, nullptr) << "cannot read back " << out << ": " << stbi_failure_reason();
+    EXPECT_EQ(w, 64);
+    EXPECT_EQ(h, 48);
+    size_t lit = 0;
+    for (int i = 0; i < w * h; ++i) lit += pixels[i * 4] > 0 || pixels[i * 4 + 1] > 0 || pixels[i * 4 + 2] > 0;
+    stbi_image_free(pixels);
+    EXPECT_GT(lit, size_t(w * h / 2)) << "the Cornell box should be mostly lit";
+}
+
+TEST(Cli, RendersExrWithFiniteNonNegativeValues) {
+    TempDir tmp;
+    const std::string out = tmp.file("cornell.exr");
+    const ProcessResult r = runPenumbra({"render", "cornell", "-o", out, "--width", "64", "--height", "48", "--validate"});
+    expectCleanExit(r);
+    EXPECT_EQ(r.err, "") << describe(r);
+    float* rgba = nullptr;
+    int w = 0, h = 0;
+    const char* err = nullptr;
+    const int rc = LoadEXR(&rgba, &w, &h, out.c_str(), &err);
+    ASSERT_EQ(rc, TINYEXR_SUCCESS) << (err ? err : "LoadEXR failed");
+    EXPECT_EQ(w, 64);
+    EXPECT_EQ(h, 48);
+    size_t bad = 0, positive = 0;
+    for (int i = 0; i < w * h; ++i) {
+        for (int c = 0; c < 3; ++c) bad += !std::isfinite(rgba[i * 4 + c]) || rgba[i * 4 + c] < 0.0f;
+        positive += rgba[i * 4] > 0.0f;
+    }
+    free(rgba);
+    EXPECT_EQ(bad, 0u);
+    EXPECT_GT(positive, size_t(w * h / 2));
+}
+
+TEST(Cli, HelpPrintsUsage) {
+    for (const std::vector<std::string>& args : {std::vector<std::string>{"--help"}, {"render", "--help"}}) {
+        SCOPED_TRACE(args.back() + " after " + args.front());
+        const ProcessResult r = runPenumbra(args);
+        expectCleanExit(r);
+        EXPECT_NE(r.out.find("Usage:"), std::string::npos) << describe(r);
+    }
+    const ProcessResult r = runPenumbra({"render", "--help"});
+    for (const char* option : {"--width", "--height", "--output", "--aov", "--camera", "--light"})
+        EXPECT_NE(r.out.find(option), std::string::npos) << option << " missing from render --help";
+}
+
+TEST(Cli, InfoListsADevice) {
+    const ProcessResult r = runPenumbra({"info"});
+    expectCleanExit(r);
+    EXPECT_NE(r.out.find("device 0:"), std::string::npos) << describe(r);
+    EXPECT_NE(r.out.find("usable"), std::string::npos) << describe(r);
+}
+
+// ---- Bad inputs: exit status != 0, exactly one stderr line "penumbra: error: ...", no output file ----
+
+struct BadInput {
+    std::string name;
+    std::vector<std::string> args;  // "{out}" is the output path in a temp dir, "{dir}" the temp dir
+    std::string mentions;           // a word the error line must contain
+    std::vector<std::string> env;
+};
+
+class CliBadInput : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(CliBadInput, OneErrorLineAndNonZeroExit) {
+    const BadInput& c = GetParam();
+    TempDir tmp;
+    const std::string out = tmp.file("out.png");
+    {  // Inputs some cases refer to.
+        std::ofstream garbage(tmp.file("garbage.gltf"), std::ios::binary);
+        garbage << "\x89this is { not [ a glTF \x01\x02\x03 file at all";
+    }
+    std::vector<std::string> args;
+    for (std::string a : c.args) {
+        if (a == "{out}") a = out;
+        else if (a.rfind("{dir}", 0) == 0) a = tmp.path.string() + a.substr(5);
+        args.push_back(a);
+    }
+    const ProcessResult r = runPenumbra(args, c.env);
+    ASSERT_TRUE(r.started);
+    EXPECT_FALSE(r.timedOut) << describe(r);
+    EXPECT_FALSE(r.signaled) << describe(r);
+    EXPECT_NE(r.exitCode, 0) << describe(r);
+    EXPECT_EQ(r.err.rfind("penumbra: error:", 0), 0u) << describe(r);
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << "expected exactly one line:\n" << r.err;
+    EXPECT_EQ(r.err.back(), '\n') << r.err;
+    EXPECT_NE(r.err.find(c.mentions), std::string::npos) << "the error should mention '" << c.mentions
+                                                         << "':\n" << r.err;
+    EXPECT_FALSE(fs::exists(out)) << "an output file was written despite the error";
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    Cli, CliBadInput,
+    ::testing::Values(
+        BadInput{"MissingSceneFile", {"render", "{dir}/no-such-scene.gltf", "-o", "{out}"}, "no-such-scene.gltf"},
+        BadInput{"MalformedGltf", {"render", "{dir}/garbage.gltf", "-o", "{out}"}, "garbage.gltf"},
+        BadInput{"UnknownBuiltinScene", {"render", "nosuchscene", "-o", "{out}"}, "nosuchscene"},
+        BadInput{"UnknownOption", {"render", "cornell", "-o", "{out}", "--frobnicate"}, "--frobnicate"},
+        BadInput{"WidthZero", {"render", "cornell", "-o", "{out}", "--width", "0"}, "--width"},
+        BadInput{"HeightNegative", {"render", "cornell", "-o", "{out}", "--height", "-5"}, "--height"},
+        BadInput{"WidthNotANumber", {"render", "cornell", "-o", "{out}", "--width", "abc"}, "--width"},
+        BadInput{"JpgOutput", {"render", "cornell", "-o", "{dir}/out.jpg"}, ".jpg"},
+        BadInput{"UnwritableOutput",
+                 {"render", "cornell", "-o", "/nonexistent-dir/x.png", "--width", "32", "--height", "24"},
+                 "/nonexistent-dir/x.png"},
+        BadInput{"BadCamera", {"render", "cornell", "-o", "{out}", "--camera", "0,1,5,0,1"}, "--camera"},
+        BadInput{"BadCameraNumber", {"render", "cornell", "-o", "{out}", "--camera", "0,1,5,0,1,0,0,1,0,x"},
+                 "--camera"},
+        BadInput{"BadLight", {"render", "cornell", "-o", "{out}", "--light", "laser,1,2,3"}, "--light"},
+        BadInput{"BadLightNumber", {"render", "cornell", "-o", "{out}", "--light", "directional,0,-1,0,bright"},
+                 "--light"},
+        BadInput{"UnknownAov", {"render", "cornell", "-o", "{out}", "--aov", "specular"}, "specular"},
+        BadInput{"NoSuchDevice", {"render", "cornell", "-o", "{out}", "--device", "99", "--validate"}, "99"},
+        BadInput{"DeviceMissingFeature",
+                 {"render", "cornell", "-o", "{out}", "--width", "32", "--height", "24", "--validate"},
+                 "dynamicRendering",
+                 {"PENUMBRA_HIDE_FEATURES=dynamicRendering"}}),
+    [](const ::testing::TestParamInfo<BadInput>& info) { return info.param.name; });
