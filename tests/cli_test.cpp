@@ -6,6 +6,7 @@
 #include <cerrno>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -191,7 +192,7 @@ TEST(Cli, RendersPngOfRequestedSize) {
     size_t lit = 0;
     for (int i = 0; i < w * h; ++i) lit += pixels[i * 4] > 0 || pixels[i * 4 + 1] > 0 || pixels[i * 4 + 2] > 0;
     stbi_image_free(pixels);
-    EXPECT_GT(lit, size_t(w * h / 2)) << "the Cornell box should be mostly lit";
+    EXPECT_GT(lit, size_t(w * h / 4)) << "too little of the Cornell box is lit";
 }
 
 TEST(Cli, RendersExrWithFiniteNonNegativeValues) {
@@ -214,7 +215,7 @@ TEST(Cli, RendersExrWithFiniteNonNegativeValues) {
     }
     free(rgba);
     EXPECT_EQ(bad, 0u);
-    EXPECT_GT(positive, size_t(w * h / 2));
+    EXPECT_GT(positive, size_t(w * h / 4));
 }
 
 TEST(Cli, HelpPrintsUsage) {
@@ -244,6 +245,9 @@ struct BadInput {
     std::string mentions;           // a word the error line must contain
     std::vector<std::string> env;
 };
+
+// gtest prints parameters on failure and in the CTest names: the case name is enough.
+void PrintTo(const BadInput& c, std::ostream* os) { *os << c.name; }
 
 class CliBadInput : public ::testing::TestWithParam<BadInput> {};
 

@@ -89,8 +89,11 @@ TEST_F(GpuTest, LambertDirectionalMatchesClosedForm) {
     const FloatImage albedo = renderImage(scene, cam, W, H, Aov::Albedo);
 
     const double expected = kAlbedo * kE * std::cos(kZenith) / kPi;
+    // The albedo AOV must show sRGB8 code 188 (neighbouring codes are ~0.006 away); lavapipe's sRGB
+    // decode itself is approximate to ~1e-3, so allow a quarter of a code step.
+    const double albedoTolerance = 0.25 * (srgbToLinear(188.0 / 255.0) - srgbToLinear(187.0 / 255.0));
     size_t covered = 0, bad = 0, albedoBad = 0;
-    double maxRel = 0.0;
+    double maxRel = 0.0, maxAlbedoErr = 0.0, maxShadingRel = 0.0;
     for (uint32_t y = 0; y < H; ++y)
         for (uint32_t x = 0; x < W; ++x) {
             if (!planePoint(cam, W, H, x, y, kHalf)) continue;
@@ -99,15 +102,23 @@ TEST_F(GpuTest, LambertDirectionalMatchesClosedForm) {
                 const double rel = std::abs(direct.at(x, y, c) - expected) / expected;
                 maxRel = std::max(maxRel, rel);
                 if (rel > 0.01) ++bad;
-                if (std::abs(albedo.at(x, y, c) - kAlbedo) > 1e-4) ++albedoBad;
+                const double a = albedo.at(x, y, c);
+                maxAlbedoErr = std::max(maxAlbedoErr, std::abs(a - kAlbedo));
+                if (std::abs(a - kAlbedo) > albedoTolerance) ++albedoBad;
+                // Shading alone: against the albedo the G-buffer actually delivered.
+                const double fromAov = a * kE * std::cos(kZenith) / kPi;
+                maxShadingRel = std::max(maxShadingRel, std::abs(direct.at(x, y, c) - fromAov) / fromAov);
             }
         }
     RecordProperty("max_relative_error", fmt::format("{:.3e}", maxRel));
-    std::printf("[lambert directional] expected %.6f, max relative error %.3e over %zu pixels\n", expected, maxRel,
-                covered);
+    std::printf("[lambert directional] expected %.6f: max relative error %.3e over %zu pixels (%.3e against the "
+                "albedo AOV; albedo AOV off by at most %.2e)\n",
+                expected, maxRel, covered, maxShadingRel, maxAlbedoErr);
     EXPECT_EQ(covered, size_t(W) * H) << "the plane should fill the whole frame";
     EXPECT_EQ(bad, 0u) << "channel values off by more than 1%; max relative error " << maxRel;
-    EXPECT_EQ(albedoBad, 0u) << "albedo AOV differs from the sRGB8-exact input albedo " << kAlbedo;
+    EXPECT_LT(maxShadingRel, 0.01);
+    EXPECT_EQ(albedoBad, 0u) << "albedo AOV is not the sRGB8 code of the input albedo " << kAlbedo
+                             << "; max difference " << maxAlbedoErr;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -180,9 +191,10 @@ struct ShadowTruth {
 };
 
 struct ShadowStats {
-    size_t compared = 0, matched = 0, shadowed = 0, lit = 0;
+    size_t compared = 0, matched = 0, shadowed = 0, lit = 0, shadowedMatched = 0;
     size_t occluderPixels = 0, nearEdge = 0, geometryMismatch = 0;
     double matchFraction() const { return compared ? double(matched) / double(compared) : 0.0; }
+    double shadowedMatchFraction() const { return shadowed ? double(shadowedMatched) / double(shadowed) : 0.0; }
 };
 
 ShadowStats compareShadow(const FloatImage& shadow, const FloatImage& depth, const Camera& cam, double planeHalf,
@@ -217,18 +229,21 @@ ShadowStats compareShadow(const FloatImage& shadow, const FloatImage& depth, con
             ++s.compared;
             (t.shadowed ? s.shadowed : s.lit)++;
             const bool renderedShadowed = shadow.at(x, y) < 0.5f;
-            if (renderedShadowed == t.shadowed) ++s.matched;
+            if (renderedShadowed == t.shadowed) ++s.matched, s.shadowedMatched += t.shadowed;
         }
     return s;
 }
 
 void reportShadow(const char* label, const ShadowStats& s, uint32_t W, uint32_t H) {
-    std::printf("[%s] %zu/%zu pixels match (%.3f%%): %zu shadowed, %zu lit; %zu near the edge, %zu occluder, "
-                "%zu silhouette\n",
-                label, s.matched, s.compared, 100.0 * s.matchFraction(), s.shadowed, s.lit, s.nearEdge,
-                s.occluderPixels, s.geometryMismatch);
+    std::printf("[%s] %zu/%zu pixels match (%.3f%%; %zu/%zu shadowed ones); %zu lit; left out: %zu within 2 texels "
+                "of the edge, %zu occluder, %zu silhouette\n",
+                label, s.matched, s.compared, 100.0 * s.matchFraction(), s.shadowedMatched, s.shadowed, s.lit,
+                s.nearEdge, s.occluderPixels, s.geometryMismatch);
     ::testing::Test::RecordProperty("match_percent", fmt::format("{:.3f}", 100.0 * s.matchFraction()));
     EXPECT_GE(s.matchFraction(), 0.995);
+    // The shadow is a small part of the view: judge it on its own too, so a missing or misplaced
+    // shadow cannot hide behind the many lit pixels.
+    EXPECT_GE(s.shadowedMatchFraction(), 0.99);
     EXPECT_GT(s.shadowed, 500u) << "too little shadow in view to judge";
     EXPECT_GT(s.lit, 500u);
     EXPECT_GT(s.occluderPixels, 100u) << "the occluder should be in view";
@@ -247,13 +262,16 @@ Scene shadowScene() {
 
 Camera shadowCamera() {
     Camera c;
-    c.eye = {0.0f, 6.0f, 3.0f};
-    c.target = {0.0f, 0.0f, 0.3f};
-    c.fovy = float(50.0 * kDeg);
+    c.eye = {0.0f, 4.5f, 2.6f};
+    c.target = {-0.1f, 0.0f, 0.4f};
+    c.fovy = float(45.0 * kDeg);
     return c;
 }
 
 }  // namespace
+
+// Judged at the default shadow-map resolution and at a coarse one, where the texel band is wide.
+constexpr uint32_t kShadowResolutions[] = {ShadowSettings{}.resolution, 256};
 
 TEST_F(GpuTest, DirectionalShadowMatchesAnalyticProjection) {
     constexpr uint32_t W = 192, H = 144;
@@ -266,20 +284,24 @@ TEST_F(GpuTest, DirectionalShadowMatchesAnalyticProjection) {
     scene.lights.push_back(sun);
     scene.computeBounds();
     const Camera cam = shadowCamera();
-    ShadowSettings shadow;  // the defaults users get
-    const LightProjection proj = directionalProjection(sun.direction, scene.bounds, shadow.resolution);
+    for (uint32_t resolution : kShadowResolutions) {
+        SCOPED_TRACE(fmt::format("shadow map {0}x{0}", resolution));
+        ShadowSettings shadow;
+        shadow.resolution = resolution;
+        const LightProjection proj = directionalProjection(sun.direction, scene.bounds, shadow.resolution);
 
-    const FloatImage vis = renderImage(scene, cam, W, H, Aov::Shadow, shadow);
-    const FloatImage depth = renderImage(scene, cam, W, H, Aov::Depth, shadow);
+        const FloatImage vis = renderImage(scene, cam, W, H, Aov::Shadow, shadow);
+        const FloatImage depth = renderImage(scene, cam, W, H, Aov::Depth, shadow);
 
-    const dvec3 toLight = -glm::normalize(dvec3(sun.direction));
-    const double band = 2.0 * proj.texelSize / toLight.y;  // a texel stretches by 1/cos on the plane
-    const ShadowStats s = compareShadow(vis, depth, cam, kShadowPlaneHalf, kOccluder, [&](const dvec3& p) {
-        const dvec3 q = p + toLight * ((kOccluder.y - p.y) / toLight.y);  // towards the light, at occluder height
-        // The shadow is the occluder translated along the light, so distances carry over unchanged.
-        return ShadowTruth{true, kOccluder.contains(q), kOccluder.boundaryDistance(q), band};
-    });
-    reportShadow("directional shadow", s, W, H);
+        const dvec3 toLight = -glm::normalize(dvec3(sun.direction));
+        const double band = 2.0 * proj.texelSize / toLight.y;  // a texel stretches by 1/cos on the plane
+        const ShadowStats s = compareShadow(vis, depth, cam, kShadowPlaneHalf, kOccluder, [&](const dvec3& p) {
+            const dvec3 q = p + toLight * ((kOccluder.y - p.y) / toLight.y);  // towards the light, at occluder height
+            // The shadow is the occluder translated along the light, so distances carry over unchanged.
+            return ShadowTruth{true, kOccluder.contains(q), kOccluder.boundaryDistance(q), band};
+        });
+        reportShadow(fmt::format("directional shadow, {} map", resolution).c_str(), s, W, H);
+    }
 }
 
 TEST_F(GpuTest, SpotShadowMatchesAnalyticProjection) {
@@ -296,29 +318,33 @@ TEST_F(GpuTest, SpotShadowMatchesAnalyticProjection) {
     scene.lights.push_back(spot);
     scene.computeBounds();
     const Camera cam = shadowCamera();
-    ShadowSettings shadow;
-    const LightProjection proj = spotProjection(spot, scene.bounds, shadow.resolution);
+    for (uint32_t resolution : kShadowResolutions) {
+        SCOPED_TRACE(fmt::format("shadow map {0}x{0}", resolution));
+        ShadowSettings shadow;
+        shadow.resolution = resolution;
+        const LightProjection proj = spotProjection(spot, scene.bounds, shadow.resolution);
 
-    const FloatImage vis = renderImage(scene, cam, W, H, Aov::Shadow, shadow);
-    const FloatImage depth = renderImage(scene, cam, W, H, Aov::Depth, shadow);
+        const FloatImage vis = renderImage(scene, cam, W, H, Aov::Shadow, shadow);
+        const FloatImage depth = renderImage(scene, cam, W, H, Aov::Depth, shadow);
 
-    const dvec3 lpos(spot.position), axis = glm::normalize(dvec3(spot.direction));
-    const double innerLimit = spot.innerConeAngle - 0.5 * kDeg;
-    const ShadowStats s = compareShadow(vis, depth, cam, kShadowPlaneHalf, kOccluder, [&](const dvec3& p) {
-        ShadowTruth t;
-        const dvec3 toLight = lpos - p;
-        const dvec3 l = glm::normalize(toLight);
-        // Judge only where the light is at full strength (inside the inner cone).
-        t.compare = std::acos(std::clamp(glm::dot(-l, axis), -1.0, 1.0)) < innerLimit;
-        const dvec3 q = p + toLight * ((kOccluder.y - p.y) / toLight.y);
-        t.shadowed = kOccluder.contains(q);
-        // Central projection from the light: occluder-plane distances scale by Ly / (Ly - h) on the plane.
-        t.edgeDistance = kOccluder.boundaryDistance(q) * lpos.y / (lpos.y - kOccluder.y);
-        // Perspective texel: texelSize per unit of depth along the axis, stretched by 1/cos on the plane.
-        t.band = 2.0 * proj.texelSize * glm::dot(p - lpos, axis) / l.y;
-        return t;
-    });
-    reportShadow("spot shadow", s, W, H);
+        const dvec3 lpos(spot.position), axis = glm::normalize(dvec3(spot.direction));
+        const double innerLimit = spot.innerConeAngle - 0.5 * kDeg;
+        const ShadowStats s = compareShadow(vis, depth, cam, kShadowPlaneHalf, kOccluder, [&](const dvec3& p) {
+            ShadowTruth t;
+            const dvec3 toLight = lpos - p;
+            const dvec3 l = glm::normalize(toLight);
+            // Judge only where the light is at full strength (inside the inner cone).
+            t.compare = std::acos(std::clamp(glm::dot(-l, axis), -1.0, 1.0)) < innerLimit;
+            const dvec3 q = p + toLight * ((kOccluder.y - p.y) / toLight.y);
+            t.shadowed = kOccluder.contains(q);
+            // Central projection from the light: occluder-plane distances scale by Ly / (Ly - h) on the plane.
+            t.edgeDistance = kOccluder.boundaryDistance(q) * lpos.y / (lpos.y - kOccluder.y);
+            // Perspective texel: texelSize per unit of depth along the axis, stretched by 1/cos on the plane.
+            t.band = 2.0 * proj.texelSize * glm::dot(p - lpos, axis) / l.y;
+            return t;
+        });
+        reportShadow(fmt::format("spot shadow, {} map", resolution).c_str(), s, W, H);
+    }
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -352,12 +378,12 @@ TEST_F(GpuTest, CornellEveryAovValidatesAndReportsTimings) {
                     outOfRange += std::abs(len - 1.0f) > 1e-3f && len != 0.0f;
                     break;
                 }
-                case Aov::Depth: outOfRange += !(px[0] > 0.0f); break;
+                case Aov::Depth: outOfRange += !(px[0] > 0.0f); break;  // the background reads the far plane
             }
         }
         EXPECT_EQ(nonFinite, 0u);
         EXPECT_EQ(outOfRange, 0u);
-        EXPECT_GT(nonZero, size_t(W) * H / 2);
+        EXPECT_GT(nonZero, size_t(W) * H / 4);  // about a third is background or faces away from the spot
 
         std::set<std::string> names;
         for (const vk::ScopeTiming& t : r.timings) {
@@ -402,4 +428,24 @@ TEST(DeviceFeatures, MissingFeatureThrowsVulkanErrorNamingIt) {
     vk::Context ctx(options);
     EXPECT_TRUE(ctx.info().missing.empty());
     EXPECT_EQ(ctx.validationMessages(), 0u);
+}
+
+// The fixture's "no validation messages" check is only worth something if the layer is really loaded
+// and its messages are counted: provoke one (a buffer with no usage flags) and expect it counted.
+TEST(ValidationLayer, IsActiveAndCountsMessages) {
+    vk::ContextOptions options;
+    options.validate = true;
+    options.quiet = true;
+    vk::Context ctx(options);
+    ASSERT_EQ(ctx.validationMessages(), 0u);
+    VkBufferCreateInfo ci{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+    ci.size = 256;
+    ci.usage = 0;  // VUID-VkBufferCreateInfo-usage-requiredbitmask
+    ci.sharingMode = VK_SHARING_MODE_EXCLUSIVE;
+    VkBuffer buffer = VK_NULL_HANDLE;
+    vkCreateBuffer(ctx.device(), &ci, nullptr, &buffer);
+    if (buffer) vkDestroyBuffer(ctx.device(), buffer, nullptr);
+    EXPECT_GE(ctx.validationMessages(), 1u);
+    ASSERT_FALSE(ctx.validationLog().empty());
+    EXPECT_NE(ctx.validationLog().front().find("usage"), std::string::npos) << ctx.validationLog().front();
 }

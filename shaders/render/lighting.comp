@@ -4,6 +4,7 @@
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
 #include "render/lights.glsl"
+#include "render/reconstruct.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -17,23 +18,17 @@ layout(set = 0, binding = 6, rgba32f) uniform writeonly image2D outImage;
 
 #include "shadow/shadow_lookup.glsl"
 
-vec3 worldPosition(ivec2 pixel, float depth) {
-    vec2 ndc = (vec2(pixel) + 0.5) / vec2(frame.size.xy) * 2.0 - 1.0;
-    vec4 p = frame.invViewProj * vec4(ndc, depth, 1.0);
-    return p.xyz / p.w;
-}
-
 void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(pixel, ivec2(frame.size.xy)))) return;
     float depth = texelFetch(gDepth, pixel, 0).r;
     uint aov = frame.size.w;
-    if (depth >= 1.0) {  // background
-        imageStore(outImage, pixel, vec4(0.0, 0.0, 0.0, aov == AOV_DEPTH ? frame.cameraPos.w : 0.0));
+    if (depth >= 1.0) {  // background: nothing, except the depth AOV which reads the far plane
+        imageStore(outImage, pixel, vec4(vec3(aov == AOV_DEPTH ? frame.cameraPos.w : 0.0), 0.0));
         return;
     }
     vec3 albedo = texelFetch(gAlbedo, pixel, 0).rgb;
-    vec3 p = worldPosition(pixel, depth);
+    vec3 p = pixelWorldPosition(frame, pixel, depth);
     vec3 n = normalize(texelFetch(gNormal, pixel, 0).xyz);
     vec3 toEye = frame.cameraPos.xyz - p;
     if (dot(n, toEye) < 0.0) n = -n;  // two-sided: shade the side the camera sees

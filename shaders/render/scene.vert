@@ -12,9 +12,11 @@ layout(push_constant) uniform Push { DrawPush draw; };
 
 layout(location = 0) out vec3 outNormal;
 layout(location = 1) out vec2 outUv;
+layout(location = 2) out vec3 outWorld;
 
 void main() {
     gl_Position = views.viewProj[draw.viewIndex] * vec4(inPosition, 1.0);
     outNormal = inNormal;
     outUv = inUv;
+    outWorld = inPosition;
 }

@@ -24,7 +24,9 @@ using uint = uint32_t;
 #define AOV_NORMAL 2
 #define AOV_DEPTH 3
 #define AOV_SHADOW 4
-#define AOV_COUNT 5
+#define AOV_FINAL 5     // direct + indirect
+#define AOV_INDIRECT 6  // indirect alone (albedo / pi * gathered irradiance)
+#define AOV_COUNT 7
 
 #define ALPHA_OPAQUE 0
 #define ALPHA_MASK 1
@@ -39,6 +41,8 @@ struct FrameUniforms {
     mat4 invViewProj;
     vec4 cameraPos;  // xyz = eye, w = far plane
     uvec4 size;      // x = width, y = height, z = light count, w = AOV
+    uvec4 options;   // x = indirect irradiance image valid (GI on), yzw unused
+    vec4 lens;       // x = world size of a pixel at unit distance (2 tan(fovy/2) / height), yzw unused
 };
 
 // One light as the lighting pass sees it. Units as in scene.h: directional radiance.rgb is
@@ -74,6 +78,33 @@ struct DrawPush {
 
 struct TonemapPush {
     vec4 params;  // x = exposure or scale, y = bias, z = TONEMAP_* mode, w unused
+};
+
+// Reflective shadow maps (src/rsm): one RSM layer per shadow layer that has one.
+struct GpuRsmLayer {
+    mat4 viewProj;
+    mat4 invViewProj;
+    vec4 params;  // x = texel world size (ortho) or per unit depth (perspective), y = perspective, z = light index
+};
+
+// RSM gather modes (rsm/gather.comp).
+#define RSM_GATHER_FULL 0     // every full-resolution pixel, sampled pattern
+#define RSM_GATHER_LOWRES 1   // one pixel per low-resolution cell, sampled pattern
+#define RSM_GATHER_LIST 2     // the pixels listed by the interpolation pass, sampled pattern
+#define RSM_GATHER_ALL_TEXELS 3  // every full-resolution pixel, every RSM texel (exact reference)
+
+struct RsmPush {
+    uvec4 mode;    // x = RSM_GATHER_*, y = sample count, z = layer count, w = low-resolution factor
+    uvec4 sizes;   // x,y = output size (low-res or full), z = RSM resolution, w unused
+    vec4 params;   // x = normal cos threshold, y = distance threshold in pixel footprints, zw unused
+};
+
+// Push constants of the RSM raster pass.
+struct RsmDrawPush {
+    uint viewIndex;
+    uint material;
+    uint light;   // index into the lights buffer
+    uint layer;   // index into the RSM layers buffer
 };
 
 #ifdef __cplusplus

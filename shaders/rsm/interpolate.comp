@@ -1,0 +1,62 @@
+#version 460
+// The paper's speed-up: each full-resolution pixel takes the irradiance of its four nearest
+// low-resolution gathers (bilinear weights) where those samples saw a surface like its own (normals
+// within a cone, positions within a few pixel footprints); with fewer than three such samples the
+// pixel is appended to a list that rsm/gather.comp (RSM_GATHER_LIST) evaluates in full.
+#extension GL_GOOGLE_include_directive : require
+#include "shared/types.h"
+#include "render/reconstruct.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(set = 0, binding = 0) uniform Frame { FrameUniforms frame; };
+layout(set = 0, binding = 1) uniform sampler2D gNormal;
+layout(set = 0, binding = 2) uniform sampler2D gDepth;
+layout(set = 0, binding = 3) uniform sampler2D lowIrradiance;
+layout(set = 0, binding = 4, rgba16f) uniform writeonly image2D outIrradiance;
+layout(set = 0, binding = 5, std430) buffer PixelList { uvec4 header; uvec2 pixels[]; } list;
+layout(push_constant) uniform Push { RsmPush pc; };
+
+void main() {
+    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(pixel, ivec2(frame.size.xy)))) return;
+    float depth = texelFetch(gDepth, pixel, 0).r;
+    if (depth >= 1.0) {
+        imageStore(outIrradiance, pixel, vec4(0.0));
+        return;
+    }
+    vec3 x = pixelWorldPosition(frame, pixel, depth);
+    vec3 n = normalize(texelFetch(gNormal, pixel, 0).xyz);
+    // Tolerance: a few pixel footprints at this depth (footprint = 2 d tan(fovy/2) / height).
+    float footprint = length(x - frame.cameraPos.xyz) * frame.lens.x;
+    float tolerance = pc.params.y * footprint * float(pc.mode.w);
+
+    int f = int(pc.mode.w);
+    ivec2 lowSize = ivec2(pc.sizes.xy);
+    vec2 c = (vec2(pixel) + 0.5) / float(f) - 0.5;
+    ivec2 base = ivec2(floor(c));
+    vec2 w = c - vec2(base);
+    vec3 sum = vec3(0.0);
+    float weight = 0.0;
+    int valid = 0;
+    for (int k = 0; k < 4; ++k) {
+        ivec2 cell = clamp(base + ivec2(k & 1, k >> 1), ivec2(0), lowSize - 1);
+        ivec2 rep = min(cell * f + f / 2, ivec2(frame.size.xy) - 1);
+        float d = texelFetch(gDepth, rep, 0).r;
+        if (d >= 1.0) continue;
+        vec3 xi = pixelWorldPosition(frame, rep, d);
+        vec3 ni = normalize(texelFetch(gNormal, rep, 0).xyz);
+        if (abs(dot(ni, n)) < pc.params.x || length(xi - x) > tolerance || abs(dot(n, xi - x)) > 0.25 * tolerance)
+            continue;
+        float b = ((k & 1) != 0 ? w.x : 1.0 - w.x) * ((k >> 1) != 0 ? w.y : 1.0 - w.y);
+        sum += b * texelFetch(lowIrradiance, cell, 0).rgb;
+        weight += b;
+        ++valid;
+    }
+    if (valid >= 3 && weight > 1e-4) {
+        imageStore(outIrradiance, pixel, vec4(sum / weight, 1.0));
+    } else {
+        uint slot = atomicAdd(list.header.x, 1u);
+        list.pixels[slot] = uvec2(pixel);
+    }
+}

@@ -1,0 +1,27 @@
+// Virtual point lights read from the RSM arrays, and their irradiance at a receiver.
+// Declared by the includer: rsmDepth, rsmNormal, rsmFlux (sampler2DArray), rsmLayers[].
+#include "shared/octahedral.glsl"
+
+// Irradiance at x (normal n) from the VPL in texel `t` of layer `layer`. A VPL is a small Lambertian
+// reflector of flux phi: radiant intensity phi / pi * cos, so E = phi / pi * cos_p * cos_x / d^2.
+// The seed's formula leaves out the 1/pi (its I_p = phi cos); keeping it makes RSM comparable with a
+// path-traced bounce. d^2 is clamped to the VPL's own footprint so that near VPLs stay finite.
+vec3 vplIrradiance(ivec2 t, uint layer, vec3 x, vec3 n) {
+    float depth = texelFetch(rsmDepth, ivec3(t, layer), 0).r;
+    if (depth >= 1.0) return vec3(0.0);  // no surface in this texel
+    GpuRsmLayer L = rsmLayers[layer];
+    vec2 uv = (vec2(t) + 0.5) / vec2(textureSize(rsmDepth, 0).xy);
+    vec3 xp = unproject(L.invViewProj, uv, depth);
+    vec3 np = octDecode(texelFetch(rsmNormal, ivec3(t, layer), 0).xy);
+    vec3 phi = texelFetch(rsmFlux, ivec3(t, layer), 0).rgb;
+    vec3 v = x - xp;
+    float d2 = dot(v, v);
+    float footprint = L.params.x * L.params.x;
+    if (L.params.y > 0.5) {
+        float z = abs((L.viewProj * vec4(xp, 1.0)).w);  // clip w = depth along the axis
+        footprint *= z * z;
+    }
+    d2 = max(d2, footprint);
+    float geometry = max(dot(np, v), 0.0) * max(dot(n, -v), 0.0) / (d2 * d2);
+    return phi * (geometry / PI);
+}
