@@ -15,6 +15,7 @@ layout(set = 0, binding = 3) uniform sampler2D gNormal;
 layout(set = 0, binding = 4) uniform sampler2D gDepth;
 layout(set = 0, binding = 5) uniform sampler2DArrayShadow shadowMaps;
 layout(set = 0, binding = 6, rgba32f) uniform writeonly image2D outImage;
+layout(set = 0, binding = 7) uniform sampler2D indirectIrradiance;  // GI (frame.options.x != 0)
 
 #include "shadow/shadow_lookup.glsl"
 
@@ -50,9 +51,13 @@ void main() {
         radiance += e * ndotl * v;
     }
     radiance *= albedo / PI;
+    // Indirect light of a diffuse receiver: albedo / pi times the gathered irradiance.
+    vec3 indirect = frame.options.x != 0u ? albedo / PI * texelFetch(indirectIrradiance, pixel, 0).rgb : vec3(0.0);
 
     vec4 outValue;
-    if (aov == AOV_DIRECT) outValue = vec4(radiance, 1.0);
+    if (aov == AOV_FINAL) outValue = vec4(radiance + indirect, 1.0);
+    else if (aov == AOV_DIRECT) outValue = vec4(radiance, 1.0);
+    else if (aov == AOV_INDIRECT) outValue = vec4(indirect, 1.0);
     else if (aov == AOV_ALBEDO) outValue = vec4(albedo, 1.0);
     else if (aov == AOV_NORMAL) outValue = vec4(n, 1.0);
     else if (aov == AOV_DEPTH) outValue = vec4(vec3(length(toEye)), 1.0);

@@ -33,13 +33,25 @@ vec3 gather(vec3 x, vec3 n) {
                 for (int tx = 0; tx < res; ++tx) e += vplIrradiance(ivec2(tx, ty), layer, x, n);
             continue;
         }
+        // The pattern is centred on x's projection. A receiver outside the map has no texel of its
+        // own: the disc is centred on the nearest map point and grows with the distance outside, so
+        // the result stays continuous across the light frustum's border; a receiver behind a spot
+        // light (a ceiling above a downward spot) samples the whole map. Weights scale with the
+        // disc's area, so the estimate still converges to the sum over the disc.
         vec4 clip = rsmLayers[layer].viewProj * vec4(x, 1.0);
-        vec2 st = clip.xy / clip.w * 0.5 + 0.5;
+        vec2 st = vec2(0.5);
+        float radius = 0.70710678;
+        if (clip.w > 0.0) {
+            vec2 p = clip.xy / clip.w * 0.5 + 0.5;
+            st = clamp(p, vec2(0.0), vec2(1.0));
+            radius = min(pc.params.z + length(p - st), max(pc.params.z, 0.70710678));
+        }
+        float scale = radius / pc.params.z;
         for (uint i = 0; i < pc.mode.y; ++i) {
             vec4 s = samples[i];
-            vec2 uv = st + s.xy;
+            vec2 uv = st + s.xy * scale;
             if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) continue;
-            e += s.z * vplIrradiance(ivec2(uv * float(res)), layer, x, n);
+            e += (s.z * scale * scale) * vplIrradiance(ivec2(uv * float(res)), layer, x, n);
         }
     }
     return e;

@@ -27,7 +27,8 @@ void main() {
     }
     vec3 x = pixelWorldPosition(frame, pixel, depth);
     vec3 n = normalize(texelFetch(gNormal, pixel, 0).xyz);
-    // Tolerance: a few pixel footprints at this depth (footprint = 2 d tan(fovy/2) / height).
+    // Tolerance: the world footprint of a low-resolution cell at this depth (pixel footprint is
+    // 2 d tan(fovy/2) / height) times the distance threshold.
     float footprint = length(x - frame.cameraPos.xyz) * frame.lens.x;
     float tolerance = pc.params.y * footprint * float(pc.mode.w);
 
@@ -46,7 +47,9 @@ void main() {
         if (d >= 1.0) continue;
         vec3 xi = pixelWorldPosition(frame, rep, d);
         vec3 ni = normalize(texelFetch(gNormal, rep, 0).xyz);
-        if (abs(dot(ni, n)) < pc.params.x || length(xi - x) > tolerance || abs(dot(n, xi - x)) > 0.25 * tolerance)
+        // Same surface: similar normal, on x's tangent plane (within one cell footprint), not far
+        // along it (grazing views stretch a cell's footprint along the surface, hence the slack).
+        if (dot(ni, n) < pc.params.x || abs(dot(n, xi - x)) > tolerance || length(xi - x) > 8.0 * tolerance)
             continue;
         float b = ((k & 1) != 0 ? w.x : 1.0 - w.x) * ((k >> 1) != 0 ? w.y : 1.0 - w.y);
         sum += b * texelFetch(lowIrradiance, cell, 0).rgb;

@@ -82,7 +82,8 @@ Light parseLight(const std::string& value) {
     return l;
 }
 
-std::vector<std::string> aovNames() { return {"direct", "albedo", "normal", "depth", "shadow"}; }
+// In AOV_* order (shaders/shared/types.h).
+std::vector<std::string> aovNames() { return {"direct", "albedo", "normal", "depth", "shadow", "final", "indirect"}; }
 
 Aov parseAov(const std::string& value) {
     const std::vector<std::string> names = aovNames();

@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
+#include <map>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -20,7 +21,7 @@ struct RenderOptions {
     std::string camera;
     int cameraIndex = 0;
     std::vector<std::string> lights;
-    std::string aov = "direct";
+    std::string aov = "final";
     bool printPasses = false;
     int frames = 1;
     bool quiet = false;
@@ -45,11 +46,34 @@ void printTimings(const std::vector<std::vector<vk::ScopeTiming>>& frames) {
                }));
 }
 
+void addGiOptions(CLI::App& cmd, RenderSettings& rs) {
+    const std::map<std::string, GiMode> gi{{"none", GiMode::None}, {"rsm", GiMode::Rsm}};
+    const std::map<std::string, RsmMode> modes{
+        {"interpolated", RsmMode::Interpolated}, {"full", RsmMode::Full}, {"all-texels", RsmMode::AllTexels}};
+    const std::map<std::string, RsmWeights> weights{{"unbiased", RsmWeights::Unbiased}, {"paper", RsmWeights::Paper}};
+    cmd.add_option("--gi", rs.gi, "Indirect light: none, rsm")->transform(CLI::CheckedTransformer(gi));
+    cmd.add_option("--rsm-res", rs.rsm.resolution, "RSM resolution per light (default 512)")
+        ->check(CLI::Range(8, 8192));
+    cmd.add_option("--rsm-samples", rs.rsm.samples, "RSM gather samples per pixel (default 400)")
+        ->check(CLI::Range(1, 16384));
+    cmd.add_option("--rsm-radius", rs.rsm.radius, "RSM sampling radius r_max in RSM uv units (default 0.25)")
+        ->check(CLI::Range(1e-4, 2.0));
+    cmd.add_option("--rsm-seed", rs.rsm.seed, "Seed of the RSM sample pattern");
+    cmd.add_option("--rsm-mode", rs.rsm.mode, "interpolated (default), full, all-texels (exact; --rsm-res <= 64)")
+        ->transform(CLI::CheckedTransformer(modes));
+    cmd.add_option("--rsm-weights", rs.rsm.weights, "Sample weights: unbiased (default) or paper (xi1^2)")
+        ->transform(CLI::CheckedTransformer(weights));
+    cmd.add_option("--rsm-lowres", rs.rsm.lowResFactor, "Low-resolution gather factor (default 4)")
+        ->check(CLI::Range(1, 32));
+}
+
 int runRender(const RenderOptions& o, const vk::ContextOptions& vkOptions, RenderSettings settings) {
     const std::string ext = fileExtension(o.output);
     if (ext != ".png" && ext != ".exr")
         throw std::invalid_argument(fmt::format("-o {}: the output must end in .png or .exr", o.output));
     settings.aov = parseAov(o.aov);
+    if (settings.gi == GiMode::Rsm && settings.rsm.mode == RsmMode::AllTexels && settings.rsm.resolution > 64)
+        throw std::invalid_argument("--rsm-mode all-texels gathers every texel at every pixel: use --rsm-res <= 64");
     Camera camera;
     std::vector<Light> lights;
     for (const std::string& l : o.lights) lights.push_back(parseLight(l));
@@ -82,6 +106,9 @@ int runRender(const RenderOptions& o, const vk::ContextOptions& vkOptions, Rende
         fmt::print("GPU time per pass{}:\n",
                    o.frames > 1 ? fmt::format(" (median of {} frames after 1 warm-up)", o.frames - 1) : "");
         printTimings(timings);
+        if (renderer.rsmGather() && settings.rsm.mode == RsmMode::Interpolated)
+            fmt::print("  rsm fallback: {:.2f}% of pixels gathered in full\n",
+                       100.0 * renderer.rsmGather()->fallbackFraction());
         if (o.printPasses) fmt::print("passes:\n{}", renderer.describePasses());
         const Bounds& b = scene.bounds;
         fmt::print("scene bounds ({:.3g}, {:.3g}, {:.3g}) .. ({:.3g}, {:.3g}, {:.3g}); camera eye ({:.3g}, {:.3g}, {:.3g})\n",
@@ -124,7 +151,8 @@ int main(int argc, char** argv) {
     render->add_option("--camera", ro.camera, "Camera override: ex,ey,ez,tx,ty,tz,ux,uy,uz,fovy_deg");
     render->add_option("--camera-index", ro.cameraIndex, "Which of the scene's cameras to use");
     render->add_option("--light", ro.lights, "Replace the scene's lights (repeatable): see README");
-    render->add_option("--aov", ro.aov, "Output: direct, albedo, normal, depth, shadow");
+    render->add_option("--aov", ro.aov, "Output: final (default), direct, indirect, albedo, normal, depth, shadow");
+    addGiOptions(*render, rs);
     render->add_option("--exposure", rs.exposure, "Linear exposure multiplier before tone mapping")
         ->check(CLI::Range(1e-6, 1e6));
     render->add_option("--shadow-res", rs.shadow.resolution, "Shadow map resolution")->check(CLI::Range(16, 16384));

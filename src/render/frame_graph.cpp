@@ -50,6 +50,9 @@ Sync syncFor(Use use, PassKind kind, bool depthImage) {
         case Use::TransferDst:
             return {VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
                     VK_ACCESS_2_TRANSFER_WRITE_BIT, true};
+        case Use::IndirectArgs:
+            return {VK_IMAGE_LAYOUT_UNDEFINED, VK_PIPELINE_STAGE_2_DRAW_INDIRECT_BIT,
+                    VK_ACCESS_2_INDIRECT_COMMAND_READ_BIT, false};
     }
     return {};
 }
@@ -60,7 +63,7 @@ constexpr VkAccessFlags2 kWriteAccess =
 
 const char* useName(Use u) {
     static const char* names[] = {"sampled", "storage-read", "storage-write", "color", "depth",
-                                  "uniform", "vertex",       "transfer-src",  "transfer-dst"};
+                                  "uniform", "vertex",       "transfer-src",  "transfer-dst", "indirect"};
     return names[static_cast<int>(u)];
 }
 
@@ -136,7 +139,7 @@ std::string FrameGraph::describe() const {
             (s.writes ? writes : reads).push_back(fmt::format("{}({})", name, useName(u)));
         };
         for (const ImageAccess& a : p.images) sort(a.image->name(), a.use);
-        for (const BufferAccess& a : p.buffers) sort("buffer", a.use);
+        for (const BufferAccess& a : p.buffers) sort(a.buffer->name(), a.use);
         out += fmt::format("{:<22} {:<8} reads [{}] writes [{}]\n", p.name,
                            p.kind == PassKind::Raster ? "raster" : p.kind == PassKind::Compute ? "compute" : "copy",
                            fmt::join(reads, ", "), fmt::join(writes, ", "));

@@ -24,6 +24,7 @@ enum class Use {
     VertexInput,      // vertex or index buffer
     TransferSrc,
     TransferDst,
+    IndirectArgs,     // indirect dispatch or draw arguments
 };
 
 struct ImageAccess {

@@ -1,5 +1,7 @@
 #include "render/gbuffer_pass.h"
 
+#include "render/raster.h"
+
 namespace penumbra {
 
 GBufferPass::GBufferPass(vk::Allocator& alloc, SceneGpu& scene, uint32_t width, uint32_t height,
@@ -34,33 +36,9 @@ void GBufferPass::addTo(FrameGraph& graph, const vk::Buffer& views) {
     pass.images.push_back({&scene_.textures(), Use::Sampled});
     pass.buffers = {{&views, Use::StorageRead}, {&scene_.materials(), Use::StorageRead}};
     pass.record = [this, &views](VkCommandBuffer cmd) {
-        VkRenderingAttachmentInfo color[2];
-        vk::Image* targets[2] = {&albedo, &normal};
-        for (int i = 0; i < 2; ++i) {
-            color[i] = {VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-            color[i].imageView = targets[i]->view();
-            color[i].imageLayout = VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL;
-            color[i].loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-            color[i].storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-            color[i].clearValue.color = {{0, 0, 0, 0}};
-        }
-        VkRenderingAttachmentInfo depthAtt{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
-        depthAtt.imageView = depth.view();
-        depthAtt.imageLayout = VK_IMAGE_LAYOUT_DEPTH_ATTACHMENT_OPTIMAL;
-        depthAtt.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-        depthAtt.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
-        depthAtt.clearValue.depthStencil = {1.0f, 0};
-        VkRenderingInfo ri{VK_STRUCTURE_TYPE_RENDERING_INFO};
-        ri.renderArea = {{0, 0}, albedo.extent()};
-        ri.layerCount = 1;
-        ri.colorAttachmentCount = 2;
-        ri.pColorAttachments = color;
-        ri.pDepthAttachment = &depthAtt;
-        vkCmdBeginRendering(cmd, &ri);
-        VkViewport vp{0, 0, float(albedo.width()), float(albedo.height()), 0, 1};
-        VkRect2D sc{{0, 0}, albedo.extent()};
-        vkCmdSetViewport(cmd, 0, 1, &vp);
-        vkCmdSetScissor(cmd, 0, 1, &sc);
+        beginRaster(cmd, {albedo.extent(),
+                          {{albedo.view(), {{0, 0, 0, 0}}}, {normal.view(), {{0, 0, 0, 0}}}},
+                          depth.view()});
         pipeline_.bind(cmd);
         scene_.pushDrawSet(cmd, pipeline_, views);
         scene_.draw(

@@ -12,7 +12,8 @@ LightingPass::LightingPass(vk::Allocator& alloc, uint32_t width, uint32_t height
                                          {3, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
                                          {4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
                                          {5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
-                                         {6, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}});
+                                         {6, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+                                         {7, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}});
     pipeline_ = vk::Pipeline::compute(ctx, "render/lighting.comp", {layout_.handle()}, 0);
     pointSampler_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
     // Nearest comparison: the standard (hard) shadow-map test of seed 004, one texel per lookup.
@@ -20,14 +21,14 @@ LightingPass::LightingPass(vk::Allocator& alloc, uint32_t width, uint32_t height
 }
 
 void LightingPass::addTo(FrameGraph& graph, const vk::Buffer& frame, const vk::Buffer& lights, GBufferPass& g,
-                         vk::Image& shadowMap) {
+                         vk::Image& shadowMap, vk::Image& indirect) {
     PassDesc pass;
     pass.name = "lighting";
     pass.kind = PassKind::Compute;
     pass.images = {{&g.albedo, Use::Sampled}, {&g.normal, Use::Sampled}, {&g.depth, Use::Sampled},
-                   {&shadowMap, Use::Sampled}, {&hdr, Use::StorageWrite}};
+                   {&shadowMap, Use::Sampled}, {&indirect, Use::Sampled}, {&hdr, Use::StorageWrite}};
     pass.buffers = {{&frame, Use::Uniform}, {&lights, Use::StorageRead}};
-    pass.record = [this, &frame, &lights, &g, &shadowMap](VkCommandBuffer cmd) {
+    pass.record = [this, &frame, &lights, &g, &shadowMap, &indirect](VkCommandBuffer cmd) {
         pipeline_.bind(cmd);
         vk::DescriptorWrites()
             .uniformBuffer(0, frame)
@@ -37,6 +38,7 @@ void LightingPass::addTo(FrameGraph& graph, const vk::Buffer& frame, const vk::B
             .sampled(4, g.depth.view(), pointSampler_.handle(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
             .sampled(5, shadowMap.view(), shadowSampler_.handle(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
             .storageImage(6, hdr.view())
+            .sampled(7, indirect.view(), pointSampler_.handle())
             .push(alloc_.context(), cmd, pipeline_);
         vkCmdDispatch(cmd, vk::divUp(hdr.width(), 8), vk::divUp(hdr.height(), 8), 1);
     };

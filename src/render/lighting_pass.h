@@ -9,8 +9,9 @@ namespace penumbra {
 class LightingPass {
 public:
     LightingPass(vk::Allocator& alloc, uint32_t width, uint32_t height);
+    // `indirect`: indirect irradiance per pixel (GI on) or a 1x1 placeholder (FrameUniforms.options.x = 0).
     void addTo(FrameGraph& graph, const vk::Buffer& frame, const vk::Buffer& lights, GBufferPass& gbuffer,
-               vk::Image& shadowMap);
+               vk::Image& shadowMap, vk::Image& indirect);
 
     vk::Image hdr;  // RGBA32F radiance (or AOV values)
 

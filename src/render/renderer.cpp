@@ -51,6 +51,7 @@ Renderer::Renderer(vk::Context& ctx, const Scene& scene, const RenderSettings& s
         warnings_.push_back(fmt::format("{} is lit without shadows (point-light shadows are not implemented yet)",
                                         name));
     const size_t lightCount = std::max<size_t>(scene.lights.size(), 1);
+    setupGi();
     frame_ = vk::Buffer(alloc_, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true, "frame");
     views_ = vk::Buffer(alloc_, sizeof(glm::mat4) * (1 + projections_.size()), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                         true, "views");
@@ -60,6 +61,25 @@ Renderer::Renderer(vk::Context& ctx, const Scene& scene, const RenderSettings& s
 
 Renderer::~Renderer() { ctx_.waitIdle(); }
 
+void Renderer::setupGi() {
+    noIndirect_ = vk::Image(alloc_, {VK_FORMAT_R16G16B16A16_SFLOAT, 1, 1, 1,
+                                     VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, "no-indirect"});
+    const uint64_t zero = 0;
+    cmd_.uploadImage(noIndirect_, &zero, sizeof(zero));
+    if (settings_.gi != GiMode::Rsm) return;
+    rsm_ = std::make_unique<RsmPass>(alloc_, *sceneGpu_, settings_.rsm);
+    rsmGather_ = std::make_unique<RsmGather>(alloc_, cmd_, settings_.width, settings_.height, settings_.rsm);
+    // One RSM layer per shadow layer: the RSM is the shadow pass's light view with more targets.
+    std::vector<RsmLayerSource> layers;
+    for (size_t light = 0; light < scene_.lights.size(); ++light) {
+        const int layer = shadowLayerOfLight_[light];
+        if (layer >= 0)
+            layers.push_back({uint32_t(light), uint32_t(1 + layer), projections_[layer], settings_.shadow.resolution});
+    }
+    if (layers.empty()) warnings_.push_back("--gi rsm: no directional or spot light casts shadows; no indirect light");
+    rsm_->setLayers(layers);
+}
+
 void Renderer::updateBuffers(const Camera& camera) {
     const float aspect = float(settings_.width) / float(settings_.height);
     zfar_ = sceneFar(camera, scene_.bounds);
@@ -68,6 +88,8 @@ void Renderer::updateBuffers(const Camera& camera) {
     f.invViewProj = glm::inverse(f.viewProj);
     f.cameraPos = glm::vec4(camera.eye, zfar_);
     f.size = {settings_.width, settings_.height, uint32_t(scene_.lights.size()), uint32_t(settings_.aov)};
+    f.options = {rsm_ ? 1u : 0u, 0u, 0u, 0u};
+    f.lens = {2.0f * std::tan(0.5f * camera.fovy) / float(settings_.height), 0.0f, 0.0f, 0.0f};
     frame_.write(&f, sizeof(f));
 
     std::vector<glm::mat4> views{f.viewProj};
@@ -85,7 +107,9 @@ void Renderer::updateBuffers(const Camera& camera) {
 
 gpu::TonemapPush Renderer::tonemapParams(float zfar) const {
     switch (settings_.aov) {
-        case Aov::Direct: return {{settings_.exposure, 0.0f, float(TONEMAP_ACES), 0.0f}};
+        case Aov::Direct:
+        case Aov::Final:
+        case Aov::Indirect: return {{settings_.exposure, 0.0f, float(TONEMAP_ACES), 0.0f}};
         case Aov::Albedo: return {{1.0f, 0.0f, float(TONEMAP_SRGB), 0.0f}};
         case Aov::Normal: return {{0.5f, 0.5f, float(TONEMAP_LINEAR), 0.0f}};
         case Aov::Depth: return {{1.0f / zfar, 0.0f, float(TONEMAP_LINEAR), 0.0f}};
@@ -99,7 +123,12 @@ void Renderer::render(const Camera& camera) {
     graph_.clear();
     if (!projections_.empty()) shadow_->addTo(graph_, views_, 1, uint32_t(projections_.size()));
     gbuffer_->addTo(graph_, views_);
-    lighting_->addTo(graph_, frame_, lights_, *gbuffer_, shadow_->shadowMap());
+    if (rsm_) {
+        rsm_->addTo(graph_, views_, lights_);
+        rsmGather_->addTo(graph_, frame_, *gbuffer_, *rsm_);
+    }
+    vk::Image& indirect = rsmGather_ ? rsmGather_->irradiance() : noIndirect_;
+    lighting_->addTo(graph_, frame_, lights_, *gbuffer_, shadow_->shadowMap(), indirect);
     tonemap_->addTo(graph_, lighting_->hdr, tonemapParams(zfar_));
     timer_.reset();
     cmd_.submitAndWait([&](VkCommandBuffer cmd) { graph_.execute(cmd, &timer_); });

@@ -8,18 +8,31 @@
 
 #include "render/gbuffer_pass.h"
 #include "render/lighting_pass.h"
+#include "rsm/rsm_gather.h"
 #include "shadow/shadow_map_pass.h"
 
 namespace penumbra {
 
-enum class Aov { Direct = AOV_DIRECT, Albedo = AOV_ALBEDO, Normal = AOV_NORMAL, Depth = AOV_DEPTH, Shadow = AOV_SHADOW };
+enum class Aov {
+    Direct = AOV_DIRECT,
+    Albedo = AOV_ALBEDO,
+    Normal = AOV_NORMAL,
+    Depth = AOV_DEPTH,
+    Shadow = AOV_SHADOW,
+    Final = AOV_FINAL,
+    Indirect = AOV_INDIRECT,
+};
+
+enum class GiMode { None, Rsm };
 
 struct RenderSettings {
     uint32_t width = 1280;
     uint32_t height = 720;
-    Aov aov = Aov::Direct;
+    Aov aov = Aov::Final;
     float exposure = 1.0f;  // linear multiplier before the tone mapper
     ShadowSettings shadow;
+    GiMode gi = GiMode::None;
+    RsmSettings rsm;
 };
 
 class Renderer {
@@ -37,9 +50,13 @@ public:
     const std::vector<std::string>& warnings() const { return warnings_; }
     vk::Allocator& allocator() { return alloc_; }
     const RenderSettings& settings() const { return settings_; }
+    // GI internals, for tests and statistics (null when that GI mode is off).
+    RsmPass* rsm() { return rsm_.get(); }
+    RsmGather* rsmGather() { return rsmGather_.get(); }
 
 private:
     void updateBuffers(const Camera& camera);
+    void setupGi();
     gpu::TonemapPush tonemapParams(float zfar) const;
 
     vk::Context& ctx_;
@@ -54,6 +71,9 @@ private:
     std::unique_ptr<GBufferPass> gbuffer_;
     std::unique_ptr<LightingPass> lighting_;
     std::unique_ptr<TonemapPass> tonemap_;
+    std::unique_ptr<RsmPass> rsm_;
+    std::unique_ptr<RsmGather> rsmGather_;
+    vk::Image noIndirect_;  // bound in place of the indirect irradiance when GI is off
     vk::Buffer frame_, views_, lights_;
     std::vector<int> shadowLayerOfLight_;
     std::vector<LightProjection> projections_;

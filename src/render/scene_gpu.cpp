@@ -63,12 +63,10 @@ std::vector<vk::Binding> SceneGpu::drawSetBindings() {
             {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}};
 }
 
-void SceneGpu::pushDrawSet(VkCommandBuffer cmd, const vk::Pipeline& pipeline, const vk::Buffer& views) const {
-    vk::DescriptorWrites()
-        .storageBuffer(0, views)
-        .storageBuffer(1, materials_)
-        .sampled(2, textures_.view(), sampler_.handle())
-        .push(ctx_, cmd, pipeline);
+vk::DescriptorWrites SceneGpu::drawSetWrites(const vk::Buffer& views) const {
+    vk::DescriptorWrites w;
+    w.storageBuffer(0, views).storageBuffer(1, materials_).sampled(2, textures_.view(), sampler_.handle());
+    return w;
 }
 
 void SceneGpu::uploadTextures(vk::CommandContext& cmd) {

@@ -24,8 +24,12 @@ public:
     // fits every device's per-stage sampler limit; lavapipe allows only 32 samplers per stage).
     vk::Image& textures() { return textures_; }
     VkSampler textureSampler() const { return sampler_.handle(); }
-    // Pushes set 0 of the pipelines that draw the scene: views, materials, textures.
-    void pushDrawSet(VkCommandBuffer cmd, const vk::Pipeline& pipeline, const vk::Buffer& views) const;
+    // Set 0 of the pipelines that draw the scene: views, materials, textures (bindings 0-2); a pass
+    // may add its own bindings before pushing.
+    vk::DescriptorWrites drawSetWrites(const vk::Buffer& views) const;
+    void pushDrawSet(VkCommandBuffer cmd, const vk::Pipeline& pipeline, const vk::Buffer& views) const {
+        drawSetWrites(views).push(ctx_, cmd, pipeline);
+    }
     static std::vector<vk::Binding> drawSetBindings();
 
     // Vertex input of penumbra::Vertex for GraphicsDesc.

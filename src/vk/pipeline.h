@@ -75,6 +75,10 @@ private:
 // Collects descriptor writes for one push-descriptor set, then pushes them.
 class DescriptorWrites {
 public:
+    DescriptorWrites() = default;
+    // Writes point into this object's own storage: movable (deque/vector moves keep addresses), not copyable.
+    DescriptorWrites(const DescriptorWrites&) = delete;
+    DescriptorWrites(DescriptorWrites&&) = default;
     DescriptorWrites& sampled(uint32_t binding, VkImageView view, VkSampler sampler,
                               VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
     DescriptorWrites& storageImage(uint32_t binding, VkImageView view);

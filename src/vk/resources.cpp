@@ -4,8 +4,8 @@
 
 namespace penumbra::vk {
 
-Buffer::Buffer(Allocator& alloc, VkDeviceSize size, VkBufferUsageFlags usage, bool hostVisible, const char*)
-    : allocator_(&alloc), size_(size) {
+Buffer::Buffer(Allocator& alloc, VkDeviceSize size, VkBufferUsageFlags usage, bool hostVisible, const char* name)
+    : allocator_(&alloc), name_(name), size_(size) {
     VkBufferCreateInfo ci{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
     ci.size = size ? size : 16;
     ci.usage = usage;
@@ -25,6 +25,7 @@ Buffer& Buffer::operator=(Buffer&& o) noexcept {
     if (this != &o) {
         reset();
         allocator_ = std::exchange(o.allocator_, nullptr);
+        name_ = std::move(o.name_);
         buffer_ = std::exchange(o.buffer_, VK_NULL_HANDLE);
         size_ = std::exchange(o.size_, 0);
         alloc_ = std::exchange(o.alloc_, Allocation{});

@@ -24,10 +24,12 @@ public:
     template <class T> T* as() const { return reinterpret_cast<T*>(alloc_.mapped); }
     void write(const void* data, VkDeviceSize bytes, VkDeviceSize offset = 0);
     explicit operator bool() const { return buffer_ != VK_NULL_HANDLE; }
+    const std::string& name() const { return name_; }
     void reset();
 
 private:
     Allocator* allocator_ = nullptr;
+    std::string name_;
     VkBuffer buffer_ = VK_NULL_HANDLE;
     VkDeviceSize size_ = 0;
     Allocation alloc_;

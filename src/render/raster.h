@@ -1,0 +1,24 @@
+// Dynamic-rendering set-up shared by the raster passes: every target cleared, viewport and scissor
+// covering the whole extent.
+#pragma once
+#include <vector>
+
+#include <vulkan/vulkan.h>
+
+namespace penumbra {
+
+struct ColorTarget {
+    VkImageView view;
+    VkClearColorValue clear;
+};
+
+struct RasterTarget {
+    VkExtent2D extent;
+    std::vector<ColorTarget> colors;
+    VkImageView depth = VK_NULL_HANDLE;  // cleared to 1 (far)
+};
+
+// vkCmdBeginRendering with clears + viewport/scissor; end with vkCmdEndRendering.
+void beginRaster(VkCommandBuffer cmd, const RasterTarget& target);
+
+}  // namespace penumbra

@@ -1,0 +1,49 @@
+// Reflective shadow maps: the light's view of the scene stored as virtual point lights (depth ->
+// position, octahedral normal, reflected flux), one array layer per shadow layer of a light.
+// Rendered with the shadow layer's own light-space matrix, at the RSM resolution.
+#pragma once
+#include <vector>
+
+#include "render/frame_graph.h"
+#include "render/scene_gpu.h"
+#include "rsm/rsm_settings.h"
+#include "shadow/light_space.h"
+
+namespace penumbra {
+
+// One RSM layer: which light, its light-space projection, and the row of the views buffer that
+// holds that projection.
+struct RsmLayerSource {
+    uint32_t light;
+    uint32_t viewIndex;
+    LightProjection projection;  // texelSize as for the shadow map's resolution
+    uint32_t shadowResolution;
+};
+
+class RsmPass {
+public:
+    RsmPass(vk::Allocator& alloc, SceneGpu& scene, const RsmSettings& settings);
+
+    // Fixes the layers for the coming frames (writes the layer table, sizes the images).
+    void setLayers(const std::vector<RsmLayerSource>& layers);
+    void addTo(FrameGraph& graph, const vk::Buffer& views, const vk::Buffer& lights);
+
+    uint32_t layerCount() const { return uint32_t(sources_.size()); }
+    const RsmSettings& settings() const { return settings_; }
+    vk::Image& depth() { return depth_; }
+    vk::Image& normal() { return normal_; }
+    vk::Image& flux() { return flux_; }
+    const vk::Buffer& layerTable() const { return layerTable_; }
+
+private:
+    vk::Allocator& alloc_;
+    SceneGpu& scene_;
+    RsmSettings settings_;
+    vk::DescriptorLayout layout_;
+    vk::Pipeline pipeline_;
+    std::vector<RsmLayerSource> sources_;
+    vk::Image depth_, normal_, flux_;
+    vk::Buffer layerTable_;
+};
+
+}  // namespace penumbra

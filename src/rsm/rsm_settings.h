@@ -1,0 +1,31 @@
+// Reflective-shadow-map settings (defaults from Dachsbacher & Stamminger 2005 and the seed).
+#pragma once
+#include <cstdint>
+
+namespace penumbra {
+
+enum class RsmMode {
+    Interpolated,  // low-resolution gather + the paper's interpolation, full gather where it fails
+    Full,          // sampled gather at every full-resolution pixel
+    AllTexels,     // every RSM texel at every pixel: the exact sum (tests, small RSMs only)
+};
+
+// How a sample at radius xi1 * r_max is weighted. Uniform (xi1, xi2) in polar form puts a sample
+// density proportional to 1/r on the disc, so the unbiased weight is proportional to xi1; the
+// paper (and the seed) use xi1^2, which further favours far samples. Both are normalised so that a
+// uniform VPL field gives the exact disc sum.
+enum class RsmWeights { Unbiased, Paper };
+
+struct RsmSettings {
+    uint32_t resolution = 512;   // RSM texels per side (per shadowed light)
+    uint32_t samples = 400;      // gather samples per receiver
+    float radius = 0.25f;        // r_max in RSM uv units
+    uint32_t seed = 1;           // the sample pattern is generated once from it (reproducible)
+    RsmMode mode = RsmMode::Interpolated;
+    RsmWeights weights = RsmWeights::Unbiased;
+    uint32_t lowResFactor = 4;   // low-resolution gather: one sample per factor x factor pixels
+    float normalThreshold = 0.9f;    // interpolation: min |cos| between the pixel's and a sample's normal
+    float distanceThreshold = 1.0f;  // interpolation: max distance off the tangent plane, in low-res cell footprints
+};
+
+}  // namespace penumbra
