@@ -18,7 +18,7 @@ layout(set = 0, binding = 4) uniform sampler2DArray rsmNormal;
 layout(set = 0, binding = 5) uniform sampler2DArray rsmFlux;
 layout(set = 0, binding = 6, std430) readonly buffer Layers { GpuRsmLayer rsmLayers[]; };
 layout(set = 0, binding = 7, std430) readonly buffer Samples { vec4 samples[]; };  // xy offset (uv), z weight
-layout(set = 0, binding = 8, rgba16f) uniform writeonly image2D outIrradiance;
+layout(set = 0, binding = 8, rgba32f) uniform writeonly image2D outIrradiance;
 layout(set = 0, binding = 9, std430) readonly buffer PixelList { uvec4 header; uvec2 pixels[]; } list;
 layout(push_constant) uniform Push { RsmPush pc; };
 

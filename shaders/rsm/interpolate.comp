@@ -13,7 +13,7 @@ layout(set = 0, binding = 0) uniform Frame { FrameUniforms frame; };
 layout(set = 0, binding = 1) uniform sampler2D gNormal;
 layout(set = 0, binding = 2) uniform sampler2D gDepth;
 layout(set = 0, binding = 3) uniform sampler2D lowIrradiance;
-layout(set = 0, binding = 4, rgba16f) uniform writeonly image2D outIrradiance;
+layout(set = 0, binding = 4, rgba32f) uniform writeonly image2D outIrradiance;
 layout(set = 0, binding = 5, std430) buffer PixelList { uvec4 header; uvec2 pixels[]; } list;
 layout(push_constant) uniform Push { RsmPush pc; };
 

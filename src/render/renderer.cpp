@@ -91,6 +91,7 @@ void Renderer::updateBuffers(const Camera& camera) {
     f.options = {rsm_ ? 1u : 0u, 0u, 0u, 0u};
     f.lens = {2.0f * std::tan(0.5f * camera.fovy) / float(settings_.height), 0.0f, 0.0f, 0.0f};
     frame_.write(&f, sizeof(f));
+    frameConstants_ = f;
 
     std::vector<glm::mat4> views{f.viewProj};
     for (const LightProjection& p : projections_) views.push_back(p.viewProj);

@@ -50,6 +50,10 @@ public:
     const std::vector<std::string>& warnings() const { return warnings_; }
     vk::Allocator& allocator() { return alloc_; }
     const RenderSettings& settings() const { return settings_; }
+    // Internals for tests and statistics: the G-buffer, read-backs, the last frame's constants.
+    GBufferPass& gbuffer() { return *gbuffer_; }
+    vk::CommandContext& commands() { return cmd_; }
+    const gpu::FrameUniforms& frameUniforms() const { return frameConstants_; }
     // GI internals, for tests and statistics (null when that GI mode is off).
     RsmPass* rsm() { return rsm_.get(); }
     RsmGather* rsmGather() { return rsmGather_.get(); }
@@ -81,6 +85,7 @@ private:
     std::vector<vk::ScopeTiming> timings_;
     std::vector<std::string> warnings_;
     float zfar_ = 1.0f;
+    gpu::FrameUniforms frameConstants_{};
 };
 
 }  // namespace penumbra

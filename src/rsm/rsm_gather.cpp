@@ -6,7 +6,7 @@
 namespace penumbra {
 namespace {
 
-constexpr VkFormat kIrradianceFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+constexpr VkFormat kIrradianceFormat = VK_FORMAT_R32G32B32A32_SFLOAT;  // exact sums stay exact
 
 vk::DescriptorLayout makeLayout(vk::Context& ctx, const std::vector<VkDescriptorType>& types) {
     std::vector<vk::Binding> b;

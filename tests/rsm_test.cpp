@@ -1,0 +1,271 @@
+// Reflective shadow maps against a brute-force CPU sum in double precision over the read-back RSM.
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/packing.hpp>
+
+#include "gpu_fixture.h"
+
+using namespace penumbra;
+using namespace penumbra::test;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+float half(const std::vector<uint8_t>& bytes, size_t index) {
+    uint16_t h;
+    std::memcpy(&h, bytes.data() + index * 2, 2);
+    return glm::unpackHalf1x16(h);
+}
+
+float f32(const std::vector<uint8_t>& bytes, size_t index) {
+    float f;
+    std::memcpy(&f, bytes.data() + index * 4, 4);
+    return f;
+}
+
+dvec3 unproject(const glm::dmat4& inv, double u, double v, double depth) {
+    glm::dvec4 p = inv * glm::dvec4(u * 2.0 - 1.0, v * 2.0 - 1.0, depth, 1.0);
+    return dvec3(p) / p.w;
+}
+
+dvec3 octDecode(double ex, double ey) {
+    dvec3 n(ex, ey, 1.0 - std::abs(ex) - std::abs(ey));
+    const double t = std::max(-n.z, 0.0);
+    n.x += n.x >= 0.0 ? -t : t;
+    n.y += n.y >= 0.0 ? -t : t;
+    return glm::normalize(n);
+}
+
+struct Vpl {
+    dvec3 position, normal, flux;
+    double footprint;  // squared world size: the lower clamp of d^2
+};
+
+// Everything read back from one rendered frame: receivers (G-buffer) and VPLs (RSM).
+struct Frame {
+    uint32_t width, height;
+    std::vector<dvec3> position, normal;  // per pixel; normal zero where there is no surface
+    std::vector<Vpl> vpls;
+    std::vector<glm::dvec3> gpuIrradiance;
+};
+
+Frame readFrame(Renderer& r) {
+    Frame f{r.settings().width, r.settings().height, {}, {}, {}, {}};
+    vk::CommandContext& cmd = r.commands();
+    const gpu::FrameUniforms& fu = r.frameUniforms();
+    const glm::dmat4 invCam(fu.invViewProj);
+    auto depth = cmd.readImage(r.gbuffer().depth, 4);
+    auto normal = cmd.readImage(r.gbuffer().normal, 8);
+    auto irr = cmd.readImage(r.rsmGather()->irradiance(), 16);
+    const size_t n = size_t(f.width) * f.height;
+    f.position.resize(n);
+    f.normal.resize(n);
+    f.gpuIrradiance.resize(n);
+    for (size_t i = 0; i < n; ++i) {
+        const double d = f32(depth, i);
+        f.gpuIrradiance[i] = {f32(irr, i * 4), f32(irr, i * 4 + 1), f32(irr, i * 4 + 2)};
+        if (d >= 1.0) continue;
+        const double u = (double(i % f.width) + 0.5) / f.width, v = (double(i / f.width) + 0.5) / f.height;
+        f.position[i] = unproject(invCam, u, v, d);
+        dvec3 nn = glm::normalize(dvec3(half(normal, i * 4), half(normal, i * 4 + 1), half(normal, i * 4 + 2)));
+        if (glm::dot(nn, dvec3(fu.cameraPos) - f.position[i]) < 0.0) nn = -nn;
+        f.normal[i] = nn;
+    }
+    RsmPass& rsm = *r.rsm();
+    const uint32_t res = rsm.settings().resolution;
+    const auto* table = rsm.layerTable().as<gpu::GpuRsmLayer>();
+    for (uint32_t layer = 0; layer < rsm.layerCount(); ++layer) {
+        auto rd = cmd.readImage(rsm.depth(), 4, layer);
+        auto rn = cmd.readImage(rsm.normal(), 4, layer);
+        auto rf = cmd.readImage(rsm.flux(), 8, layer);
+        const glm::dmat4 inv(table[layer].invViewProj), vp(table[layer].viewProj);
+        for (uint32_t t = 0; t < res * res; ++t) {
+            const double d = f32(rd, t);
+            if (d >= 1.0) continue;
+            int16_t e[2];
+            std::memcpy(e, rn.data() + t * 4, 4);
+            Vpl vpl;
+            vpl.position = unproject(inv, (t % res + 0.5) / res, (t / res + 0.5) / res, d);
+            vpl.normal = octDecode(std::max(e[0] / 32767.0, -1.0), std::max(e[1] / 32767.0, -1.0));
+            vpl.flux = {half(rf, t * 4), half(rf, t * 4 + 1), half(rf, t * 4 + 2)};
+            double texel = table[layer].params.x;
+            if (table[layer].params.y > 0.5) texel *= std::abs((vp * glm::dvec4(vpl.position, 1.0)).w);
+            vpl.footprint = texel * texel;
+            f.vpls.push_back(vpl);
+        }
+    }
+    return f;
+}
+
+// E(x, n) = sum_p phi_p / pi * max(0, n_p.(x - x_p)) max(0, n.(x_p - x)) / max(d^2, footprint_p)^2
+dvec3 bruteForce(const Frame& f, size_t pixel) {
+    dvec3 e(0.0);
+    const dvec3 x = f.position[pixel], n = f.normal[pixel];
+    for (const Vpl& p : f.vpls) {
+        const dvec3 v = x - p.position;
+        const double d2 = std::max(glm::dot(v, v), p.footprint);
+        e += p.flux * (std::max(glm::dot(p.normal, v), 0.0) * std::max(glm::dot(n, -v), 0.0) / (d2 * d2) / kPi);
+    }
+    return e;
+}
+
+double luminance(const dvec3& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
+
+class RsmTest : public GpuTest {
+protected:
+    // Renders cornell with RSM GI and hands the frame to `check` while the renderer is alive.
+    template <class Check>
+    void renderCornell(uint32_t w, uint32_t h, const RsmSettings& rsm, Aov aov, Check check) {
+        Scene scene = makeBuiltinScene("cornell");
+        RenderSettings s;
+        s.width = w;
+        s.height = h;
+        s.aov = aov;
+        s.gi = GiMode::Rsm;
+        s.rsm = rsm;
+        Renderer r(ctx(), scene, s);
+        r.render(scene.cameras[0]);
+        check(r);
+    }
+};
+
+// Relative RMS error of a per-pixel irradiance against a reference, over pixels with a surface.
+double relativeRms(const Frame& f, const std::vector<dvec3>& reference, const std::vector<glm::dvec3>& value) {
+    double err = 0.0, ref = 0.0;
+    for (size_t i = 0; i < reference.size(); ++i) {
+        if (f.normal[i] == dvec3(0.0)) continue;
+        err += std::pow(luminance(value[i] - reference[i]), 2);
+        ref += std::pow(luminance(reference[i]), 2);
+    }
+    return std::sqrt(err / ref);
+}
+
+}  // namespace
+
+TEST_F(RsmTest, AllTexelsGatherEqualsBruteForceSum) {
+    RsmSettings rsm;
+    rsm.resolution = 32;
+    rsm.mode = RsmMode::AllTexels;
+    renderCornell(48, 36, rsm, Aov::Indirect, [&](Renderer& r) {
+        Frame f = readFrame(r);
+        ASSERT_GT(f.vpls.size(), 500u);
+        double maxRel = 0.0, maxLum = 0.0;
+        std::vector<dvec3> ref(f.position.size());
+        for (size_t i = 0; i < ref.size(); ++i)
+            if (f.normal[i] != dvec3(0.0)) maxLum = std::max(maxLum, luminance(ref[i] = bruteForce(f, i)));
+        size_t compared = 0;
+        for (size_t i = 0; i < ref.size(); ++i) {
+            if (f.normal[i] == dvec3(0.0) || luminance(ref[i]) < 1e-3 * maxLum) continue;
+            for (int c = 0; c < 3; ++c)
+                if (ref[i][c] > 1e-3 * maxLum)
+                    maxRel = std::max(maxRel, std::abs(f.gpuIrradiance[i][c] - ref[i][c]) / ref[i][c]);
+            ++compared;
+        }
+        EXPECT_GT(compared, 1000u);
+        EXPECT_LT(maxRel, 1e-3) << "max relative error of the exact GPU gather over " << compared << " pixels";
+        std::printf("[ rsm ] all-texels vs brute force: %zu pixels, %zu VPLs, max relative error %.2e\n", compared,
+                    f.vpls.size(), maxRel);
+    });
+}
+
+TEST_F(RsmTest, SampledGatherConvergesToBruteForce) {
+    // r_max covers the whole map from any point, so the sampled estimate converges to the full sum.
+    std::vector<double> errors;
+    for (uint32_t samples : {25u, 100u, 400u}) {
+        double sum = 0.0;
+        for (uint32_t seed : {1u, 2u, 3u}) {
+            RsmSettings rsm;
+            rsm.resolution = 32;
+            rsm.mode = RsmMode::Full;
+            rsm.radius = 1.5f;
+            rsm.samples = samples;
+            rsm.seed = seed;
+            renderCornell(48, 36, rsm, Aov::Indirect, [&](Renderer& r) {
+                Frame f = readFrame(r);
+                std::vector<dvec3> ref(f.position.size());
+                for (size_t i = 0; i < ref.size(); ++i)
+                    if (f.normal[i] != dvec3(0.0)) ref[i] = bruteForce(f, i);
+                sum += relativeRms(f, ref, f.gpuIrradiance);
+            });
+        }
+        errors.push_back(sum / 3.0);
+        std::printf("[ rsm ] %u samples: relative RMS error %.4f\n", samples, errors.back());
+    }
+    EXPECT_LT(errors[1], errors[0]);
+    EXPECT_LT(errors[2], errors[1]);
+    EXPECT_LT(errors[2], 0.6 * errors[0] / 2.0) << "error should fall roughly as 1/sqrt(N)";
+}
+
+TEST_F(RsmTest, InterpolatedPathStaysCloseToFullResolutionGather) {
+    std::vector<glm::dvec3> full, interpolated;
+    Frame frame;
+    double fallback = 0.0;
+    for (RsmMode mode : {RsmMode::Full, RsmMode::Interpolated}) {
+        RsmSettings rsm;
+        rsm.resolution = 128;
+        rsm.mode = mode;
+        renderCornell(192, 144, rsm, Aov::Indirect, [&](Renderer& r) {
+            frame = readFrame(r);
+            (mode == RsmMode::Full ? full : interpolated) = frame.gpuIrradiance;
+            if (mode == RsmMode::Interpolated) fallback = r.rsmGather()->fallbackFraction();
+        });
+    }
+    // Both are estimates of the exact sum: interpolation may smooth the sampling noise but must not
+    // add error of its own beyond a quarter of the full-resolution gather's.
+    std::vector<dvec3> exact(frame.position.size());
+    for (size_t i = 0; i < exact.size(); ++i)
+        if (frame.normal[i] != dvec3(0.0)) exact[i] = bruteForce(frame, i);
+    std::vector<dvec3> fullAsRef(full.begin(), full.end());
+    const double errFull = relativeRms(frame, exact, full), errInterp = relativeRms(frame, exact, interpolated);
+    const double diff = relativeRms(frame, fullAsRef, interpolated);
+    std::printf("[ rsm ] vs exact sum: full %.4f, interpolated %.4f; interpolated vs full %.4f; %.1f%% fallback\n",
+                errFull, errInterp, diff, 100.0 * fallback);
+    EXPECT_LT(errInterp, 1.25 * errFull);
+    EXPECT_GT(fallback, 0.0);  // edges exist in cornell, so some pixels must fall back
+    EXPECT_LT(fallback, 0.25);
+}
+
+TEST_F(RsmTest, CornellBleedsWallColoursAndLightsTheCeilingIndirectly) {
+    RsmSettings rsm;
+    rsm.resolution = 128;
+    rsm.mode = RsmMode::Full;
+    Frame frame;
+    std::vector<glm::dvec3> direct;
+    for (Aov aov : {Aov::Direct, Aov::Indirect}) {
+        renderCornell(160, 120, rsm, aov, [&](Renderer& r) {
+            frame = readFrame(r);
+            if (aov == Aov::Direct) {
+                FloatImage img{160, 120, r.readHdr()};
+                for (size_t i = 0; i < size_t(160) * 120; ++i)
+                    direct.push_back({img.rgba[i * 4], img.rgba[i * 4 + 1], img.rgba[i * 4 + 2]});
+            }
+        });
+    }
+    // Floor strips next to the red (x = -1) and green (x = +1) walls; the ceiling (y = 2).
+    dvec3 nearRed(0.0), nearGreen(0.0), ceilingIndirect(0.0), ceilingDirect(0.0);
+    size_t ceiling = 0;
+    for (size_t i = 0; i < frame.position.size(); ++i) {
+        const dvec3 p = frame.position[i], n = frame.normal[i];
+        if (n == dvec3(0.0)) continue;
+        if (p.y < 0.01 && n.y > 0.99) {
+            if (p.x < -0.7) nearRed += frame.gpuIrradiance[i];
+            if (p.x > 0.7) nearGreen += frame.gpuIrradiance[i];
+        }
+        if (p.y > 1.99 && n.y < -0.99) {
+            ceilingIndirect += frame.gpuIrradiance[i];
+            ceilingDirect += direct[i];
+            ++ceiling;
+        }
+    }
+    const double redLeft = nearRed.x / nearRed.y, redRight = nearGreen.x / nearGreen.y;
+    std::printf("[ rsm ] floor red/green irradiance: %.3f by the red wall, %.3f by the green wall (ratio %.2f)\n",
+                redLeft, redRight, redLeft / redRight);
+    EXPECT_GT(redLeft, 1.5 * redRight);
+    ASSERT_GT(ceiling, 100u);
+    EXPECT_EQ(luminance(ceilingDirect), 0.0) << "a downward spot gives the ceiling no direct light";
+    EXPECT_GT(luminance(ceilingIndirect) / ceiling, 1e-3) << "the ceiling must be lit by the bounce";
+    std::printf("[ rsm ] ceiling: %zu pixels, mean indirect irradiance %.4f, direct 0\n", ceiling,
+                luminance(ceilingIndirect) / ceiling);
+}
