@@ -24,6 +24,40 @@ layout(push_constant) uniform Push { RsmPush pc; };
 
 #include "rsm/vpl.glsl"
 
+// Centre and radius of the sampling disc for receiver x. The pattern is centred on x's projection.
+// A receiver outside the map (for a spot light: outside its pyramid, or behind it, like a ceiling
+// above a downward spot) has no texel of its own: its disc starts at the map border in x's direction
+// and, as x leaves the map (angle off the axis for a spot, uv distance for an orthographic map),
+// slides to the map centre while growing to the whole map. The result stays continuous across the
+// frustum's border, and the weights scale with the disc's area, so the estimate keeps converging to
+// the sum over its disc.
+float samplingDisc(GpuRsmLayer layer, vec3 x, out vec2 st) {
+    vec4 clip = layer.viewProj * vec4(x, 1.0);
+    const float rMax = pc.params.z, whole = max(rMax, 0.70710678);
+    float outside;
+    vec2 border;
+    if (layer.params.y > 0.5) {
+        float m = max(abs(clip.x), abs(clip.y));
+        float angle = atan(m, clip.w);  // 0 on the axis, pi/4 at the map's border, pi straight behind
+        if (angle <= 0.78539816) {
+            st = clip.xy / clip.w * 0.5 + 0.5;
+            return rMax;
+        }
+        border = 0.5 + 0.5 * clip.xy / m;
+        outside = (angle - 0.78539816) / 2.35619449;
+    } else {
+        vec2 p = clip.xy / clip.w * 0.5 + 0.5;
+        border = clamp(p, vec2(0.0), vec2(1.0));
+        if (border == p) {
+            st = p;
+            return rMax;
+        }
+        outside = min(2.0 * length(p - border), 1.0);
+    }
+    st = mix(border, vec2(0.5), outside);
+    return mix(rMax, whole, outside);
+}
+
 vec3 gather(vec3 x, vec3 n) {
     vec3 e = vec3(0.0);
     const int res = int(pc.sizes.z);
@@ -33,20 +67,8 @@ vec3 gather(vec3 x, vec3 n) {
                 for (int tx = 0; tx < res; ++tx) e += vplIrradiance(ivec2(tx, ty), layer, x, n);
             continue;
         }
-        // The pattern is centred on x's projection. A receiver outside the map has no texel of its
-        // own: the disc is centred on the nearest map point and grows with the distance outside, so
-        // the result stays continuous across the light frustum's border; a receiver behind a spot
-        // light (a ceiling above a downward spot) samples the whole map. Weights scale with the
-        // disc's area, so the estimate still converges to the sum over the disc.
-        vec4 clip = rsmLayers[layer].viewProj * vec4(x, 1.0);
-        vec2 st = vec2(0.5);
-        float radius = 0.70710678;
-        if (clip.w > 0.0) {
-            vec2 p = clip.xy / clip.w * 0.5 + 0.5;
-            st = clamp(p, vec2(0.0), vec2(1.0));
-            radius = min(pc.params.z + length(p - st), max(pc.params.z, 0.70710678));
-        }
-        float scale = radius / pc.params.z;
+        vec2 st;
+        float scale = samplingDisc(rsmLayers[layer], x, st) / pc.params.z;
         for (uint i = 0; i < pc.mode.y; ++i) {
             vec4 s = samples[i];
             vec2 uv = st + s.xy * scale;
