@@ -350,8 +350,8 @@ TEST(GltfLoader, BadInputThrowsSceneError) {
     expectFails(writeGltf(dir, "cycle.gltf", doc), "node cycle");
 
     doc = good;
-    doc["meshes"][0]["primitives"][0]["mode"] = 1;  // lines only: skipped, leaving no triangles
-    expectFails(writeGltf(dir, "no_triangles.gltf", doc), "no triangles");
+    doc["meshes"][0]["primitives"][0]["mode"] = 0;  // points only: skipped, leaving nothing to draw
+    expectFails(writeGltf(dir, "no_triangles.gltf", doc), "no triangles or lines");
 }
 
 TEST(GltfLoader, MissingImageLoadsUntextured) {

@@ -1,16 +1,25 @@
-// Shadow-map visibility of one light at a receiver (included by render/lighting.comp, which
-// declares `shadowMaps`, a sampler2DArrayShadow with one layer per shadowed light).
-// Visibility from the light's standard shadow map; the receiver is pushed along its normal by a
-// number of shadow texels (normal offset), which removes acne on slopes without peter-panning.
-float shadowVisibility(GpuLight light, vec3 p, vec3 n) {
+// Shadow visibility as the lighting pass reads it (included by render/lighting.comp, which declares
+// `shadowMask`, `lights` and `frame`). The filtering itself runs before, in its own pass
+// (shadow/filter.comp: hard, PCF, PCSS, VSM, EVSM, MSM; cascades, cube faces, paraboloids), which
+// leaves per shadowed light r = visibility, g = layer code in layer GpuLight.radiance.w of the mask.
+float shadowVisibility(GpuLight light, ivec2 pixel) {
     if (light.radiance.w == NO_SHADOW) return 1.0;
-    float texel = light.shadow.x;
-    if (light.spot.w > 0.5) texel *= max(dot(p - light.position.xyz, light.direction.xyz), 0.0);
-    vec4 clip = light.shadowViewProj * vec4(p + n * (light.spot.z * texel), 1.0);
-    vec3 ndc = clip.xyz / clip.w;
-    vec2 uv = ndc.xy * 0.5 + 0.5;
-    if (clip.w <= 0.0 || any(lessThan(uv, vec2(0.0))) || any(greaterThan(uv, vec2(1.0))) || ndc.z > 1.0)
-        return 1.0;
-    return texture(shadowMaps, vec4(uv, light.radiance.w, ndc.z));
+    return texelFetch(shadowMask, ivec3(pixel, int(light.radiance.w)), 0).r;
 }
 
+// `cascade` AOV: the first shadowed light's layer at this pixel as a colour (cascade 0 red, 1 green,
+// 2 blue, 3 yellow, ...; blend bands mix neighbours; cube faces and hemispheres likewise), darkened
+// where shadowed so that cascade borders can be judged against the shadows they carry.
+vec3 shadowLayerColour(ivec2 pixel) {
+    const vec3 palette[9] = vec3[](vec3(0.9, 0.2, 0.2), vec3(0.2, 0.8, 0.2), vec3(0.25, 0.4, 1.0),
+                                   vec3(0.95, 0.85, 0.2), vec3(0.85, 0.3, 0.9), vec3(0.2, 0.85, 0.9),
+                                   vec3(1.0, 0.55, 0.15), vec3(0.75, 0.75, 0.75), vec3(0.1, 0.1, 0.1));
+    for (uint i = 0u; i < frame.size.z; ++i) {
+        if (lights[i].radiance.w == NO_SHADOW) continue;
+        vec2 m = texelFetch(shadowMask, ivec3(pixel, int(lights[i].radiance.w)), 0).rg;
+        int k = min(int(m.y), 8);
+        vec3 c = mix(palette[k], palette[min(k + 1, 8)], fract(m.y));
+        return c * (0.35 + 0.65 * m.x);
+    }
+    return vec3(0.0);
+}

@@ -6,7 +6,7 @@
 
 layout(location = 0) in vec3 inNormal;
 layout(location = 1) in vec2 inUv;
-layout(push_constant) uniform Push { DrawPush draw; };
+layout(push_constant) uniform Push { ShadowDrawPush draw; };
 
 void main() {
     if (alphaDiscarded(draw.material, baseColor(draw.material, inUv).a)) discard;

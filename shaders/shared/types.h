@@ -26,7 +26,12 @@ using uint = uint32_t;
 #define AOV_SHADOW 4
 #define AOV_FINAL 5     // direct + indirect
 #define AOV_INDIRECT 6  // indirect alone (albedo / pi * gathered irradiance)
-#define AOV_COUNT 7
+#define AOV_LPV_SLICE 7  // debug: one slice of the accumulated light volume (raw, no albedo)
+#define AOV_GV_SLICE 8   // debug: the same slice of the geometry (blocking) volume
+#define AOV_CASCADE 9    // debug: shadow layer of the first shadowed light (cascade, cube face, hemisphere)
+#define AOV_TRANSMITTANCE 10  // deep shadow map transmittance of the first light with one (1 = nothing translucent)
+#define AOV_DSM_LISTS 11      // debug: list length per texel of the first deep shadow map (its map over the image)
+#define AOV_COUNT 12
 
 #define ALPHA_OPAQUE 0
 #define ALPHA_MASK 1
@@ -50,7 +55,9 @@ struct FrameUniforms {
 struct GpuLight {
     vec4 position;   // xyz world position, w = type (LIGHT_*)
     vec4 direction;  // xyz direction the light travels, w = range (0 = infinite)
-    vec4 radiance;   // rgb = color * intensity, w = shadow layer (NO_SHADOW = unshadowed)
+    vec4 radiance;   // rgb = color * intensity, w = shadow index: GpuShadowLight and shadow-mask layer (NO_SHADOW = unshadowed)
+    // The light's first shadow layer, for passes that want one view of the light (the full layer
+    // list with cascades and cube faces is the shadow-layer table, src/shadow):
     vec4 spot;       // x = cos(inner), y = cos(outer), z = normal offset in texels, w = perspective (1) or ortho (0)
     vec4 shadow;     // x = shadow texel world size (ortho) or per unit distance (perspective), yzw unused
     mat4 shadowViewProj;
@@ -105,6 +112,133 @@ struct RsmDrawPush {
     uint material;
     uint light;   // index into the lights buffer
     uint layer;   // index into the RSM layers buffer
+};
+
+// Light propagation volumes (src/lpv). Volumes are buffers: light volume c, channel ch (R, G, B) is
+// vec4 SH coefficients per cell at ((c * 3 + ch) * cells + cell); the geometry volume is one vec4
+// per cell at (c * cells + cell), its cell k sitting at the light cells' corner k (half a cell off).
+#define LPV_MAX_CASCADES 4
+
+struct GpuLpvCascade {
+    vec4 origin;  // xyz = world position of the grid's min corner, w = cell size
+};
+
+// A virtual point light after RSM down-sampling.
+struct GpuVpl {
+    vec4 position;  // xyz, w = 1 when the VPL exists
+    vec4 normal;    // xyz unit normal, w = surfel area (world, on the surface)
+    vec4 flux;      // rgb reflected flux, w unused
+};
+
+struct LpvPush {
+    uvec4 grid;     // x = resolution, y = cascade count, z = first-iteration flag / slice axis, w = slice index
+    uvec4 counts;   // x = VPL count, y = RSM source resolution, z = down-sampled resolution, w = layer count
+    vec4 params;    // x = occlusion on (1) or off (0), y = gather blend band in cells, z = G-buffer injection step
+    GpuLpvCascade cascades[LPV_MAX_CASCADES];
+};
+
+// ---- Shadow maps (src/shadow, shaders/shadow) ----
+// Filters (GpuShadowLight.info.w; the same values as penumbra::ShadowFilter in scene/scene.h).
+#define SHADOW_FILTER_HARD 1
+#define SHADOW_FILTER_PCF 2
+#define SHADOW_FILTER_PCSS 3
+#define SHADOW_FILTER_VSM 4
+#define SHADOW_FILTER_EVSM 5
+#define SHADOW_FILTER_MSM 6
+// How a shadowed light's layers cover space (GpuShadowLight.info.z).
+#define SHADOW_KIND_SINGLE 0      // one perspective layer (spot)
+#define SHADOW_KIND_CASCADES 1    // directional: orthographic cascades, chosen by view depth
+#define SHADOW_KIND_CUBE 2        // point: 6 perspective faces +x, -x, +y, -y, +z, -z
+#define SHADOW_KIND_PARABOLOID 3  // point: 2 paraboloid hemispheres around +axis and -axis
+// Projection of one layer (GpuShadowLayer.info.x).
+#define SHADOW_PROJ_ORTHO 0
+#define SHADOW_PROJ_PERSPECTIVE 1
+#define SHADOW_PROJ_PARABOLOID 2
+#define SHADOW_NO_MOMENTS 0xFFFFFFFFu
+
+// One shadowed light; GpuLight.radiance.w is its index here and its layer in the shadow mask.
+struct GpuShadowLight {
+    uvec4 info;    // x = first layer, y = layer count, z = SHADOW_KIND_*, w = SHADOW_FILTER_*
+    vec4 params;   // x = normal offset (texels), y = PCSS penumbra scale (light diameter for spot and
+                   // point lights, 2 tan(angular radius) for directional ones), zw unused
+};
+
+// One layer of the shadow-map array.
+struct GpuShadowLayer {
+    mat4 viewProj;  // world -> clip; paraboloid layers: world -> the hemisphere's view space
+    vec4 params;    // x = texel world size (ortho) or per unit distance (perspective; paraboloid: on
+                    // its axis), y = near, z = far (view distances of depth 0 and 1), w unused
+    vec4 split;     // cascades: x = near, y = far split (camera view depths), zw unused
+    uvec4 info;     // x = SHADOW_PROJ_*, y = moment layer or SHADOW_NO_MOMENTS, z = moment filter, w unused
+};
+
+struct GpuShadowParams {
+    vec4 kernel;   // x = PCF radius (texels), y = PCSS max search radius (texels), z = cascade blend band
+                   // (fraction of a cascade), w = paraboloid disc scale
+    vec4 moments;  // x = light-bleeding reduction, y = EVSM positive exponent, z = negative, w = MSM bias
+    uvec4 info;    // x = shadow-map resolution, y = 1: linear depth comparison in hardware,
+                   // z = moment blur radius (texels), w = shadowed light count
+    vec4 poisson[16];  // 32 points of a progressive Poisson-disc set in the unit disc (xy, zw):
+                       // any prefix is well spread, so PCF takes the first 16 and PCSS all 32
+};
+
+// Push constants of the shadow raster passes (layered: instance i draws layer firstLayer + i with
+// views row viewIndex + i). Starts like DrawPush so that shared fragment code reads `material`.
+struct ShadowDrawPush {
+    uint viewIndex;
+    uint material;
+    uint firstLayer;
+    uint pad;
+    vec4 paraboloid;  // x = near, y = far, z = disc scale, w = max angle per tessellated edge (radians)
+};
+
+// ---- Hair and deep shadow maps (src/dsm, shaders/dsm) ----
+// Shading model in the G-buffer normal's w: surfaces store their normal (w = 1), hair its tangent.
+#define SHADING_SURFACE 1.0
+#define SHADING_HAIR 2.0
+
+#define DSM_NONE 0xFFFFFFFFu   // no node: empty list, end of a list, no neighbour link
+#define DSM_MAX_LIST_CAP 128   // size of the resolve's sort array: the largest allowed --dsm-max-list
+
+// A DSM node is a uvec4 in the node pool: x = depth (float bits: distance from a spot light, depth
+// along a directional light), y = alpha (build) then the transmittance behind the node (resolve),
+// z = next node of the texel's list, w = link to the right neighbour texel's list (the node there
+// with the largest depth <= this node's, or DSM_NONE); the upper neighbour's link is in a uint array.
+
+// One point of a hair strand as the ribbon vertex shader reads it.
+struct GpuHairPoint {
+    vec4 position;  // xyz world, w = ribbon width (world; 0 at the zero-width copies bracketing a strand)
+    vec4 tangent;   // xyz unit tangent, w = strand index (exact as a float up to 2^24)
+};
+
+// Push constants of every ribbon draw (camera G-buffer, shadow maps, DSM build) and of the DSM
+// build's mesh draws. Starts like DrawPush (views row, material) so that render/scene.vert reads it.
+struct HairDrawPush {
+    uvec4 ids;        // x = views row, y = material, z = DSM layer, w = DSM node capacity
+    vec4 viewer;      // xyz = eye position (w = 1) or unit direction towards a directional light (w = 0)
+    vec4 footprint;   // x = world size of a pixel/texel (orthographic) or per unit distance (perspective),
+                      // y = perspective (1) or not (0), z = DSM resolution, w = min ribbon width in pixels
+};
+
+// The deep shadow map of light i is entry i (lighting reads it for every light).
+struct GpuDsmLight {
+    mat4 viewProj;  // world -> the DSM's clip space
+    vec4 viewer;    // as HairDrawPush.viewer: node depths are measured from it
+    vec4 params;    // x = texel world size (ortho) or per unit distance (perspective), y = perspective,
+                    // z = DSM layer (< 0: the light has no DSM), w = resolution
+    vec4 kernel;    // x = PCF box width (texels), y = depth bias (texels), z = normal offset (texels), w unused
+};
+
+// Counters of one frame (cleared before the build; read back for the report).
+struct DsmStats {
+    uvec4 build;  // x = light-space fragments (allocations tried: beyond the capacity = dropped), yzw unused
+    uvec4 lists;  // x = nodes kept, y = nodes dropped beyond the max list length, z = longest list,
+                  // w = texels with a list
+};
+
+// Push constants of the resolve and link passes.
+struct DsmPush {
+    uvec4 sizes;  // x = resolution, y = layer count, z = node capacity, w = max list length
 };
 
 #ifdef __cplusplus

@@ -83,7 +83,10 @@ Light parseLight(const std::string& value) {
 }
 
 // In AOV_* order (shaders/shared/types.h).
-std::vector<std::string> aovNames() { return {"direct", "albedo", "normal", "depth", "shadow", "final", "indirect"}; }
+std::vector<std::string> aovNames() {
+    return {"direct",   "albedo",    "normal",   "depth",   "shadow",        "final",
+            "indirect", "lpv-slice", "gv-slice", "cascade", "transmittance", "dsm-lists"};
+}
 
 Aov parseAov(const std::string& value) {
     const std::vector<std::string> names = aovNames();

@@ -8,6 +8,8 @@
 #include <fmt/format.h>
 
 #include "app/cli_parse.h"
+#include "app/dsm_cli.h"
+#include "app/shadow_cli.h"
 #include "io/image_io.h"
 #include "render/renderer.h"
 
@@ -21,10 +23,12 @@ struct RenderOptions {
     std::string camera;
     int cameraIndex = 0;
     std::vector<std::string> lights;
+    std::vector<std::string> lightFilters;  // --light-shadow N=MODE
     std::string aov = "final";
     bool printPasses = false;
     int frames = 1;
     bool quiet = false;
+    BuiltinOptions builtin;  // --strands
 };
 
 // Per-pass median over the rendered frames (the first frame, which warms caches, included only
@@ -46,12 +50,28 @@ void printTimings(const std::vector<std::vector<vk::ScopeTiming>>& frames) {
                }));
 }
 
+void addLpvOptions(CLI::App& cmd, LpvSettings& lpv) {
+    cmd.add_option("--lpv-res", lpv.resolution, "LPV cells per side (default 32)")->check(CLI::Range(4, 256));
+    cmd.add_option("--lpv-iterations", lpv.iterations, "LPV propagation steps (default 8)")->check(CLI::Range(1, 256));
+    cmd.add_option("--lpv-cascades", lpv.cascades, "LPV cascades 1-4 (default: 1 for small scenes, 3 for large)")
+        ->check(CLI::Range(1, 4));
+    cmd.add_option("--lpv-rsm-res", lpv.rsmResolution, "RSM resolution for LPV injection (default 2048)")
+        ->check(CLI::Range(16, 8192));
+    cmd.add_option("--lpv-vpl-res", lpv.vplResolution, "Down-sampled VPLs per side (default 512)")
+        ->check(CLI::Range(1, 8192));
+    cmd.add_option("--lpv-occlusion", lpv.occlusion, "Geometry-volume occlusion on/off (default on)");
+    cmd.add_option("--lpv-camera-geometry", lpv.cameraGeometry, "Inject camera G-buffer occluders (default on)");
+    cmd.add_option("--lpv-slice-axis", lpv.sliceAxis, "Axis of the lpv-slice/gv-slice AOV: 0=x 1=y 2=z")
+        ->check(CLI::Range(0, 2));
+    cmd.add_option("--lpv-slice", lpv.sliceIndex, "Cell index of the lpv-slice/gv-slice AOV (default 16)");
+}
+
 void addGiOptions(CLI::App& cmd, RenderSettings& rs) {
-    const std::map<std::string, GiMode> gi{{"none", GiMode::None}, {"rsm", GiMode::Rsm}};
+    const std::map<std::string, GiMode> gi{{"none", GiMode::None}, {"rsm", GiMode::Rsm}, {"lpv", GiMode::Lpv}};
     const std::map<std::string, RsmMode> modes{
         {"interpolated", RsmMode::Interpolated}, {"full", RsmMode::Full}, {"all-texels", RsmMode::AllTexels}};
     const std::map<std::string, RsmWeights> weights{{"unbiased", RsmWeights::Unbiased}, {"paper", RsmWeights::Paper}};
-    cmd.add_option("--gi", rs.gi, "Indirect light: none, rsm")->transform(CLI::CheckedTransformer(gi));
+    cmd.add_option("--gi", rs.gi, "Indirect light: none, rsm, lpv")->transform(CLI::CheckedTransformer(gi));
     cmd.add_option("--rsm-res", rs.rsm.resolution, "RSM resolution per light (default 512)")
         ->check(CLI::Range(8, 8192));
     cmd.add_option("--rsm-samples", rs.rsm.samples, "RSM gather samples per pixel (default 400)")
@@ -65,6 +85,7 @@ void addGiOptions(CLI::App& cmd, RenderSettings& rs) {
         ->transform(CLI::CheckedTransformer(weights));
     cmd.add_option("--rsm-lowres", rs.rsm.lowResFactor, "Low-resolution gather factor (default 4)")
         ->check(CLI::Range(1, 32));
+    addLpvOptions(cmd, rs.lpv);
 }
 
 int runRender(const RenderOptions& o, const vk::ContextOptions& vkOptions, RenderSettings settings) {
@@ -72,6 +93,11 @@ int runRender(const RenderOptions& o, const vk::ContextOptions& vkOptions, Rende
     if (ext != ".png" && ext != ".exr")
         throw std::invalid_argument(fmt::format("-o {}: the output must end in .png or .exr", o.output));
     settings.aov = parseAov(o.aov);
+    finishDsmSettings(settings);
+    if (settings.gi == GiMode::Lpv && settings.lpv.rsmResolution % settings.lpv.vplResolution)
+        throw std::invalid_argument("--lpv-rsm-res must be a multiple of --lpv-vpl-res");
+    if ((settings.aov == Aov::LpvSlice || settings.aov == Aov::GvSlice) && settings.gi != GiMode::Lpv)
+        throw std::invalid_argument("--aov lpv-slice/gv-slice need --gi lpv");
     if (settings.gi == GiMode::Rsm && settings.rsm.mode == RsmMode::AllTexels && settings.rsm.resolution > 64)
         throw std::invalid_argument("--rsm-mode all-texels gathers every texel at every pixel: use --rsm-res <= 64");
     Camera camera;
@@ -79,9 +105,10 @@ int runRender(const RenderOptions& o, const vk::ContextOptions& vkOptions, Rende
     for (const std::string& l : o.lights) lights.push_back(parseLight(l));
     if (!o.camera.empty()) camera = parseCamera(o.camera);
 
-    Scene scene = loadScene(o.scene);
+    Scene scene = loadScene(o.scene, o.builtin);
     if (!lights.empty()) scene.lights = lights;
     addDefaultsIfMissing(scene);
+    applyLightFilters(o.lightFilters, scene.lights);
     if (o.camera.empty()) {
         if (o.cameraIndex < 0 || o.cameraIndex >= int(scene.cameras.size()))
             throw std::invalid_argument(fmt::format("--camera-index {}: the scene has {} camera(s)", o.cameraIndex,
@@ -100,9 +127,10 @@ int runRender(const RenderOptions& o, const vk::ContextOptions& vkOptions, Rende
     if (ext == ".png") writePng(o.output, settings.width, settings.height, renderer.readLdr());
     else writeExr(o.output, settings.width, settings.height, renderer.readHdr());
     if (!o.quiet) {
-        fmt::print("penumbra: rendered '{}' ({} triangles, {} lights) on {} at {}x{} -> {}\n", scene.name,
-                   scene.triangleCount(), scene.lights.size(), ctx.info().name, settings.width, settings.height,
-                   o.output);
+        fmt::print("penumbra: rendered '{}' ({} triangles, {}{} lights) on {} at {}x{} -> {}\n", scene.name,
+                   scene.triangleCount(),
+                   scene.strands.empty() ? "" : fmt::format("{} hair strands, ", scene.strands.size()),
+                   scene.lights.size(), ctx.info().name, settings.width, settings.height, o.output);
         fmt::print("GPU time per pass{}:\n",
                    o.frames > 1 ? fmt::format(" (median of {} frames after 1 warm-up)", o.frames - 1) : "");
         printTimings(timings);
@@ -110,10 +138,12 @@ int runRender(const RenderOptions& o, const vk::ContextOptions& vkOptions, Rende
             fmt::print("  rsm fallback: {:.2f}% of pixels gathered in full\n",
                        100.0 * renderer.rsmGather()->fallbackFraction());
         if (o.printPasses) fmt::print("passes:\n{}", renderer.describePasses());
+        reportDsm(renderer, false);
         const Bounds& b = scene.bounds;
         fmt::print("scene bounds ({:.3g}, {:.3g}, {:.3g}) .. ({:.3g}, {:.3g}, {:.3g}); camera eye ({:.3g}, {:.3g}, {:.3g})\n",
                    b.min.x, b.min.y, b.min.z, b.max.x, b.max.y, b.max.z, camera.eye.x, camera.eye.y, camera.eye.z);
     }
+    if (o.quiet) reportDsm(renderer, true);  // the overflow warning only
     if (ctx.validationMessages() > 0)
         throw std::runtime_error(fmt::format("{} validation message(s) reported", ctx.validationMessages()));
     return 0;
@@ -151,7 +181,8 @@ int main(int argc, char** argv) {
     render->add_option("--camera", ro.camera, "Camera override: ex,ey,ez,tx,ty,tz,ux,uy,uz,fovy_deg");
     render->add_option("--camera-index", ro.cameraIndex, "Which of the scene's cameras to use");
     render->add_option("--light", ro.lights, "Replace the scene's lights (repeatable): see README");
-    render->add_option("--aov", ro.aov, "Output: final (default), direct, indirect, albedo, normal, depth, shadow");
+    render->add_option("--aov", ro.aov,
+                       "Output: final (default), direct, indirect, albedo, normal, depth, shadow, cascade, ...");
     addGiOptions(*render, rs);
     render->add_option("--exposure", rs.exposure, "Linear exposure multiplier before tone mapping")
         ->check(CLI::Range(1e-6, 1e6));
@@ -162,6 +193,8 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(0.0, 100.0));
     render->add_option("--shadow-normal-offset", rs.shadow.normalOffset, "Receiver normal offset in shadow texels")
         ->check(CLI::Range(0.0, 100.0));
+    addShadowOptions(*render, rs.shadow, ro.lightFilters, rs.dsm.enabled);
+    addDsmOptions(*render, rs.dsm, ro.builtin);
     render->add_option("--frames", ro.frames, "Frames to render; timings are the median after the first")
         ->check(CLI::Range(1, 100000));
     render->add_flag("--print-passes", ro.printPasses, "Print the frame's passes with their inputs and outputs");

@@ -13,30 +13,35 @@ LightingPass::LightingPass(vk::Allocator& alloc, uint32_t width, uint32_t height
                                          {4, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
                                          {5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
                                          {6, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
-                                         {7, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}});
+                                         {7, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
+                                         {8, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                                         {9, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                                         {10, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                                         {11, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}});
     pipeline_ = vk::Pipeline::compute(ctx, "render/lighting.comp", {layout_.handle()}, 0);
     pointSampler_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
-    // Nearest comparison: the standard (hard) shadow-map test of seed 004, one texel per lookup.
-    shadowSampler_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER, true, false});
 }
 
 void LightingPass::addTo(FrameGraph& graph, const vk::Buffer& frame, const vk::Buffer& lights, GBufferPass& g,
-                         vk::Image& shadowMap, vk::Image& indirect) {
+                         vk::Image& shadowMask, vk::Image& indirect, const DeepShadowMaps& dsm) {
     PassDesc pass;
     pass.name = "lighting";
     pass.kind = PassKind::Compute;
     pass.images = {{&g.albedo, Use::Sampled}, {&g.normal, Use::Sampled}, {&g.depth, Use::Sampled},
-                   {&shadowMap, Use::Sampled}, {&indirect, Use::Sampled}, {&hdr, Use::StorageWrite}};
+                   {&shadowMask, Use::Sampled}, {&indirect, Use::Sampled}, {&hdr, Use::StorageWrite}};
     pass.buffers = {{&frame, Use::Uniform}, {&lights, Use::StorageRead}};
-    pass.record = [this, &frame, &lights, &g, &shadowMap, &indirect](VkCommandBuffer cmd) {
+    dsm.addLookupInputs(pass);
+    pass.record = [this, &frame, &lights, &g, &shadowMask, &indirect, &dsm](VkCommandBuffer cmd) {
         pipeline_.bind(cmd);
-        vk::DescriptorWrites()
+        vk::DescriptorWrites writes;
+        dsm.writeLookup(writes);
+        writes
             .uniformBuffer(0, frame)
             .storageBuffer(1, lights)
             .sampled(2, g.albedo.view(), pointSampler_.handle())
             .sampled(3, g.normal.view(), pointSampler_.handle())
             .sampled(4, g.depth.view(), pointSampler_.handle(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
-            .sampled(5, shadowMap.view(), shadowSampler_.handle(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
+            .sampled(5, shadowMask.view(), pointSampler_.handle())
             .storageImage(6, hdr.view())
             .sampled(7, indirect.view(), pointSampler_.handle())
             .push(alloc_.context(), cmd, pipeline_);

@@ -7,16 +7,26 @@
 namespace penumbra {
 namespace {
 
-gpu::GpuLight toGpu(const Light& l, int layer, const LightProjection* proj, float normalOffset) {
+// The light without its shadow fields (ShadowMapPass::fillGpuLight adds them).
+gpu::GpuLight toGpu(const Light& l) {
     gpu::GpuLight g{};
     g.position = glm::vec4(l.position, float(static_cast<uint32_t>(l.type)));
     g.direction = glm::vec4(glm::normalize(l.direction), l.range);
-    g.radiance = glm::vec4(l.color * l.intensity, layer >= 0 ? float(layer) : float(NO_SHADOW));
-    g.spot = {std::cos(l.innerConeAngle), std::cos(l.outerConeAngle), normalOffset,
-              proj && proj->perspective ? 1.0f : 0.0f};
-    g.shadow = {proj ? proj->texelSize : 0.0f, 0, 0, 0};
-    g.shadowViewProj = proj ? proj->viewProj : glm::mat4(1.0f);
+    g.radiance = glm::vec4(l.color * l.intensity, float(NO_SHADOW));
+    g.spot = {std::cos(l.innerConeAngle), std::cos(l.outerConeAngle), 0.0f, 0.0f};
+    g.shadowViewProj = glm::mat4(1.0f);
     return g;
+}
+
+// One RSM layer per shadow layer (cascades and cube faces included): the RSM is the shadow pass's
+// light view with more targets. Paraboloid layers have no matrix projection to rasterize with.
+std::vector<RsmLayerSource> rsmLayersOf(const ShadowMapPass& shadow) {
+    std::vector<RsmLayerSource> layers;
+    for (uint32_t k = 0; k < shadow.layers().size(); ++k) {
+        const ShadowLayer& l = shadow.layers()[k];
+        if (!l.projection.paraboloid) layers.push_back({l.light, 1 + k, l.projection, shadow.settings().resolution});
+    }
+    return layers;
 }
 
 // Far plane that encloses the whole scene from the eye.
@@ -45,15 +55,12 @@ Renderer::Renderer(vk::Context& ctx, const Scene& scene, const RenderSettings& s
     lighting_ = std::make_unique<LightingPass>(alloc_, settings.width, settings.height);
     tonemap_ = std::make_unique<TonemapPass>(alloc_, settings.width, settings.height);
 
-    std::vector<std::string> unshadowed;
-    shadow_->assign(scene.lights, shadowLayerOfLight_, projections_, unshadowed);
-    for (const std::string& name : unshadowed)
-        warnings_.push_back(fmt::format("{} is lit without shadows (point-light shadows are not implemented yet)",
-                                        name));
+    shadow_->assign(scene.lights);
     const size_t lightCount = std::max<size_t>(scene.lights.size(), 1);
     setupGi();
+    setupHairAndDsm();
     frame_ = vk::Buffer(alloc_, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true, "frame");
-    views_ = vk::Buffer(alloc_, sizeof(glm::mat4) * (1 + projections_.size()), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+    views_ = vk::Buffer(alloc_, sizeof(glm::mat4) * (1 + shadow_->layers().size()), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                         true, "views");
     lights_ = vk::Buffer(alloc_, sizeof(gpu::GpuLight) * lightCount, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true,
                          "lights");
@@ -66,23 +73,59 @@ void Renderer::setupGi() {
                                      VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, "no-indirect"});
     const uint64_t zero = 0;
     cmd_.uploadImage(noIndirect_, &zero, sizeof(zero));
-    if (settings_.gi != GiMode::Rsm) return;
-    rsm_ = std::make_unique<RsmPass>(alloc_, *sceneGpu_, settings_.rsm);
-    rsmGather_ = std::make_unique<RsmGather>(alloc_, cmd_, settings_.width, settings_.height, settings_.rsm);
-    // One RSM layer per shadow layer: the RSM is the shadow pass's light view with more targets.
-    std::vector<RsmLayerSource> layers;
-    for (size_t light = 0; light < scene_.lights.size(); ++light) {
-        const int layer = shadowLayerOfLight_[light];
-        if (layer >= 0)
-            layers.push_back({uint32_t(light), uint32_t(1 + layer), projections_[layer], settings_.shadow.resolution});
+    if (settings_.gi == GiMode::None) return;
+    // Both GI techniques start from the RSM; LPV renders it larger and down-samples it.
+    RsmSettings rsmSettings = settings_.rsm;
+    if (settings_.gi == GiMode::Lpv) {
+        rsmSettings.resolution = settings_.lpv.rsmResolution;
+        lpv_ = std::make_unique<LightPropagationVolume>(alloc_, settings_.width, settings_.height, settings_.lpv,
+                                                        scene_.bounds);
+    } else {
+        rsmGather_ = std::make_unique<RsmGather>(alloc_, cmd_, settings_.width, settings_.height, settings_.rsm);
     }
-    if (layers.empty()) warnings_.push_back("--gi rsm: no directional or spot light casts shadows; no indirect light");
+    rsm_ = std::make_unique<RsmPass>(alloc_, *sceneGpu_, rsmSettings);
+    // The layers' projections are set every frame (cascades follow the camera): see updateBuffers.
+    const std::vector<RsmLayerSource> layers = rsmLayersOf(*shadow_);
+    if (layers.empty()) warnings_.push_back("GI: no directional or spot light casts shadows; no indirect light");
     rsm_->setLayers(layers);
+}
+
+// Hair (src/dsm) in the G-buffer and, for lights without a deep shadow map, as an opaque caster in
+// the ordinary shadow map; blended meshes and hair of lights with one go to their DSM instead.
+void Renderer::setupHairAndDsm() {
+    if (!scene_.strands.empty()) hair_ = std::make_unique<HairGpu>(cmd_, scene_);
+    dsm_ = std::make_unique<DeepShadowMaps>(alloc_, *sceneGpu_, hair_.get(), settings_.dsm, settings_.shadow.resolution,
+                                            warnings_);
+    std::vector<uint32_t> deep;
+    for (uint32_t i = 0; i < scene_.lights.size(); ++i)
+        if (dsm_->covers(i)) deep.push_back(i);
+    shadow_->setDeepShadowLights(deep);
+    if (!hair_) return;
+    hairGBuffer_ = std::make_unique<HairGBufferPass>(alloc_, *hair_, *gbuffer_);
+    hairShadow_ = std::make_unique<HairShadowPass>(alloc_, *hair_, settings_.shadow.depthBiasConstant,
+                                                   settings_.shadow.depthBiasSlope);
+    shadow_->setExtraCasters([this](FrameGraph& g, vk::Image& map) {
+        hairShadow_->addTo(g, map, views_, hairShadowLayers());
+    });
+}
+
+// The shadow layers hair is drawn into: those of lights without a DSM (paraboloid point-light maps
+// bend edges, which the ribbon vertex shader does not: hair casts no shadow there).
+std::vector<HairShadowLayer> Renderer::hairShadowLayers() const {
+    std::vector<HairShadowLayer> out;
+    for (uint32_t k = 0; k < shadow_->layers().size(); ++k) {
+        const ShadowLayer& l = shadow_->layers()[k];
+        if (l.projection.paraboloid || dsm_->covers(l.light)) continue;
+        out.push_back({k, 1 + k, lightRibbonView(scene_.lights[l.light], l.projection)});
+    }
+    return out;
 }
 
 void Renderer::updateBuffers(const Camera& camera) {
     const float aspect = float(settings_.width) / float(settings_.height);
     zfar_ = sceneFar(camera, scene_.bounds);
+    shadow_->update(camera, aspect, zfar_);
+    if (rsm_) rsm_->setLayers(rsmLayersOf(*shadow_));
     gpu::FrameUniforms f{};
     f.viewProj = cameraViewProj(camera, aspect, zfar_);
     f.invViewProj = glm::inverse(f.viewProj);
@@ -94,14 +137,13 @@ void Renderer::updateBuffers(const Camera& camera) {
     frameConstants_ = f;
 
     std::vector<glm::mat4> views{f.viewProj};
-    for (const LightProjection& p : projections_) views.push_back(p.viewProj);
+    for (const ShadowLayer& l : shadow_->layers()) views.push_back(l.projection.viewProj);
     views_.write(views.data(), views.size() * sizeof(glm::mat4));
 
     std::vector<gpu::GpuLight> lights;
-    for (size_t i = 0; i < scene_.lights.size(); ++i) {
-        int layer = shadowLayerOfLight_[i];
-        lights.push_back(toGpu(scene_.lights[i], layer, layer >= 0 ? &projections_[layer] : nullptr,
-                               settings_.shadow.normalOffset));
+    for (uint32_t i = 0; i < scene_.lights.size(); ++i) {
+        lights.push_back(toGpu(scene_.lights[i]));
+        shadow_->fillGpuLight(i, lights.back());
     }
     if (!lights.empty()) lights_.write(lights.data(), lights.size() * sizeof(gpu::GpuLight));
 }
@@ -110,11 +152,16 @@ gpu::TonemapPush Renderer::tonemapParams(float zfar) const {
     switch (settings_.aov) {
         case Aov::Direct:
         case Aov::Final:
-        case Aov::Indirect: return {{settings_.exposure, 0.0f, float(TONEMAP_ACES), 0.0f}};
-        case Aov::Albedo: return {{1.0f, 0.0f, float(TONEMAP_SRGB), 0.0f}};
+        case Aov::Indirect:
+        case Aov::LpvSlice: return {{settings_.exposure, 0.0f, float(TONEMAP_ACES), 0.0f}};
+        case Aov::GvSlice: return {{1.0f, 0.0f, float(TONEMAP_LINEAR), 0.0f}};
+        case Aov::Albedo:
+        case Aov::Cascade: return {{1.0f, 0.0f, float(TONEMAP_SRGB), 0.0f}};
         case Aov::Normal: return {{0.5f, 0.5f, float(TONEMAP_LINEAR), 0.0f}};
         case Aov::Depth: return {{1.0f / zfar, 0.0f, float(TONEMAP_LINEAR), 0.0f}};
-        case Aov::Shadow: return {{1.0f, 0.0f, float(TONEMAP_LINEAR), 0.0f}};
+        case Aov::Shadow:
+        case Aov::Transmittance: return {{1.0f, 0.0f, float(TONEMAP_LINEAR), 0.0f}};
+        case Aov::DsmLists: return {{1.0f / float(settings_.dsm.maxList), 0.0f, float(TONEMAP_LINEAR), 0.0f}};
     }
     return {};
 }
@@ -122,14 +169,20 @@ gpu::TonemapPush Renderer::tonemapParams(float zfar) const {
 void Renderer::render(const Camera& camera) {
     updateBuffers(camera);
     graph_.clear();
-    if (!projections_.empty()) shadow_->addTo(graph_, views_, 1, uint32_t(projections_.size()));
+    shadow_->addTo(graph_, views_, 1);
     gbuffer_->addTo(graph_, views_);
-    if (rsm_) {
-        rsm_->addTo(graph_, views_, lights_);
-        rsmGather_->addTo(graph_, frame_, *gbuffer_, *rsm_);
+    if (hairGBuffer_)
+        hairGBuffer_->addTo(graph_, *gbuffer_, views_, cameraRibbonView(camera.eye, frameConstants_.lens.x));
+    shadow_->addFilterTo(graph_, frame_, lights_, *gbuffer_);
+    if (rsm_) rsm_->addTo(graph_, views_, lights_);
+    if (rsmGather_) rsmGather_->addTo(graph_, frame_, *gbuffer_, *rsm_);
+    if (lpv_) {
+        lpv_->update(camera.eye);
+        lpv_->addTo(graph_, frame_, lights_, *gbuffer_, *rsm_);
     }
-    vk::Image& indirect = rsmGather_ ? rsmGather_->irradiance() : noIndirect_;
-    lighting_->addTo(graph_, frame_, lights_, *gbuffer_, shadow_->shadowMap(), indirect);
+    vk::Image& indirect = rsmGather_ ? rsmGather_->irradiance() : lpv_ ? lpv_->irradiance() : noIndirect_;
+    dsm_->addTo(graph_);
+    lighting_->addTo(graph_, frame_, lights_, *gbuffer_, shadow_->mask(), indirect, *dsm_);
     tonemap_->addTo(graph_, lighting_->hdr, tonemapParams(zfar_));
     timer_.reset();
     cmd_.submitAndWait([&](VkCommandBuffer cmd) { graph_.execute(cmd, &timer_); });

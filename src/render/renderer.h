@@ -6,8 +6,10 @@
 #include <string>
 #include <vector>
 
+#include "dsm/hair_passes.h"
 #include "render/gbuffer_pass.h"
 #include "render/lighting_pass.h"
+#include "lpv/lpv.h"
 #include "rsm/rsm_gather.h"
 #include "shadow/shadow_map_pass.h"
 
@@ -21,9 +23,14 @@ enum class Aov {
     Shadow = AOV_SHADOW,
     Final = AOV_FINAL,
     Indirect = AOV_INDIRECT,
+    LpvSlice = AOV_LPV_SLICE,
+    GvSlice = AOV_GV_SLICE,
+    Cascade = AOV_CASCADE,
+    Transmittance = AOV_TRANSMITTANCE,
+    DsmLists = AOV_DSM_LISTS,
 };
 
-enum class GiMode { None, Rsm };
+enum class GiMode { None, Rsm, Lpv };
 
 struct RenderSettings {
     uint32_t width = 1280;
@@ -33,6 +40,8 @@ struct RenderSettings {
     ShadowSettings shadow;
     GiMode gi = GiMode::None;
     RsmSettings rsm;
+    LpvSettings lpv;
+    DsmSettings dsm;
 };
 
 class Renderer {
@@ -52,15 +61,22 @@ public:
     const RenderSettings& settings() const { return settings_; }
     // Internals for tests and statistics: the G-buffer, read-backs, the last frame's constants.
     GBufferPass& gbuffer() { return *gbuffer_; }
+    ShadowMapPass& shadow() { return *shadow_; }  // layers, shadow map, mask
     vk::CommandContext& commands() { return cmd_; }
     const gpu::FrameUniforms& frameUniforms() const { return frameConstants_; }
     // GI internals, for tests and statistics (null when that GI mode is off).
     RsmPass* rsm() { return rsm_.get(); }
     RsmGather* rsmGather() { return rsmGather_.get(); }
+    LightPropagationVolume* lpv() { return lpv_.get(); }
+    // Deep shadow maps (always present; inactive unless --shadow dsm) and the hair (null without strands).
+    DeepShadowMaps& deepShadows() { return *dsm_; }
+    const HairGpu* hair() const { return hair_.get(); }
 
 private:
     void updateBuffers(const Camera& camera);
     void setupGi();
+    void setupHairAndDsm();
+    std::vector<HairShadowLayer> hairShadowLayers() const;
     gpu::TonemapPush tonemapParams(float zfar) const;
 
     vk::Context& ctx_;
@@ -77,10 +93,13 @@ private:
     std::unique_ptr<TonemapPass> tonemap_;
     std::unique_ptr<RsmPass> rsm_;
     std::unique_ptr<RsmGather> rsmGather_;
+    std::unique_ptr<LightPropagationVolume> lpv_;
+    std::unique_ptr<HairGpu> hair_;
+    std::unique_ptr<HairGBufferPass> hairGBuffer_;
+    std::unique_ptr<HairShadowPass> hairShadow_;
+    std::unique_ptr<DeepShadowMaps> dsm_;
     vk::Image noIndirect_;  // bound in place of the indirect irradiance when GI is off
     vk::Buffer frame_, views_, lights_;
-    std::vector<int> shadowLayerOfLight_;
-    std::vector<LightProjection> projections_;
     FrameGraph graph_;
     std::vector<vk::ScopeTiming> timings_;
     std::vector<std::string> warnings_;

@@ -29,11 +29,17 @@ uint32_t mipCount(uint32_t size) {
 
 SceneGpu::SceneGpu(vk::CommandContext& cmd, const Scene& scene)
     : scene_(scene), ctx_(cmd.allocator().context()) {
-    if (scene.indices.empty()) throw vk::VulkanError("scene has no triangles");
-    vertices_ = cmd.createDeviceBuffer(scene.vertices.data(), scene.vertices.size() * sizeof(Vertex),
+    if (scene.indices.empty() && scene.strands.empty()) throw vk::VulkanError("scene has no triangles");
+    // A hair-only scene (glTF lines) still binds a vertex and an index buffer: one unused element each.
+    const Vertex noVertex{};
+    const uint32_t noIndex = 0;
+    const bool none = scene.indices.empty();
+    vertices_ = cmd.createDeviceBuffer(none ? &noVertex : scene.vertices.data(),
+                                       none ? sizeof(Vertex) : scene.vertices.size() * sizeof(Vertex),
                                        VK_BUFFER_USAGE_VERTEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                        "vertices");
-    indices_ = cmd.createDeviceBuffer(scene.indices.data(), scene.indices.size() * sizeof(uint32_t),
+    indices_ = cmd.createDeviceBuffer(none ? &noIndex : scene.indices.data(),
+                                      none ? sizeof(uint32_t) : scene.indices.size() * sizeof(uint32_t),
                                       VK_BUFFER_USAGE_INDEX_BUFFER_BIT | VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                       "indices");
     std::vector<gpu::GpuMaterial> mats;

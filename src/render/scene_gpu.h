@@ -46,8 +46,9 @@ public:
     // from outside casts no shadow); pipelines must use GraphicsDesc::dynamicCullMode.
     // Winding: glTF fronts are counter-clockwise; views with a y-flipped projection (the camera)
     // keep that, views without (shadow maps) see them clockwise: see sceneFrontFace().
+    // `instances` > 1: layered passes draw one instance per target layer (shadow maps).
     template <class PerDraw, class Filter>
-    void draw(VkCommandBuffer cmd, PerDraw perDraw, Filter filter) const;
+    void draw(VkCommandBuffer cmd, PerDraw perDraw, Filter filter, uint32_t instances = 1) const;
 
 private:
     void uploadTextures(vk::CommandContext& cmd);
@@ -59,7 +60,7 @@ private:
 };
 
 template <class PerDraw, class Filter>
-void SceneGpu::draw(VkCommandBuffer cmd, PerDraw perDraw, Filter filter) const {
+void SceneGpu::draw(VkCommandBuffer cmd, PerDraw perDraw, Filter filter, uint32_t instances) const {
     VkDeviceSize offset = 0;
     VkBuffer vb = vertices_.handle();
     vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &offset);
@@ -68,7 +69,7 @@ void SceneGpu::draw(VkCommandBuffer cmd, PerDraw perDraw, Filter filter) const {
         if (!filter(scene_.materials[d.material])) continue;
         vkCmdSetCullMode(cmd, scene_.materials[d.material].doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
         perDraw(d);
-        vkCmdDrawIndexed(cmd, d.indexCount, 1, d.firstIndex, 0, 0);
+        vkCmdDrawIndexed(cmd, d.indexCount, instances, d.firstIndex, 0, 0);
     }
 }
 

@@ -8,12 +8,6 @@ namespace {
 
 constexpr VkFormat kIrradianceFormat = VK_FORMAT_R32G32B32A32_SFLOAT;  // exact sums stay exact
 
-vk::DescriptorLayout makeLayout(vk::Context& ctx, const std::vector<VkDescriptorType>& types) {
-    std::vector<vk::Binding> b;
-    for (uint32_t i = 0; i < types.size(); ++i) b.push_back({i, types[i]});
-    return vk::DescriptorLayout(ctx, b);
-}
-
 }  // namespace
 
 std::vector<glm::vec4> rsmSamplePattern(const RsmSettings& s) {
@@ -38,13 +32,10 @@ RsmGather::RsmGather(vk::Allocator& alloc, vk::CommandContext& cmd, uint32_t wid
     vk::Context& ctx = alloc.context();
     const VkDescriptorType ubo = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, tex = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                            ssbo = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, img = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-    gatherLayout_ = makeLayout(ctx, {ubo, tex, tex, tex, tex, tex, ssbo, ssbo, img, ssbo});
-    interpolateLayout_ = makeLayout(ctx, {ubo, tex, tex, tex, img, ssbo});
-    argsLayout_ = makeLayout(ctx, {ssbo, ssbo});
-    gather_ = vk::Pipeline::compute(ctx, "rsm/gather.comp", {gatherLayout_.handle()}, sizeof(gpu::RsmPush));
-    interpolate_ = vk::Pipeline::compute(ctx, "rsm/interpolate.comp", {interpolateLayout_.handle()},
-                                         sizeof(gpu::RsmPush));
-    args_ = vk::Pipeline::compute(ctx, "rsm/list_args.comp", {argsLayout_.handle()}, 0);
+    gather_ = vk::ComputeKernel(ctx, "rsm/gather.comp", {ubo, tex, tex, tex, tex, tex, ssbo, ssbo, img, ssbo},
+                                sizeof(gpu::RsmPush));
+    interpolate_ = vk::ComputeKernel(ctx, "rsm/interpolate.comp", {ubo, tex, tex, tex, img, ssbo}, sizeof(gpu::RsmPush));
+    args_ = vk::ComputeKernel(ctx, "rsm/list_args.comp", {ssbo, ssbo}, 0);
     pointSampler_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
 
     const uint32_t f = std::max(1u, settings.lowResFactor);
@@ -85,7 +76,7 @@ PassDesc RsmGather::gatherPass(const char* name, uint32_t mode, vk::Image& out, 
                     {low ? lowWidth_ : width_, low ? lowHeight_ : height_, settings_.resolution, 0},
                     {settings_.normalThreshold, settings_.distanceThreshold, settings_.radius, 0}};
     pass.record = [this, mode, pc, &out, &frame, &g, &rsm](VkCommandBuffer cmd) {
-        gather_.bind(cmd);
+        gather_.pipeline.bind(cmd);
         const VkImageLayout depthRead = VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL;
         vk::DescriptorWrites()
             .uniformBuffer(0, frame)
@@ -98,8 +89,8 @@ PassDesc RsmGather::gatherPass(const char* name, uint32_t mode, vk::Image& out, 
             .storageBuffer(7, samples_)
             .storageImage(8, out.view())
             .storageBuffer(9, pixelList_)
-            .push(alloc_.context(), cmd, gather_);
-        gather_.push(cmd, pc);
+            .push(alloc_.context(), cmd, gather_.pipeline);
+        gather_.pipeline.push(cmd, pc);
         if (mode == RSM_GATHER_LIST) vkCmdDispatchIndirect(cmd, dispatchArgs_.handle(), 0);
         else vkCmdDispatch(cmd, vk::divUp(pc.sizes.x, 8), vk::divUp(pc.sizes.y, 8), 1);
     };
@@ -126,7 +117,7 @@ void RsmGather::addTo(FrameGraph& graph, const vk::Buffer& frame, GBufferPass& g
                     {lowWidth_, lowHeight_, settings_.resolution, 0},
                     {settings_.normalThreshold, settings_.distanceThreshold, settings_.radius, 0}};
     interp.record = [this, pc, &frame, &g](VkCommandBuffer cmd) {
-        interpolate_.bind(cmd);
+        interpolate_.pipeline.bind(cmd);
         vk::DescriptorWrites()
             .uniformBuffer(0, frame)
             .sampled(1, g.normal.view(), pointSampler_.handle())
@@ -134,8 +125,8 @@ void RsmGather::addTo(FrameGraph& graph, const vk::Buffer& frame, GBufferPass& g
             .sampled(3, low_.view(), pointSampler_.handle())
             .storageImage(4, irradiance_.view())
             .storageBuffer(5, pixelList_)
-            .push(alloc_.context(), cmd, interpolate_);
-        interpolate_.push(cmd, pc);
+            .push(alloc_.context(), cmd, interpolate_.pipeline);
+        interpolate_.pipeline.push(cmd, pc);
         vkCmdDispatch(cmd, vk::divUp(width_, 8), vk::divUp(height_, 8), 1);
     };
     graph.add(std::move(interp));
@@ -143,9 +134,9 @@ void RsmGather::addTo(FrameGraph& graph, const vk::Buffer& frame, GBufferPass& g
     PassDesc args{"rsm.fallback-args", PassKind::Compute, {}, {}, {}};
     args.buffers = {{&pixelList_, Use::StorageRead}, {&dispatchArgs_, Use::StorageWrite}};
     args.record = [this](VkCommandBuffer cmd) {
-        args_.bind(cmd);
+        args_.pipeline.bind(cmd);
         vk::DescriptorWrites().storageBuffer(0, pixelList_).storageBuffer(1, dispatchArgs_)
-            .push(alloc_.context(), cmd, args_);
+            .push(alloc_.context(), cmd, args_.pipeline);
         vkCmdDispatch(cmd, 1, 1, 1);
     };
     graph.add(std::move(args));

@@ -30,8 +30,7 @@ private:
     vk::CommandContext& cmd_;
     RsmSettings settings_;
     uint32_t width_, height_, lowWidth_, lowHeight_;
-    vk::DescriptorLayout gatherLayout_, interpolateLayout_, argsLayout_;
-    vk::Pipeline gather_, interpolate_, args_;
+    vk::ComputeKernel gather_, interpolate_, args_;
     vk::Sampler pointSampler_;
     vk::Image irradiance_, low_;
     vk::Buffer samples_, pixelList_, dispatchArgs_;

@@ -71,4 +71,15 @@ void addBox(Scene& scene, const glm::vec3& center, const glm::vec3& halfExtents,
     }
 }
 
+void addStrand(Scene& scene, std::span<const glm::vec3> points, const Strand& style) {
+    if (points.size() < 2) throw SceneError("a hair strand needs at least 2 points");
+    if (scene.strandPoints.size() + points.size() > std::numeric_limits<uint32_t>::max())
+        throw SceneError("scene has more than 2^32 strand points");
+    Strand s = style;
+    s.firstPoint = static_cast<uint32_t>(scene.strandPoints.size());
+    s.pointCount = static_cast<uint32_t>(points.size());
+    scene.strandPoints.insert(scene.strandPoints.end(), points.begin(), points.end());
+    scene.strands.push_back(s);
+}
+
 }  // namespace penumbra

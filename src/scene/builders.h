@@ -31,4 +31,8 @@ void addQuad(Scene& scene, const glm::vec3& corner, const glm::vec3& edgeU, cons
 void addBox(Scene& scene, const glm::vec3& center, const glm::vec3& halfExtents, float rotationYRadians,
             uint32_t material);
 
+// Appends one hair strand: `points` (at least 2) with the width, opacity and colour of `style`
+// (its firstPoint/pointCount are set here).
+void addStrand(Scene& scene, std::span<const glm::vec3> points, const Strand& style);
+
 }  // namespace penumbra

@@ -123,6 +123,22 @@ std::vector<uint32_t> toTriangleList(const std::vector<uint32_t>& idx, int mode)
     return out;
 }
 
+// Line primitives as polylines (index lists): a LINE_STRIP is one, a LINE_LOOP one closed by its first
+// point, and LINES segments are chained into one while each starts where the previous one ended.
+std::vector<std::vector<uint32_t>> toPolylines(const std::vector<uint32_t>& idx, int mode) {
+    std::vector<std::vector<uint32_t>> out;
+    if (mode != TINYGLTF_MODE_LINE) {
+        if (idx.size() >= 2) out.push_back(idx);
+        if (mode == TINYGLTF_MODE_LINE_LOOP && idx.size() >= 3) out.back().push_back(idx.front());
+        return out;
+    }
+    for (size_t i = 0; i + 1 < idx.size(); i += 2) {
+        if (out.empty() || out.back().back() != idx[i]) out.push_back({idx[i]});
+        out.back().push_back(idx[i + 1]);
+    }
+    return out;
+}
+
 // Area-weighted smooth normals: the unnormalised face cross product has length 2 * area.
 void generateNormals(std::vector<Vertex>& verts, const std::vector<uint32_t>& tris) {
     for (Vertex& v : verts) v.normal = glm::vec3(0.0f);
@@ -256,25 +272,49 @@ private:
         return data;
     }
 
-    void addPrimitive(const tinygltf::Primitive& p, const glm::mat4& world, const std::string& what) {
-        const int mode = p.mode < 0 ? TINYGLTF_MODE_TRIANGLES : p.mode;
-        if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN)
-            return;  // points and lines: lines become hair strands in a later issue
-        const auto posIt = p.attributes.find("POSITION");
-        if (posIt == p.attributes.end()) return;  // nothing to draw
-        const std::vector<float> pos = gltf::readFloats(m_, posIt->second, 3, what + " POSITION");
-        const size_t n = pos.size() / 3;
-        const std::vector<float> nrm = optionalAttribute(p, "NORMAL", 3, n, what);
-        const std::vector<float> uv = optionalAttribute(p, "TEXCOORD_0", 2, n, what);
-        if (p.material < -1 || p.material >= int(m_.materials.size()))
-            throw SceneError(fmt::format("{}: material {} does not exist", what, p.material));
-
+    // Vertex indices of a primitive (0..n-1 when it has none), each checked against n.
+    std::vector<uint32_t> primitiveIndices(const tinygltf::Primitive& p, size_t n, const std::string& what) {
         std::vector<uint32_t> idx(n);
         if (p.indices >= 0) idx = gltf::readIndices(m_, p.indices);
         else std::iota(idx.begin(), idx.end(), 0u);
         for (uint32_t i : idx)
             if (i >= n) throw SceneError(fmt::format("{}: index {} out of range ({} vertices)", what, i, n));
-        std::vector<uint32_t> tris = toTriangleList(idx, mode);
+        return idx;
+    }
+
+    // LINES / LINE_STRIP / LINE_LOOP: hair strands with the material's colour; a BLEND material's
+    // alpha is the strand's opacity. glTF has no line width: the default strand width, scaled with the node.
+    void addStrands(const tinygltf::Primitive& p, const std::vector<float>& pos, const glm::mat4& world, int mode,
+                    const std::string& what) {
+        Strand style;
+        const Material& mat = s_.materials[size_t(p.material + 1)];
+        style.color = glm::vec3(mat.baseColor);
+        if (mat.alphaMode == AlphaMode::Blend) style.opacity = mat.baseColor.a;
+        style.width *= std::cbrt(std::abs(glm::determinant(glm::mat3(world))));
+        for (const std::vector<uint32_t>& line : toPolylines(primitiveIndices(p, pos.size() / 3, what), mode)) {
+            std::vector<glm::vec3> points;
+            for (uint32_t i : line)
+                points.push_back(glm::vec3(world * glm::vec4(pos[3 * i], pos[3 * i + 1], pos[3 * i + 2], 1.0f)));
+            addStrand(s_, points, style);
+        }
+    }
+
+    void addPrimitive(const tinygltf::Primitive& p, const glm::mat4& world, const std::string& what) {
+        const int mode = p.mode < 0 ? TINYGLTF_MODE_TRIANGLES : p.mode;
+        if (mode == TINYGLTF_MODE_POINTS) return;  // points are not drawn
+        const auto posIt = p.attributes.find("POSITION");
+        if (posIt == p.attributes.end()) return;  // nothing to draw
+        const std::vector<float> pos = gltf::readFloats(m_, posIt->second, 3, what + " POSITION");
+        const size_t n = pos.size() / 3;
+        if (p.material < -1 || p.material >= int(m_.materials.size()))
+            throw SceneError(fmt::format("{}: material {} does not exist", what, p.material));
+        if (mode == TINYGLTF_MODE_LINE || mode == TINYGLTF_MODE_LINE_STRIP || mode == TINYGLTF_MODE_LINE_LOOP)
+            return addStrands(p, pos, world, mode, what);
+        if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN)
+            return;  // unknown mode
+        const std::vector<float> nrm = optionalAttribute(p, "NORMAL", 3, n, what);
+        const std::vector<float> uv = optionalAttribute(p, "TEXCOORD_0", 2, n, what);
+        std::vector<uint32_t> tris = toTriangleList(primitiveIndices(p, n, what), mode);
         // A mirroring transform turns counter-clockwise triangles clockwise; swap to keep them front-facing.
         const glm::mat3 linear(world);
         if (glm::determinant(linear) < 0.0f)
@@ -361,7 +401,8 @@ Scene loadGltf(const std::string& path) {
     } catch (const SceneError& e) {
         throw SceneError(fmt::format("{}: {}", path, e.what()));
     }
-    if (scene.indices.empty()) throw SceneError(fmt::format("{}: no triangles in the default scene", path));
+    if (scene.indices.empty() && scene.strands.empty())
+        throw SceneError(fmt::format("{}: no triangles or lines in the default scene", path));
     scene.computeBounds();
     placeCameraTargets(scene);
     return scene;

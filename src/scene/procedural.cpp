@@ -1,6 +1,12 @@
-// Built-in scenes that need no asset files: the default Cornell box and a plane for unit tests.
+// Built-in scenes that need no asset files: the default Cornell box, a plane for unit tests and a
+// head with procedural hair (deep shadow maps).
+#include <cmath>
+#include <optional>
+#include <random>
+
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+#include <glm/gtc/constants.hpp>
 
 #include "scene/builders.h"
 #include "scene/scene.h"
@@ -71,16 +77,144 @@ Scene makePlane() {
     return s;
 }
 
+// UV sphere with smooth outward normals; triangles whose centre satisfies `second` get `material2`.
+template <class Pred>
+void addSphere(Scene& s, const glm::vec3& center, float radius, uint32_t material, uint32_t material2, Pred second) {
+    constexpr uint32_t kRings = 32, kSegments = 64;
+    std::vector<Vertex> verts;
+    std::vector<uint32_t> idx[2];
+    for (uint32_t r = 0; r <= kRings; ++r) {
+        const float theta = glm::pi<float>() * float(r) / kRings;
+        for (uint32_t k = 0; k <= kSegments; ++k) {
+            const float phi = glm::two_pi<float>() * float(k) / kSegments;
+            const glm::vec3 n(std::sin(theta) * std::cos(phi), std::cos(theta), -std::sin(theta) * std::sin(phi));
+            verts.push_back({center + radius * n, n, {float(k) / kSegments, float(r) / kRings}});
+        }
+    }
+    for (uint32_t r = 0; r < kRings; ++r)
+        for (uint32_t k = 0; k < kSegments; ++k) {
+            const uint32_t a = r * (kSegments + 1) + k, b = a + kSegments + 1;
+            const glm::vec3 mid = glm::normalize(verts[a].normal + verts[b + 1].normal);
+            idx[second(mid) ? 1 : 0].insert(idx[second(mid) ? 1 : 0].end(), {a, b, a + 1, a + 1, b, b + 1});
+        }
+    addTriangles(s, verts, idx[0], material);
+    addTriangles(s, verts, idx[1], material2);  // its own copy of the vertices: indices stay local
+}
+
+// Where hair grows on a head looking along +z: above the ears, lower at the nape, not on the face.
+bool onScalp(const glm::vec3& d) {
+    const bool face = d.z > 0.45f && d.y < 0.62f;
+    return !face && d.y > 0.08f - 0.55f * std::max(0.0f, -d.z);
+}
+
+// The component of v across the unit normal n (on the tangent plane), unit length; `fallback` if none.
+glm::vec3 acrossNormal(const glm::vec3& v, const glm::vec3& n, const glm::vec3& fallback) {
+    const glm::vec3 t = v - n * glm::dot(v, n);
+    return glm::length(t) > 1e-4f ? glm::normalize(t) : fallback;
+}
+
+// The combed direction of hair at scalp normal n: a middle parting (x = 0), the hair falling to
+// either side, down and a little back, which keeps it off the face.
+glm::vec3 combDirection(const glm::vec3& n) {
+    return acrossNormal(glm::vec3(n.x >= 0.0f ? 1.0f : -1.0f, -0.6f, -0.6f), n, glm::vec3(0.0f, -1.0f, 0.0f));
+}
+
+// Pushes p out of the head: the sphere above its centre, below it a vertical cylinder of the same
+// radius (the hair hangs from the head's widest part instead of closing in under it). Returns the
+// surface normal when p was inside.
+std::optional<glm::vec3> pushOut(glm::vec3& p, const glm::vec3& c, float shell) {
+    glm::vec3 v = p - c;
+    if (v.y < 0.0f) v.y = 0.0f;
+    const float len = glm::length(v);
+    if (len >= shell || len < 1e-6f) return std::nullopt;
+    const glm::vec3 n = v / len;
+    p += n * (shell - len);
+    return n;
+}
+
+// One strand grown from the scalp point `c + radius * d`: it leaves the scalp along the comb, lies on
+// the head at its own height above the scalp (which gives the hair its volume), bends under gravity
+// and hangs down with a slight wave.
+std::vector<glm::vec3> growStrand(const glm::vec3& c, float radius, const glm::vec3& d, std::mt19937& rng) {
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    constexpr int kSegments = 24;
+    const float length = 0.22f + 0.12f * u(rng);
+    const float shell = radius * (1.04f + 0.22f * u(rng) * u(rng));  // denser near the scalp
+    const float step = length / kSegments;
+    const float wave = 0.006f * u(rng), phase = glm::two_pi<float>() * u(rng);
+    const glm::vec3 waveDir = glm::normalize(glm::cross(d, glm::vec3(u(rng) - 0.5f, 0.3f, u(rng) - 0.5f)));
+    glm::vec3 p = c + radius * d, dir = glm::normalize(combDirection(d) + 0.4f * d);
+    std::vector<glm::vec3> points{p};
+    for (int k = 1; k <= kSegments; ++k) {
+        const glm::vec3 n = glm::normalize(p - c);
+        const bool onHead = p.y > c.y && glm::length(p - c) < shell * 1.15f;
+        dir = glm::normalize(dir + glm::vec3(0.0f, -0.25f, 0.0f) + (onHead ? 0.5f * combDirection(n) : glm::vec3(0.0f)));
+        p += dir * step;
+        if (const std::optional<glm::vec3> m = pushOut(p, c, shell)) dir = acrossNormal(dir, *m, dir);
+        const float t = float(k) / kSegments;
+        points.push_back(p + waveDir * (wave * t * std::sin(phase + 9.0f * t)));
+    }
+    return points;
+}
+
+// A head-sized sphere on a stand over a floor, `strands` hairs on its scalp, one spot light from
+// the upper left front: the hair shadows itself and the floor (the deep-shadow-map scene).
+Scene makeHair(const BuiltinOptions& options) {
+    Scene s;
+    s.name = "hair";
+    const uint32_t floor = addMaterial(s, glm::vec3(0.6f));
+    const uint32_t skin = addMaterial(s, {0.62f, 0.42f, 0.33f});
+    const uint32_t scalp = addMaterial(s, {0.1f, 0.06f, 0.035f});  // under the hair: no skin shows through
+    addQuad(s, {-1.5f, 0, -1.5f}, {0, 0, 3}, {3, 0, 0}, floor);
+    const glm::vec3 head(0.0f, 0.42f, 0.0f);
+    const float radius = 0.1f;
+    addSphere(s, head, radius, skin, scalp, onScalp);
+    addBox(s, {0.0f, 0.16f, 0.0f}, {0.035f, 0.16f, 0.035f}, 0.0f, skin);
+
+    std::mt19937 rng(2024);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    std::normal_distribution<float> gauss;
+    for (uint32_t i = 0; i < options.hairStrands; ++i) {
+        glm::vec3 d;
+        do d = glm::normalize(glm::vec3(gauss(rng), gauss(rng), gauss(rng)));
+        while (!onScalp(d));
+        Strand style;
+        style.width = 8e-5f;
+        style.opacity = 0.6f;
+        style.color = glm::vec3(0.42f, 0.27f, 0.15f) * (0.75f + 0.5f * u(rng));
+        addStrand(s, growStrand(head, radius, d, rng), style);
+    }
+
+    Light spot;
+    spot.type = LightType::Spot;
+    spot.position = {-0.75f, 1.35f, 0.4f};
+    spot.direction = glm::normalize(glm::vec3(0.12f, 0.28f, -0.08f) - spot.position);
+    spot.intensity = 6.0f;
+    spot.outerConeAngle = glm::radians(28.0f);
+    spot.innerConeAngle = glm::radians(20.0f);
+    spot.name = "key spot";
+    s.lights.push_back(spot);
+
+    Camera cam;
+    cam.eye = {0.7f, 0.72f, 1.2f};
+    cam.target = {0.02f, 0.3f, 0.0f};
+    cam.fovy = glm::radians(35.0f);
+    s.cameras.push_back(cam);
+    return s;
+}
+
 }  // namespace
 
-std::vector<std::string> builtinSceneNames() { return {"cornell", "plane"}; }
+std::vector<std::string> builtinSceneNames() { return {"cornell", "plane", "hair"}; }
 
-Scene makeBuiltinScene(const std::string& name) {
+Scene makeBuiltinScene(const std::string& name, const BuiltinOptions& options) {
     Scene s;
     if (name == "cornell") {
         s = makeCornell();
     } else if (name == "plane") {
         s = makePlane();
+    } else if (name == "hair") {
+        s = makeHair(options);
     } else {
         throw SceneError(fmt::format("unknown scene '{}': not a file and not a built-in scene ({})", name,
                                      fmt::join(builtinSceneNames(), ", ")));

@@ -12,6 +12,7 @@ namespace penumbra {
 void Scene::computeBounds() {
     bounds = Bounds{};
     for (const Vertex& v : vertices) bounds.extend(v.position);
+    for (const glm::vec3& p : strandPoints) bounds.extend(p);
 }
 
 namespace {
@@ -68,14 +69,14 @@ void addDefaultsIfMissing(Scene& scene) {
     }
 }
 
-Scene loadScene(const std::string& pathOrName) {
+Scene loadScene(const std::string& pathOrName, const BuiltinOptions& options) {
     std::error_code ec;
     const bool exists = std::filesystem::is_regular_file(pathOrName, ec);
     Scene scene;
     if (exists) {
         scene = loadGltf(pathOrName);
     } else if (!pathOrName.empty() && !looksLikePath(pathOrName)) {
-        scene = makeBuiltinScene(pathOrName);
+        scene = makeBuiltinScene(pathOrName, options);
     } else {
         throw SceneError(fmt::format("scene file not found: {}", pathOrName));
     }

@@ -40,7 +40,22 @@ struct Draw {
     uint32_t material = 0;
 };
 
+// Hair: a polyline strand in world space, drawn as a ribbon that faces the viewer (camera or light),
+// never narrower than one pixel or shadow texel. Strands are semi-transparent shadow casters (deep
+// shadow maps, src/dsm) and Kajiya-Kay-shaded receivers.
+struct Strand {
+    uint32_t firstPoint = 0;  // into Scene::strandPoints
+    uint32_t pointCount = 0;  // >= 2
+    float width = 1e-4f;      // world-space width (m); a thinner-than-a-texel strand casts with its coverage
+    float opacity = 0.5f;     // fraction of the light a strand stops where it fully covers a shadow texel
+    glm::vec3 color{0.35f, 0.22f, 0.12f};  // linear base colour
+};
+
 enum class LightType : uint32_t { Directional = 0, Spot = 1, Point = 2 };
+
+// Shadow-map filter of one light (values = SHADOW_FILTER_* in shaders/shared/types.h). Default:
+// the renderer's setting (`--shadow`); anything else overrides it for this light.
+enum class ShadowFilter : uint32_t { Default = 0, Hard = 1, Pcf = 2, Pcss = 3, Vsm = 4, Evsm = 5, Msm = 6 };
 
 // Photometric units follow KHR_lights_punctual, used radiometrically: directional `intensity` is
 // irradiance E on a surface facing the light; spot/point `intensity` is radiant intensity I, so a
@@ -55,6 +70,7 @@ struct Light {
     float innerConeAngle = 0.0f;       // radians, spot only
     float outerConeAngle = 0.7853982f; // radians, spot only
     bool castsShadow = true;
+    ShadowFilter shadowFilter = ShadowFilter::Default;
     std::string name;
 };
 
@@ -85,7 +101,9 @@ struct Scene {
     std::vector<Texture> textures;
     std::vector<Light> lights;
     std::vector<Camera> cameras;      // from the file; the first is the default view
-    Bounds bounds;                    // world-space bounds of all vertices
+    Bounds bounds;                    // world-space bounds of all vertices and strand points
+    std::vector<glm::vec3> strandPoints;  // hair: the points of every strand, strand after strand
+    std::vector<Strand> strands;
 
     void computeBounds();
     size_t triangleCount() const { return indices.size() / 3; }
@@ -101,13 +119,19 @@ struct SceneError : std::runtime_error {
 // (area-weighted vertex normals), KHR_lights_punctual lights and perspective cameras are read.
 Scene loadGltf(const std::string& path);
 
-// Built-in procedural scenes: "cornell" (the default), "plane" (unit test scene).
+// Parameters of the built-in scenes (CLI: --strands).
+struct BuiltinOptions {
+    uint32_t hairStrands = 25000;  // strands grown on the `hair` scene's head
+};
+
+// Built-in procedural scenes: "cornell" (the default), "plane" (unit test scene), "hair" (a head
+// with procedural hair over a floor, under a spot light).
 std::vector<std::string> builtinSceneNames();
-Scene makeBuiltinScene(const std::string& name);
+Scene makeBuiltinScene(const std::string& name, const BuiltinOptions& options = {});
 
 // A path or a built-in name: a name without '.' or '/' that is not a file is looked up as built-in.
 // The result has had addDefaultsIfMissing applied.
-Scene loadScene(const std::string& pathOrName);
+Scene loadScene(const std::string& pathOrName, const BuiltinOptions& options = {});
 
 // Adds a default sun and camera where the scene has none, so that any glTF model renders.
 void addDefaultsIfMissing(Scene& scene);

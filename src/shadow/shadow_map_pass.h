@@ -1,49 +1,72 @@
-// Standard shadow maps (seed 004): depth rendered from each shadowed directional or spot light into
-// one layer of a D32 array image; constant + slope-scaled rasterizer bias at render time, normal
-// offset at lookup time (render/lighting.comp).
+// Shadow maps (seed 004 and its family): the depth of every shadowed light in one D32 array image
+// (shadow.map, depth only), moments for VSM/EVSM/MSM (shadow.moments, shadow.blur, compute), and
+// the per-pixel filtered visibility of every shadowed light (shadow.filter, compute) that the
+// lighting pass reads. Layers: cascades for directional lights (refit to the camera every frame),
+// one perspective layer per spot light, 6 cube faces or 2 paraboloid hemispheres per point light.
+// Bias: constant + slope-scaled rasterizer bias at render time, normal offset at lookup time.
 #pragma once
+#include <functional>
+#include <memory>
 #include <vector>
 
 #include "render/frame_graph.h"
+#include "render/gbuffer_pass.h"
 #include "render/scene_gpu.h"
-#include "shadow/light_space.h"
+#include "shadow/shadow_filter.h"
+#include "shadow/shadow_layout.h"
+#include "shadow/shadow_moments.h"
+#include "shadow/shadow_raster.h"
+#include "shadow/shadow_settings.h"
 
 namespace penumbra {
-
-struct ShadowSettings {
-    uint32_t resolution = 2048;
-    // Rasterizer depth bias. D32_SFLOAT's constant unit is 2^(e-23) of the primitive's largest depth
-    // exponent, so the constant term is small; the slope term does the work on slanted receivers.
-    float depthBiasConstant = 4.0f;
-    float depthBiasSlope = 1.5f;
-    // Receiver offset along its normal, in shadow texels (texel world size at the receiver).
-    float normalOffset = 1.0f;
-};
 
 class ShadowMapPass {
 public:
     ShadowMapPass(vk::Allocator& alloc, SceneGpu& scene, const ShadowSettings& settings,
                   VkDescriptorSetLayout drawLayout);
 
-    // Gives each shadowed light a layer and a light-space projection. Lights of types without a
-    // shadow technique yet (point) stay unshadowed: listed in `unsupported`.
-    void assign(const std::vector<Light>& lights, std::vector<int>& layerOfLight,
-                std::vector<LightProjection>& projections, std::vector<std::string>& unsupported);
+    // Gives every shadow-casting light its layers; fixes the images' sizes.
+    void assign(const std::vector<Light>& lights);
+    // Per frame, before the views buffer is written: refits the cascades to the camera (aspect =
+    // width / height, cameraFar = the camera's far plane) and writes the shaders' tables.
+    void update(const Camera& camera, float aspect, float cameraFar);
 
-    // Records one layer per projection; view k of `views` is layer k's matrix (firstView + k).
-    void addTo(FrameGraph& graph, const vk::Buffer& views, uint32_t firstView, uint32_t layerCount);
+    // The shadow layers, in array-layer order; layer k is row firstView + k of the views buffer.
+    const std::vector<ShadowLayer>& layers() const { return layout_.layers(); }
+    const ShadowLayout& layout() const { return layout_; }
+    // The shadow fields of light `light`'s GpuLight: shadow index (or NO_SHADOW) and its first layer.
+    void fillGpuLight(uint32_t light, gpu::GpuLight& g) const;
 
-    vk::Image& shadowMap() { return map_; }
+    // shadow.map, then shadow.moments + shadow.blur when a light uses a moment filter.
+    void addTo(FrameGraph& graph, const vk::Buffer& views, uint32_t firstView);
+    // Casters drawn by other modules (hair, src/dsm): `passes` adds their passes into the shadow map
+    // after shadow.map, before the moments are taken from it.
+    void setExtraCasters(std::function<void(FrameGraph&, vk::Image& map)> passes) {
+        extraCasters_ = std::move(passes);
+    }
+    // Lights with a deep shadow map: their alphaMode BLEND casters stay out of the shadow map.
+    void setDeepShadowLights(std::vector<uint32_t> lights) { raster_.setDeepShadowLights(std::move(lights)); }
+    // shadow.filter: reads the G-buffer, writes mask().
+    void addFilterTo(FrameGraph& graph, const vk::Buffer& frame, const vk::Buffer& lights, GBufferPass& gbuffer);
+
+    vk::Image& shadowMap() { return map_; }          // D32_SFLOAT array, one layer per ShadowLayer
+    vk::Image& mask() { return filter_.mask(); }     // RG16F array, one layer per shadowed light
+    vk::Image& moments() { return moments_.moments(); }
+    bool linearCompare() const { return filter_.linearCompare(); }
     const ShadowSettings& settings() const { return settings_; }
 
 private:
-    void ensureLayers(uint32_t layers);
     vk::Allocator& alloc_;
     SceneGpu& scene_;
     ShadowSettings settings_;
-    VkDescriptorSetLayout drawLayout_;
-    vk::Pipeline opaque_, masked_;
+    ShadowLayout layout_;
+    std::vector<Light> lights_;
+    ShadowRaster raster_;
+    ShadowMoments moments_;
+    ShadowFilterPass filter_;
     vk::Image map_;
+    vk::Buffer layerTable_, lightTable_, params_;
+    std::function<void(FrameGraph&, vk::Image&)> extraCasters_;
 };
 
 }  // namespace penumbra

@@ -86,7 +86,10 @@ DeviceInfo describe(VkPhysicalDevice device, uint32_t index) {
 }  // namespace
 
 std::vector<FeatureCheck> checkRequiredFeatures(VkPhysicalDevice device) {
-    VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    const bool hasAtomicFloat = hasExtension(device, VK_EXT_SHADER_ATOMIC_FLOAT_EXTENSION_NAME);
+    VkPhysicalDeviceShaderAtomicFloatFeaturesEXT af{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_ATOMIC_FLOAT_FEATURES_EXT};
+    VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,
+                                         hasAtomicFloat ? &af : nullptr};
     VkPhysicalDeviceVulkan12Features f12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &f13};
     VkPhysicalDeviceFeatures2 f{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f12};
     VkPhysicalDeviceProperties props;
@@ -109,6 +112,13 @@ std::vector<FeatureCheck> checkRequiredFeatures(VkPhysicalDevice device) {
         {"graphics+compute queue with timestamps", findQueueFamily(device) != UINT32_MAX},
         {"D32_SFLOAT depth attachment and sampled", (depth.optimalTilingFeatures & depthNeed) == depthNeed},
         {"fragmentStoresAndAtomics", is13 && f.features.fragmentStoresAndAtomics},
+        // Shadow maps (src/shadow): all layers of a light in one instanced draw (gl_Layer written by
+        // the vertex or tessellation stage); dual-paraboloid maps tessellate and clip at the rim.
+        {"shaderOutputLayer", is13 && f12.shaderOutputLayer},
+        {"tessellationShader", is13 && f.features.tessellationShader},
+        {"shaderClipDistance", is13 && f.features.shaderClipDistance},
+        // LPV injection accumulates SH coefficients with float atomics (src/lpv).
+        {"shaderBufferFloat32AtomicAdd (VK_EXT_shader_atomic_float)", is13 && af.shaderBufferFloat32AtomicAdd},
     };
     for (FeatureCheck& c : checks)
         if (hidden(c.name)) c.present = false;
@@ -259,16 +269,22 @@ void Context::createDevice() {
     f13.dynamicRendering = VK_TRUE;
     f13.synchronization2 = VK_TRUE;
     f13.maintenance4 = VK_TRUE;  // glslc's Vulkan 1.3 SPIR-V uses LocalSizeId
+    VkPhysicalDeviceShaderAtomicFloatFeaturesEXT af{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_ATOMIC_FLOAT_FEATURES_EXT};
+    af.shaderBufferFloat32AtomicAdd = VK_TRUE;
+    f13.pNext = &af;
     VkPhysicalDeviceVulkan12Features f12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &f13};
     f12.hostQueryReset = VK_TRUE;
+    f12.shaderOutputLayer = VK_TRUE;
     VkPhysicalDeviceFeatures2 f{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f12};
     f.features.fragmentStoresAndAtomics = VK_TRUE;
-    const char* ext = VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME;
+    f.features.tessellationShader = VK_TRUE;
+    f.features.shaderClipDistance = VK_TRUE;
+    const char* exts[] = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME, VK_EXT_SHADER_ATOMIC_FLOAT_EXTENSION_NAME};
     VkDeviceCreateInfo ci{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &f};
     ci.queueCreateInfoCount = 1;
     ci.pQueueCreateInfos = &q;
-    ci.enabledExtensionCount = 1;
-    ci.ppEnabledExtensionNames = &ext;
+    ci.enabledExtensionCount = 2;
+    ci.ppEnabledExtensionNames = exts;
     VK_CHECK(vkCreateDevice(physical_, &ci, nullptr, &device_));
     vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
     cmdPushDescriptorSet = reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(

@@ -90,6 +90,15 @@ Pipeline Pipeline::graphics(Context& ctx, const GraphicsDesc& d, const std::vect
         modules.push_back(createModule(ctx.device(), d.fragmentShader));
         stages.push_back(stage(VK_SHADER_STAGE_FRAGMENT_BIT, modules[1]));
     }
+    const bool tessellated = !d.tessControlShader.empty();
+    if (tessellated) {
+        modules.push_back(createModule(ctx.device(), d.tessControlShader));
+        stages.push_back(stage(VK_SHADER_STAGE_TESSELLATION_CONTROL_BIT, modules.back()));
+        modules.push_back(createModule(ctx.device(), d.tessEvalShader));
+        stages.push_back(stage(VK_SHADER_STAGE_TESSELLATION_EVALUATION_BIT, modules.back()));
+    }
+    VkPipelineTessellationStateCreateInfo ts{VK_STRUCTURE_TYPE_PIPELINE_TESSELLATION_STATE_CREATE_INFO};
+    ts.patchControlPoints = 3;
     VkVertexInputBindingDescription vb{0, d.vertexStride, VK_VERTEX_INPUT_RATE_VERTEX};
     VkPipelineVertexInputStateCreateInfo vi{VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO};
     if (d.vertexStride) {
@@ -99,7 +108,7 @@ Pipeline Pipeline::graphics(Context& ctx, const GraphicsDesc& d, const std::vect
         vi.pVertexAttributeDescriptions = d.vertexAttributes.data();
     }
     VkPipelineInputAssemblyStateCreateInfo ia{VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO};
-    ia.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+    ia.topology = tessellated ? VK_PRIMITIVE_TOPOLOGY_PATCH_LIST : d.topology;
     VkPipelineViewportStateCreateInfo vp{VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO};
     vp.viewportCount = vp.scissorCount = 1;
     VkPipelineRasterizationStateCreateInfo rs{VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO};
@@ -134,6 +143,7 @@ Pipeline Pipeline::graphics(Context& ctx, const GraphicsDesc& d, const std::vect
     ci.pStages = stages.data();
     ci.pVertexInputState = &vi;
     ci.pInputAssemblyState = &ia;
+    ci.pTessellationState = tessellated ? &ts : nullptr;
     ci.pViewportState = &vp;
     ci.pRasterizationState = &rs;
     ci.pMultisampleState = &ms;
@@ -167,6 +177,14 @@ void Pipeline::reset() {
 
 void Pipeline::pushConstants(VkCommandBuffer cmd, const void* data, uint32_t bytes) const {
     vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_ALL, 0, bytes, data);
+}
+
+ComputeKernel::ComputeKernel(Context& ctx, const std::string& shader, const std::vector<VkDescriptorType>& types,
+                             uint32_t pushBytes) {
+    std::vector<Binding> bindings;
+    for (uint32_t i = 0; i < types.size(); ++i) bindings.push_back({i, types[i]});
+    layout = DescriptorLayout(ctx, bindings);
+    pipeline = Pipeline::compute(ctx, shader, {layout.handle()}, pushBytes);
 }
 
 VkWriteDescriptorSet& DescriptorWrites::add(uint32_t binding, VkDescriptorType type) {

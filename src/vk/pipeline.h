@@ -43,6 +43,9 @@ struct GraphicsDesc {
     VkFrontFace frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
     bool depthBias = false;        // set with vkCmdSetDepthBias
     bool depthClamp = false;
+    VkPrimitiveTopology topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;  // hair ribbons draw strips
+    // Tessellation (both or neither): the draws' triangles become patches of 3 control points.
+    std::string tessControlShader, tessEvalShader;
 };
 
 class Pipeline {
@@ -70,6 +73,15 @@ private:
     VkPipeline pipeline_ = VK_NULL_HANDLE;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipelineBindPoint bindPoint_ = VK_PIPELINE_BIND_POINT_COMPUTE;
+};
+
+// A compute shader with its push-descriptor layout: binding i has descriptor type types[i].
+struct ComputeKernel {
+    DescriptorLayout layout;
+    Pipeline pipeline;
+    ComputeKernel() = default;
+    ComputeKernel(Context& ctx, const std::string& shader, const std::vector<VkDescriptorType>& types,
+                  uint32_t pushBytes);
 };
 
 // Collects descriptor writes for one push-descriptor set, then pushes them.

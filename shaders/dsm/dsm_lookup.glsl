@@ -1,0 +1,101 @@
+// Deep-shadow-map lookup for the deferred lighting pass (render/lighting.comp includes it after its
+// own bindings): the transmittance of semi-transparent casters (hair, blended meshes) between a
+// light and a receiver, filtered (PCF) over the neighbouring texels through the resolve's links.
+// Opaque casters are not in the DSM: lighting multiplies this with the ordinary shadow map.
+// Reads `frame` (FrameUniforms) of the including shader.
+#include "dsm/dsm_common.glsl"
+
+layout(set = 0, binding = 8, std430) readonly buffer DsmLights { GpuDsmLight dsmLights[]; };
+layout(set = 0, binding = 9, std430) readonly buffer DsmHeads { uint dsmHeads[]; };
+layout(set = 0, binding = 10, std430) readonly buffer DsmNodes { uvec4 dsmNodes[]; };
+layout(set = 0, binding = 11, std430) readonly buffer DsmUpLinks { uint dsmUpLinks[]; };
+
+float dsmNodeDepth(uint n) { return uintBitsToFloat(dsmNodes[n].x); }
+float dsmTransmittanceOf(uint n) { return n == DSM_NONE ? 1.0 : uintBitsToFloat(dsmNodes[n].y); }
+
+// The last node of a texel's sorted list with depth <= d (DSM_NONE: nothing in front of d). `hint`
+// is a node of that list known to lie at or in front of d (a neighbour link), or DSM_NONE.
+uint dsmFind(uint texel, float d, uint hint) {
+    uint n = hint;
+    if (n == DSM_NONE) {
+        n = dsmHeads[texel];
+        if (n == DSM_NONE || dsmNodeDepth(n) > d) return DSM_NONE;
+    }
+    for (uint i = 0; i < DSM_MAX_LIST_CAP; ++i) {  // resolved lists are never longer
+        uint next = dsmNodes[n].z;
+        if (next == DSM_NONE || dsmNodeDepth(next) > d) break;
+        n = next;
+    }
+    return n;
+}
+
+// Integral of the unit tent (the bilinear footprint of a texel centred at 0) from -inf to t.
+float dsmTentCdf(float t) {
+    t = clamp(t, -1.0, 1.0);
+    return t < 0.0 ? 0.5 * (t + 1.0) * (t + 1.0) : 1.0 - 0.5 * (1.0 - t) * (1.0 - t);
+}
+
+// Weight of texel i (centre i + 0.5) for a box of `width` texels centred at s, each texel spread
+// bilinearly: smooth in s for any width, width 0 is plain bilinear. The weights sum to 1.
+float dsmTapWeight(float s, float width, int i) {
+    float c = float(i) + 0.5;
+    if (width < 1e-3) return max(0.0, 1.0 - abs(s - c));
+    return (dsmTentCdf(s + 0.5 * width - c) - dsmTentCdf(s - 0.5 * width - c)) / width;
+}
+
+// Filtered transmittance at p for light `lightIndex` (1 where it has no DSM). The receiver moves
+// `kernel.z` texels along its normal n (hair, whose n is a tangent: towards the light) and its depth
+// `kernel.y` texels towards the light, so that it does not shadow itself through its own nodes.
+float deepShadowTransmittance(uint lightIndex, vec3 p, vec3 n, bool hair) {
+    GpuDsmLight dsm = dsmLights[lightIndex];
+    if (dsm.params.z < 0.0) return 1.0;
+    float texel = dsm.params.x * (dsm.params.y > 0.5 ? distance(p, dsm.viewer.xyz) : 1.0);
+    vec3 towardsLight = dsm.viewer.w > 0.5 ? normalize(dsm.viewer.xyz - p) : dsm.viewer.xyz;
+    vec3 q = p + (hair ? towardsLight : n) * (dsm.kernel.z * texel);
+    vec4 clip = dsm.viewProj * vec4(q, 1.0);
+    if (clip.w <= 0.0) return 1.0;
+    const int res = int(dsm.params.w);
+    const float width = dsm.kernel.x;
+    vec2 s = (clip.xy / clip.w * 0.5 + 0.5) * float(res);  // texel i covers [i, i + 1)
+    float d = dsmDepth(dsm.viewer, q) - dsm.kernel.y * texel;
+    ivec2 lo = ivec2(floor(s - 0.5 * width - 0.5)), hi = ivec2(floor(s + 0.5 * width - 0.5)) + 1;
+    uint base = uint(dsm.params.z) * uint(res * res);
+    float sum = 0.0;
+    uint rowHint = DSM_NONE;  // the upper link of the previous row's first node
+    for (int y = lo.y; y <= hi.y; ++y) {
+        float wy = dsmTapWeight(s.y, width, y);
+        uint hint = rowHint, rowStart = DSM_NONE;
+        for (int x = lo.x; x <= hi.x; ++x) {
+            bool inside = x >= 0 && y >= 0 && x < res && y < res;  // outside the map: nothing casts
+            uint node = inside ? dsmFind(base + uint(y * res + x), d, hint) : DSM_NONE;
+            sum += wy * dsmTapWeight(s.x, width, x) * dsmTransmittanceOf(node);
+            if (x == lo.x) rowStart = node;
+            hint = node == DSM_NONE ? DSM_NONE : dsmNodes[node].w;
+        }
+        rowHint = rowStart == DSM_NONE ? DSM_NONE : dsmUpLinks[rowStart];
+    }
+    return sum;
+}
+
+// Transmittance AOV: the first light with a DSM, whether or not the receiver faces it.
+float firstDeepShadowTransmittance(vec3 p, vec3 n, bool hair) {
+    for (uint i = 0; i < frame.size.z; ++i)
+        if (dsmLights[i].params.z >= 0.0) return deepShadowTransmittance(i, p, n, hair);
+    return 1.0;
+}
+
+// Debug AOV: list length (after the resolve's cap) per texel of the first light with a DSM, its
+// map stretched over the image; -1 when no light has one.
+float dsmListLengthAov(ivec2 pixel, uvec2 size, uint lightCount) {
+    for (uint i = 0; i < lightCount; ++i) {
+        GpuDsmLight dsm = dsmLights[i];
+        if (dsm.params.z < 0.0) continue;
+        uint res = uint(dsm.params.w);
+        uvec2 texel = min(uvec2(pixel) * res / size, uvec2(res - 1));
+        uint n = dsmHeads[uint(dsm.params.z) * res * res + texel.y * res + texel.x];
+        uint length = 0;
+        for (; n != DSM_NONE && length < DSM_MAX_LIST_CAP; n = dsmNodes[n].z) ++length;
+        return float(length);
+    }
+    return -1.0;
+}

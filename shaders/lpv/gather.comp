@@ -1,0 +1,87 @@
+#version 460
+// LPV final gather: the accumulated intensity I (SH per cell) read trilinearly at the receiver moved
+// half a cell along its normal (against leaking through thin walls), irradiance
+// E = max(0, dot(I, CosineLobe(-n))) / cell^2 (intensity per cell cross-section is radiance; the
+// clamped-cosine integral against it is irradiance). The finest cascade holding the sample is used,
+// blended into the next one over the last cells of its border. Debug modes show a volume slice.
+#extension GL_GOOGLE_include_directive : require
+#include "shared/types.h"
+#include "render/reconstruct.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(set = 0, binding = 0) uniform Frame { FrameUniforms frame; };
+layout(set = 0, binding = 1) uniform sampler2D gNormal;
+layout(set = 0, binding = 2) uniform sampler2D gDepth;
+layout(set = 0, binding = 3, std430) readonly buffer Accumulated { vec4 accum[]; };
+layout(set = 0, binding = 4, std430) readonly buffer GeometryVolume { vec4 geometry[]; };
+layout(set = 0, binding = 5, rgba32f) uniform writeonly image2D outIrradiance;
+layout(push_constant) uniform Push { LpvPush pc; };
+
+#include "lpv/sh.glsl"
+#include "lpv/volume.glsl"
+
+vec3 irradianceIn(uint k, vec3 x, vec3 n) {
+    vec3 g = gridCoord(k, x) - 0.5;
+    ivec3 base = ivec3(floor(g));
+    vec3 f = g - vec3(base);
+    vec4 lobe = cosineLobe(-n);
+    vec3 e = vec3(0.0);
+    for (int i = 0; i < 8; ++i) {
+        ivec3 o = ivec3(i & 1, (i >> 1) & 1, i >> 2);
+        ivec3 c = clamp(base + o, ivec3(0), ivec3(pc.grid.x) - 1);
+        vec3 w3 = mix(1.0 - f, f, vec3(o));
+        float w = w3.x * w3.y * w3.z;
+        for (uint ch = 0; ch < 3u; ++ch) e[ch] += w * dot(accum[lightIndex(k, ch, c)], lobe);
+    }
+    float cell = pc.cascades[k].origin.w;
+    return max(e, vec3(0.0)) / (cell * cell);
+}
+
+// 0 deep inside cascade k, rising to 1 over the last `band` cells before its border.
+float borderWeight(uint k, vec3 x) {
+    vec3 g = gridCoord(k, x);
+    float inside = min(min(g.x, min(g.y, g.z)), float(pc.grid.x) - max(g.x, max(g.y, g.z)));
+    return clamp(1.0 - (inside - 1.0) / pc.params.y, 0.0, 1.0);
+}
+
+vec3 lpvIrradiance(vec3 x, vec3 n) {
+    vec3 e = vec3(0.0);
+    float remaining = 1.0;
+    for (uint k = 0; k < pc.grid.y && remaining > 0.0; ++k) {
+        float w = pc.grid.y == 1u || k + 1u == pc.grid.y ? 0.0 : borderWeight(k, x);
+        if (w >= 1.0) continue;
+        e += remaining * (1.0 - w) * irradianceIn(k, x + 0.5 * pc.cascades[k].origin.w * n, n);
+        remaining *= w;
+    }
+    return e;
+}
+
+// Debug slice of cascade 0: the image spans the slice; light shows mean intensity, geometry the
+// peak blocking.
+vec3 slice(ivec2 pixel) {
+    uint axis = pc.grid.z;
+    vec2 uv = (vec2(pixel) + 0.5) / vec2(frame.size.xy);
+    ivec2 p = ivec2(uv * float(pc.grid.x));
+    ivec3 c = axis == 0u ? ivec3(pc.grid.w, p.x, p.y) : axis == 1u ? ivec3(p.x, pc.grid.w, p.y)
+                                                                    : ivec3(p.x, p.y, pc.grid.w);
+    if (frame.size.w == AOV_GV_SLICE) return vec3(geometry[geometryIndex(0u, c)].x * SH_C0 * LOBE_PEAK / (LOBE_C0 * SH_C0));
+    return vec3(accum[lightIndex(0u, 0u, c)].x, accum[lightIndex(0u, 1u, c)].x, accum[lightIndex(0u, 2u, c)].x) * SH_C0;
+}
+
+void main() {
+    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(pixel, ivec2(frame.size.xy)))) return;
+    vec3 e = vec3(0.0);
+    if (frame.size.w == AOV_LPV_SLICE || frame.size.w == AOV_GV_SLICE) {
+        e = slice(pixel);
+    } else {
+        float depth = texelFetch(gDepth, pixel, 0).r;
+        if (depth < 1.0) {
+            vec3 x = pixelWorldPosition(frame, pixel, depth);
+            vec3 n = normalize(texelFetch(gNormal, pixel, 0).xyz);
+            if (dot(n, frame.cameraPos.xyz - x) < 0.0) n = -n;
+            e = lpvIrradiance(x, n);
+        }
+    }
+    imageStore(outIrradiance, pixel, vec4(e, 1.0));
+}

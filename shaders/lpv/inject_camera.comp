@@ -1,0 +1,42 @@
+#version 460
+// Geometry injection from the camera's G-buffer (Kaplanyan & Dachsbacher 2010): occluders the
+// light does not see still block propagated light. One surfel per step x step pixel block; its area
+// is the block's world footprint over the viewing cosine.
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_shader_atomic_float : require
+#include "shared/types.h"
+#include "render/reconstruct.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(set = 0, binding = 0) uniform Frame { FrameUniforms frame; };
+layout(set = 0, binding = 1) uniform sampler2D gNormal;
+layout(set = 0, binding = 2) uniform sampler2D gDepth;
+layout(set = 0, binding = 3, std430) buffer GeometryVolume { float geometryCoeffs[]; };
+layout(push_constant) uniform Push { LpvPush pc; };
+
+#include "lpv/sh.glsl"
+#include "lpv/volume.glsl"
+
+void main() {
+    int step = int(pc.params.z);
+    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy) * step + step / 2;
+    if (any(greaterThanEqual(pixel, ivec2(frame.size.xy)))) return;
+    float depth = texelFetch(gDepth, pixel, 0).r;
+    if (depth >= 1.0) return;
+    vec3 x = pixelWorldPosition(frame, pixel, depth);
+    vec3 toEye = frame.cameraPos.xyz - x;
+    float dist = length(toEye);
+    vec3 n = normalize(texelFetch(gNormal, pixel, 0).xyz);
+    if (dot(n, toEye) < 0.0) n = -n;
+    float side = dist * frame.lens.x * float(step);
+    float area = side * side / max(dot(n, toEye / dist), 0.2);
+    vec4 lobe = cosineLobe(n) / LOBE_PEAK;
+    for (uint k = 0; k < pc.grid.y; ++k) {
+        float cell = pc.cascades[k].origin.w;
+        ivec3 g = ivec3(floor(gridCoord(k, x) + 0.5));
+        if (!insideGrid(g)) continue;
+        vec4 blocking = lobe * min(area / (cell * cell), 1.0);
+        uint base = geometryIndex(k, g) * 4u;
+        for (uint j = 0; j < 4u; ++j) atomicAdd(geometryCoeffs[base + j], blocking[j]);
+    }
+}

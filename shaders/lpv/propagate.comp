@@ -1,0 +1,105 @@
+#version 460
+// One propagation step (gather form, Kaplanyan 2009): each cell collects, from each of its 6
+// neighbours, the flux the neighbour's intensity sends through the 5 faces of this cell that do not
+// touch the neighbour (solid angles 0.4006696846 for the face ahead, 0.4234413544 for each side
+// face), re-emitted from this cell's centre as a cosine lobe towards that face. Light crossing into
+// the cell is attenuated by the geometry volume sampled on the shared face (skipped on the first
+// step, where the light would block itself). Output: this step's light, and the running sum.
+#extension GL_GOOGLE_include_directive : require
+#include "shared/types.h"
+
+layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
+layout(set = 0, binding = 0, std430) readonly buffer Source { vec4 src[]; };
+layout(set = 0, binding = 1, std430) writeonly buffer Destination { vec4 dst[]; };
+layout(set = 0, binding = 2, std430) buffer Accumulated { vec4 accum[]; };
+layout(set = 0, binding = 3, std430) readonly buffer GeometryVolume { vec4 geometry[]; };
+layout(push_constant) uniform Push { LpvPush pc; };
+
+#include "lpv/sh.glsl"
+#include "lpv/volume.glsl"
+
+const float PI = 3.14159265358979;
+const float FRONT_SOLID_ANGLE = 0.4006696846 / PI;
+const float SIDE_SOLID_ANGLE = 0.4234413544 / PI;
+const ivec3 AXES[6] = ivec3[](ivec3(1, 0, 0), ivec3(-1, 0, 0), ivec3(0, 1, 0), ivec3(0, -1, 0), ivec3(0, 0, 1),
+                              ivec3(0, 0, -1));
+
+// Blocking lobe on the face between this cell and the neighbour at -d: bilinear over the face's
+// four geometry-volume corners (corner k sits at the light cells' corner k).
+vec4 faceGeometry(uint cascade, ivec3 cell, ivec3 d) {
+    ivec3 a = cell + max(-d, ivec3(0));  // the corner plane of the shared face
+    ivec3 u = d.x != 0 ? ivec3(0, 1, 0) : ivec3(1, 0, 0);
+    ivec3 v = d.z != 0 ? ivec3(0, 1, 0) : ivec3(0, 0, 1);
+    vec4 sum = vec4(0.0);
+    for (int i = 0; i < 4; ++i) {
+        ivec3 g = a + u * (i & 1) + v * (i >> 1);
+        if (insideGrid(g)) sum += geometry[geometryIndex(cascade, g)];
+    }
+    return 0.25 * sum;
+}
+
+// Directions and solid angles of the 30 faces a cell's light leaves through (5 into each of the 6
+// neighbours): `face` 0 ahead along axis a, 1-4 the side faces.
+void faceOf(int a, int face, out vec3 eval, out vec3 emit, out float solid) {
+    vec3 dir = vec3(AXES[a]);
+    ivec3 s1 = AXES[a].x != 0 ? ivec3(0, 1, 0) : ivec3(1, 0, 0);
+    ivec3 s2 = ivec3(cross(dir, vec3(s1)));
+    vec3 side = face == 0 ? vec3(0.0) : vec3(face < 3 ? s1 : s2) * ((face & 1) != 0 ? 1.0 : -1.0);
+    eval = face == 0 ? dir : (2.0 * dir + side) / sqrt(5.0);
+    emit = face == 0 ? dir : side;
+    solid = face == 0 ? FRONT_SOLID_ANGLE : SIDE_SOLID_ANGLE;
+}
+
+// Evaluating an L1 intensity at 30 face directions and clamping the negative lobes at zero sends out
+// more flux than the intensity holds (+14% for a cosine lobe). Each cell's light is scaled so that
+// what it sends through its 30 faces never exceeds its flux (the integral of I, 4 pi Y0 I.x):
+// propagation then never creates light. Injected light is scaled as it is read on the first step,
+// propagated light as it is written.
+float outflowScale(vec4 intensity) {
+    float sent = 0.0;
+    for (int a = 0; a < 6; ++a)
+        for (int f = 0; f < 5; ++f) {
+            vec3 eval, emit;
+            float solid;
+            faceOf(a, f, eval, emit, solid);
+            sent += solid * max(dot(intensity, shBasis(eval)), 0.0);
+        }
+    float flux = intensity.x * (4.0 * SH_C0);  // both sides in units of 1/pi (solid angles are / pi)
+    return sent > flux ? max(flux, 0.0) / sent : 1.0;
+}
+
+void main() {
+    ivec3 cell = ivec3(gl_GlobalInvocationID.x, gl_GlobalInvocationID.y, gl_GlobalInvocationID.z % pc.grid.x);
+    uint cascade = gl_GlobalInvocationID.z / pc.grid.x;
+    if (any(greaterThanEqual(cell, ivec3(pc.grid.x))) || cascade >= pc.grid.y) return;
+    const bool first = pc.grid.z != 0u;
+    const bool occlusion = pc.params.x > 0.5 && !first;
+    vec4 result[3] = vec4[](vec4(0.0), vec4(0.0), vec4(0.0));
+    for (int a = 0; a < 6; ++a) {
+        ivec3 d = AXES[a];  // direction of travel: from the neighbour into this cell
+        ivec3 from = cell - d;
+        if (!insideGrid(from)) continue;
+        vec4 blocking = occlusion ? faceGeometry(cascade, cell, d) : vec4(0.0);
+        vec4 source[3];
+        float scale[3];
+        for (uint ch = 0; ch < 3u; ++ch) {
+            source[ch] = src[lightIndex(cascade, ch, from)];
+            scale[ch] = first ? outflowScale(source[ch]) : 1.0;  // later sources are stored scaled
+        }
+        for (int f = 0; f < 5; ++f) {
+            vec3 eval, emit;
+            float solid;
+            faceOf(a, f, eval, emit, solid);
+            float transmit = 1.0 - clamp(dot(blocking, shBasis(-eval)), 0.0, 1.0);
+            vec4 y = shBasis(eval), lobe = cosineLobe(emit);
+            for (uint ch = 0; ch < 3u; ++ch)
+                result[ch] += (solid * transmit * scale[ch] * max(dot(source[ch], y), 0.0)) * lobe;
+        }
+    }
+    for (uint ch = 0; ch < 3u; ++ch) {
+        uint i = lightIndex(cascade, ch, cell);
+        vec4 light = result[ch] * outflowScale(result[ch]);  // scaled once here, not by 6 readers
+        dst[i] = light;
+        accum[i] = (first ? src[i] * outflowScale(src[i]) : accum[i]) + light;
+    }
+}

@@ -1,0 +1,15 @@
+// Cascaded volume addressing (layouts in shared/types.h, LPV section). Needs `pc` (LpvPush).
+uint cellsPerVolume() { return pc.grid.x * pc.grid.x * pc.grid.x; }
+
+bool insideGrid(ivec3 c) { return all(greaterThanEqual(c, ivec3(0))) && all(lessThan(c, ivec3(pc.grid.x))); }
+
+uint cellIndex(ivec3 c) { return (uint(c.z) * pc.grid.x + uint(c.y)) * pc.grid.x + uint(c.x); }
+
+uint lightIndex(uint cascade, uint channel, ivec3 c) {
+    return (cascade * 3u + channel) * cellsPerVolume() + cellIndex(c);
+}
+
+uint geometryIndex(uint cascade, ivec3 c) { return cascade * cellsPerVolume() + cellIndex(c); }
+
+// Position in cell units of cascade k (cell i spans [i, i + 1); its centre is at i + 0.5).
+vec3 gridCoord(uint k, vec3 x) { return (x - pc.cascades[k].origin.xyz) / pc.cascades[k].origin.w; }

@@ -1,0 +1,38 @@
+#include "app/dsm_cli.h"
+
+#include <fmt/format.h>
+
+namespace penumbra {
+
+void addDsmOptions(CLI::App& cmd, DsmSettings& dsm, BuiltinOptions& scene) {
+    cmd.add_option("--strands", scene.hairStrands, "Hair strands of the built-in `hair` scene (default 25000)")
+        ->check(CLI::Range(1, 2'000'000));
+    cmd.add_option("--dsm-lights", dsm.lights, "Lights that get a deep shadow map, e.g. 0,2 (default: every shadowed one)")
+        ->delimiter(',')
+        ->check(CLI::NonNegativeNumber);
+    cmd.add_option("--dsm-res", dsm.resolution, "Deep shadow map resolution (default: --shadow-res)")
+        ->check(CLI::Range(16, 16384));
+    cmd.add_option("--dsm-nodes", dsm.poolNodes, "Node pool capacity (default: 4 nodes per DSM texel)")
+        ->check(CLI::Range(uint64_t(1), DsmSettings::kMaxPoolNodes - 1));
+    cmd.add_option("--dsm-max-list", dsm.maxList, "Nodes kept per texel, nearest first (default 50)")
+        ->check(CLI::Range(1, DSM_MAX_LIST_CAP));
+    cmd.add_option("--dsm-filter", dsm.filterWidth, "DSM PCF box width in texels (default 1; 0 = bilinear)")
+        ->check(CLI::Range(0.0, 8.0));
+    cmd.add_option("--dsm-bias", dsm.depthBias, "DSM receiver depth bias in texels (default 2)")
+        ->check(CLI::Range(0.0, 64.0));
+}
+
+void finishDsmSettings(RenderSettings& s) {
+    if (!s.dsm.lights.empty()) s.dsm.enabled = true;
+    if ((s.aov == Aov::Transmittance || s.aov == Aov::DsmLists) && !s.dsm.enabled)
+        throw std::invalid_argument("--aov transmittance/dsm-lists need deep shadow maps: add --shadow dsm");
+}
+
+void reportDsm(Renderer& renderer, bool quiet) {
+    if (!renderer.deepShadows().active()) return;
+    const DsmFrameStats stats = renderer.deepShadows().readStats(renderer.commands());
+    if (!quiet) fmt::print("  {}\n", describeDsm(stats));
+    for (const std::string& w : dsmWarnings(stats)) fmt::print(stderr, "penumbra: warning: {}\n", w);
+}
+
+}  // namespace penumbra

@@ -1,0 +1,77 @@
+#include "app/shadow_cli.h"
+
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include <fmt/format.h>
+
+namespace penumbra {
+namespace {
+
+// `--shadow` value: a filter name and/or "dsm" (deep shadow maps for hair and blended meshes, which
+// add to the filter of the opaque casters), comma separated.
+void parseShadowOption(const std::string& value, ShadowFilter& filter, bool& deepShadows) {
+    std::stringstream ss(value);
+    for (std::string token; std::getline(ss, token, ',');) {
+        if (token == "dsm") {
+            deepShadows = true;
+            continue;
+        }
+        try {
+            filter = parseShadowFilter(token, "--shadow");
+        } catch (const std::invalid_argument& e) {
+            throw CLI::ValidationError(std::string(e.what()) + "; or dsm");
+        }
+    }
+}
+
+}  // namespace
+
+void addShadowOptions(CLI::App& cmd, ShadowSettings& s, std::vector<std::string>& lightFilters, bool& deepShadows) {
+    const std::map<std::string, PointShadowMode> pointModes{{"cube", PointShadowMode::Cube},
+                                                           {"paraboloid", PointShadowMode::Paraboloid}};
+    cmd.add_option_function<std::string>(
+        "--shadow", [&s, &deepShadows](const std::string& v) { parseShadowOption(v, s.filter, deepShadows); },
+        "Shadow filter of every light: hard (default), pcf, pcss, vsm, evsm, msm; dsm (alone or e.g. pcf,dsm) adds "
+        "deep shadow maps for hair and blended meshes");
+    cmd.add_option("--light-shadow", lightFilters, "Filter of one light, overriding --shadow: N=MODE (repeatable)");
+    cmd.add_option("--pcf-radius", s.pcfRadius, "PCF kernel radius in shadow texels (default 1.5)")
+        ->check(CLI::Range(0.0, 64.0));
+    cmd.add_option("--pcss-light-size", s.pcssLightSize, "PCSS: spot/point light diameter, world units (default 0.1)")
+        ->check(CLI::Range(1e-6, 1e6));
+    cmd.add_option("--pcss-sun-angle", s.pcssSunAngle, "PCSS: directional light angular diameter, degrees (default 1)")
+        ->check(CLI::Range(1e-4, 89.0));
+    cmd.add_option("--pcss-max-radius", s.pcssMaxRadius, "PCSS: largest search/filter radius, texels (default 24)")
+        ->check(CLI::Range(1.0, 128.0));
+    cmd.add_option("--vsm-blur", s.blurRadius, "VSM/EVSM/MSM blur radius, texels (default 3)")->check(CLI::Range(0, 32));
+    cmd.add_option("--vsm-bleed", s.bleedReduction, "VSM/EVSM/MSM light-bleeding reduction in [0, 0.99] (default 0.25)")
+        ->check(CLI::Range(0.0, 0.99));
+    cmd.add_option("--cascades", s.cascades.count, "Directional lights: cascade count 1-8 (default 4)")
+        ->check(CLI::Range(1, 8));
+    cmd.add_option("--csm-lambda", s.cascades.lambda, "Cascade split: 0 uniform .. 1 logarithmic (default 0.75)")
+        ->check(CLI::Range(0.0, 1.0));
+    cmd.add_option("--csm-blend", s.cascades.blend, "Blend band between cascades, fraction (default 0.1)")
+        ->check(CLI::Range(0.0, 0.5));
+    cmd.add_option("--csm-distance", s.cascades.distance, "Shadowed view distance (default 0: the far plane)")
+        ->check(CLI::Range(0.0, 1e9));
+    cmd.add_option("--point-shadow", s.pointMode, "Point-light shadow maps: cube (default) or paraboloid")
+        ->transform(CLI::CheckedTransformer(pointModes));
+}
+
+void applyLightFilters(const std::vector<std::string>& specs, std::vector<Light>& lights) {
+    for (const std::string& spec : specs) {
+        const size_t eq = spec.find('=');
+        const std::string index = spec.substr(0, eq);
+        if (eq == std::string::npos || index.empty() || index.size() > 9 ||
+            index.find_first_not_of("0123456789") != std::string::npos)
+            throw std::invalid_argument(fmt::format("--light-shadow {}: expected N=MODE, e.g. 0=pcss", spec));
+        const unsigned long n = std::stoul(index);
+        if (n >= lights.size())
+            throw std::invalid_argument(
+                fmt::format("--light-shadow {}: the scene has {} light(s)", spec, lights.size()));
+        lights[n].shadowFilter = parseShadowFilter(spec.substr(eq + 1), "--light-shadow");
+    }
+}
+
+}  // namespace penumbra

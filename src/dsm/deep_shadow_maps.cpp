@@ -1,0 +1,119 @@
+#include "dsm/deep_shadow_maps.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include <fmt/format.h>
+
+namespace penumbra {
+namespace {
+
+std::vector<DsmLayer> chooseLayers(const Scene& scene, const DsmSettings& s, uint32_t res,
+                                   std::vector<std::string>& warnings) {
+    for (uint32_t i : s.lights)
+        if (i >= scene.lights.size())
+            throw vk::VulkanError(fmt::format("--dsm-lights: light {} does not exist (the scene has {})", i,
+                                              scene.lights.size()));
+    std::vector<DsmLayer> layers;
+    if (!s.enabled) return layers;
+    for (uint32_t i = 0; i < scene.lights.size(); ++i) {
+        const Light& l = scene.lights[i];
+        const bool listed = std::find(s.lights.begin(), s.lights.end(), i) != s.lights.end();
+        if (!(s.lights.empty() ? l.castsShadow : listed)) continue;
+        if (l.type == LightType::Point) {
+            warnings.push_back(fmt::format("{}: deep shadow maps cover directional and spot lights; hair and blended "
+                                           "meshes cast no shadow from this point light",
+                                           l.name.empty() ? "point light " + std::to_string(i) : l.name));
+            continue;
+        }
+        const LightProjection p = l.type == LightType::Directional ? directionalProjection(l.direction, scene.bounds, res)
+                                                                   : spotProjection(l, scene.bounds, res);
+        layers.push_back({i, p, lightRibbonView(l, p)});
+    }
+    return layers;
+}
+
+std::string count(uint64_t n) {
+    if (n >= 10'000'000) return fmt::format("{:.1f}M", double(n) / 1e6);
+    if (n >= 10'000) return fmt::format("{:.1f}k", double(n) / 1e3);
+    return std::to_string(n);
+}
+
+double mib(uint64_t bytes) { return double(bytes) / (1024.0 * 1024.0); }
+
+}  // namespace
+
+DeepShadowMaps::DeepShadowMaps(vk::Allocator& alloc, SceneGpu& scene, const HairGpu* hair, const DsmSettings& settings,
+                               uint32_t shadowResolution, std::vector<std::string>& warnings)
+    : settings_(settings) {
+    if (settings.maxList < 1 || settings.maxList > DSM_MAX_LIST_CAP)
+        throw vk::VulkanError(fmt::format("--dsm-max-list {}: must be in 1..{}", settings.maxList, DSM_MAX_LIST_CAP));
+    const uint32_t res = settings.resolution ? settings.resolution : shadowResolution;
+    std::vector<DsmLayer> layers = chooseLayers(scene.scene(), settings, res, warnings);
+    if (settings.enabled && layers.empty())
+        warnings.push_back("--shadow dsm: no directional or spot light casts shadows; no deep shadow map");
+    res_ = std::make_unique<DsmResources>(alloc, settings, res, std::move(layers), scene.scene().lights.size());
+    if (!active()) return;
+    build_ = std::make_unique<DeepShadowBuildPass>(alloc, scene, hair, *res_);
+    resolve_ = std::make_unique<DeepShadowResolvePass>(alloc, *res_);
+}
+
+bool DeepShadowMaps::covers(uint32_t light) const {
+    return std::any_of(res_->layers.begin(), res_->layers.end(), [&](const DsmLayer& l) { return l.light == light; });
+}
+
+void DeepShadowMaps::addTo(FrameGraph& graph) {
+    if (!active()) return;
+    build_->addTo(graph);
+    resolve_->addTo(graph);
+}
+
+void DeepShadowMaps::addLookupInputs(PassDesc& pass) const {
+    for (const vk::Buffer* b : {&res_->lightTable, &res_->heads, &res_->nodes, &res_->upLinks})
+        pass.buffers.push_back({b, Use::StorageRead});
+}
+
+void DeepShadowMaps::writeLookup(vk::DescriptorWrites& w) const {
+    w.storageBuffer(8, res_->lightTable).storageBuffer(9, res_->heads).storageBuffer(10, res_->nodes)
+        .storageBuffer(11, res_->upLinks);
+}
+
+DsmFrameStats DeepShadowMaps::readStats(vk::CommandContext& cmd) const {
+    DsmFrameStats s;
+    s.maps = res_->layerCount();
+    s.resolution = res_->resolution;
+    s.capacity = res_->capacity;
+    s.maxList = res_->maxList;
+    s.poolBytes = res_->poolBytes();
+    s.headBytes = active() ? res_->headBytes() : 0;
+    if (!active()) return s;
+    gpu::DsmStats g;
+    const std::vector<uint8_t> bytes = cmd.readBuffer(res_->stats, sizeof(g));
+    std::memcpy(&g, bytes.data(), sizeof(g));
+    s.fragments = g.build.x;
+    s.overflow = s.fragments > s.capacity ? s.fragments - s.capacity : 0;
+    s.kept = g.lists.x;
+    s.beyondMaxList = g.lists.y;
+    s.longest = g.lists.z;
+    s.lists = g.lists.w;
+    s.usedBytes = std::min(s.fragments, s.capacity) * DsmResources::kNodeBytes;
+    return s;
+}
+
+std::string describeDsm(const DsmFrameStats& s) {
+    if (s.maps == 0) return "dsm: no light has a deep shadow map";
+    return fmt::format(
+        "dsm: {} map(s) of {}^2: {} light-space fragments, {} nodes kept in {} lists (longest {}, {} beyond the "
+        "{}-node cap dropped); node pool {:.1f} MiB for {} nodes ({:.1f} MiB used), heads {:.1f} MiB",
+        s.maps, s.resolution, count(s.fragments), count(s.kept), count(s.lists), s.longest, count(s.beyondMaxList),
+        s.maxList, mib(s.poolBytes), count(s.capacity), mib(s.usedBytes), mib(s.headBytes));
+}
+
+std::vector<std::string> dsmWarnings(const DsmFrameStats& s) {
+    if (s.overflow == 0) return {};
+    return {fmt::format("deep shadow map node pool overflow: {} of {} light-space fragments dropped (pool of {} nodes; "
+                        "raise --dsm-nodes)",
+                        s.overflow, s.fragments, s.capacity)};
+}
+
+}  // namespace penumbra

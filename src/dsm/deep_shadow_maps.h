@@ -1,0 +1,61 @@
+// Deep shadow maps (seed 002; Lokovic & Veach 2000; GPU Pro 4 "Real-Time Deep Shadow Maps"): the
+// transmittance of semi-transparent casters (hair strands, alphaMode BLEND meshes) as a function of
+// depth, per texel of a light's map, stored as linked lists built in one raster pass. Opaque casters
+// stay in the ordinary shadow map; lighting multiplies both (dsm/dsm_lookup.glsl).
+//
+// Frame: dsm.clear -> dsm.build (raster) -> dsm.resolve -> dsm.link (compute) -> lighting.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "dsm/deep_shadow_build.h"
+#include "dsm/deep_shadow_resolve.h"
+
+namespace penumbra {
+
+// The counters of the last frame, and what the buffers cost.
+struct DsmFrameStats {
+    uint32_t maps = 0, resolution = 0;
+    uint64_t fragments = 0;        // light-space fragments of translucent casters (allocation attempts)
+    uint64_t capacity = 0;         // nodes in the pool
+    uint64_t overflow = 0;         // fragments dropped because the pool was full
+    uint64_t kept = 0;             // nodes in the resolved lists
+    uint64_t beyondMaxList = 0;    // nodes dropped by the per-texel cap (the farthest of long lists)
+    uint32_t maxList = 0, longest = 0;
+    uint64_t lists = 0;            // texels with at least one node
+    uint64_t poolBytes = 0, headBytes = 0, usedBytes = 0;
+};
+
+class DeepShadowMaps {
+public:
+    // Gives a DSM to the lights `settings` selects (directional and spot; point lights get a warning).
+    // Throws on bad settings (light index, pool size beyond the device).
+    DeepShadowMaps(vk::Allocator& alloc, SceneGpu& scene, const HairGpu* hair, const DsmSettings& settings,
+                   uint32_t shadowResolution, std::vector<std::string>& warnings);
+
+    bool active() const { return !res_->layers.empty(); }
+    // Whether light `light` has a DSM: its translucent casters then stay out of its ordinary map.
+    bool covers(uint32_t light) const;
+    void addTo(FrameGraph& graph);
+
+    // The lookup's inputs (bindings 8-11 of render/lighting.comp); valid placeholders when inactive.
+    void addLookupInputs(PassDesc& pass) const;
+    void writeLookup(vk::DescriptorWrites& writes) const;
+
+    DsmFrameStats readStats(vk::CommandContext& cmd) const;
+    const DsmResources& resources() const { return *res_; }
+    const DsmSettings& settings() const { return settings_; }
+
+private:
+    DsmSettings settings_;
+    std::unique_ptr<DsmResources> res_;
+    std::unique_ptr<DeepShadowBuildPass> build_;
+    std::unique_ptr<DeepShadowResolvePass> resolve_;
+};
+
+// One report line ("dsm: ..."), and the warnings a frame deserves (pool overflow).
+std::string describeDsm(const DsmFrameStats& s);
+std::vector<std::string> dsmWarnings(const DsmFrameStats& s);
+
+}  // namespace penumbra

@@ -1,0 +1,88 @@
+#include "dsm/dsm_resources.h"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+namespace penumbra {
+namespace {
+
+constexpr double kMiB = 1024.0 * 1024.0;
+
+struct DeviceLimits {
+    VkDeviceSize storageRange, allocation, heap;
+};
+
+DeviceLimits deviceLimits(vk::Context& ctx) {
+    VkPhysicalDeviceMaintenance3Properties m3{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES};
+    VkPhysicalDeviceProperties2 p{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &m3};
+    vkGetPhysicalDeviceProperties2(ctx.physicalDevice(), &p);
+    VkPhysicalDeviceMemoryProperties mem;
+    vkGetPhysicalDeviceMemoryProperties(ctx.physicalDevice(), &mem);
+    VkDeviceSize heap = 0;
+    for (uint32_t i = 0; i < mem.memoryHeapCount; ++i)
+        if (mem.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT) heap = std::max(heap, mem.memoryHeaps[i].size);
+    return {p.properties.limits.maxStorageBufferRange, m3.maxMemoryAllocationSize, heap};
+}
+
+// The pool must be addressable by one storage-buffer descriptor, allocatable in one piece, and leave
+// the device most of its memory: refuse it with the numbers rather than fail inside the driver.
+void checkFits(vk::Context& ctx, uint64_t capacity, VkDeviceSize headBytes) {
+    const DeviceLimits lim = deviceLimits(ctx);
+    const VkDeviceSize nodeBytes = VkDeviceSize(capacity) * 16;
+    const VkDeviceSize total = VkDeviceSize(capacity) * DsmResources::kNodeBytes + headBytes;
+    struct Check {
+        VkDeviceSize need, limit;
+        const char* what;
+    };
+    for (const Check& c : {Check{nodeBytes, lim.storageRange, "the device's storage-buffer range"},
+                           Check{nodeBytes, lim.allocation, "the device's largest allocation"},
+                           Check{total, lim.heap / 2, "half of the device's memory"}})
+        if (c.need > c.limit)
+            throw vk::VulkanError(fmt::format("--dsm-nodes {}: the deep-shadow-map node pool needs {:.0f} MiB, more "
+                                              "than {} ({:.0f} MiB)",
+                                              capacity, double(c.need) / kMiB, c.what, double(c.limit) / kMiB));
+}
+
+gpu::GpuDsmLight tableEntry(const DsmLayer& layer, int index, uint32_t resolution, const DsmSettings& s) {
+    gpu::GpuDsmLight g{};
+    g.viewProj = layer.projection.viewProj;
+    g.viewer = layer.view.viewer;
+    g.params = {layer.projection.texelSize, layer.projection.perspective ? 1.0f : 0.0f, float(index),
+                float(resolution)};
+    g.kernel = {s.filterWidth, s.depthBias, s.normalOffset, 0.0f};
+    return g;
+}
+
+}  // namespace
+
+DsmResources::DsmResources(vk::Allocator& alloc, const DsmSettings& settings, uint32_t res,
+                           std::vector<DsmLayer> dsmLayers, size_t lightCount)
+    : resolution(res), maxList(settings.maxList), layers(std::move(dsmLayers)) {
+    const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+    const VkBufferUsageFlags cleared = storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+    const uint64_t texels = uint64_t(res) * res * std::max<size_t>(layers.size(), 1);
+    capacity = layers.empty() ? 1
+               : settings.poolNodes ? settings.poolNodes
+                                    : std::min(texels * DsmSettings::kAutoNodesPerTexel, DsmSettings::kMaxPoolNodes - 1);
+    if (!layers.empty()) checkFits(alloc.context(), capacity, texels * 4);
+    heads = vk::Buffer(alloc, layers.empty() ? 4 : texels * 4, cleared, false, "dsm-heads");
+    nodes = vk::Buffer(alloc, capacity * 16, cleared, false, "dsm-nodes");
+    upLinks = vk::Buffer(alloc, capacity * 4, cleared, false, "dsm-up-links");
+    stats = vk::Buffer(alloc, sizeof(gpu::DsmStats), cleared, false, "dsm-stats");
+
+    std::vector<glm::mat4> rows{glm::mat4(1.0f)};
+    std::vector<gpu::GpuDsmLight> table(std::max<size_t>(lightCount, 1));
+    for (gpu::GpuDsmLight& g : table) g.params = {0.0f, 0.0f, -1.0f, float(res)};  // no DSM
+    for (size_t i = 0; i < layers.size(); ++i) {
+        table.at(layers[i].light) = tableEntry(layers[i], int(i), res, settings);
+        if (i == 0) rows.clear();
+        rows.push_back(layers[i].projection.viewProj);
+    }
+    views = vk::Buffer(alloc, rows.size() * sizeof(glm::mat4), storage, true, "dsm-views");
+    views.write(rows.data(), rows.size() * sizeof(glm::mat4));
+    lightTable = vk::Buffer(alloc, table.size() * sizeof(gpu::GpuDsmLight), storage, true, "dsm-lights");
+    lightTable.write(table.data(), table.size() * sizeof(gpu::GpuDsmLight));
+}
+
+}  // namespace penumbra

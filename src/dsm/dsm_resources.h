@@ -1,0 +1,48 @@
+// The GPU memory the deep-shadow-map passes and the lookup share, and how it is sized.
+//
+// Layout: a head pointer per texel (uint, DSM_NONE = empty list) for every DSM layer (one layer per
+// light with a DSM); one node pool for all layers, a uvec4 per node (depth, alpha -> transmittance,
+// next, right-neighbour link: see shared/types.h) plus a uint per node for the upper-neighbour link;
+// one atomic counter that allocates nodes. The pool is allocated once at its full capacity; a frame
+// uses the first `fragments` nodes.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "dsm/dsm_settings.h"
+#include "dsm/hair_gpu.h"
+
+namespace penumbra {
+
+// A light with a deep shadow map.
+struct DsmLayer {
+    uint32_t light;
+    LightProjection projection;  // the light's view of the whole scene, like its ordinary shadow map
+    RibbonView view;
+};
+
+struct DsmResources {
+    uint32_t resolution = 1;
+    uint64_t capacity = 1;  // nodes in the pool
+    uint32_t maxList = 50;
+    std::vector<DsmLayer> layers;
+    vk::Buffer views;       // row k: layer k's viewProj (binding 0 of the build)
+    vk::Buffer lightTable;  // GpuDsmLight per scene light
+    vk::Buffer heads;       // uint per texel and layer
+    vk::Buffer nodes;       // uvec4 per node
+    vk::Buffer upLinks;     // uint per node
+    vk::Buffer stats;       // DsmStats
+
+    static constexpr VkDeviceSize kNodeBytes = 16 + 4;  // node + upper link
+
+    // Allocates every buffer and writes the static tables. Throws vk::VulkanError with a clear message
+    // when the pool does not fit the device (storage-buffer range, allocation size, memory heap).
+    DsmResources(vk::Allocator& alloc, const DsmSettings& settings, uint32_t resolution, std::vector<DsmLayer> layers,
+                 size_t lightCount);
+
+    uint32_t layerCount() const { return uint32_t(layers.size()); }
+    VkDeviceSize poolBytes() const { return VkDeviceSize(capacity) * kNodeBytes; }
+    VkDeviceSize headBytes() const { return heads.size(); }
+};
+
+}  // namespace penumbra

@@ -1,0 +1,23 @@
+// Deep-shadow-map settings (Lokovic & Veach 2000; the linked-list GPU form of GPU Pro 4 and seed 002).
+#pragma once
+#include <cstdint>
+#include <vector>
+
+namespace penumbra {
+
+struct DsmSettings {
+    bool enabled = false;          // `--shadow dsm`: hair and blended meshes cast through a DSM
+    std::vector<uint32_t> lights;  // `--dsm-lights`: the lights that get one (empty: every shadowed
+                                   // directional or spot light)
+    uint32_t resolution = 0;       // texels per side; 0 = the shadow-map resolution
+    uint64_t poolNodes = 0;        // node pool capacity; 0 = kAutoNodesPerTexel per DSM texel
+    uint32_t maxList = 50;         // nodes kept per texel, nearest first (1..DSM_MAX_LIST_CAP)
+    float filterWidth = 1.0f;      // PCF box width in texels (0 = bilinear, up to 8)
+    float depthBias = 2.0f;        // receiver moved this many texels towards the light (self-shadowing)
+    float normalOffset = 1.0f;     // and this many along its normal (texels)
+
+    static constexpr uint32_t kAutoNodesPerTexel = 4;
+    static constexpr uint64_t kMaxPoolNodes = uint64_t(1) << 28;  // 5 GiB of nodes and links
+};
+
+}  // namespace penumbra

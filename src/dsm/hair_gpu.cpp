@@ -1,0 +1,83 @@
+#include "dsm/hair_gpu.h"
+
+#include <fmt/format.h>
+
+namespace penumbra {
+namespace {
+
+// Unit tangent at point i of a polyline: the mean of its segments' directions, so that the ribbons
+// of neighbouring segments share their edge at the joint (no cracks, no overlap).
+glm::vec3 tangentAt(const glm::vec3* p, uint32_t count, uint32_t i) {
+    const glm::vec3 in = i > 0 ? p[i] - p[i - 1] : glm::vec3(0.0f);
+    const glm::vec3 out = i + 1 < count ? p[i + 1] - p[i] : glm::vec3(0.0f);
+    auto unit = [](const glm::vec3& v) { const float l = glm::length(v); return l > 0.0f ? v / l : v; };
+    const glm::vec3 t = unit(in) + unit(out);
+    return glm::length(t) > 1e-6f ? glm::normalize(t) : glm::vec3(0, 1, 0);
+}
+
+std::vector<gpu::GpuHairPoint> ribbonPoints(const Scene& scene) {
+    std::vector<gpu::GpuHairPoint> out;
+    out.reserve(scene.strandPoints.size() + 2 * scene.strands.size());
+    for (size_t s = 0; s < scene.strands.size(); ++s) {
+        const Strand& strand = scene.strands[s];
+        if (size_t(strand.firstPoint) + strand.pointCount > scene.strandPoints.size() || strand.pointCount < 2)
+            throw vk::VulkanError(fmt::format("hair strand {} has an invalid point range", s));
+        const glm::vec3* p = &scene.strandPoints[strand.firstPoint];
+        const float index = float(s);
+        const uint32_t n = strand.pointCount;
+        // Zero-width copies of the end points bracket the strand (degenerate strip joins).
+        out.push_back({glm::vec4(p[0], 0.0f), glm::vec4(tangentAt(p, n, 0), index)});
+        for (uint32_t i = 0; i < n; ++i)
+            out.push_back({glm::vec4(p[i], strand.width), glm::vec4(tangentAt(p, n, i), index)});
+        out.push_back({glm::vec4(p[n - 1], 0.0f), glm::vec4(tangentAt(p, n, n - 1), index)});
+    }
+    return out;
+}
+
+}  // namespace
+
+RibbonView cameraRibbonView(const glm::vec3& eye, float pixelPerDistance) {
+    return {glm::vec4(eye, 1.0f), glm::vec4(pixelPerDistance, 1.0f, 0.0f, 1.0f)};
+}
+
+RibbonView lightRibbonView(const Light& light, const LightProjection& projection) {
+    const glm::vec4 viewer = light.type == LightType::Directional
+                                 ? glm::vec4(-glm::normalize(light.direction), 0.0f)
+                                 : glm::vec4(light.position, 1.0f);
+    return {viewer, glm::vec4(projection.texelSize, projection.perspective ? 1.0f : 0.0f, 0.0f, 1.0f)};
+}
+
+HairGpu::HairGpu(vk::CommandContext& cmd, const Scene& scene) : strandCount_(uint32_t(scene.strands.size())) {
+    if (scene.strands.size() >= (size_t(1) << 24))
+        throw vk::VulkanError(fmt::format("{} hair strands: at most 2^24 are supported", scene.strands.size()));
+    const std::vector<gpu::GpuHairPoint> points = ribbonPoints(scene);
+    std::vector<glm::vec4> strands;
+    for (const Strand& s : scene.strands) strands.push_back(glm::vec4(s.color, s.opacity));
+    points_ = cmd.createDeviceBuffer(points.data(), points.size() * sizeof(gpu::GpuHairPoint),
+                                     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "hair-points");
+    strands_ = cmd.createDeviceBuffer(strands.data(), strands.size() * sizeof(glm::vec4),
+                                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "hair-strands");
+    vertexCount_ = uint32_t(2 * points.size());
+}
+
+std::vector<vk::Binding> HairGpu::bindings() {
+    return {{3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, {4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+}
+
+void HairGpu::write(vk::DescriptorWrites& writes) const { writes.storageBuffer(3, points_).storageBuffer(4, strands_); }
+
+vk::GraphicsDesc HairGpu::pipelineDesc(const std::string& fragmentShader) {
+    vk::GraphicsDesc d;
+    d.vertexShader = "dsm/hair.vert";
+    d.fragmentShader = fragmentShader;
+    d.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_STRIP;
+    d.cullMode = VK_CULL_MODE_NONE;  // a strip alternates its winding; ribbons face the viewer anyway
+    return d;
+}
+
+void HairGpu::draw(VkCommandBuffer cmd, const vk::Pipeline& pipeline, const gpu::HairDrawPush& push) const {
+    pipeline.push(cmd, push);
+    vkCmdDraw(cmd, vertexCount_, 1, 0, 0);
+}
+
+}  // namespace penumbra

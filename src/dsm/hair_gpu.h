@@ -1,0 +1,47 @@
+// The scene's hair strands on the GPU, drawn as viewer-facing ribbons (dsm/hair.vert) by every pass
+// that draws hair: the camera G-buffer, the ordinary shadow map and the deep-shadow-map build.
+//
+// Ribbons are expanded in the vertex shader from the strand points rather than built once on the
+// CPU: a ribbon must face each view (camera and every light) and be at least one pixel or texel wide
+// in it, so one static mesh cannot serve all views; pulling points costs 32 bytes per point and no
+// index buffer (the strip's strand joins are degenerate, see hair.vert).
+#pragma once
+#include "render/scene_gpu.h"
+#include "shadow/light_space.h"
+
+namespace penumbra {
+
+// Who a ribbon faces and how large a pixel/texel is there (HairDrawPush.viewer / .footprint).
+struct RibbonView {
+    glm::vec4 viewer{0.0f};
+    glm::vec4 footprint{0.0f};
+};
+
+// `pixelPerDistance`: world size of a pixel at unit distance (FrameUniforms.lens.x).
+RibbonView cameraRibbonView(const glm::vec3& eye, float pixelPerDistance);
+// A shadow-map or DSM view of a directional or spot light.
+RibbonView lightRibbonView(const Light& light, const LightProjection& projection);
+
+class HairGpu {
+public:
+    HairGpu(vk::CommandContext& cmd, const Scene& scene);
+
+    // Bindings 3 (points) and 4 (strand colour and opacity) of the hair pipelines' set 0.
+    static std::vector<vk::Binding> bindings();
+    void write(vk::DescriptorWrites& writes) const;
+    // A ribbon pipeline: dsm/hair.vert, no vertex input, triangle strip, no culling.
+    static vk::GraphicsDesc pipelineDesc(const std::string& fragmentShader);
+    // Every ribbon of the scene in one draw; `push` says which view.
+    void draw(VkCommandBuffer cmd, const vk::Pipeline& pipeline, const gpu::HairDrawPush& push) const;
+
+    const vk::Buffer& points() const { return points_; }
+    const vk::Buffer& strands() const { return strands_; }
+    uint32_t strandCount() const { return strandCount_; }
+    VkDeviceSize bytes() const { return points_.size() + strands_.size(); }
+
+private:
+    vk::Buffer points_, strands_;
+    uint32_t vertexCount_ = 0, strandCount_ = 0;
+};
+
+}  // namespace penumbra

@@ -1,0 +1,45 @@
+// Hair ribbons in the camera's G-buffer and in ordinary shadow maps (lights without a deep shadow
+// map: there hair is an opaque caster, which gives the binary shadows DSM is compared against).
+#pragma once
+#include "dsm/hair_gpu.h"
+#include "render/frame_graph.h"
+#include "render/gbuffer_pass.h"
+
+namespace penumbra {
+
+// After the G-buffer pass, into the same targets (loaded, depth-tested): albedo = strand colour,
+// normal = tangent with SHADING_HAIR in w.
+class HairGBufferPass {
+public:
+    HairGBufferPass(vk::Allocator& alloc, const HairGpu& hair, const GBufferPass& gbuffer);
+    void addTo(FrameGraph& graph, GBufferPass& gbuffer, const vk::Buffer& views, const RibbonView& camera);
+
+private:
+    vk::Allocator& alloc_;
+    const HairGpu& hair_;
+    vk::DescriptorLayout layout_;
+    vk::Pipeline pipeline_;
+};
+
+// One shadow-map layer hair is drawn into, with the views row of its matrix.
+struct HairShadowLayer {
+    uint32_t layer;
+    uint32_t viewRow;
+    RibbonView view;
+};
+
+// Depth-only ribbons into layers of a D32 array image already holding the opaque casters (loaded).
+class HairShadowPass {
+public:
+    HairShadowPass(vk::Allocator& alloc, const HairGpu& hair, float depthBiasConstant, float depthBiasSlope);
+    void addTo(FrameGraph& graph, vk::Image& shadowMap, const vk::Buffer& views, std::vector<HairShadowLayer> layers);
+
+private:
+    vk::Allocator& alloc_;
+    const HairGpu& hair_;
+    float biasConstant_, biasSlope_;
+    vk::DescriptorLayout layout_;
+    vk::Pipeline pipeline_;
+};
+
+}  // namespace penumbra

@@ -1,0 +1,68 @@
+// Light propagation volumes (Kaplanyan 2009, Kaplanyan & Dachsbacher 2010), fed by the RSM:
+//   lpv.downsample        RSM (2048^2) -> VPLs (512^2): brightest texel + 26-neighbourhood merge
+//   lpv.clear             zero the light, accumulation and geometry volumes
+//   lpv.inject            VPLs -> light volume (L1 SH per colour, float atomics) and geometry volume
+//   lpv.inject-camera     camera G-buffer surfels -> geometry volume
+//   lpv.propagate[i]      6 neighbours x 5 faces, occlusion from the geometry volume, running sum
+//   lpv.gather            per pixel irradiance from the summed volume (trilinear, cascade blend)
+// Cascades: nested grids of the same resolution around the camera, each twice as large, snapped
+// to whole cells. The output is the same indirect-irradiance image the RSM gather produces.
+#pragma once
+#include <array>
+#include <vector>
+
+#include "lpv/lpv_settings.h"
+#include "render/frame_graph.h"
+#include "render/gbuffer_pass.h"
+#include "rsm/rsm_pass.h"
+
+namespace penumbra {
+
+// Cascade grids for a scene and a camera position (pure math, unit-tested).
+std::vector<gpu::GpuLpvCascade> placeCascades(const Bounds& scene, const glm::vec3& eye, uint32_t count,
+                                              uint32_t resolution);
+uint32_t automaticCascadeCount(const Bounds& scene);
+
+class LightPropagationVolume {
+public:
+    LightPropagationVolume(vk::Allocator& alloc, uint32_t width, uint32_t height, const LpvSettings& settings,
+                           const Bounds& sceneBounds);
+    // Places the cascades around the camera for this frame.
+    void update(const glm::vec3& eye);
+    void addTo(FrameGraph& graph, const vk::Buffer& frame, const vk::Buffer& lights, GBufferPass& g, RsmPass& rsm);
+
+    // Test entry: VPLs given directly (no RSM, no camera), then clear + inject + propagate only.
+    void setVpls(vk::CommandContext& cmd, const std::vector<gpu::GpuVpl>& vpls);
+    void addPropagationFromVpls(FrameGraph& graph);
+
+    vk::Image& irradiance() { return irradiance_; }
+    const LpvSettings& settings() const { return settings_; }
+    uint32_t cascadeCount() const { return cascadeCount_; }
+    const gpu::LpvPush& constants() const { return push_; }
+    // Buffers for tests: the summed light volume, the last step's light, the geometry volume, VPLs.
+    const vk::Buffer& accumulated() const { return accum_; }
+    const vk::Buffer& lastStep() const { return settings_.iterations % 2 ? volumeB_ : volumeA_; }
+    const vk::Buffer& geometry() const { return geometry_; }
+    const vk::Buffer& vpls() const { return vpls_; }
+
+private:
+    void addDownsample(FrameGraph& graph, const vk::Buffer& lights, RsmPass& rsm);
+    void addInjection(FrameGraph& graph);
+    void addCameraGeometry(FrameGraph& graph, const vk::Buffer& frame, GBufferPass& g);
+    void addPropagation(FrameGraph& graph);
+    void addGather(FrameGraph& graph, const vk::Buffer& frame, GBufferPass& g);
+    void run(VkCommandBuffer cmd, vk::ComputeKernel& kernel, vk::DescriptorWrites& writes,
+             const gpu::LpvPush& push, glm::uvec3 groups);
+
+    vk::Allocator& alloc_;
+    LpvSettings settings_;
+    Bounds bounds_;
+    uint32_t width_, height_, cascadeCount_, layers_ = 0;
+    gpu::LpvPush push_{};
+    vk::ComputeKernel downsample_, inject_, injectCamera_, propagate_, gather_;
+    vk::Sampler pointSampler_;
+    vk::Buffer vpls_, volumeA_, volumeB_, accum_, geometry_;
+    vk::Image irradiance_;
+};
+
+}  // namespace penumbra

@@ -1,0 +1,40 @@
+// shadow.filter: per pixel and shadowed light, the visibility with that light's filter (hard, PCF,
+// PCSS, VSM, EVSM, MSM) into the shadow mask (RG16F array, one layer per shadowed light: r =
+// visibility, g = layer code for the `cascade` AOV). The lighting pass only reads the mask, so the
+// filter's cost is this pass's GPU time.
+#pragma once
+#include "render/frame_graph.h"
+#include "render/gbuffer_pass.h"
+#include "vk/pipeline.h"
+
+namespace penumbra {
+
+// The tables and images the filter reads, owned by ShadowMapPass.
+struct ShadowFilterInputs {
+    vk::Image* depthMap;
+    vk::Image* moments;
+    const vk::Buffer* layerTable;
+    const vk::Buffer* lightTable;
+    const vk::Buffer* params;
+};
+
+class ShadowFilterPass {
+public:
+    explicit ShadowFilterPass(vk::Allocator& alloc);
+    // D32_SFLOAT can be filtered linearly on this device: PCF uses the hardware's bilinear compare.
+    // Otherwise (lavapipe) the shader does the same 2x2 bilinear from a compare gather.
+    bool linearCompare() const { return linearCompare_; }
+    void addTo(FrameGraph& graph, const vk::Buffer& frame, const vk::Buffer& lights, GBufferPass& gbuffer,
+               const ShadowFilterInputs& in, uint32_t shadowedLights);
+    vk::Image& mask() { return mask_; }
+
+private:
+    void ensureMask(uint32_t width, uint32_t height, uint32_t layers);
+    vk::Allocator& alloc_;
+    bool linearCompare_ = false;
+    vk::ComputeKernel kernel_;
+    vk::Sampler point_, compare_, depth_, moments_;
+    vk::Image mask_;
+};
+
+}  // namespace penumbra

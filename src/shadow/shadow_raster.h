@@ -1,0 +1,36 @@
+// The shadow depth pass: every layer of every shadowed light in one layered render-pass instance.
+// One instanced draw per scene draw and light renders all of the light's layers (instance = layer):
+// cascades and cube faces through shadow/shadow.vert, paraboloid hemispheres through a tessellated
+// pipeline (shadow/paraboloid.*) because the paraboloid mapping bends straight edges.
+// Depth only: opaque casters have no fragment shader, alpha-masked ones only discard.
+#pragma once
+#include "render/scene_gpu.h"
+#include "shadow/shadow_layout.h"
+
+namespace penumbra {
+
+class ShadowRaster {
+public:
+    ShadowRaster(vk::Context& ctx, const SceneGpu& scene, const ShadowSettings& settings,
+                 VkDescriptorSetLayout drawLayout);
+    // Clears and renders all layers of `map`; layer k uses row firstView + k of `views`.
+    void record(VkCommandBuffer cmd, vk::Image& map, const vk::Buffer& views, uint32_t firstView,
+                const ShadowLayout& layout) const;
+    // Lights whose alphaMode BLEND casters go to a deep shadow map instead (src/dsm).
+    void setDeepShadowLights(std::vector<uint32_t> lights) { deepShadowLights_ = std::move(lights); }
+
+private:
+    struct Pipelines {
+        vk::Pipeline opaque, masked;
+    };
+    Pipelines make(vk::Context& ctx, vk::GraphicsDesc desc, VkDescriptorSetLayout drawLayout) const;
+    void drawLight(VkCommandBuffer cmd, const Pipelines& p, const vk::Buffer& views,
+                   const gpu::ShadowDrawPush& push, uint32_t instances, bool blended) const;
+
+    const SceneGpu& scene_;
+    ShadowSettings settings_;
+    Pipelines layered_, paraboloid_;
+    std::vector<uint32_t> deepShadowLights_;
+};
+
+}  // namespace penumbra

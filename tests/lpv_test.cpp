@@ -1,0 +1,265 @@
+// Light propagation volumes: SH identities on the CPU, propagation and injection on the GPU from
+// VPLs given directly (no RSM), and the Cornell box end to end.
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <random>
+
+#include "gpu_fixture.h"
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "render/frame_graph.h"
+
+using namespace penumbra;
+using namespace penumbra::test;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kC0 = 0.282094792, kC1 = 0.488602512;
+
+glm::dvec4 shBasis(const dvec3& d) { return {kC0, -kC1 * d.y, kC1 * d.z, -kC1 * d.x}; }
+glm::dvec4 cosineLobe(const dvec3& n) {
+    return {std::sqrt(kPi) / 2.0, -std::sqrt(kPi / 3.0) * n.y, std::sqrt(kPi / 3.0) * n.z, -std::sqrt(kPi / 3.0) * n.x};
+}
+
+// Numerical integral over the sphere (midpoint rule in cos(theta) and phi).
+template <class F>
+double sphereIntegral(F f, int n = 400) {
+    double sum = 0.0;
+    for (int i = 0; i < n; ++i)
+        for (int j = 0; j < 2 * n; ++j) {
+            const double z = -1.0 + (i + 0.5) * 2.0 / n, phi = (j + 0.5) * kPi / n;
+            const double r = std::sqrt(1.0 - z * z);
+            sum += f(dvec3(r * std::cos(phi), r * std::sin(phi), z));
+        }
+    return sum * (2.0 / n) * (kPi / n);
+}
+
+struct VolumeRun {
+    std::vector<glm::vec4> accum, last, geometry;
+    float cell;
+};
+
+std::vector<glm::vec4> asVec4(const std::vector<uint8_t>& bytes) {
+    std::vector<glm::vec4> v(bytes.size() / sizeof(glm::vec4));
+    std::memcpy(v.data(), bytes.data(), bytes.size());
+    return v;
+}
+
+gpu::GpuVpl vpl(const glm::vec3& p, const glm::vec3& n, const glm::vec3& flux, float area = 0.0f) {
+    return {glm::vec4(p, 1.0f), glm::vec4(glm::normalize(n), area), glm::vec4(flux, 0.0f)};
+}
+
+// A single 32^3 grid over [-1, 1]^3 (cell 2.04 / 31), no camera.
+Bounds unitCube() {
+    Bounds b;
+    b.extend({-1, -1, -1});
+    b.extend({1, 1, 1});
+    return b;
+}
+
+constexpr uint32_t kRes = 32;
+size_t cellIndex(int x, int y, int z, int channel = 0) {
+    return size_t(channel) * kRes * kRes * kRes + (size_t(z) * kRes + y) * kRes + x;
+}
+
+// Total flux of an intensity field: sum over cells of the integral of the L1 function (DC * 4 pi Y0).
+double totalFlux(const std::vector<glm::vec4>& v) {
+    double sum = 0.0;
+    for (size_t i = 0; i < v.size(); ++i) sum += v[i].x;
+    return sum * kC0 * 4.0 * kPi;
+}
+
+class LpvVolumeTest : public GpuTest {
+protected:
+    VolumeRun run(const std::vector<gpu::GpuVpl>& vpls, uint32_t iterations, bool occlusion = true) {
+        vk::Allocator alloc(ctx());
+        vk::CommandContext cmd(alloc);
+        LpvSettings s;
+        s.iterations = iterations;
+        s.cascades = 1;
+        s.occlusion = occlusion;
+        LightPropagationVolume lpv(alloc, 8, 8, s, unitCube());
+        lpv.update(glm::vec3(0.0f));
+        lpv.setVpls(cmd, vpls);
+        FrameGraph graph;
+        lpv.addPropagationFromVpls(graph);
+        cmd.submitAndWait([&](VkCommandBuffer c) { graph.execute(c, nullptr); });
+        VolumeRun r;
+        r.accum = asVec4(cmd.readBuffer(lpv.accumulated(), lpv.accumulated().size()));
+        r.last = asVec4(cmd.readBuffer(lpv.lastStep(), lpv.lastStep().size()));
+        r.geometry = asVec4(cmd.readBuffer(lpv.geometry(), lpv.geometry().size()));
+        r.cell = lpv.constants().cascades[0].origin.w;
+        return r;
+    }
+};
+
+}  // namespace
+
+TEST(Sh, CosineLobeIsTheProjectionOfTheClampedCosineAndIntegratesToPi) {
+    const dvec3 n = glm::normalize(dvec3(0.3, -0.5, 0.8));
+    for (int k = 0; k < 4; ++k) {
+        const double projected =
+            sphereIntegral([&](const dvec3& w) { return std::max(glm::dot(n, w), 0.0) * shBasis(w)[k]; });
+        EXPECT_NEAR(projected, cosineLobe(n)[k], 2e-4) << "coefficient " << k;
+    }
+    // The L1 function integrates to its DC term times the integral of Y0.
+    EXPECT_NEAR(cosineLobe(n)[0] * kC0 * 4.0 * kPi, kPi, 1e-6);
+    EXPECT_NEAR(sphereIntegral([&](const dvec3& w) { return std::max(glm::dot(n, w), 0.0); }), kPi, 1e-4);
+}
+
+TEST(Sh, RotatedLobeEvaluatesLikeRotatedDirections) {
+    // Rotating the lobe's axis by R and evaluating at R w equals evaluating the original at w.
+    const glm::dmat3 r = glm::dmat3(glm::rotate(glm::dmat4(1.0), 0.7, dvec3(0.2, 1.0, -0.4)));
+    const dvec3 n = glm::normalize(dvec3(1.0, 0.2, 0.1));
+    for (const dvec3 w : {dvec3(0, 1, 0), glm::normalize(dvec3(1, -2, 3)), glm::normalize(dvec3(-1, 0.5, 0.2))}) {
+        const double a = glm::dot(cosineLobe(n), shBasis(w));
+        const double b = glm::dot(cosineLobe(r * n), shBasis(r * w));
+        EXPECT_NEAR(a, b, 1e-12);
+    }
+}
+
+TEST(LpvCascades, NestedSnappedAndCoveringTheScene) {
+    Bounds b;
+    b.extend({-80, 0, -80});
+    b.extend({80, 90, 80});
+    EXPECT_EQ(automaticCascadeCount(b), 3u);
+    const glm::vec3 eye(13.3f, 7.1f, -2.2f);
+    auto c = placeCascades(b, eye, 3, 32);
+    ASSERT_EQ(c.size(), 3u);
+    for (size_t k = 0; k < c.size(); ++k) {
+        const float cell = c[k].origin.w;
+        if (k > 0) EXPECT_NEAR(cell, 2.0f * c[k - 1].origin.w, 1e-4f);
+        for (int a = 0; a < 3; ++a) {
+            EXPECT_NEAR(std::remainder(c[k].origin[a], cell), 0.0f, 1e-3f * cell) << "snapped to whole cells";
+            EXPECT_LE(c[k].origin[a], eye[a]);
+            EXPECT_GE(c[k].origin[a] + 32 * cell, eye[a]);
+        }
+    }
+    EXPECT_GE(32 * c[2].origin.w, 160.0f);  // the outermost reaches across the scene
+    // A sub-cell camera move keeps the grids where they are.
+    auto d = placeCascades(b, eye + glm::vec3(0.1f * c[0].origin.w, 0, 0), 3, 32);
+    EXPECT_EQ(glm::vec3(d[0].origin), glm::vec3(c[0].origin));
+}
+
+TEST_F(LpvVolumeTest, SingleVplPropagatesSymmetricallyWithoutGainingFlux) {
+    // A VPL at the centre of cell (16, 16, 16) facing +y: its light spreads symmetrically about the
+    // y axis (x <-> -x, z <-> -z, x <-> z) and no step adds flux.
+    const float cell = 2.04f / 31.0f;
+    const glm::vec3 centre = glm::vec3(-1.02f - 0.5f * cell) + glm::vec3(16.5f * cell);
+    const glm::vec3 p = centre - glm::vec3(0, 0.5f * cell, 0);  // injected half a cell along +y
+    const double injected = 1.0;
+    double previous = injected;
+    for (uint32_t k = 1; k <= 8; ++k) {
+        VolumeRun r = run({vpl(p, {0, 1, 0}, glm::vec3(float(injected)))}, k, false);
+        const double flux = totalFlux({r.last.begin(), r.last.begin() + kRes * kRes * kRes});
+        EXPECT_LE(flux, previous * (1.0 + 1e-5)) << "step " << k << " gained flux";
+        EXPECT_GT(flux, 0.0);
+        std::printf("[ lpv ] step %u: flux in flight %.5f\n", k, flux);
+        previous = flux;
+        if (k != 4) continue;
+        double maxAsym = 0.0, maxValue = 0.0;
+        for (int z = 0; z < int(kRes); ++z)
+            for (int y = 0; y < int(kRes); ++y)
+                for (int x = 0; x < int(kRes); ++x) {
+                    const int mx = 32 - x, mz = 32 - z;  // mirror about cell 16
+                    if (mx >= int(kRes) || mz >= int(kRes)) continue;
+                    const glm::vec4 a = r.accum[cellIndex(x, y, z)];
+                    for (const glm::vec4& b : {r.accum[cellIndex(mx, y, z)], r.accum[cellIndex(x, y, mz)],
+                                               r.accum[cellIndex(z, y, x)]}) {
+                        maxAsym = std::max(maxAsym, double(std::abs(a.x - b.x)));
+                        maxValue = std::max(maxValue, double(std::abs(a.x)));
+                    }
+                }
+        EXPECT_LT(maxAsym, 1e-5 * maxValue) << "propagation is not symmetric about the VPL's axis";
+    }
+}
+
+TEST_F(LpvVolumeTest, WallInTheGeometryVolumeCutsTheLightBehindIt) {
+    // A VPL at x = -0.3 facing +x; a wall of occluder surfels (zero flux, full cell coverage) in the
+    // plane x = 0 facing the light. Compare the light that reaches x > 0.05 with and without the wall.
+    const float cell = 2.04f / 31.0f;
+    std::vector<gpu::GpuVpl> light{vpl({-0.3f, 0.0f, 0.0f}, {1, 0, 0}, glm::vec3(1.0f))};
+    std::vector<gpu::GpuVpl> walled = light;
+    for (float y = -0.9f; y <= 0.9f; y += cell)
+        for (float z = -0.9f; z <= 0.9f; z += cell)
+            walled.push_back(vpl({0.0f, y, z}, {-1, 0, 0}, glm::vec3(0.0f), cell * cell));
+    auto behind = [&](const VolumeRun& r) {
+        double sum = 0.0;
+        const float origin = -1.02f - 0.5f * cell;
+        for (int z = 0; z < int(kRes); ++z)
+            for (int y = 0; y < int(kRes); ++y)
+                for (int x = 0; x < int(kRes); ++x)
+                    if (origin + (x + 0.5f) * cell > 0.05f) sum += r.accum[cellIndex(x, y, z)].x;
+        return sum;
+    };
+    const double open = behind(run(light, 8)), blocked = behind(run(walled, 8));
+    std::printf("[ lpv ] light behind the wall: %.3g open, %.3g blocked (%.1f%%)\n", open, blocked,
+                100.0 * blocked / open);
+    EXPECT_GT(open, 0.0);
+    EXPECT_LT(blocked, 0.1 * open);
+}
+
+TEST_F(LpvVolumeTest, InjectionIsOrderIndependent) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> u(-0.9f, 0.9f);
+    std::vector<gpu::GpuVpl> vpls;
+    for (int i = 0; i < 2000; ++i)
+        vpls.push_back(vpl({u(rng), u(rng), u(rng)}, {u(rng), u(rng) + 1.0f, u(rng)},
+                           glm::vec3(0.5f + u(rng), 0.5f + u(rng), 1.0f), 0.001f));
+    VolumeRun a = run(vpls, 1);
+    std::shuffle(vpls.begin(), vpls.end(), rng);
+    VolumeRun b = run(vpls, 1);
+    double maxDiff = 0.0, maxValue = 0.0;
+    for (size_t i = 0; i < a.accum.size(); ++i)
+        for (int k = 0; k < 4; ++k) {
+            maxDiff = std::max(maxDiff, double(std::abs(a.accum[i][k] - b.accum[i][k])));
+            maxValue = std::max(maxValue, double(std::abs(a.accum[i][k])));
+        }
+    for (size_t i = 0; i < a.geometry.size(); ++i)
+        for (int k = 0; k < 4; ++k) maxDiff = std::max(maxDiff, double(std::abs(a.geometry[i][k] - b.geometry[i][k])));
+    // Float atomics add in any order: only rounding may differ.
+    EXPECT_LT(maxDiff, 1e-5 * maxValue);
+}
+
+TEST_F(GpuTest, LpvCornellBleedsWallColoursAndLightsTheCeiling) {
+    Scene scene = makeBuiltinScene("cornell");
+    RenderSettings s;
+    s.width = 160;
+    s.height = 120;
+    s.aov = Aov::Indirect;
+    s.gi = GiMode::Lpv;
+    s.lpv.rsmResolution = 512;
+    s.lpv.vplResolution = 128;
+    // Light moves at most one cell per step and spreads sideways as it goes (propagation is
+    // diffusive), so the bounce off the floor reaches the ceiling of a 2 m box only with cells of
+    // ~13 cm and enough steps: 16^3 x 32 here (the defaults, 32^3 x 8, light ~0.5 m around each VPL).
+    s.lpv.resolution = 16;
+    s.lpv.iterations = 32;
+    Renderer r(ctx(), scene, s);
+    r.render(scene.cameras[0]);
+    FloatImage img{s.width, s.height, r.readHdr()};
+    auto depth = r.commands().readImage(r.gbuffer().depth, 4);
+    const glm::dmat4 inv(r.frameUniforms().invViewProj);
+    dvec3 nearRed(0.0), nearGreen(0.0), ceiling(0.0);
+    size_t ceilingPixels = 0;
+    for (uint32_t y = 0; y < s.height; ++y)
+        for (uint32_t x = 0; x < s.width; ++x) {
+            float d;
+            std::memcpy(&d, depth.data() + (size_t(y) * s.width + x) * 4, 4);
+            if (d >= 1.0f) continue;
+            glm::dvec4 p = inv * glm::dvec4((x + 0.5) / s.width * 2 - 1, (y + 0.5) / s.height * 2 - 1, d, 1.0);
+            const dvec3 w = dvec3(p) / p.w;
+            const dvec3 c(img.at(x, y, 0), img.at(x, y, 1), img.at(x, y, 2));
+            if (w.y < 0.01 && w.x < -0.7) nearRed += c;
+            if (w.y < 0.01 && w.x > 0.7) nearGreen += c;
+            if (w.y > 1.99) ceiling += c, ++ceilingPixels;
+        }
+    const double redLeft = nearRed.x / nearRed.y, redRight = nearGreen.x / nearGreen.y;
+    std::printf("[ lpv ] floor red/green: %.3f by the red wall, %.3f by the green wall (ratio %.2f); ceiling %.4f\n",
+                redLeft, redRight, redLeft / redRight, ceiling.y / double(ceilingPixels));
+    EXPECT_GT(redLeft, 1.5 * redRight);
+    ASSERT_GT(ceilingPixels, 100u);
+    EXPECT_GT(ceiling.y / double(ceilingPixels), 1e-3);
+}
