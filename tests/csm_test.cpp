@@ -171,18 +171,19 @@ TEST(PointLightMaps, ParaboloidMapsAxisToCentreAndRimToDiscScale) {
     const float k = paraboloidDiscScale(512, 4.0f);
     const auto h = paraboloidProjections(pos, axis, range, 512, 4.0f);
     EXPECT_NEAR(k, 1.0f - 8.0f / 512.0f, 1e-6f);
-    const glm::vec3 centre = paraboloidMap(h[0], k, pos + 2.0f * axis);
+    EXPECT_EQ(h[0].discScale, k);
+    const glm::vec3 centre = paraboloidMap(h[0], pos + 2.0f * axis);
     EXPECT_NEAR(glm::length(glm::vec2(centre)), 0.0f, 1e-6f);
     EXPECT_NEAR(centre.z, (2.0f - range.x) / (range.y - range.x), 1e-6f);
     // A direction on the seam (90 degrees from both axes) lands on the rim circle of both halves.
     const glm::vec3 rim = pos + glm::vec3(1.5f, 0.0f, 2.0f);
     for (int i = 0; i < 2; ++i) {
-        const glm::vec3 m = paraboloidMap(h[i], k, rim);
+        const glm::vec3 m = paraboloidMap(h[i], rim);
         EXPECT_NEAR(glm::length(glm::vec2(m)), k, 1e-5f);
         EXPECT_NEAR(m.z, (2.5f - range.x) / (range.y - range.x), 1e-6f);
     }
     // 45 degrees: radius k tan(22.5 degrees).
-    const glm::vec3 m45 = paraboloidMap(h[0], k, pos + glm::vec3(1, -1, 0));
+    const glm::vec3 m45 = paraboloidMap(h[0], pos + glm::vec3(1, -1, 0));
     EXPECT_NEAR(glm::length(glm::vec2(m45)), k * std::tan(glm::radians(22.5f)), 1e-5f);
 }
 

@@ -3,6 +3,7 @@
 // against the blocker-distance formula, cascade stability under sub-texel camera moves, VSM light
 // bleeding and its reduction. Point lights: shadow_point_test.cpp.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <functional>
@@ -112,34 +113,65 @@ TEST_F(ShadowGpuTest, EveryFilterMatchesAnalyticOccluderAwayFromPenumbra) {
                     t.compare = std::acos(std::clamp(glm::dot(-toLight, axis), -1.0, 1.0)) < spot.innerConeAngle - 0.01;
                 return t;
             });
-            reportShadow(shadowFilterName(f).c_str(), stats);
+            reportShadow(fmt::format("{} {}", isSpot ? "spot" : "sun", shadowFilterName(f)), stats);
         }
     }
 }
 
 // ---------------------------------------------------------------------------------------------
-// PCSS: a blocker edge straight below a spot light at height 4, blocker at 2, receivers at 0 and 1.
-// The formula w = (d_r - d_b) * size / d_b predicts penumbra widths in the ratio (4-2)/(3-2) = 2.
+// PCSS: a blocker edge (height 2) straight below the light, receivers at heights 0 and 1. For a
+// spot light at height 4 the formula w = (d_r - d_b) * size / d_b, for a sun straight above
+// w = (d_r - d_b) * 2 tan(angle / 2): both predict penumbra widths in the ratio (2 - 0) / (2 - 1) = 2.
 // Measured: the 10%-90% width of the visibility profile across the edge on each receiver.
 // ---------------------------------------------------------------------------------------------
-TEST_F(ShadowGpuTest, PcssPenumbraWidthFollowsBlockerDistance) {
-    constexpr uint32_t W = 240, H = 240;
-    constexpr double kLightY = 4.0, kBlockerY = 2.0, kPlatformY = 1.0;
+namespace {
+
+constexpr double kLightY = 4.0, kBlockerY = 2.0, kPlatformY = 1.0;
+
+Scene pcssSteps(const Light& light) {
     Scene s;
     s.name = "pcss-steps";
     const uint32_t grey = addMaterial(s, glm::vec3(0.5f));
     addQuad(s, {-3, 0, 0}, {0, 0, 3}, {6, 0, 0}, grey);                      // ground, z in [0, 3]
     addQuad(s, {-3, float(kPlatformY), -3}, {0, 0, 2.8f}, {6, 0, 0}, grey);  // platform, z in [-3, -0.2]
     addQuad(s, {-4, float(kBlockerY), -3.5f}, {0, 0, 7}, {4, 0, 0}, grey);   // blocker, x <= 0
+    s.lights.push_back(light);
+    s.computeBounds();
+    return s;
+}
+
+// 10%-90% widths of the visibility profile across x = 0 on the ground and on the platform.
+std::array<double, 2> penumbraWidths(const FloatImage& vis, const FloatImage& depth, const Camera& cam) {
+    struct Receiver {
+        double y, zMin, zMax;
+        EdgeProfile profile;
+    };
+    Receiver receivers[] = {{0.0, 0.3, 2.7, EdgeProfile(-0.8, 0.8, 0.01)},
+                            {kPlatformY, -2.7, -0.5, EdgeProfile(-0.8, 0.8, 0.01)}};
+    for (uint32_t y = 0; y < vis.height; ++y)
+        for (uint32_t x = 0; x < vis.width; ++x)
+            for (Receiver& r : receivers) {
+                const Ray ray = cameraRay(cam, vis.width, vis.height, x, y);
+                const std::optional<double> t = hitHorizontalPlane(ray, r.y);
+                if (!t || std::abs(depth.at(x, y) - *t) > 1e-3 * *t) continue;
+                const dvec3 p = ray.origin + *t * ray.dir;
+                if (p.z >= r.zMin && p.z <= r.zMax) r.profile.add(p.x, vis.at(x, y));
+            }
+    return {receivers[0].profile.width(0.1, 0.9), receivers[1].profile.width(0.1, 0.9)};
+}
+
+}  // namespace
+
+TEST_F(ShadowGpuTest, PcssPenumbraWidthFollowsBlockerDistance) {
+    constexpr uint32_t W = 240, H = 240;
     Light spot;
     spot.type = LightType::Spot;
     spot.position = {0.0f, float(kLightY), 0.0f};
     spot.direction = {0.0f, -1.0f, 0.0f};
-    spot.intensity = 10.0f;
     spot.outerConeAngle = glm::radians(70.0f);
     spot.innerConeAngle = glm::radians(65.0f);
-    s.lights.push_back(spot);
-    s.computeBounds();
+    Light sun;
+    sun.direction = {0.0f, -1.0f, 0.0f};
     Camera cam;
     cam.eye = {3.0f, 8.0f, 0.0f};  // beside the blocker's edge, so that it hides little of the receivers
     cam.target = {0.0f, 0.0f, 0.0f};
@@ -149,41 +181,26 @@ TEST_F(ShadowGpuTest, PcssPenumbraWidthFollowsBlockerDistance) {
     settings.resolution = 1024;
     settings.filter = ShadowFilter::Pcss;
     settings.pcssLightSize = 0.5f;
-    const FloatImage vis = renderFrame(s, cam, W, H, Aov::Shadow, settings).image;
-    const FloatImage depth = renderFrame(s, cam, W, H, Aov::Depth, settings).image;
-
-    struct Receiver {
-        const char* name;
-        double y, zMin, zMax;
-        EdgeProfile profile;
-    };
-    Receiver receivers[] = {{"ground", 0.0, 0.3, 2.7, EdgeProfile(-0.8, 0.8, 0.01)},
-                            {"platform", kPlatformY, -2.7, -0.5, EdgeProfile(-0.8, 0.8, 0.01)}};
-    for (uint32_t y = 0; y < H; ++y)
-        for (uint32_t x = 0; x < W; ++x)
-            for (Receiver& r : receivers) {
-                const Ray ray = cameraRay(cam, W, H, x, y);
-                const std::optional<double> t = hitHorizontalPlane(ray, r.y);
-                if (!t || std::abs(depth.at(x, y) - *t) > 1e-3 * *t) continue;
-                const dvec3 p = ray.origin + *t * ray.dir;
-                if (p.z >= r.zMin && p.z <= r.zMax) r.profile.add(p.x, vis.at(x, y));
-            }
-    double width[2];
-    for (int i = 0; i < 2; ++i) {
-        width[i] = receivers[i].profile.width(0.1, 0.9);
-        const double predicted = settings.pcssLightSize * (kLightY - receivers[i].y - (kLightY - kBlockerY)) /
-                                 (kLightY - kBlockerY);
-        std::printf("[pcss] %s: 10-90%% penumbra width %.4f (formula: full penumbra %.4f)\n", receivers[i].name,
-                    width[i], predicted);
-        EXPECT_GT(width[i], 0.0) << receivers[i].name;
+    settings.pcssSunAngle = 8.0f;
+    for (const Light& light : {spot, sun}) {
+        const bool isSpot = light.type == LightType::Spot;
+        const Scene s = pcssSteps(light);
+        const FloatImage vis = renderFrame(s, cam, W, H, Aov::Shadow, settings).image;
+        const FloatImage depth = renderFrame(s, cam, W, H, Aov::Depth, settings).image;
+        const std::array<double, 2> width = penumbraWidths(vis, depth, cam);
+        // Full penumbra widths by the formula (vertical rays: distances are height differences).
+        const double scale = isSpot ? settings.pcssLightSize / (kLightY - kBlockerY)
+                                    : 2.0 * std::tan(glm::radians(0.5 * settings.pcssSunAngle));
+        const double predictedRatio = kBlockerY / (kBlockerY - kPlatformY);
+        const double ratio = width[0] / width[1];
+        std::printf("[pcss %s] 10-90%% penumbra width: ground %.4f, platform %.4f (formula: full penumbra %.4f, "
+                    "%.4f); ratio %.3f, predicted %.3f (%.1f%% off)\n",
+                    isSpot ? "spot" : "sun", width[0], width[1], scale * kBlockerY, scale * (kBlockerY - kPlatformY),
+                    ratio, predictedRatio, 100.0 * std::abs(ratio / predictedRatio - 1.0));
+        RecordProperty(isSpot ? "spot_width_ratio" : "sun_width_ratio", fmt::format("{:.3f}", ratio));
+        EXPECT_GT(width[1], 0.0);
+        EXPECT_NEAR(ratio / predictedRatio, 1.0, 0.2) << (isSpot ? "spot" : "sun");
     }
-    const double predictedRatio = (kLightY - kBlockerY) / (kLightY - kPlatformY - (kLightY - kBlockerY)) *
-                                  1.0;  // (d_r0 - d_b) / (d_r1 - d_b), the same d_b
-    const double ratio = width[0] / width[1];
-    std::printf("[pcss] width ratio ground/platform %.3f, predicted %.3f (%.1f%% off)\n", ratio, predictedRatio,
-                100.0 * std::abs(ratio / predictedRatio - 1.0));
-    RecordProperty("width_ratio", fmt::format("{:.3f}", ratio));
-    EXPECT_NEAR(ratio / predictedRatio, 1.0, 0.2);
 }
 
 // ---------------------------------------------------------------------------------------------

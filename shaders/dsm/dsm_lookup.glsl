@@ -74,7 +74,7 @@ float deepShadowTransmittance(uint lightIndex, vec3 p, vec3 n, bool hair) {
         }
         rowHint = rowStart == DSM_NONE ? DSM_NONE : dsmUpLinks[rowStart];
     }
-    return sum;
+    return min(sum, 1.0);  // the weights sum to 1 up to rounding
 }
 
 // Transmittance AOV: the first light with a DSM, whether or not the receiver faces it.

@@ -32,8 +32,8 @@ void main() {
     vec3 v0 = (view * vec4(inWorld[0], 1.0)).xyz, v1 = (view * vec4(inWorld[1], 1.0)).xyz,
          v2 = (view * vec4(inWorld[2], 1.0)).xyz;
     float rim = paraboloidRimCos(draw.paraboloid.z);
-    // Behind the rim: every vertex beyond it. (A triangle spanning the back could still reach in
-    // front only if its vertices straddled the rim, which this test keeps.)
+    // Behind the rim: every vertex beyond it. The region beyond the rim is a convex cone (the rim is
+    // past 90 degrees), so such a triangle lies wholly inside it.
     bool behind = -v0.z < rim * length(v0) && -v1.z < rim * length(v1) && -v2.z < rim * length(v2);
     // Outer level i belongs to the edge opposite vertex i.
     float l0 = behind ? 0.0 : edgeLevel(v1, v2);

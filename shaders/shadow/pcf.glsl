@@ -95,10 +95,11 @@ float pcssRadius(GpuShadowLight s, GpuLight light, ShadowReceiver r) {
     float size = s.params.y;
     float dr = receiverDistance(r);
     float maxRadius = params.kernel.y * r.texel;
-    // Blockers can sit anywhere between the light (its near plane) and the receiver: the search
-    // region is the light's footprint seen from the receiver, limited to the configured radius.
+    // Blockers can sit anywhere between the light's near plane (the top of the scene for a
+    // directional light) and the receiver: the search region is the light's footprint seen from
+    // the receiver there, limited to the configured radius.
     float nearDistance = shadowLayers[r.layer].params.y;
-    float search = r.local ? 0.5 * size * (dr - nearDistance) / max(nearDistance, 1e-6) : 0.5 * size * dr;
+    float search = 0.5 * size * (dr - nearDistance) / (r.local ? max(nearDistance, 1e-6) : 1.0);
     search = min(search, maxRadius);
     float blockerSum = 0.0;
     int blockers = 0;

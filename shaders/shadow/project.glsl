@@ -29,7 +29,7 @@ ShadowCoord shadowProject(uint layerIndex, vec3 q) {
     GpuShadowLayer layer = shadowLayers[layerIndex];
     if (layer.info.x == SHADOW_PROJ_PARABOLOID) {
         vec3 v = (layer.viewProj * vec4(q, 1.0)).xyz;
-        vec3 m = paraboloidProject(v, layer.params.y, layer.params.z, params.kernel.w);
+        vec3 m = paraboloidProject(v, layer.params.y, layer.params.z, layer.params.w);
         return ShadowCoord(vec3(m.xy * 0.5 + 0.5, float(layerIndex)), m.z);
     }
     vec4 clip = layer.viewProj * vec4(q, 1.0);

@@ -167,14 +167,14 @@ struct GpuShadowLight {
 struct GpuShadowLayer {
     mat4 viewProj;  // world -> clip; paraboloid layers: world -> the hemisphere's view space
     vec4 params;    // x = texel world size (ortho) or per unit distance (perspective; paraboloid: on
-                    // its axis), y = near, z = far (view distances of depth 0 and 1), w unused
+                    // its axis), y = near, z = far (view distances of depth 0 and 1), w = paraboloid disc scale
     vec4 split;     // cascades: x = near, y = far split (camera view depths), zw unused
     uvec4 info;     // x = SHADOW_PROJ_*, y = moment layer or SHADOW_NO_MOMENTS, z = moment filter, w unused
 };
 
 struct GpuShadowParams {
     vec4 kernel;   // x = PCF radius (texels), y = PCSS max search radius (texels), z = cascade blend band
-                   // (fraction of a cascade), w = paraboloid disc scale
+                   // (fraction of a cascade), w unused
     vec4 moments;  // x = light-bleeding reduction, y = EVSM positive exponent, z = negative, w = MSM bias
     uvec4 info;    // x = shadow-map resolution, y = 1: linear depth comparison in hardware,
                    // z = moment blur radius (texels), w = shadowed light count

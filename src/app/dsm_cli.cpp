@@ -7,7 +7,7 @@ namespace penumbra {
 void addDsmOptions(CLI::App& cmd, DsmSettings& dsm, BuiltinOptions& scene) {
     cmd.add_option("--strands", scene.hairStrands, "Hair strands of the built-in `hair` scene (default 25000)")
         ->check(CLI::Range(1, 2'000'000));
-    cmd.add_option("--dsm-lights", dsm.lights, "Lights that get a deep shadow map, e.g. 0,2 (default: every shadowed one)")
+    cmd.add_option("--dsm-lights", dsm.lights, "Lights that get a deep shadow map, e.g. 0,2 (default: all shadowed)")
         ->delimiter(',')
         ->check(CLI::NonNegativeNumber);
     cmd.add_option("--dsm-res", dsm.resolution, "Deep shadow map resolution (default: --shadow-res)")

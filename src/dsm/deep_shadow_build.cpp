@@ -60,8 +60,9 @@ void DeepShadowBuildPass::recordLayer(VkCommandBuffer cmd, uint32_t layer) const
 }
 
 void DeepShadowBuildPass::addTo(FrameGraph& graph) {
-    PassDesc clear{"dsm.clear", PassKind::Transfer, {}, {{&res_.heads, Use::TransferDst}, {&res_.stats, Use::TransferDst}},
-                   {}};
+    PassDesc clear{"dsm.clear", PassKind::Transfer, {}, {}, {}};
+    clear.buffers = {{&res_.heads, Use::TransferDst}, {&res_.stats, Use::TransferDst}};
+    clear.bytes = res_.heads.size();  // a fill: bound by memory bandwidth
     clear.record = [this](VkCommandBuffer cmd) {
         vkCmdFillBuffer(cmd, res_.heads.handle(), 0, VK_WHOLE_SIZE, DSM_NONE);
         vkCmdFillBuffer(cmd, res_.stats.handle(), 0, VK_WHOLE_SIZE, 0);

@@ -26,15 +26,16 @@ std::vector<DsmLayer> chooseLayers(const Scene& scene, const DsmSettings& s, uin
                                            l.name.empty() ? "point light " + std::to_string(i) : l.name));
             continue;
         }
-        const LightProjection p = l.type == LightType::Directional ? directionalProjection(l.direction, scene.bounds, res)
-                                                                   : spotProjection(l, scene.bounds, res);
+        const LightProjection p = l.type == LightType::Directional
+                                      ? directionalProjection(l.direction, scene.bounds, res)
+                                      : spotProjection(l, scene.bounds, res);
         layers.push_back({i, p, lightRibbonView(l, p)});
     }
     return layers;
 }
 
 std::string count(uint64_t n) {
-    if (n >= 10'000'000) return fmt::format("{:.1f}M", double(n) / 1e6);
+    if (n >= 1'000'000) return fmt::format("{:.2f}M", double(n) / 1e6);
     if (n >= 10'000) return fmt::format("{:.1f}k", double(n) / 1e3);
     return std::to_string(n);
 }

@@ -44,6 +44,13 @@ void checkFits(vk::Context& ctx, uint64_t capacity, VkDeviceSize headBytes) {
                                               capacity, double(c.need) / kMiB, c.what, double(c.limit) / kMiB));
 }
 
+// The largest pool the device takes (the automatic size is clamped to it).
+uint64_t maxNodes(vk::Context& ctx, VkDeviceSize headBytes) {
+    const DeviceLimits lim = deviceLimits(ctx);
+    const VkDeviceSize forHeap = lim.heap / 2 > headBytes ? (lim.heap / 2 - headBytes) / DsmResources::kNodeBytes : 0;
+    return std::max<uint64_t>(1, std::min({lim.storageRange / 16, lim.allocation / 16, forHeap}));
+}
+
 gpu::GpuDsmLight tableEntry(const DsmLayer& layer, int index, uint32_t resolution, const DsmSettings& s) {
     gpu::GpuDsmLight g{};
     g.viewProj = layer.projection.viewProj;
@@ -62,10 +69,10 @@ DsmResources::DsmResources(vk::Allocator& alloc, const DsmSettings& settings, ui
     const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     const VkBufferUsageFlags cleared = storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
     const uint64_t texels = uint64_t(res) * res * std::max<size_t>(layers.size(), 1);
-    capacity = layers.empty() ? 1
-               : settings.poolNodes ? settings.poolNodes
-                                    : std::min(texels * DsmSettings::kAutoNodesPerTexel, DsmSettings::kMaxPoolNodes - 1);
-    if (!layers.empty()) checkFits(alloc.context(), capacity, texels * 4);
+    const uint64_t automatic = std::min({texels * DsmSettings::kAutoNodesPerTexel, DsmSettings::kMaxPoolNodes - 1,
+                                         maxNodes(alloc.context(), texels * 4)});
+    capacity = layers.empty() ? 1 : settings.poolNodes ? settings.poolNodes : automatic;
+    if (!layers.empty()) checkFits(alloc.context(), capacity, texels * 4);  // an explicit --dsm-nodes may not fit
     heads = vk::Buffer(alloc, layers.empty() ? 4 : texels * 4, cleared, false, "dsm-heads");
     nodes = vk::Buffer(alloc, capacity * 16, cleared, false, "dsm-nodes");
     upLinks = vk::Buffer(alloc, capacity * 4, cleared, false, "dsm-up-links");

@@ -10,7 +10,8 @@ struct DsmSettings {
     std::vector<uint32_t> lights;  // `--dsm-lights`: the lights that get one (empty: every shadowed
                                    // directional or spot light)
     uint32_t resolution = 0;       // texels per side; 0 = the shadow-map resolution
-    uint64_t poolNodes = 0;        // node pool capacity; 0 = kAutoNodesPerTexel per DSM texel
+    uint64_t poolNodes = 0;        // node pool capacity; 0 = kAutoNodesPerTexel per DSM texel (at most what
+                                   // the device can address)
     uint32_t maxList = 50;         // nodes kept per texel, nearest first (1..DSM_MAX_LIST_CAP)
     float filterWidth = 1.0f;      // PCF box width in texels (0 = bilinear, up to 8)
     float depthBias = 2.0f;        // receiver moved this many texels towards the light (self-shadowing)

@@ -122,6 +122,9 @@ void LightPropagationVolume::addDownsample(FrameGraph& graph, const vk::Buffer& 
     PassDesc pass{"lpv.downsample", PassKind::Compute, {}, {}, {}};
     pass.images = {{&rsm.depth(), Use::Sampled}, {&rsm.normal(), Use::Sampled}, {&rsm.flux(), Use::Sampled}};
     pass.buffers = {{&rsm.layerTable(), Use::StorageRead}, {&lights, Use::StorageRead}, {&vpls_, Use::StorageWrite}};
+    // Each RSM texel read once (depth 4 + normal 4 + flux 8 bytes), each VPL written once.
+    const uint64_t texels = uint64_t(settings_.rsmResolution) * settings_.rsmResolution * layers_;
+    pass.bytes = texels * 16 + uint64_t(push_.counts.x) * sizeof(gpu::GpuVpl);
     pass.record = [this, &lights, &rsm, push = push_](VkCommandBuffer cmd) {
         const VkImageLayout depthRead = VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL;
         vk::DescriptorWrites w;
@@ -139,6 +142,7 @@ void LightPropagationVolume::addDownsample(FrameGraph& graph, const vk::Buffer& 
 
 void LightPropagationVolume::addInjection(FrameGraph& graph) {
     PassDesc clear{"lpv.clear", PassKind::Transfer, {}, {}, {}};
+    clear.bytes = volumeA_.size() + accum_.size() + geometry_.size();
     clear.buffers = {{&volumeA_, Use::TransferDst}, {&accum_, Use::TransferDst}, {&geometry_, Use::TransferDst}};
     clear.record = [this](VkCommandBuffer cmd) {
         for (const vk::Buffer* b : {&volumeA_, &accum_, &geometry_}) vkCmdFillBuffer(cmd, b->handle(), 0, VK_WHOLE_SIZE, 0);
@@ -147,6 +151,8 @@ void LightPropagationVolume::addInjection(FrameGraph& graph) {
     if (layers_ > 0) {
         PassDesc inject{"lpv.inject", PassKind::Compute, {}, {}, {}};
         inject.buffers = {{&vpls_, Use::StorageRead}, {&volumeA_, Use::StorageWrite}, {&geometry_, Use::StorageWrite}};
+        // Each VPL read once; per cascade 16 atomic read-modify-writes of 4 bytes.
+        inject.bytes = uint64_t(push_.counts.x) * (sizeof(gpu::GpuVpl) + cascadeCount_ * 16 * 8);
         inject.record = [this, push = push_](VkCommandBuffer cmd) {
             vk::DescriptorWrites w;
             w.storageBuffer(0, vpls_).storageBuffer(1, volumeA_).storageBuffer(2, geometry_);
@@ -183,6 +189,8 @@ void LightPropagationVolume::addPropagation(FrameGraph& graph) {
                         {&geometry_, Use::StorageRead}};
         gpu::LpvPush push = push_;
         push.grid.z = i == 0 ? 1u : 0u;
+        // Per cell, once: source 48, geometry 16, destination 48, running sum read + written 96.
+        pass.bytes = uint64_t(r) * r * r * cascadeCount_ * (48 + 16 + 48 + 96);
         pass.record = [this, &src, &dst, push, r](VkCommandBuffer cmd) {
             vk::DescriptorWrites w;
             w.storageBuffer(0, src).storageBuffer(1, dst).storageBuffer(2, accum_).storageBuffer(3, geometry_);
@@ -196,6 +204,8 @@ void LightPropagationVolume::addGather(FrameGraph& graph, const vk::Buffer& fram
     PassDesc pass{"lpv.gather", PassKind::Compute, {}, {}, {}};
     pass.images = {{&g.normal, Use::Sampled}, {&g.depth, Use::Sampled}, {&irradiance_, Use::StorageWrite}};
     pass.buffers = {{&frame, Use::Uniform}, {&accum_, Use::StorageRead}, {&geometry_, Use::StorageRead}};
+    // Per pixel: depth 4 + normal 8 read, irradiance 16 written; the summed volume read once.
+    pass.bytes = uint64_t(width_) * height_ * 28 + accum_.size();
     gpu::LpvPush push = push_;
     push.grid.z = settings_.sliceAxis;
     push.grid.w = std::min(settings_.sliceIndex, settings_.resolution - 1);

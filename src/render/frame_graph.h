@@ -43,6 +43,9 @@ struct PassDesc {
     std::vector<ImageAccess> images;
     std::vector<BufferAccess> buffers;
     std::function<void(VkCommandBuffer)> record;
+    // Bytes the pass must move at the least (reads + writes of its data, once), for passes bound by
+    // memory bandwidth; `penumbra bench` reports the achieved GB/s against the copy bandwidth. 0 = n/a.
+    uint64_t bytes = 0;
 };
 
 class FrameGraph {

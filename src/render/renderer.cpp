@@ -101,6 +101,12 @@ void Renderer::setupHairAndDsm() {
         if (dsm_->covers(i)) deep.push_back(i);
     shadow_->setDeepShadowLights(deep);
     if (!hair_) return;
+    for (uint32_t i = 0; i < scene_.lights.size(); ++i)
+        if (scene_.lights[i].type == LightType::Point && scene_.lights[i].castsShadow &&
+            settings_.shadow.pointMode == PointShadowMode::Paraboloid) {
+            warnings_.push_back("hair casts no shadow in paraboloid point-light maps (use --point-shadow cube)");
+            break;
+        }
     hairGBuffer_ = std::make_unique<HairGBufferPass>(alloc_, *hair_, *gbuffer_);
     hairShadow_ = std::make_unique<HairShadowPass>(alloc_, *hair_, settings_.shadow.depthBiasConstant,
                                                    settings_.shadow.depthBiasSlope);

@@ -55,10 +55,14 @@ public:
     std::vector<float> readHdr();     // RGBA32F, row-major, top row first
     std::vector<uint8_t> readLdr();   // RGBA8 (sRGB-encoded for radiance and colour AOVs)
     std::string describePasses() const { return graph_.describe(); }
+    const std::vector<PassDesc>& passes() const { return graph_.passes(); }
     // Things the user should know (e.g. lights rendered without shadows), collected once.
     const std::vector<std::string>& warnings() const { return warnings_; }
     vk::Allocator& allocator() { return alloc_; }
     const RenderSettings& settings() const { return settings_; }
+    // The AOV of the next frames (it only selects what the lighting pass writes; `penumbra eval` reads
+    // Final and Indirect of one renderer).
+    void setAov(Aov aov) { settings_.aov = aov; }
     // Internals for tests and statistics: the G-buffer, read-backs, the last frame's constants.
     GBufferPass& gbuffer() { return *gbuffer_; }
     ShadowMapPass& shadow() { return *shadow_; }  // layers, shadow map, mask

@@ -310,7 +310,8 @@ private:
             throw SceneError(fmt::format("{}: material {} does not exist", what, p.material));
         if (mode == TINYGLTF_MODE_LINE || mode == TINYGLTF_MODE_LINE_STRIP || mode == TINYGLTF_MODE_LINE_LOOP)
             return addStrands(p, pos, world, mode, what);
-        if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN)
+        if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
+            mode != TINYGLTF_MODE_TRIANGLE_FAN)
             return;  // unknown mode
         const std::vector<float> nrm = optionalAttribute(p, "NORMAL", 3, n, what);
         const std::vector<float> uv = optionalAttribute(p, "TEXCOORD_0", 2, n, what);

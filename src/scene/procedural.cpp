@@ -148,7 +148,8 @@ std::vector<glm::vec3> growStrand(const glm::vec3& c, float radius, const glm::v
     for (int k = 1; k <= kSegments; ++k) {
         const glm::vec3 n = glm::normalize(p - c);
         const bool onHead = p.y > c.y && glm::length(p - c) < shell * 1.15f;
-        dir = glm::normalize(dir + glm::vec3(0.0f, -0.25f, 0.0f) + (onHead ? 0.5f * combDirection(n) : glm::vec3(0.0f)));
+        const glm::vec3 comb = onHead ? 0.5f * combDirection(n) : glm::vec3(0.0f);
+        dir = glm::normalize(dir + glm::vec3(0.0f, -0.25f, 0.0f) + comb);
         p += dir * step;
         if (const std::optional<glm::vec3> m = pushOut(p, c, shell)) dir = acrossNormal(dir, *m, dir);
         const float t = float(k) / kSegments;
@@ -158,7 +159,7 @@ std::vector<glm::vec3> growStrand(const glm::vec3& c, float radius, const glm::v
 }
 
 // A head-sized sphere on a stand over a floor, `strands` hairs on its scalp, one spot light from
-// the upper left front: the hair shadows itself and the floor (the deep-shadow-map scene).
+// the upper left: the hair shadows itself and the floor (the deep-shadow-map scene).
 Scene makeHair(const BuiltinOptions& options) {
     Scene s;
     s.name = "hair";
@@ -187,8 +188,8 @@ Scene makeHair(const BuiltinOptions& options) {
 
     Light spot;
     spot.type = LightType::Spot;
-    spot.position = {-0.75f, 1.35f, 0.4f};
-    spot.direction = glm::normalize(glm::vec3(0.12f, 0.28f, -0.08f) - spot.position);
+    spot.position = {-0.9f, 1.3f, -0.2f};
+    spot.direction = glm::normalize(glm::vec3(0.0f, 0.3f, 0.0f) - spot.position);
     spot.intensity = 6.0f;
     spot.outerConeAngle = glm::radians(28.0f);
     spot.innerConeAngle = glm::radians(20.0f);
@@ -196,8 +197,8 @@ Scene makeHair(const BuiltinOptions& options) {
     s.lights.push_back(spot);
 
     Camera cam;
-    cam.eye = {0.7f, 0.72f, 1.2f};
-    cam.target = {0.02f, 0.3f, 0.0f};
+    cam.eye = {0.9f, 0.75f, -1.1f};  // from behind: the hair's volume, lit from the left
+    cam.target = {0.0f, 0.3f, 0.0f};
     cam.fovy = glm::radians(35.0f);
     s.cameras.push_back(cam);
     return s;

@@ -72,17 +72,18 @@ std::array<LightProjection, 2> paraboloidProjections(const glm::vec3& position, 
                                                      uint32_t resolution, float marginTexels) {
     // On the axis r' = tan(theta / 2) changes by 1/2 per radian: a texel (2 / (res k) in r') spans
     // 4 / (res k) radians there, i.e. that much world size per unit distance (less towards the rim).
-    const float texel = 4.0f / (float(resolution) * paraboloidDiscScale(resolution, marginTexels));
+    const float k = paraboloidDiscScale(resolution, marginTexels);
+    const float texel = 4.0f / (float(resolution) * k);
     const glm::vec3 a = glm::normalize(axis);
-    return {LightProjection{lookAlong(position, a), texel, false, true, range.x, range.y},
-            LightProjection{lookAlong(position, -a), texel, false, true, range.x, range.y}};
+    return {LightProjection{lookAlong(position, a), texel, false, true, range.x, range.y, k},
+            LightProjection{lookAlong(position, -a), texel, false, true, range.x, range.y, k}};
 }
 
-glm::vec3 paraboloidMap(const LightProjection& h, float discScale, const glm::vec3& world) {
+glm::vec3 paraboloidMap(const LightProjection& h, const glm::vec3& world) {
     const glm::vec3 v = glm::vec3(h.viewProj * glm::vec4(world, 1.0f));
     const float d = glm::length(v);
     const float forward = -v.z;
-    const glm::vec2 xy = discScale * glm::vec2(v) / std::max(d + forward, 1e-6f * d);
+    const glm::vec2 xy = h.discScale * glm::vec2(v) / std::max(d + forward, 1e-6f * d);
     return {xy, (d - h.zNear) / (h.zFar - h.zNear)};
 }
 

@@ -18,6 +18,7 @@ struct LightProjection {
     bool perspective = false;
     bool paraboloid = false;
     float zNear = 0.0f, zFar = 1.0f;  // view distances of depth 0 and 1 (to linearise stored depth)
+    float discScale = 1.0f;           // paraboloid: ndc radius of the 90-degree rim (paraboloidDiscScale)
 };
 
 // A view matrix looking along `dir` with an up vector that is never parallel to it.
@@ -46,7 +47,7 @@ std::array<LightProjection, 2> paraboloidProjections(const glm::vec3& position, 
                                                      uint32_t resolution, float marginTexels);
 float paraboloidDiscScale(uint32_t resolution, float marginTexels);
 // The mapping itself (tests and CPU checks; the shaders implement the same): xy = ndc, z = depth.
-glm::vec3 paraboloidMap(const LightProjection& hemisphere, float discScale, const glm::vec3& world);
+glm::vec3 paraboloidMap(const LightProjection& hemisphere, const glm::vec3& world);
 
 // Camera: right-handed view, Vulkan clip space (depth 0..1, y down in NDC so the image is upright).
 glm::mat4 cameraViewProj(const Camera& camera, float aspect, float zfar);

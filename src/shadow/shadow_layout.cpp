@@ -30,9 +30,11 @@ bool usesMoments(ShadowFilter f) { return f == ShadowFilter::Vsm || f == ShadowF
 ShadowLayout::ShadowLayout(const ShadowSettings& settings, const Bounds& sceneBounds)
     : settings_(settings), bounds_(sceneBounds) {}
 
-float ShadowLayout::marginTexels() const {
-    // The widest reach of any filter from a covered point, plus the bilinear footprint.
-    const float reach = std::max({settings_.pcfRadius, settings_.pcssMaxRadius, float(settings_.blurRadius)});
+float ShadowLayout::marginTexels(ShadowFilter filter) const {
+    float reach = 0.0f;
+    if (filter == ShadowFilter::Pcf) reach = settings_.pcfRadius;
+    if (filter == ShadowFilter::Pcss) reach = settings_.pcssMaxRadius;
+    if (usesMoments(filter)) reach = float(settings_.blurRadius);
     return std::min(std::ceil(reach) + 2.0f, float(settings_.resolution) / 8.0f);
 }
 
@@ -72,16 +74,18 @@ void ShadowLayout::assign(const std::vector<Light>& lights) {
 
 void ShadowLayout::update(const std::vector<Light>& lights, const Camera& camera, float aspect, float cameraFar) {
     const uint32_t res = settings_.resolution;
-    const float margin = marginTexels();
     for (const ShadowedLight& s : shadowed_) {
         const Light& l = lights.at(s.light);
+        const float margin = marginTexels(s.filter);
         ShadowLayer* layer = &layers_[s.firstLayer];
         if (s.kind == SHADOW_KIND_CASCADES) {
             const std::vector<Cascade> cascades =
                 fitCascades(l.direction, camera, aspect, cameraFar, bounds_, res, settings_.cascades, margin);
-            for (uint32_t c = 0; c < s.layerCount; ++c)
-                layer[c].projection = cascades[c].projection, layer[c].splitNear = cascades[c].splitNear,
+            for (uint32_t c = 0; c < s.layerCount; ++c) {
+                layer[c].projection = cascades[c].projection;
+                layer[c].splitNear = cascades[c].splitNear;
                 layer[c].splitFar = cascades[c].splitFar;
+            }
         } else if (s.kind == SHADOW_KIND_CUBE) {
             const auto faces = cubeFaceProjections(l.position, pointLightRange(l, bounds_), res, margin);
             for (uint32_t f = 0; f < 6; ++f) layer[f].projection = faces[f];
@@ -116,7 +120,7 @@ std::vector<gpu::GpuShadowLayer> ShadowLayout::gpuLayers() const {
         const LightProjection& p = l.projection;
         gpu::GpuShadowLayer g{};
         g.viewProj = p.viewProj;
-        g.params = {p.texelSize, p.zNear, p.zFar, 0.0f};
+        g.params = {p.texelSize, p.zNear, p.zFar, p.discScale};
         g.split = {l.splitNear, l.splitFar, 0.0f, 0.0f};
         const uint32_t proj = p.paraboloid ? SHADOW_PROJ_PARABOLOID : p.perspective ? SHADOW_PROJ_PERSPECTIVE : SHADOW_PROJ_ORTHO;
         g.info = {proj, momentLayerOf_[i], uint32_t(s.filter), 0u};
@@ -127,8 +131,7 @@ std::vector<gpu::GpuShadowLayer> ShadowLayout::gpuLayers() const {
 
 gpu::GpuShadowParams ShadowLayout::gpuParams(bool linearDepthCompare) const {
     gpu::GpuShadowParams g{};
-    g.kernel = {settings_.pcfRadius, settings_.pcssMaxRadius, settings_.cascades.blend,
-                paraboloidDiscScale(settings_.resolution, marginTexels())};
+    g.kernel = {settings_.pcfRadius, settings_.pcssMaxRadius, settings_.cascades.blend, 0.0f};
     g.moments = {settings_.bleedReduction, settings_.evsmPositive, settings_.evsmNegative, settings_.msmBias};
     g.info = {settings_.resolution, linearDepthCompare ? 1u : 0u, settings_.blurRadius, uint32_t(shadowed_.size())};
     for (int i = 0; i < 16; ++i)

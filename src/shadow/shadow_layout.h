@@ -44,8 +44,9 @@ public:
     const std::vector<ShadowedLight>& shadowed() const { return shadowed_; }
     int shadowIndexOf(uint32_t light) const { return light < indexOfLight_.size() ? indexOfLight_[light] : -1; }
     uint32_t momentLayerCount() const { return momentLayers_; }
-    // Texels kept outside the region a layer must cover, for filter taps near its border.
-    float marginTexels() const;
+    // Texels kept outside the region a layer of a light with this filter must cover: the filter's
+    // reach from a covered point plus the bilinear footprint, so that taps near the border read depth.
+    float marginTexels(ShadowFilter filter) const;
 
     std::vector<gpu::GpuShadowLight> gpuLights() const;
     std::vector<gpu::GpuShadowLayer> gpuLayers() const;

@@ -1,12 +1,21 @@
 #include "shadow/shadow_map_pass.h"
 
 namespace penumbra {
+namespace {
+
+// Settings built in code skip the CLI's range checks: check them before any image is sized by them.
+const ShadowSettings& validated(const ShadowSettings& s) {
+    validate(s);
+    return s;
+}
+
+}  // namespace
 
 ShadowMapPass::ShadowMapPass(vk::Allocator& alloc, SceneGpu& scene, const ShadowSettings& settings,
                              VkDescriptorSetLayout drawLayout)
     : alloc_(alloc),
       scene_(scene),
-      settings_((validate(settings), settings)),
+      settings_(validated(settings)),
       layout_(settings, scene.scene().bounds),
       raster_(alloc.context(), scene, settings, drawLayout),
       moments_(alloc, settings.resolution),

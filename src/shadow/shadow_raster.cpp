@@ -81,7 +81,7 @@ void ShadowRaster::record(VkCommandBuffer cmd, vk::Image& map, const vk::Buffer&
         gpu::ShadowDrawPush push{firstView + s.firstLayer, 0, s.firstLayer, 0, {}};
         const bool paraboloid = s.kind == SHADOW_KIND_PARABOLOID;
         if (paraboloid)
-            push.paraboloid = {first.zNear, first.zFar, layout.gpuParams(false).kernel.w, maxEdge};
+            push.paraboloid = {first.zNear, first.zFar, first.discScale, maxEdge};
         const bool blended =
             std::find(deepShadowLights_.begin(), deepShadowLights_.end(), s.light) == deepShadowLights_.end();
         drawLight(cmd, paraboloid ? paraboloid_ : layered_, views, push, s.layerCount, blended);

@@ -1,0 +1,154 @@
+#include "app/bench.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <ctime>
+#include <fstream>
+#include <map>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+namespace penumbra {
+namespace {
+
+struct Stats {
+    double median, p5, p95;
+};
+
+Stats stats(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    auto at = [&](double q) { return v[std::min(v.size() - 1, size_t(q * double(v.size() - 1) + 0.5))]; };
+    return {at(0.5), at(0.05), at(0.95)};
+}
+
+// Device-to-device copy of a large buffer: the bandwidth floor the memory-bound passes are held to.
+// GB/s counts bytes read plus bytes written.
+double copyBandwidth(vk::Context& ctx) {
+    vk::Allocator alloc(ctx);
+    vk::CommandContext cmd(alloc);
+    vk::GpuTimer timer(ctx, 4);
+    const bool cpu = ctx.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+    const VkDeviceSize size = VkDeviceSize(cpu ? 64 : 1024) << 20;
+    vk::Buffer a(alloc, size, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, false, "copy-src");
+    vk::Buffer b(alloc, size, VK_BUFFER_USAGE_TRANSFER_DST_BIT, false, "copy-dst");
+    std::vector<double> gbps;
+    for (int i = 0; i < 6; ++i) {
+        timer.reset();
+        cmd.submitAndWait([&](VkCommandBuffer c) {
+            uint32_t s = timer.begin(c, "copy");
+            VkBufferCopy region{0, 0, size};
+            vkCmdCopyBuffer(c, a.handle(), b.handle(), 1, &region);
+            timer.end(c, s);
+        });
+        if (i > 0) gbps.push_back(2.0 * double(size) / (timer.results()[0].ms * 1e-3) * 1e-9);
+    }
+    return stats(gbps).median;
+}
+
+nlohmann::json settingsJson(const RenderSettings& s, const FrameOptions& f) {
+    static const char* gi[] = {"none", "rsm", "lpv"};
+    static const char* rsmMode[] = {"interpolated", "full", "all-texels"};
+    return {{"scene", f.scene},
+            {"camera", f.camera},
+            {"aov", f.aov},
+            {"width", s.width},
+            {"height", s.height},
+            {"gi", gi[int(s.gi)]},
+            {"shadow_resolution", s.shadow.resolution},
+            {"rsm", {{"resolution", s.rsm.resolution}, {"samples", s.rsm.samples}, {"radius", s.rsm.radius},
+                     {"mode", rsmMode[int(s.rsm.mode)]}, {"lowres_factor", s.rsm.lowResFactor}}},
+            {"lpv", {{"resolution", s.lpv.resolution}, {"iterations", s.lpv.iterations},
+                     {"cascades", s.lpv.cascades}, {"rsm_resolution", s.lpv.rsmResolution},
+                     {"vpl_resolution", s.lpv.vplResolution}, {"occlusion", s.lpv.occlusion}}},
+            {"dsm", s.dsm.enabled}};
+}
+
+std::string today() {
+    std::time_t t = std::time(nullptr);
+    char buf[32];
+    std::strftime(buf, sizeof buf, "%Y-%m-%d", std::gmtime(&t));
+    return buf;
+}
+
+}  // namespace
+
+CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o, RenderSettings& rs) {
+    CLI::App* cmd = app.add_subcommand("bench", "Time every pass over many frames (GPU timestamps), write JSON");
+    addFrameOptions(*cmd, o.frame, rs);
+    cmd->add_option("--frames", o.frames, "Measured frames (default 100)")->check(CLI::Range(1, 1000000));
+    cmd->add_option("--warmup", o.warmup, "Frames rendered first and not measured (default 10)")
+        ->check(CLI::Range(0, 1000000));
+    cmd->add_option("--json", o.json, "Write the results as JSON to this file");
+    return cmd;
+}
+
+int runBench(const BenchOptions& o, const vk::ContextOptions& vkOptions, RenderSettings settings) {
+    PreparedFrame f = prepareFrame(o.frame, settings);
+    if (!o.json.empty() && !std::ofstream(o.json)) throw std::invalid_argument("--json: cannot write " + o.json);
+    vk::Context ctx(vkOptions);
+    const double copyGbps = copyBandwidth(ctx);
+    Renderer renderer(ctx, f.scene, settings);
+    for (const std::string& w : renderer.warnings()) fmt::print(stderr, "penumbra: warning: {}\n", w);
+    std::map<std::string, std::vector<double>> perPass;
+    std::vector<std::string> order;
+    std::vector<double> frameMs;
+    for (int i = 0; i < o.warmup + o.frames; ++i) {
+        renderer.render(f.camera);
+        fmt::print(stderr, "\rbench: {} frame {}/{}   ", i < o.warmup ? "warm-up" : "measured",
+                   i < o.warmup ? i + 1 : i + 1 - o.warmup, i < o.warmup ? o.warmup : o.frames);
+        if (i < o.warmup) continue;
+        double total = 0.0;
+        for (const vk::ScopeTiming& t : renderer.timings()) {
+            if (!perPass.count(t.name)) order.push_back(t.name);
+            perPass[t.name].push_back(t.ms);
+            total += t.ms;
+        }
+        frameMs.push_back(total);
+    }
+    fmt::print(stderr, "\n");
+    std::map<std::string, uint64_t> bytes;
+    for (const PassDesc& p : renderer.passes()) bytes[p.name] = p.bytes;
+
+    nlohmann::json passes = nlohmann::json::array();
+    fmt::print("{:<24} {:>9} {:>9} {:>9} {:>10} {:>8} {:>7}\n", "pass", "median ms", "p5", "p95", "MB moved", "GB/s",
+               "/copy");
+    for (const std::string& name : order) {
+        Stats s = stats(perPass[name]);
+        nlohmann::json j{{"name", name}, {"median_ms", s.median}, {"p5_ms", s.p5}, {"p95_ms", s.p95}};
+        std::string mb, gbps, ratio;
+        if (bytes[name]) {
+            const double g = double(bytes[name]) / (s.median * 1e-3) * 1e-9;
+            j["bytes"] = bytes[name];
+            j["gbps"] = g;
+            j["fraction_of_copy_bandwidth"] = g / copyGbps;
+            mb = fmt::format("{:.2f}", bytes[name] / 1e6), gbps = fmt::format("{:.0f}", g);
+            ratio = fmt::format("{:.2f}", g / copyGbps);
+        }
+        fmt::print("{:<24} {:9.3f} {:9.3f} {:9.3f} {:>10} {:>8} {:>7}\n", name, s.median, s.p5, s.p95, mb, gbps, ratio);
+        passes.push_back(j);
+    }
+    Stats fs = stats(frameMs);
+    fmt::print("{:<24} {:9.3f} {:9.3f} {:9.3f}\n", "frame (sum of passes)", fs.median, fs.p5, fs.p95);
+    fmt::print("device {} | copy bandwidth {:.0f} GB/s | GPU memory {:.1f} MiB | {} triangles, {} strands\n",
+               ctx.info().name, copyGbps, renderer.allocator().bytesReserved() / 1048576.0,
+               f.scene.triangleCount(), f.scene.strands.size());
+    if (!o.json.empty()) {
+        nlohmann::json out{{"command", o.command}, {"date", today()}, {"device", ctx.info().name},
+                           {"driver", ctx.info().driver}, {"frames", o.frames}, {"warmup", o.warmup},
+                           {"settings", settingsJson(settings, o.frame)},
+                           {"scene", {{"name", f.scene.name}, {"triangles", f.scene.triangleCount()},
+                                      {"strands", f.scene.strands.size()}}},
+                           {"gpu_memory_bytes", renderer.allocator().bytesReserved()},
+                           {"copy_bandwidth_gbps", copyGbps},
+                           {"frame_ms", {{"median", fs.median}, {"p5", fs.p5}, {"p95", fs.p95}}},
+                           {"passes", passes}};
+        std::ofstream(o.json) << out.dump(2) << "\n";
+    }
+    if (ctx.validationMessages() > 0)
+        throw std::runtime_error(fmt::format("{} validation message(s) reported", ctx.validationMessages()));
+    return 0;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,22 @@
+// `penumbra bench`: frames after warm-up, GPU time per pass (median, p5, p95), bandwidth of the
+// memory-bound passes against the device's measured copy bandwidth, JSON for bench/results.
+#pragma once
+#include <CLI/CLI.hpp>
+
+#include "app/frame_options.h"
+#include "vk/context.h"
+
+namespace penumbra {
+
+struct BenchOptions {
+    FrameOptions frame;
+    int frames = 100;
+    int warmup = 10;
+    std::string json;     // output file, "" = none
+    std::string command;  // the command line, recorded in the JSON
+};
+
+CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options, RenderSettings& settings);
+int runBench(const BenchOptions& options, const vk::ContextOptions& vkOptions, RenderSettings settings);
+
+}  // namespace penumbra

@@ -1,0 +1,157 @@
+// `penumbra eval` (ground_truth_cli.h): the reference (rendered, or read from its cache directory),
+// every technique in one Vulkan context, the table, the JSON and the side-by-side figure.
+#include <filesystem>
+#include <fstream>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "app/ground_truth_cli.h"
+#include "eval/eval.h"
+#include "io/image_io.h"
+
+namespace penumbra {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Everything the reference image depends on: a cache entry is reused only when all of it matches.
+nlohmann::json referenceKey(const EvalCliOptions& o, const PreparedFrame& f) {
+    const Camera& c = f.camera;
+    const ReferenceSettings& s = o.reference.settings;
+    nlohmann::json lights = nlohmann::json::array();
+    for (const Light& l : f.scene.lights)
+        lights.push_back({int(l.type), l.position.x, l.position.y, l.position.z, l.direction.x, l.direction.y,
+                          l.direction.z, l.color.x, l.color.y, l.color.z, l.intensity, l.range, l.innerConeAngle,
+                          l.outerConeAngle, l.castsShadow});
+    return {{"scene", o.reference.frame.scene}, {"triangles", f.scene.triangleCount()},
+            {"camera", {c.eye.x, c.eye.y, c.eye.z, c.target.x, c.target.y, c.target.z, c.up.x, c.up.y, c.up.z,
+                        c.fovy, c.znear, c.zfar}},
+            {"lights", lights}, {"width", s.width}, {"height", s.height}, {"spp", s.spp}, {"bounces", s.bounces},
+            {"seed", s.seed}, {"antialias", s.antialias}};
+}
+
+GroundTruth fromImages(ImageF direct, ImageF indirect, const ImageF& mask, const nlohmann::json& noise) {
+    GroundTruth t{std::move(direct), std::move(indirect), {}, {}, noise.value("final", 0.0),
+                  noise.value("indirect", 0.0)};
+    t.final = t.direct;
+    for (size_t k = 0; k < t.final.rgba.size(); ++k) t.final.rgba[k] += t.indirect.rgba[k];
+    t.mask.resize(size_t(mask.width) * mask.height);
+    for (size_t i = 0; i < t.mask.size(); ++i) t.mask[i] = mask.rgba[i * 4] != 0.0f;
+    return t;
+}
+
+// The reference from `--reference DIR` when its key matches, else rendered (and stored there).
+// DIR/reference.json: {"key": what it depends on, "noise": its relative standard errors}.
+GroundTruth groundTruth(const EvalCliOptions& o, const PreparedFrame& f) {
+    const nlohmann::json key = referenceKey(o, f);
+    const fs::path dir = o.referenceDir;
+    if (!o.referenceDir.empty() && fs::exists(dir / "reference.json")) {
+        nlohmann::json stored = nlohmann::json::parse(std::ifstream(dir / "reference.json"), nullptr, false);
+        if (!stored.is_discarded() && stored.is_object() && stored.value("key", nlohmann::json()) == key) {
+            if (o.reference.settings.progress) fmt::print("penumbra: reference read from {}\n", o.referenceDir);
+            return fromImages(readExrChecked((dir / "direct.exr").string(), "--reference"),
+                              readExrChecked((dir / "indirect.exr").string(), "--reference"),
+                              readExrChecked((dir / "mask.exr").string(), "--reference"),
+                              stored.value("noise", nlohmann::json::object()));
+        }
+    }
+    const ReferenceImage img = renderReference(f.scene, f.camera, o.reference.settings);
+    const uint32_t w = img.width, h = img.height;
+    const nlohmann::json noise{{"final", img.relativeNoise(ReferenceAov::Final)},
+                               {"indirect", img.relativeNoise(ReferenceAov::Indirect)}};
+    if (o.reference.settings.progress)
+        fmt::print("penumbra: reference rendered: {} paths/pixel, {} bounce(s), {:.1f} s\n", img.spp,
+                   o.reference.settings.bounces, img.seconds);
+    if (!o.referenceDir.empty()) {
+        std::error_code ec;
+        fs::create_directories(dir, ec);
+        writeExr((dir / "direct.exr").string(), w, h, img.rgba(ReferenceAov::Direct));
+        writeExr((dir / "indirect.exr").string(), w, h, img.rgba(ReferenceAov::Indirect));
+        writeExr((dir / "mask.exr").string(), w, h, img.rgba(ReferenceAov::Mask));
+        std::ofstream(dir / "reference.json") << nlohmann::json{{"key", key}, {"noise", noise}}.dump(2) << "\n";
+    }
+    return fromImages({w, h, img.rgba(ReferenceAov::Direct)}, {w, h, img.rgba(ReferenceAov::Indirect)},
+                      {w, h, img.rgba(ReferenceAov::Mask)}, noise);
+}
+
+void checkWritable(const std::string& path, const std::string& option) {
+    if (path.empty()) return;
+    if (!std::ofstream(path, std::ios::app)) throw std::invalid_argument(fmt::format("{} {}: cannot write", option, path));
+}
+
+}  // namespace
+
+CLI::App* addEvalCommand(CLI::App& app, EvalCliOptions& o) {
+    CLI::App* cmd = app.add_subcommand("eval", "Render every GI mode and shadow filter and measure each against the "
+                                               "path-traced reference: one table");
+    o.reference.settings.width = 320;
+    o.reference.settings.height = 240;
+    o.reference.settings.spp = 256;
+    addReferenceSceneOptions(*cmd, o.reference);
+    cmd->add_option("--reference", o.referenceDir, "Reference cache directory: reused when scene and settings match");
+    cmd->add_option("--json", o.json, "Write the table and every metric as JSON to this file");
+    cmd->add_option("--images", o.images, "Directory for figure.png: reference, RSM, LPV, their error maps");
+    cmd->add_option("--frames", o.frames, "Frames per technique; GPU ms is the median after the first (default 5)")
+        ->check(CLI::Range(1, 10000));
+    cmd->add_option("--exposure", o.reference.exposure, "Figure: exposure of the final images")
+        ->check(CLI::Range(1e-6, 1e6));
+    cmd->add_option("--indirect-exposure", o.indirectExposure, "Figure: exposure of the indirect images (default 4)")
+        ->check(CLI::Range(1e-6, 1e6));
+    return cmd;
+}
+
+int runEvalCommand(const EvalCliOptions& o, const vk::ContextOptions& vkOptions) {
+    const bool verbose = o.reference.settings.progress;
+    checkWritable(o.json, "--json");
+    PreparedFrame f = prepareReferenceFrame(o.reference);
+    const GroundTruth truth = groundTruth(o, f);
+
+    vk::Context ctx(vkOptions);
+    RenderSettings base;
+    base.width = o.reference.settings.width;
+    base.height = o.reference.settings.height;
+    const std::vector<EvalVariant> variants = evalVariants(base);
+    const std::vector<EvalRow> rows =
+        runEval(ctx, f.scene, f.camera, variants, truth, o.frames, [&](size_t i, size_t n, const std::string& name) {
+            if (verbose) fmt::print(stderr, "\reval: {}/{} {:<60}", i + 1, n, name), std::fflush(stderr);
+        });
+    if (verbose) fmt::print(stderr, "\r{:80}\r", "");
+    const bool gpu = ctx.info().type != "cpu";
+    size_t covered = 0;
+    for (uint8_t m : truth.mask) covered += m;
+    fmt::print("penumbra eval: '{}' {}x{} on {}; reference {} paths/pixel, {} bounce(s); relative L2 errors over the "
+               "{} pixels with geometry\n",
+               f.scene.name, base.width, base.height, ctx.info().name, o.reference.settings.spp,
+               o.reference.settings.bounces, covered);
+    fmt::print("{}", formatEvalTable(rows, gpu));
+    fmt::print("reference noise (its own relative L2 error, the floor of the L2 columns): total {:.3f}, indirect "
+               "{:.3f}\n", truth.noiseFinal, truth.noiseIndirect);
+    if (!gpu) fmt::print("(GPU ms left out: {} is a CPU device)\n", ctx.info().name);
+    if (!o.images.empty()) {
+        std::error_code ec;
+        fs::create_directories(o.images, ec);
+        double heat = 0.0;
+        uint32_t w = 0, h = 0;
+        const std::vector<uint8_t> fig = evalFigure(rows, truth, o.reference.exposure, o.indirectExposure, heat, w, h);
+        const std::string path = (fs::path(o.images) / "figure.png").string();
+        writePng(path, w, h, fig);
+        fmt::print("figure {}: columns reference, RSM interpolated, LPV 32^3; rows final, indirect (x{}), indirect "
+                   "error |dY| (black 0 .. pale yellow {:.4g}; the reference column shows the ramp)\n",
+                   path, o.indirectExposure, heat);
+    }
+    if (!o.json.empty()) {
+        nlohmann::json j{{"command", o.command},  {"device", ctx.info().name}, {"device_type", ctx.info().type},
+                         {"scene", f.scene.name}, {"width", base.width},       {"height", base.height},
+                         {"reference", {{"spp", o.reference.settings.spp}, {"bounces", o.reference.settings.bounces},
+                                        {"seed", o.reference.settings.seed},
+                                        {"noise_final", truth.noiseFinal}, {"noise_indirect", truth.noiseIndirect}}},
+                         {"mask_pixels", covered}, {"rows", evalRowsJson(rows)}};
+        std::ofstream(o.json) << j.dump(2) << "\n";
+    }
+    if (ctx.validationMessages() > 0)
+        throw std::runtime_error(fmt::format("{} validation message(s) reported", ctx.validationMessages()));
+    return 0;
+}
+
+}  // namespace penumbra

@@ -1,0 +1,52 @@
+// The ground-truth commands (README, "Ground truth"): `reference` (CPU path tracer), `compare`
+// (error metrics and heat map of two EXR images) and `eval` (every technique against the reference).
+#pragma once
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "app/frame_options.h"
+#include "reference/path_tracer.h"
+#include "vk/context.h"
+
+namespace penumbra {
+
+// The scene, camera and lights of a reference render (the subset of FrameOptions it honours).
+struct ReferenceCliOptions {
+    FrameOptions frame;
+    std::string output = "reference.exr";
+    std::string aov = "final";
+    float exposure = 1.0f;
+    ReferenceSettings settings;
+};
+// Scene, camera, lights, size and sampling options (shared by `reference` and `eval`).
+void addReferenceSceneOptions(CLI::App& cmd, ReferenceCliOptions& options);
+CLI::App* addReferenceCommand(CLI::App& app, ReferenceCliOptions& options);
+int runReferenceCommand(const ReferenceCliOptions& options);
+
+struct CompareCliOptions {
+    std::string a, b;     // test image, reference
+    std::string mask;     // "" = every pixel
+    std::string heatMap;  // -o: PNG heat map, "" = none
+    double heatMax = 0.0; // 0 = the 99th percentile of the error
+    bool json = false;
+};
+CLI::App* addCompareCommand(CLI::App& app, CompareCliOptions& options);
+int runCompareCommand(const CompareCliOptions& options);
+
+struct EvalCliOptions {
+    ReferenceCliOptions reference;  // scene, camera, lights, size, spp, bounces, seed
+    std::string referenceDir;       // cache of the reference render ("" = render it every time)
+    std::string json;
+    std::string images;             // directory for the side-by-side figure
+    int frames = 5;
+    float indirectExposure = 4.0f;
+    std::string command;            // recorded in the JSON
+};
+CLI::App* addEvalCommand(CLI::App& app, EvalCliOptions& options);
+int runEvalCommand(const EvalCliOptions& options, const vk::ContextOptions& vkOptions);
+
+// Loads the scene and camera the way `render` does (shared by reference and eval).
+PreparedFrame prepareReferenceFrame(const ReferenceCliOptions& options);
+
+}  // namespace penumbra

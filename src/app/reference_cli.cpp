@@ -1,0 +1,125 @@
+// `penumbra reference` and `penumbra compare` (ground_truth_cli.h).
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include "app/ground_truth_cli.h"
+#include "eval/compare.h"
+#include "io/image_io.h"
+
+namespace penumbra {
+namespace {
+
+std::string fmtMetric(double v) {
+    return std::isfinite(v) ? fmt::format("{:.6g}", v) : std::string(std::isnan(v) ? "nan" : "inf");
+}
+
+nlohmann::json jsonNumber(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+}  // namespace
+
+void addReferenceSceneOptions(CLI::App& cmd, ReferenceCliOptions& o) {
+    cmd.add_option("scene", o.frame.scene, "glTF file (.gltf/.glb) or built-in scene");
+    cmd.add_option("--width", o.settings.width, "Image width")->check(CLI::Range(1, 16384));
+    cmd.add_option("--height", o.settings.height, "Image height")->check(CLI::Range(1, 16384));
+    cmd.add_option("--camera", o.frame.camera, "Camera override: ex,ey,ez,tx,ty,tz,ux,uy,uz,fovy_deg");
+    cmd.add_option("--camera-index", o.frame.cameraIndex, "Which of the scene's cameras to use");
+    cmd.add_option("--light", o.frame.lights, "Replace the scene's lights (repeatable): see README");
+    cmd.add_option("--spp", o.settings.spp, "Paths per pixel (default 64)")->check(CLI::Range(1, 1 << 20));
+    cmd.add_option("--bounces", o.settings.bounces, "Diffuse bounces, 0..16 (default 1, what RSM and LPV approximate)")
+        ->check(CLI::Range(0u, kMaxReferenceBounces));
+    cmd.add_option("--seed", o.settings.seed, "Random seed (the image is a function of it)");
+    cmd.add_option("--threads", o.settings.threads, "Worker threads (default: every hardware thread)")
+        ->check(CLI::Range(0, 1024));
+    cmd.add_flag("--aa", o.settings.antialias, "Spread paths over the pixel (default: its centre, as the rasterizer)");
+    cmd.add_flag_function("-q,--quiet", [&o](int64_t) { o.settings.progress = false; },
+                          "No progress bar and no summary");
+}
+
+PreparedFrame prepareReferenceFrame(const ReferenceCliOptions& o) {
+    RenderSettings unused;
+    PreparedFrame f = prepareFrame(o.frame, unused);
+    if (!f.scene.strands.empty())
+        fmt::print(stderr, "penumbra: warning: the reference does not trace hair strands ({} ignored)\n",
+                   f.scene.strands.size());
+    return f;
+}
+
+CLI::App* addReferenceCommand(CLI::App& app, ReferenceCliOptions& o) {
+    CLI::App* cmd = app.add_subcommand("reference", "Path-trace the ground truth on the CPU (Embree): EXR radiance");
+    addReferenceSceneOptions(*cmd, o);
+    cmd->add_option("-o,--output", o.output, "Output image: .exr (linear) or .png (tone-mapped)");
+    cmd->add_option("--aov", o.aov, "final (default: direct + indirect), direct, indirect, mask (1 on geometry)");
+    cmd->add_option("--exposure", o.exposure, "PNG only: linear multiplier before tone mapping")
+        ->check(CLI::Range(1e-6, 1e6));
+    return cmd;
+}
+
+int runReferenceCommand(const ReferenceCliOptions& o) {
+    const std::string ext = fileExtension(o.output);
+    if (ext != ".exr" && ext != ".png")
+        throw std::invalid_argument(fmt::format("-o {}: the output must end in .exr or .png", o.output));
+    const ReferenceAov aov = parseReferenceAov(o.aov);
+    PreparedFrame f = prepareReferenceFrame(o);
+    const ReferenceImage img = renderReference(f.scene, f.camera, o.settings);
+    const ImageF out{img.width, img.height, img.rgba(aov)};
+    if (ext == ".exr") writeExr(o.output, out.width, out.height, out.rgba);
+    else writePng(o.output, out.width, out.height, toneMap(out, o.exposure));
+    if (o.settings.progress)
+        fmt::print("penumbra: reference '{}' ({} triangles, {} lights) {}x{}, {} paths/pixel, {} bounce(s): "
+                   "{:.1f} s, {:.1f} M rays/s -> {}\n",
+                   f.scene.name, f.scene.triangleCount(), f.scene.lights.size(), img.width, img.height, img.spp,
+                   o.settings.bounces, img.seconds, double(img.rays) / img.seconds * 1e-6, o.output);
+    return 0;
+}
+
+CLI::App* addCompareCommand(CLI::App& app, CompareCliOptions& o) {
+    CLI::App* cmd = app.add_subcommand("compare", "Error of image A against reference B (EXR): RMSE, relative L1/L2, "
+                                                  "bias, max, SSIM; heat map");
+    cmd->add_option("A", o.a, "Test image (EXR)")->required();
+    cmd->add_option("B", o.b, "Reference image (EXR)")->required();
+    cmd->add_option("--mask", o.mask, "EXR or PNG of the same size: only its non-zero pixels are compared");
+    cmd->add_option("-o,--output", o.heatMap, "Heat map of |luminance(A) - luminance(B)| (PNG)");
+    cmd->add_option("--heat-max", o.heatMax, "Error at the top of the heat map (default: 99th percentile)")
+        ->check(CLI::Range(0.0, 1e30));
+    cmd->add_flag("--json", o.json, "Print the metrics as JSON");
+    return cmd;
+}
+
+int runCompareCommand(const CompareCliOptions& o) {
+    if (!o.heatMap.empty() && fileExtension(o.heatMap) != ".png")
+        throw std::invalid_argument(fmt::format("-o {}: the heat map must end in .png", o.heatMap));
+    const ImageF a = readExrChecked(o.a, "A");
+    const ImageF b = readExrChecked(o.b, "B");
+    if (a.width != b.width || a.height != b.height)
+        throw std::invalid_argument(
+            fmt::format("A is {}x{}, B is {}x{}: the sizes must match", a.width, a.height, b.width, b.height));
+    const std::vector<uint8_t> mask = o.mask.empty() ? std::vector<uint8_t>{} : loadMask(o.mask, a.width, a.height);
+    const ImageMetrics m = compareImages(a, b, mask);
+    double scale = o.heatMax;
+    if (!o.heatMap.empty()) writePng(o.heatMap, a.width, a.height, errorHeatMap(a, b, mask, scale));
+    if (o.json) {
+        nlohmann::json j{{"a", o.a}, {"b", o.b}, {"pixels", m.pixels}, {"rmse", jsonNumber(m.rmse)},
+                         {"rel_l1", jsonNumber(m.relL1)}, {"rel_l2", jsonNumber(m.relL2)},
+                         {"mean_bias", jsonNumber(m.meanBias)}, {"max_error", jsonNumber(m.maxError)},
+                         {"ssim", jsonNumber(m.ssim)}, {"ssim_range", jsonNumber(m.ssimRange)},
+                         {"ssim_window", fmt::format("{0}x{0} Gaussian, sigma {1}", kSsimWindow, kSsimSigma)}};
+        if (!o.mask.empty()) j["mask"] = o.mask;
+        if (!o.heatMap.empty()) j["heat_map"] = {{"path", o.heatMap}, {"max", scale}};
+        fmt::print("{}\n", j.dump(2));
+        return 0;
+    }
+    fmt::print("compared {} pixels{} of {}x{}\n", m.pixels, o.mask.empty() ? "" : " (mask)", a.width, a.height);
+    fmt::print("  rmse        {}\n  rel L1      {}\n  rel L2      {}\n  mean bias   {} (A - B)\n  max error   {}\n",
+               fmtMetric(m.rmse), fmtMetric(m.relL1), fmtMetric(m.relL2), fmtMetric(m.meanBias),
+               fmtMetric(m.maxError));
+    fmt::print("  SSIM        {} (luminance, {}x{} Gaussian window, sigma {}, L = {})\n", fmtMetric(m.ssim),
+               kSsimWindow, kSsimWindow, kSsimSigma, fmtMetric(m.ssimRange));
+    if (!o.heatMap.empty())
+        fmt::print("heat map {}: |Y(A) - Y(B)|, black = 0 .. pale yellow = {} and above\n", o.heatMap, fmtMetric(scale));
+    return 0;
+}
+
+}  // namespace penumbra

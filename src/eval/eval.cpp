@@ -1,0 +1,183 @@
+#include "eval/eval.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <fmt/format.h>
+
+namespace penumbra {
+namespace {
+
+EvalVariant giVariant(const RenderSettings& base, GiMode gi, const std::string& technique, const std::string& settings) {
+    EvalVariant v{technique, settings, base, false};
+    v.render.gi = gi;
+    v.render.shadow.filter = ShadowFilter::Hard;
+    return v;
+}
+
+double median(std::vector<double> v) {
+    if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    return v[v.size() / 2];
+}
+
+// Copies `src` (w x h RGBA8) into the figure at cell (col, row) of cells w x h.
+void blit(std::vector<uint8_t>& dst, uint32_t dstWidth, const std::vector<uint8_t>& src, uint32_t w, uint32_t h,
+          uint32_t col, uint32_t row) {
+    for (uint32_t y = 0; y < h; ++y)
+        std::copy(src.begin() + size_t(y) * w * 4, src.begin() + size_t(y + 1) * w * 4,
+                  dst.begin() + ((size_t(row) * h + y) * dstWidth + size_t(col) * w) * 4);
+}
+
+// The heat map's colour ramp across a cell (left 0, right = the scale), for the reference column.
+std::vector<uint8_t> rampCell(uint32_t w, uint32_t h) {
+    ImageF zero{w, h, std::vector<float>(size_t(w) * h * 4, 0.0f)}, ramp = zero;
+    for (uint32_t y = 0; y < h; ++y)
+        for (uint32_t x = 0; x < w; ++x)
+            for (int c = 0; c < 3; ++c) ramp.rgba[(size_t(y) * w + x) * 4 + c] = (x + 0.5f) / float(w);
+    double scale = 1.0;
+    return errorHeatMap(ramp, zero, {}, scale);
+}
+
+std::string fmtValue(double v, const char* spec = "{:.3f}") {
+    if (std::isnan(v)) return "-";
+    if (std::isinf(v)) return "inf";
+    return fmt::format(fmt::runtime(spec), v);
+}
+
+nlohmann::json metricsJson(const ImageMetrics& m) {
+    auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
+    return {{"pixels", m.pixels},         {"rmse", num(m.rmse)},         {"rel_l1", num(m.relL1)},
+            {"rel_l2", num(m.relL2)},     {"mean_bias", num(m.meanBias)}, {"relative_bias", num(relativeBias(m))},
+            {"max_error", num(m.maxError)}, {"ssim", num(m.ssim)},      {"ssim_range", num(m.ssimRange)}};
+}
+
+}  // namespace
+
+std::vector<EvalVariant> evalVariants(const RenderSettings& base) {
+    std::vector<EvalVariant> v;
+    v.push_back(giVariant(base, GiMode::None, "none", "direct light only, hard shadows"));
+    EvalVariant rsmFull = giVariant(base, GiMode::Rsm, "rsm full", "");
+    rsmFull.render.rsm.mode = RsmMode::Full;
+    rsmFull.settings = fmt::format("{}^2, {} samples, r_max {}", rsmFull.render.rsm.resolution,
+                                   rsmFull.render.rsm.samples, rsmFull.render.rsm.radius);
+    v.push_back(rsmFull);
+    EvalVariant rsmInterp = rsmFull;
+    rsmInterp.technique = "rsm interpolated";
+    rsmInterp.render.rsm.mode = RsmMode::Interpolated;
+    rsmInterp.settings += fmt::format(", 1/{} res", rsmInterp.render.rsm.lowResFactor);
+    rsmInterp.figure = true;
+    v.push_back(rsmInterp);
+    // LPV: the default, a finer grid with more steps, and a coarse grid that carries light far.
+    const std::pair<uint32_t, uint32_t> lpv[] = {{32, 8}, {64, 16}, {16, 32}};
+    for (auto [res, steps] : lpv) {
+        EvalVariant l = giVariant(base, GiMode::Lpv, "lpv", fmt::format("{}^3 x {} steps", res, steps));
+        l.render.lpv.resolution = res;
+        l.render.lpv.iterations = steps;
+        l.render.lpv.sliceIndex = res / 2;
+        l.figure = res == 32;
+        v.push_back(l);
+    }
+    for (const std::string& name : shadowFilterNames()) {
+        const ShadowFilter f = parseShadowFilter(name, "eval");
+        if (f == ShadowFilter::Hard) continue;  // the "none" row
+        EvalVariant s = giVariant(base, GiMode::None, "shadow " + name, "no GI, default filter parameters");
+        s.render.shadow.filter = f;
+        v.push_back(s);
+    }
+    return v;
+}
+
+double relativeBias(const ImageMetrics& m) {
+    return m.refMean > 0.0 ? m.meanBias / m.refMean : std::numeric_limits<double>::quiet_NaN();
+}
+
+std::vector<EvalRow> runEval(vk::Context& ctx, const Scene& scene, const Camera& camera,
+                             const std::vector<EvalVariant>& variants, const GroundTruth& truth, int frames,
+                             const std::function<void(size_t, size_t, const std::string&)>& progress) {
+    std::vector<EvalRow> rows;
+    for (size_t i = 0; i < variants.size(); ++i) {
+        const EvalVariant& v = variants[i];
+        if (progress) progress(i, variants.size(), v.technique + " " + v.settings);
+        RenderSettings s = v.render;
+        s.aov = Aov::Final;
+        Renderer r(ctx, scene, s);
+        std::vector<double> ms;
+        for (int f = 0; f < std::max(frames, 1); ++f) {
+            r.render(camera);
+            double sum = 0.0;
+            for (const vk::ScopeTiming& t : r.timings()) sum += t.ms;
+            if (f > 0 || frames <= 1) ms.push_back(sum);  // the first frame warms caches
+        }
+        EvalRow row{v, median(ms), {}, {}, {}, {}, {}};
+        ImageF final{s.width, s.height, r.readHdr()};
+        r.setAov(Aov::Indirect);
+        r.render(camera);
+        ImageF indirect{s.width, s.height, r.readHdr()};
+        // direct = final - indirect: the two frames are identical but for what the lighting pass writes.
+        ImageF direct = final;
+        for (size_t k = 0; k < direct.rgba.size(); ++k) direct.rgba[k] -= indirect.rgba[k];
+        row.direct = compareImages(direct, truth.direct, truth.mask);
+        row.total = compareImages(final, truth.final, truth.mask);
+        row.indirect = compareImages(indirect, truth.indirect, truth.mask);
+        if (v.figure) row.final = std::move(final), row.indirectImage = std::move(indirect);
+        rows.push_back(std::move(row));
+    }
+    return rows;
+}
+
+std::string formatEvalTable(const std::vector<EvalRow>& rows, bool gpu) {
+    // Markdown: the README pastes it as it is.
+    constexpr const char* kRow = "| {:<18} | {:<40} | {:>8} | {:>9} | {:>9} | {:>10} | {:>9} | {:>11} |\n";
+    std::string out = fmt::format(kRow, "technique", "settings", "GPU ms", "direct L2", "total L2", "total SSIM",
+                                  "indir. L2", "indir. bias");
+    out += fmt::format(kRow, std::string(18, '-'), std::string(40, '-'), "-------:", "--------:", "--------:",
+                       "---------:", "--------:", "----------:");
+    for (const EvalRow& r : rows)
+        out += fmt::format(kRow, r.variant.technique, r.variant.settings, gpu ? fmtValue(r.frameMs) : "-",
+                           fmtValue(r.direct.relL2), fmtValue(r.total.relL2), fmtValue(r.total.ssim),
+                           fmtValue(r.indirect.relL2), fmtValue(relativeBias(r.indirect), "{:+.3f}"));
+    return out;
+}
+
+nlohmann::json evalRowsJson(const std::vector<EvalRow>& rows) {
+    nlohmann::json out = nlohmann::json::array();
+    for (const EvalRow& r : rows)
+        out.push_back({{"technique", r.variant.technique},
+                       {"settings", r.variant.settings},
+                       {"frame_ms", std::isfinite(r.frameMs) ? nlohmann::json(r.frameMs) : nlohmann::json(nullptr)},
+                       {"direct", metricsJson(r.direct)},
+                       {"total", metricsJson(r.total)},
+                       {"indirect", metricsJson(r.indirect)}});
+    return out;
+}
+
+std::vector<uint8_t> evalFigure(const std::vector<EvalRow>& rows, const GroundTruth& truth, float exposure,
+                                float indirectExposure, double& heatScale, uint32_t& width, uint32_t& height) {
+    std::vector<const EvalRow*> shown;
+    for (const EvalRow& r : rows)
+        if (r.variant.figure) shown.push_back(&r);
+    const uint32_t w = truth.final.width, h = truth.final.height, cols = uint32_t(shown.size()) + 1;
+    width = w * cols, height = h * 3;
+    std::vector<uint8_t> out(size_t(width) * height * 4, 255);
+    // One heat scale for every column, so that the maps compare: the largest of their 99th percentiles.
+    heatScale = 0.0;
+    for (const EvalRow* r : shown) {
+        double s = 0.0;
+        errorHeatMap(r->indirectImage, truth.indirect, truth.mask, s);
+        heatScale = std::max(heatScale, s);
+    }
+    blit(out, width, toneMap(truth.final, exposure), w, h, 0, 0);
+    blit(out, width, toneMap(truth.indirect, indirectExposure), w, h, 0, 1);
+    blit(out, width, rampCell(w, h), w, h, 0, 2);
+    for (uint32_t c = 0; c < shown.size(); ++c) {
+        blit(out, width, toneMap(shown[c]->final, exposure), w, h, c + 1, 0);
+        blit(out, width, toneMap(shown[c]->indirectImage, indirectExposure), w, h, c + 1, 1);
+        double s = heatScale;
+        blit(out, width, errorHeatMap(shown[c]->indirectImage, truth.indirect, truth.mask, s), w, h, c + 1, 2);
+    }
+    return out;
+}
+
+}  // namespace penumbra

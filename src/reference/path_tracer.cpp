@@ -1,0 +1,261 @@
+#include "reference/path_tracer.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <stdexcept>
+#include <thread>
+
+#include <fmt/format.h>
+
+#include "reference/ray_scene.h"
+#include "reference/sampling.h"
+
+namespace penumbra {
+namespace {
+
+using reference::Hit;
+using reference::RayScene;
+using reference::SurfacePoint;
+
+constexpr float kPi = 3.14159265358979f;
+constexpr uint32_t kTile = 16;
+
+// A pinhole camera with the rasterizer's convention (glm::lookAt, vertical fovy, top row first).
+struct PinholeCamera {
+    glm::vec3 eye, forward, right, up;
+    float tanHalf, aspect, znear, zfar;
+
+    PinholeCamera(const Camera& c, uint32_t w, uint32_t h)
+        : eye(c.eye), forward(glm::normalize(c.target - c.eye)), tanHalf(std::tan(0.5f * c.fovy)),
+          aspect(float(w) / float(h)), znear(c.znear), zfar(c.zfar > 0.0f ? c.zfar : 0.0f) {
+        right = glm::normalize(glm::cross(forward, c.up));
+        up = glm::cross(right, forward);
+    }
+    // Direction through image point (sx, sy) in pixels (x right, y down; pixel centres at +0.5).
+    glm::vec3 direction(float sx, float sy, uint32_t w, uint32_t h) const {
+        const float x = (sx / float(w) * 2.0f - 1.0f) * tanHalf * aspect;
+        const float y = (1.0f - sy / float(h) * 2.0f) * tanHalf;
+        return glm::normalize(forward + x * right + y * up);
+    }
+};
+
+struct Tracer {
+    const Scene& scene;
+    const RayScene& rays;
+    uint32_t bounces;
+
+    // Radiance a Lambertian surface reflects towards its viewer from every light (next-event
+    // estimation; a punctual light is a delta: one shadow ray each, no noise).
+    glm::vec3 direct(const SurfacePoint& s, uint64_t& count) const {
+        glm::vec3 sum(0.0f);
+        for (const Light& l : scene.lights) {
+            glm::vec3 toLight;
+            float dist;
+            const glm::vec3 e = referenceIrradiance(l, s.position, toLight, dist);
+            const float cosine = glm::dot(s.shadingNormal, toLight);
+            if (cosine <= 0.0f || e == glm::vec3(0.0f)) continue;
+            if (l.castsShadow) {  // unshadowed lights are unshadowed in the renderer too
+                const float eps = RayScene::epsilon(s.position);
+                const float tmax = std::isinf(dist) ? std::numeric_limits<float>::infinity() : dist - 2.0f * eps;
+                ++count;
+                if (tmax > 0.0f && rays.occluded(s.position + eps * s.geometricNormal, toLight, tmax)) continue;
+            }
+            sum += e * cosine;
+        }
+        return sum * s.albedo / kPi;
+    }
+
+    // Radiance reflected at s after at least one bounce: cosine-weighted sampling (pdf cos/pi), so a
+    // path's weight is the product of the albedos; every vertex is lit by next-event estimation.
+    glm::vec3 indirect(SurfacePoint s, reference::Pcg32& rng, uint64_t& count) const {
+        glm::vec3 sum(0.0f), throughput(1.0f);
+        for (uint32_t b = 0; b < bounces; ++b) {
+            throughput *= s.albedo;
+            if (throughput == glm::vec3(0.0f)) break;
+            const float u1 = rng.uniform(), u2 = rng.uniform();
+            const glm::vec3 dir = reference::cosineSample(s.shadingNormal, u1, u2);
+            const float eps = RayScene::epsilon(s.position);
+            const glm::vec3 origin = s.position + eps * (glm::dot(dir, s.geometricNormal) >= 0.0f
+                                                             ? s.geometricNormal : -s.geometricNormal);
+            ++count;
+            const std::optional<Hit> hit = rays.intersect(origin, dir, 0.0f, std::numeric_limits<float>::infinity());
+            if (!hit) break;
+            s = rays.surface(*hit, dir);
+            sum += throughput * direct(s, count);
+        }
+        return sum;
+    }
+};
+
+struct Accumulator {
+    glm::dvec3 sum{0.0}, sumSq{0.0};
+    void add(const glm::vec3& v) {
+        sum += glm::dvec3(v);
+        sumSq += glm::dvec3(v) * glm::dvec3(v);
+    }
+    // Mean and variance of the mean of n samples (unbiased sample variance / n).
+    void finish(uint32_t n, glm::vec3& mean, glm::vec3& varianceOfMean) const {
+        const glm::dvec3 m = sum / double(n);
+        mean = glm::vec3(m);
+        varianceOfMean = n > 1 ? glm::vec3(glm::max(sumSq / double(n) - m * m, 0.0) / double(n - 1)) : glm::vec3(0.0f);
+    }
+};
+
+void renderPixel(const Tracer& tracer, const PinholeCamera& cam, const ReferenceSettings& s, uint32_t x, uint32_t y,
+                 ReferenceImage& out, uint64_t& count) {
+    const size_t index = size_t(y) * s.width + x;
+    reference::Pcg32 rng(s.seed, index);
+    Accumulator direct, indirect;
+    // Without anti-aliasing every path shares the centre ray and its direct light: trace them once.
+    const uint32_t primaries = s.antialias ? s.spp : 1;
+    for (uint32_t p = 0; p < primaries; ++p) {
+        const float jx = s.antialias ? rng.uniform() : 0.5f, jy = s.antialias ? rng.uniform() : 0.5f;
+        const glm::vec3 dir = cam.direction(float(x) + jx, float(y) + jy, s.width, s.height);
+        // The rasterizer clips at planes perpendicular to the view axis, not at spheres.
+        const float along = glm::dot(dir, cam.forward);
+        const float tmax = cam.zfar > 0.0f ? cam.zfar / along : std::numeric_limits<float>::infinity();
+        ++count;
+        const std::optional<Hit> hit = tracer.rays.intersect(cam.eye, dir, cam.znear / along, tmax);
+        const uint32_t paths = s.antialias ? 1 : s.spp;
+        if (!hit) {
+            for (uint32_t k = 0; k < paths; ++k) direct.add(glm::vec3(0.0f)), indirect.add(glm::vec3(0.0f));
+            continue;
+        }
+        out.covered[index] = 1;
+        // The texture footprint of the pixel, as the rasterizer's derivatives see it.
+        const reference::PixelFootprint footprint{cam.eye, cam.direction(float(x) + jx + 1.0f, float(y) + jy, s.width, s.height),
+                                                  cam.direction(float(x) + jx, float(y) + jy + 1.0f, s.width, s.height)};
+        const SurfacePoint sp = tracer.rays.surface(*hit, dir, &footprint);
+        const glm::vec3 d = tracer.direct(sp, count);
+        for (uint32_t k = 0; k < paths; ++k) {
+            direct.add(d);
+            indirect.add(tracer.indirect(sp, rng, count));
+        }
+    }
+    direct.finish(s.spp, out.direct[index], out.directVar[index]);
+    indirect.finish(s.spp, out.indirect[index], out.indirectVar[index]);
+}
+
+// "reference: [#######.............]  35%  12.4 s" on one line of stderr, redrawn with \r.
+void drawProgress(double fraction, double seconds) {
+    constexpr int kWidth = 30;
+    const int filled = int(fraction * kWidth);
+    fmt::print(stderr, "\rreference: [{}{}] {:3.0f}%  {:.1f} s", std::string(filled, '#'),
+               std::string(kWidth - filled, '.'), 100.0 * fraction, seconds);
+    std::fflush(stderr);
+}
+
+}  // namespace
+
+ReferenceAov parseReferenceAov(const std::string& name) {
+    if (name == "final") return ReferenceAov::Final;
+    if (name == "direct") return ReferenceAov::Direct;
+    if (name == "indirect") return ReferenceAov::Indirect;
+    if (name == "mask") return ReferenceAov::Mask;
+    throw std::invalid_argument("--aov " + name + ": the reference writes final, direct, indirect or mask");
+}
+
+std::vector<float> ReferenceImage::rgba(ReferenceAov aov) const {
+    std::vector<float> out(size_t(width) * height * 4);
+    for (size_t i = 0; i < size_t(width) * height; ++i) {
+        glm::vec3 v = aov == ReferenceAov::Direct     ? direct[i]
+                      : aov == ReferenceAov::Indirect ? indirect[i]
+                      : aov == ReferenceAov::Mask     ? glm::vec3(float(covered[i]))
+                                                      : direct[i] + indirect[i];
+        out[i * 4] = v.x, out[i * 4 + 1] = v.y, out[i * 4 + 2] = v.z, out[i * 4 + 3] = 1.0f;
+    }
+    return out;
+}
+
+double ReferenceImage::relativeNoise(ReferenceAov aov) const {
+    double var = 0.0, sq = 0.0;
+    for (size_t i = 0; i < covered.size(); ++i) {
+        if (!covered[i]) continue;
+        const bool d = aov != ReferenceAov::Indirect, in = aov != ReferenceAov::Direct;
+        const glm::dvec3 v = glm::dvec3(d ? directVar[i] : glm::vec3(0.0f)) + glm::dvec3(in ? indirectVar[i] : glm::vec3(0.0f));
+        const glm::dvec3 m = glm::dvec3(d ? direct[i] : glm::vec3(0.0f)) + glm::dvec3(in ? indirect[i] : glm::vec3(0.0f));
+        var += v.x + v.y + v.z, sq += glm::dot(m, m);
+    }
+    return sq > 0.0 ? std::sqrt(var / sq) : 0.0;
+}
+
+glm::vec3 referenceIrradiance(const Light& light, const glm::vec3& p, glm::vec3& toLight, float& distance) {
+    const glm::vec3 radiantColour = light.color * light.intensity;
+    if (light.type == LightType::Directional) {
+        toLight = -glm::normalize(light.direction);
+        distance = std::numeric_limits<float>::infinity();
+        return radiantColour;  // E on a surface facing the light
+    }
+    const glm::vec3 v = light.position - p;
+    const float d2 = std::max(glm::dot(v, v), 1e-8f);
+    distance = std::sqrt(d2);
+    toLight = v / distance;
+    float falloff = 1.0f / d2;  // radiant intensity I -> irradiance I / d^2
+    if (light.range > 0.0f) {   // KHR_lights_punctual's recommended window, (1 - (d/r)^4)^2 clamped
+        const float q = distance / light.range;
+        const float w = std::clamp(1.0f - q * q * q * q, 0.0f, 1.0f);
+        falloff *= w * w;
+    }
+    if (light.type == LightType::Spot) {  // t^2 across the cone edge, t linear in the cosine
+        const float cosOuter = std::cos(light.outerConeAngle), cosInner = std::cos(light.innerConeAngle);
+        const float c = glm::dot(-toLight, glm::normalize(light.direction));
+        const float t = std::clamp((c - cosOuter) / std::max(cosInner - cosOuter, 1e-4f), 0.0f, 1.0f);
+        falloff *= t * t;
+    }
+    return radiantColour * falloff;
+}
+
+ReferenceImage renderReference(const Scene& scene, const Camera& camera, const ReferenceSettings& s) {
+    if (s.width == 0 || s.height == 0 || s.width > 16384 || s.height > 16384)
+        throw std::invalid_argument(fmt::format("reference image size {}x{}: expected 1..16384", s.width, s.height));
+    if (s.spp == 0) throw std::invalid_argument("--spp 0: at least one path per pixel is needed");
+    if (s.bounces > kMaxReferenceBounces)
+        throw std::invalid_argument(fmt::format("--bounces {}: expected 0..{}", s.bounces, kMaxReferenceBounces));
+    if (scene.indices.empty()) throw std::invalid_argument("the scene has no triangles to trace");
+
+    const auto start = std::chrono::steady_clock::now();
+    const RayScene rays(scene);
+    const Tracer tracer{scene, rays, s.bounces};
+    const PinholeCamera cam(camera, s.width, s.height);
+    ReferenceImage out;
+    out.width = s.width, out.height = s.height, out.spp = s.spp;
+    const size_t n = size_t(s.width) * s.height;
+    out.direct.resize(n), out.indirect.resize(n), out.directVar.resize(n), out.indirectVar.resize(n);
+    out.covered.assign(n, 0);
+
+    const uint32_t tilesX = (s.width + kTile - 1) / kTile, tilesY = (s.height + kTile - 1) / kTile;
+    const uint32_t tiles = tilesX * tilesY;
+    std::atomic<uint32_t> nextTile{0}, doneTiles{0};
+    std::atomic<uint64_t> rayTotal{0};
+    auto worker = [&] {
+        uint64_t count = 0;
+        for (uint32_t t; (t = nextTile.fetch_add(1)) < tiles; doneTiles.fetch_add(1)) {
+            const uint32_t x0 = (t % tilesX) * kTile, y0 = (t / tilesX) * kTile;
+            for (uint32_t y = y0; y < std::min(y0 + kTile, s.height); ++y)
+                for (uint32_t x = x0; x < std::min(x0 + kTile, s.width); ++x) renderPixel(tracer, cam, s, x, y, out, count);
+        }
+        rayTotal += count;
+    };
+    const uint32_t threadCount = s.threads ? s.threads : std::max(1u, std::thread::hardware_concurrency());
+    std::vector<std::thread> pool;
+    for (uint32_t i = 0; i < threadCount; ++i) pool.emplace_back(worker);
+    auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+    while (s.progress && doneTiles.load() < tiles) {
+        drawProgress(double(doneTiles.load()) / tiles, elapsed());
+        std::this_thread::sleep_for(std::chrono::milliseconds(200));
+    }
+    for (std::thread& t : pool) t.join();
+    if (s.progress) {
+        drawProgress(1.0, elapsed());
+        fmt::print(stderr, "\n");
+    }
+    out.seconds = elapsed();
+    out.rays = rayTotal.load();
+    return out;
+}
+
+}  // namespace penumbra

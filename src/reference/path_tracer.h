@@ -1,0 +1,59 @@
+// `penumbra reference`: a CPU path tracer (Embree) over the same Scene, camera and light units as the
+// rasterizer, the ground truth that `penumbra compare` and `penumbra eval` measure the techniques
+// against. Lambertian surfaces; punctual lights by next-event estimation (a shadow ray per light);
+// `bounces` diffuse bounces by cosine-weighted sampling, each bounce's hit lit by next-event
+// estimation again. Radiance meanings match the renderer's AOVs: direct = the light's first
+// reflection, indirect = everything after it (one bounce by default, what RSM and LPV approximate),
+// final = direct + indirect.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "scene/scene.h"
+
+namespace penumbra {
+
+struct ReferenceSettings {
+    uint32_t width = 1280;
+    uint32_t height = 720;
+    uint32_t spp = 64;       // paths per pixel (the bounce; direct light needs one without --aa)
+    uint32_t bounces = 1;    // 0 = direct light only
+    uint64_t seed = 1;
+    uint32_t threads = 0;    // 0 = every hardware thread
+    // false: every path starts at the pixel centre, as the rasterizer samples (edges then agree and
+    // the comparison measures lighting); true: uniform over the pixel (anti-aliased).
+    bool antialias = false;
+    bool progress = true;    // single-line progress bar on stderr
+};
+
+enum class ReferenceAov { Final, Direct, Indirect, Mask };
+ReferenceAov parseReferenceAov(const std::string& name);  // final, direct, indirect, mask
+
+struct ReferenceImage {
+    uint32_t width = 0, height = 0, spp = 0;
+    std::vector<glm::vec3> direct, indirect;        // mean radiance per pixel, top row first
+    std::vector<glm::vec3> directVar, indirectVar;  // variance of that mean (sample variance / n)
+    std::vector<uint8_t> covered;                   // 1 where a camera ray of the pixel hit a surface
+    double seconds = 0.0;
+    uint64_t rays = 0;
+
+    // RGBA32F of one AOV (mask: 1 on covered pixels), as writeExr takes it.
+    std::vector<float> rgba(ReferenceAov aov) const;
+    // The image's relative standard error, sqrt(sum var / sum mean^2) over covered pixels and the
+    // three channels (Final: direct and indirect variances added, their covariance neglected).
+    double relativeNoise(ReferenceAov aov) const;
+};
+
+// Throws std::invalid_argument for bad settings (size 0, spp 0, bounces > kMaxBounces).
+ReferenceImage renderReference(const Scene& scene, const Camera& camera, const ReferenceSettings& settings);
+constexpr uint32_t kMaxReferenceBounces = 16;
+
+// Irradiance from `light` at p on a surface facing it (no cosine), KHR_lights_punctual falloff read
+// radiometrically (README "Units"); `toLight` gets the unit direction to the light, `distance` the
+// distance to it (infinity for a directional light). Written independently of shaders/render/lights.glsl.
+glm::vec3 referenceIrradiance(const Light& light, const glm::vec3& p, glm::vec3& toLight, float& distance);
+
+}  // namespace penumbra

@@ -1,0 +1,96 @@
+#include "reference/texture.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+#include <stb_image_resize.h>
+
+namespace penumbra::reference {
+namespace {
+
+// sRGB decode of the 256 byte values (IEC 61966-2-1), the table a GPU's sRGB texture unit applies.
+const std::array<float, 256>& srgbTable() {
+    static const std::array<float, 256> table = [] {
+        std::array<float, 256> t{};
+        for (int i = 0; i < 256; ++i) {
+            const double c = i / 255.0;
+            t[i] = float(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
+        }
+        return t;
+    }();
+    return table;
+}
+
+}  // namespace
+
+glm::vec4 sampleTexture(const Texture& t, glm::vec2 uv) {
+    if (t.width == 0 || t.height == 0 || t.rgba8.size() < size_t(t.width) * t.height * 4) return glm::vec4(1.0f);
+    if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) uv = glm::vec2(0.0f);
+    const double x = double(uv.x) * t.width - 0.5, y = double(uv.y) * t.height - 0.5;
+    const double fx = std::floor(x), fy = std::floor(y);
+    const float ax = float(x - fx), ay = float(y - fy);
+    auto wrap = [](double c, uint32_t n) {
+        const double m = std::fmod(c, double(n));
+        return uint32_t(m < 0.0 ? m + n : m) % n;
+    };
+    const uint32_t x0 = wrap(fx, t.width), x1 = wrap(fx + 1.0, t.width);
+    const uint32_t y0 = wrap(fy, t.height), y1 = wrap(fy + 1.0, t.height);
+    const std::array<float, 256>& lut = srgbTable();
+    auto texel = [&](uint32_t tx, uint32_t ty) {
+        const uint8_t* p = &t.rgba8[(size_t(ty) * t.width + tx) * 4];
+        return glm::vec4(lut[p[0]], lut[p[1]], lut[p[2]], p[3] / 255.0f);
+    };
+    return glm::mix(glm::mix(texel(x0, y0), texel(x1, y0), ax), glm::mix(texel(x0, y1), texel(x1, y1), ax), ay);
+}
+
+namespace {
+
+// Resamples `src` to w x h in linear light (sRGB colour, linear alpha in channel 3).
+Texture resample(const Texture& src, uint32_t w, uint32_t h) {
+    Texture t{w, h, std::vector<uint8_t>(size_t(w) * h * 4)};
+    if (!stbir_resize_uint8_srgb(src.rgba8.data(), int(src.width), int(src.height), 0, t.rgba8.data(), int(w), int(h),
+                                 0, 4, 3, 0))
+        throw std::runtime_error("cannot resample a texture");
+    return t;
+}
+
+}  // namespace
+
+uint32_t textureLayerSize(const std::vector<Texture>& textures) {
+    uint32_t largest = 1;
+    for (const Texture& t : textures) largest = std::max({largest, t.width, t.height});
+    uint32_t size = 1;
+    while (size < largest && size < 2048) size *= 2;
+    const uint64_t budget = uint64_t(256) << 20;
+    while (size > 64 && uint64_t(size) * size * 4 * textures.size() * 4 / 3 > budget) size /= 2;
+    return size;
+}
+
+MipChain::MipChain(const Texture& original, uint32_t squareSize) : original_(&original) {
+    if (original.width == 0 || original.height == 0 || original.rgba8.size() < size_t(original.width) * original.height * 4)
+        return;
+    if (squareSize > 0) resampled_ = resample(original, squareSize, squareSize);
+    const Texture& base = level(0);
+    uint32_t w = base.width, h = base.height;
+    while (w > 1 || h > 1) {
+        w = std::max(1u, w / 2), h = std::max(1u, h / 2);
+        // Every level from the original, filtered in linear light.
+        smaller_.push_back(resample(original, w, h));
+    }
+}
+
+glm::vec4 MipChain::sample(glm::vec2 uv, glm::vec2 dUVdx, glm::vec2 dUVdy) const {
+    const glm::vec2 size(float(level(0).width), float(level(0).height));
+    const float rho = std::max(glm::length(dUVdx * size), glm::length(dUVdy * size));
+    const float lambda = std::isfinite(rho) && rho > 0.0f ? std::log2(rho) : 0.0f;
+    const float lod = std::clamp(lambda, 0.0f, float(levels() - 1));
+    const size_t l0 = size_t(lod);
+    const size_t l1 = std::min(l0 + 1, levels() - 1);
+    const float f = lod - float(l0);
+    const glm::vec4 a = sampleTexture(level(l0), uv);
+    return f > 0.0f ? glm::mix(a, sampleTexture(level(l1), uv), f) : a;
+}
+
+}  // namespace penumbra::reference

@@ -1,0 +1,274 @@
+// Hair and deep shadow maps beyond the closed-form cases of dsm_test.cpp: the built-in `hair` scene,
+// glTF LINES / LINE_STRIP loading as strands, the invariants of the resolved lists and neighbour
+// links read back from the GPU, soft (partial) hair shadows under a DSM against the binary ones of an
+// ordinary shadow map, and the CLI's bad-input paths of the DSM options.
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <unistd.h>
+
+#include <fmt/format.h>
+#include <glm/gtc/packing.hpp>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include "gpu_fixture.h"
+
+using namespace penumbra;
+using namespace penumbra::test;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct ScratchDir {
+    fs::path path = fs::temp_directory_path() / fmt::format("penumbra_dsm_test_{}", getpid());
+    ScratchDir() { fs::create_directories(path); }
+    ~ScratchDir() {
+        std::error_code ec;
+        fs::remove_all(path, ec);
+    }
+    std::string file(const std::string& name) const { return (path / name).string(); }
+};
+
+std::string readText(const std::string& path) {
+    std::ifstream f(path);
+    return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
+}
+
+// A glTF with only lines: a LINE_STRIP of 3 points, and LINES [0,1, 1,2, 3,4] over 5 points (one
+// chained strand of 3 points and one of 2), under a node scaled by 2, with a BLEND material.
+std::string writeLinesGltf(const ScratchDir& dir) {
+    std::vector<float> pos{0, 0, 0, 0, -1, 0, 0.1f, -2, 0,                         // strip
+                           1, 0, 0, 1, -1, 0, 1, -2, 0, 2, 0, 0, 2, -1, 0};          // lines
+    std::vector<uint16_t> idx{0, 1, 1, 2, 3, 4};
+    std::ofstream bin(dir.file("lines.bin"), std::ios::binary);
+    bin.write(reinterpret_cast<const char*>(pos.data()), std::streamsize(pos.size() * 4));
+    bin.write(reinterpret_cast<const char*>(idx.data()), std::streamsize(idx.size() * 2));
+    bin.close();
+    using nlohmann::json;
+    const json strip{{"attributes", {{"POSITION", 0}}}, {"mode", 3}, {"material", 0}};
+    const json lines{{"attributes", {{"POSITION", 1}}}, {"indices", 2}, {"mode", 1}, {"material", 0}};
+    const json material{{"alphaMode", "BLEND"}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.5, 0.4, 0.3, 0.25}}}}};
+    const json doc{
+        {"asset", {{"version", "2.0"}}},
+        {"scenes", {{{"nodes", {0}}}}},
+        {"nodes", {{{"mesh", 0}, {"scale", {2, 2, 2}}}}},
+        {"meshes", {{{"primitives", {strip, lines}}}}},
+        {"materials", {material}},
+        {"accessors", {{{"bufferView", 0}, {"componentType", 5126}, {"count", 3}, {"type", "VEC3"}},
+                       {{"bufferView", 1}, {"componentType", 5126}, {"count", 5}, {"type", "VEC3"}},
+                       {{"bufferView", 2}, {"componentType", 5123}, {"count", 6}, {"type", "SCALAR"}}}},
+        {"bufferViews", {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", 36}},
+                         {{"buffer", 0}, {"byteOffset", 36}, {"byteLength", 60}},
+                         {{"buffer", 0}, {"byteOffset", 96}, {"byteLength", 12}}}},
+        {"buffers", {{{"uri", "lines.bin"}, {"byteLength", 108}}}},
+    };
+    std::ofstream(dir.file("lines.gltf")) << doc.dump(1);
+    return dir.file("lines.gltf");
+}
+
+struct Cli {
+    int status;
+    std::string out, err;
+};
+
+// Runs the penumbra executable (on lavapipe: the test environment pins the ICD).
+Cli runCli(const ScratchDir& dir, const std::string& args) {
+    const std::string out = dir.file("out.txt"), err = dir.file("err.txt");
+    const int rc = std::system(fmt::format("timeout 60 {} {} >{} 2>{}", PENUMBRA_BIN, args, out, err).c_str());
+    return {WIFEXITED(rc) ? WEXITSTATUS(rc) : -1, readText(out), readText(err)};
+}
+
+}  // namespace
+
+TEST(HairScene, GrowsTheRequestedStrandsOutsideTheHead) {
+    BuiltinOptions options;
+    options.hairStrands = 500;
+    const Scene s = makeBuiltinScene("hair", options);
+    ASSERT_EQ(s.strands.size(), 500u);
+    const glm::vec3 head(0.0f, 0.42f, 0.0f);
+    size_t inside = 0;
+    for (const Strand& strand : s.strands) {
+        ASSERT_GE(strand.pointCount, 2u);
+        ASSERT_LE(size_t(strand.firstPoint) + strand.pointCount, s.strandPoints.size());
+        for (uint32_t i = 0; i < strand.pointCount; ++i) {
+            const glm::vec3& p = s.strandPoints[strand.firstPoint + i];
+            inside += glm::length(p - head) < 0.1f * 0.999f;
+            EXPECT_GE(p.x, s.bounds.min.x);
+            EXPECT_LE(p.y, s.bounds.max.y);
+        }
+    }
+    EXPECT_EQ(inside, 0u) << "strand points inside the head sphere";
+    EXPECT_EQ(s.lights.size(), 1u);
+    EXPECT_EQ(s.lights[0].type, LightType::Spot);
+    // Same seed, same hair.
+    EXPECT_EQ(makeBuiltinScene("hair", options).strandPoints, s.strandPoints);
+}
+
+TEST(HairScene, GltfLinesLoadAsStrands) {
+    ScratchDir dir;
+    const Scene s = loadScene(writeLinesGltf(dir));
+    ASSERT_EQ(s.strands.size(), 3u);
+    EXPECT_EQ(s.strands[0].pointCount, 3u);  // LINE_STRIP
+    EXPECT_EQ(s.strands[1].pointCount, 3u);  // LINES 0-1, 1-2 chained
+    EXPECT_EQ(s.strands[2].pointCount, 2u);  // LINES 3-4
+    EXPECT_EQ(s.indices.size(), 0u);
+    for (const Strand& st : s.strands) {
+        EXPECT_FLOAT_EQ(st.opacity, 0.25f);                      // BLEND alpha
+        EXPECT_NEAR(st.color.r, 0.5f, 1e-6f);
+        EXPECT_NEAR(st.width, 2.0f * Strand{}.width, 1e-9f);     // scaled with the node
+    }
+    EXPECT_EQ(s.strandPoints[2], glm::vec3(0.2f, -4.0f, 0.0f));  // node transform applied
+    EXPECT_FALSE(s.bounds.empty());
+}
+
+// The hair-only glTF renders (SceneGpu without triangles) with a DSM, under validation.
+TEST_F(GpuTest, HairOnlyGltfRenders) {
+    ScratchDir dir;
+    const Scene s = loadScene(writeLinesGltf(dir));
+    RenderSettings rs;
+    rs.width = 32;
+    rs.height = 32;
+    rs.shadow.resolution = 64;
+    rs.dsm.enabled = true;
+    Renderer r(ctx(), s, rs);
+    r.render(s.cameras[0]);
+    EXPECT_GT(r.deepShadows().readStats(r.commands()).fragments, 0u);
+}
+
+// After a frame of the hair scene: every list is sorted by depth, at most maxList long, its
+// transmittance falls from node to node, and every neighbour link points at the node of the
+// neighbour's list with the largest depth <= the node's own.
+TEST_F(GpuTest, DsmListsAndLinksAreConsistent) {
+    BuiltinOptions options;
+    options.hairStrands = 2000;
+    const Scene s = makeBuiltinScene("hair", options);
+    RenderSettings rs;
+    rs.width = 64;
+    rs.height = 48;
+    rs.shadow.resolution = 128;
+    rs.dsm.enabled = true;
+    rs.dsm.maxList = 12;
+    Renderer r(ctx(), s, rs);
+    r.render(s.cameras[0]);
+    const DsmResources& res = r.deepShadows().resources();
+    const DsmFrameStats st = r.deepShadows().readStats(r.commands());
+    ASSERT_EQ(st.overflow, 0u);
+    const uint32_t n = res.resolution;
+    auto heads = r.commands().readBuffer(res.heads, VkDeviceSize(n) * n * 4);
+    auto nodeBytes = r.commands().readBuffer(res.nodes, st.fragments * 16);
+    auto upBytes = r.commands().readBuffer(res.upLinks, st.fragments * 4);
+    const auto* head = reinterpret_cast<const uint32_t*>(heads.data());
+    const auto* node = reinterpret_cast<const glm::uvec4*>(nodeBytes.data());
+    const auto* up = reinterpret_cast<const uint32_t*>(upBytes.data());
+    auto depth = [&](uint32_t i) { return glm::uintBitsToFloat(node[i].x); };
+    std::vector<int64_t> owner(st.fragments, -1);
+    uint64_t kept = 0;
+    size_t unsorted = 0, rising = 0, tooLong = 0;
+    for (uint32_t t = 0; t < n * n; ++t) {
+        uint32_t len = 0;
+        float lastDepth = -1e30f, lastT = 1.0f;
+        for (uint32_t i = head[t]; i != DSM_NONE && len <= rs.dsm.maxList; i = node[i].z, ++len) {
+            owner[i] = t;
+            unsorted += depth(i) < lastDepth;
+            rising += glm::uintBitsToFloat(node[i].y) > lastT;
+            lastDepth = depth(i);
+            lastT = glm::uintBitsToFloat(node[i].y);
+        }
+        tooLong += len > rs.dsm.maxList;
+        kept += len;
+    }
+    // A link from node i of texel t to texel u (DSM_NONE: u has nothing at or in front of i).
+    size_t badLinks = 0, links = 0;
+    auto checkLink = [&](uint32_t i, uint32_t link, uint32_t u) {
+        ++links;
+        uint32_t expected = DSM_NONE;
+        for (uint32_t j = head[u]; j != DSM_NONE && depth(j) <= depth(i); j = node[j].z) expected = j;
+        badLinks += link != expected;
+    };
+    for (uint32_t i = 0; i < st.fragments; ++i) {
+        if (owner[i] < 0) continue;
+        const uint32_t t = uint32_t(owner[i]), x = t % n, y = t / n;
+        if (x + 1 < n) checkLink(i, node[i].w, t + 1);
+        if (y + 1 < n) checkLink(i, up[i], t + n);
+    }
+    std::printf("[dsm lists] %llu nodes in %llu lists (longest %u before the cap of %u): %zu unsorted, %zu "
+                "transmittance rises, %zu too long; %zu of %zu links wrong\n",
+                (unsigned long long)kept, (unsigned long long)st.lists, st.longest, rs.dsm.maxList, unsorted, rising,
+                tooLong, badLinks, links);
+    EXPECT_EQ(kept, st.kept);
+    EXPECT_GT(st.longest, rs.dsm.maxList);  // the cap was exercised
+    EXPECT_EQ(unsorted + rising + tooLong, 0u);
+    EXPECT_GT(links, 1000u);
+    EXPECT_EQ(badLinks, 0u);
+}
+
+// Shadow visibility (opaque map x DSM transmittance) of the hair's own pixels: with a DSM a large
+// share of the shadowed ones is partly lit; with hair in the ordinary (hard) shadow map almost none is.
+TEST_F(GpuTest, HairShadowsArePartialWithDsmAndBinaryWithout) {
+    BuiltinOptions options;
+    options.hairStrands = 3000;
+    const Scene s = makeBuiltinScene("hair", options);
+    std::map<bool, double> partialShare;
+    for (bool dsm : {false, true}) {
+        RenderSettings rs;
+        rs.width = 128;
+        rs.height = 96;
+        rs.aov = Aov::Shadow;
+        rs.shadow.resolution = 256;
+        rs.dsm.enabled = dsm;
+        Renderer r(ctx(), s, rs);
+        r.render(s.cameras[0]);
+        const std::vector<float> img = r.readHdr();
+        const std::vector<uint8_t> normal = r.commands().readImage(r.gbuffer().normal, 8);
+        size_t shadowed = 0, partial = 0;
+        for (size_t i = 0; i < img.size() / 4; ++i) {
+            uint16_t w;
+            std::memcpy(&w, normal.data() + i * 8 + 6, 2);
+            if (glm::unpackHalf1x16(w) < 1.5f) continue;  // not hair (SHADING_HAIR in the normal's w)
+            shadowed += img[i * 4] < 0.95f;
+            partial += img[i * 4] > 0.05f && img[i * 4] < 0.95f;
+        }
+        partialShare[dsm] = shadowed ? double(partial) / double(shadowed) : 0.0;
+        std::printf("[hair shadows] %s: %zu shadowed hair pixels, %.1f%% of them partly lit\n",
+                    dsm ? "deep shadow map" : "shadow map", shadowed, 100.0 * partialShare[dsm]);
+        EXPECT_GT(shadowed, 300u);
+    }
+    EXPECT_GT(partialShare[true], 0.3);
+    EXPECT_LT(partialShare[false], 0.05);
+}
+
+TEST(DsmCli, BadInputGivesOneErrorLine) {
+    ScratchDir dir;
+    const std::string out = dir.file("x.png");
+    const std::vector<std::string> bad{
+        "render hair --strands -1 -o " + out,
+        "render hair --strands 0 -o " + out,
+        "render hair --shadow dsmm -o " + out,
+        "render hair --shadow dsm --dsm-nodes 99999999999 -o " + out,
+        "render hair --shadow dsm --dsm-max-list 500 -o " + out,
+        "render hair --aov transmittance -o " + out,
+        "render hair --dsm-lights 3 --strands 10 --width 8 --height 8 -o " + out,
+        "render hair --shadow dsm --dsm-filter 20 -o " + out,
+    };
+    for (const std::string& args : bad) {
+        const Cli r = runCli(dir, args);
+        EXPECT_NE(r.status, 0) << args;
+        EXPECT_EQ(r.err.rfind("penumbra: error: ", 0), 0u) << args << "\n" << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << "\n" << r.err;
+    }
+}
+
+// A pool far too small: the run succeeds, warns with the number of dropped fragments and reports.
+TEST(DsmCli, SmallPoolWarnsAndReports) {
+    ScratchDir dir;
+    const Cli r = runCli(dir, "render hair --strands 200 --shadow pcf,dsm --dsm-nodes 1000 --width 64 --height 48 "
+                              "--shadow-res 128 -o " + dir.file("hair.png"));
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("penumbra: warning: deep shadow map node pool overflow: "), std::string::npos) << r.err;
+    EXPECT_NE(r.out.find("dsm: 1 map(s) of 128^2"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("dsm.resolve"), std::string::npos) << r.out;
+    EXPECT_TRUE(fs::exists(dir.file("hair.png")));
+}
