@@ -137,14 +137,8 @@ TEST(Compare, HeatMapRampAndScale) {
 
 namespace {
 
-struct DirectAgreement {
-    ImageMetrics m;
-};
-
 // Direct light of the rasterizer (hard shadows) against the reference's, over pixels with geometry.
-ImageMetrics directAgreement(GpuTest& t, vk::Context& ctx, const Scene& scene, const Camera& cam, uint32_t w,
-                             uint32_t h) {
-    (void)t;
+ImageMetrics directAgreement(vk::Context& ctx, const Scene& scene, const Camera& cam, uint32_t w, uint32_t h) {
     ReferenceSettings rs;
     rs.width = w, rs.height = h, rs.spp = 1, rs.bounces = 0, rs.progress = false;
     const ReferenceImage ref = renderReference(scene, cam, rs);
@@ -162,7 +156,7 @@ class EvalTest : public GpuTest {};
 
 TEST_F(EvalTest, DirectLightAgreesWithReferenceOnCornell) {
     const Scene scene = makeBuiltinScene("cornell");
-    const ImageMetrics m = directAgreement(*this, ctx(), scene, scene.cameras[0], 160, 120);
+    const ImageMetrics m = directAgreement(ctx(), scene, scene.cameras[0], 160, 120);
     std::printf("[ eval ] cornell direct, rasterizer vs reference: rel L1 %.4f, rel L2 %.4f, bias %+.2e, SSIM %.4f\n",
                 m.relL1, m.relL2, m.meanBias, m.ssim);
     EXPECT_LT(m.relL1, 0.02);
@@ -175,7 +169,7 @@ TEST_F(EvalTest, DirectLightAgreesWithReferenceOnVC) {
     Scene scene = loadScene(vc.string());
     Camera cam;
     cam.eye = {14, 9, 16}, cam.target = {0, 1.5f, 0}, cam.fovy = glm::radians(50.0f);
-    const ImageMetrics m = directAgreement(*this, ctx(), scene, cam, 320, 180);
+    const ImageMetrics m = directAgreement(ctx(), scene, cam, 320, 180);
     std::printf("[ eval ] VC direct, rasterizer vs reference: rel L1 %.4f, rel L2 %.4f, bias %+.2e, SSIM %.4f\n",
                 m.relL1, m.relL2, m.meanBias, m.ssim);
     EXPECT_LT(m.relL1, 0.05);

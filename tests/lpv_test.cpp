@@ -130,7 +130,9 @@ TEST(LpvCascades, NestedSnappedAndCoveringTheScene) {
     ASSERT_EQ(c.size(), 3u);
     for (size_t k = 0; k < c.size(); ++k) {
         const float cell = c[k].origin.w;
-        if (k > 0) EXPECT_NEAR(cell, 2.0f * c[k - 1].origin.w, 1e-4f);
+        if (k > 0) {
+            EXPECT_NEAR(cell, 2.0f * c[k - 1].origin.w, 1e-4f);
+        }
         for (int a = 0; a < 3; ++a) {
             EXPECT_NEAR(std::remainder(c[k].origin[a], cell), 0.0f, 1e-3f * cell) << "snapped to whole cells";
             EXPECT_LE(c[k].origin[a], eye[a]);

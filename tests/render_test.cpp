@@ -379,6 +379,7 @@ TEST_F(GpuTest, CornellEveryAovValidatesAndReportsTimings) {
                     break;
                 }
                 case Aov::Depth: outOfRange += !(px[0] > 0.0f); break;  // the background reads the far plane
+                default: ADD_FAILURE() << "AOV not covered by this test"; break;
             }
         }
         EXPECT_EQ(nonFinite, 0u);

@@ -31,9 +31,9 @@ void main() {
     vec3 e = incidentIrradiance(light, inWorld, l);
     float t = layer.params.x;
     float area = t * t;
-    if (layer.params.y > 0.5) {
-        float z = dot(inWorld - light.position.xyz, light.direction.xyz);
-        area *= z * z * max(dot(-l, light.direction.xyz), 0.0);
+    if (layer.params.y > 0.5) {  // the layer's own axis (spot cone, or a point light's cube face)
+        float z = (layer.viewProj * vec4(inWorld, 1.0)).w;
+        area *= z * z * clamp(z / max(length(inWorld - light.position.xyz), 1e-6), 0.0, 1.0);
     }
     vec3 n = normalize(inNormal);
     if (dot(n, l) < 0.0) n = -n;  // the side the light sees (two-sided surfaces)

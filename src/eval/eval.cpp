@@ -22,12 +22,14 @@ double median(std::vector<double> v) {
     return v[v.size() / 2];
 }
 
+constexpr uint32_t kGap = 4;  // white pixels between the figure's cells
+
 // Copies `src` (w x h RGBA8) into the figure at cell (col, row) of cells w x h.
 void blit(std::vector<uint8_t>& dst, uint32_t dstWidth, const std::vector<uint8_t>& src, uint32_t w, uint32_t h,
           uint32_t col, uint32_t row) {
     for (uint32_t y = 0; y < h; ++y)
         std::copy(src.begin() + size_t(y) * w * 4, src.begin() + size_t(y + 1) * w * 4,
-                  dst.begin() + ((size_t(row) * h + y) * dstWidth + size_t(col) * w) * 4);
+                  dst.begin() + ((size_t(row) * (h + kGap) + y) * dstWidth + size_t(col) * (w + kGap)) * 4);
 }
 
 // The heat map's colour ramp across a cell (left 0, right = the scale), for the reference column.
@@ -159,7 +161,7 @@ std::vector<uint8_t> evalFigure(const std::vector<EvalRow>& rows, const GroundTr
     for (const EvalRow& r : rows)
         if (r.variant.figure) shown.push_back(&r);
     const uint32_t w = truth.final.width, h = truth.final.height, cols = uint32_t(shown.size()) + 1;
-    width = w * cols, height = h * 3;
+    width = w * cols + kGap * (cols - 1), height = h * 3 + kGap * 2;
     std::vector<uint8_t> out(size_t(width) * height * 4, 255);
     // One heat scale for every column, so that the maps compare: the largest of their 99th percentiles.
     heatScale = 0.0;
