@@ -14,9 +14,9 @@ cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPENUMBRA_PORTABLE=ON >/dev/null
 cmake --build build -j"$(nproc)" --target penumbra
 rm -rf .device && mkdir -p .device/lib .device/assets
 cp build/penumbra .device/
-for lib in libfmt.so.9 libtinyexr.so.1d libtinygltf.so.2d libstb.so.0 libz.so.1; do
-  cp -L "/lib/x86_64-linux-gnu/$lib" .device/lib/
-done
+# Every shared library it links except the C runtime and the Vulkan loader (unpacked from .gl).
+ldd build/penumbra | awk '$3 ~ /^\// {print $3}' | grep -Ev '/(libc|libm|libvulkan|ld-linux[^/]*)\.so' |
+  while read -r lib; do cp -L "$lib" .device/lib/; done
 [ -d ../shared/assets ] && cp -r ../shared/assets/VC .device/assets/
 cat > .device/env.sh <<'EOS'
 # Sourced first in every device command: unpack the Vulkan loader, find the carried libraries.

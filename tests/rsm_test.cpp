@@ -269,3 +269,32 @@ TEST_F(RsmTest, CornellBleedsWallColoursAndLightsTheCeilingIndirectly) {
     std::printf("[ rsm ] ceiling: %zu pixels, mean indirect irradiance %.4f, direct 0\n", ceiling,
                 luminance(ceilingIndirect) / ceiling);
 }
+
+TEST_F(RsmTest, CascadedSunCountsEachSurfaceOnce) {
+    // Cascades of one light see the same surfaces: the gather must take one cascade per receiver, so
+    // the indirect light with 4 cascades matches 1 cascade (it would be ~4x if every cascade counted).
+    Scene scene = makeBuiltinScene("cornell");
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = glm::normalize(glm::vec3(0.3f, -0.5f, -1.0f));  // through the open front
+    sun.intensity = 2.0f;
+    scene.lights = {sun};
+    double mean[2] = {0, 0};
+    for (int i = 0; i < 2; ++i) {
+        RenderSettings s;
+        s.width = 96;
+        s.height = 72;
+        s.aov = Aov::Indirect;
+        s.gi = GiMode::Rsm;
+        s.rsm.resolution = 64;
+        s.rsm.mode = RsmMode::AllTexels;
+        s.shadow.cascades.count = i == 0 ? 1 : 4;
+        Renderer r(ctx(), scene, s);
+        r.render(scene.cameras[0]);
+        std::vector<float> img = r.readHdr();
+        for (size_t p = 0; p < img.size(); p += 4) mean[i] += img[p + 1];
+    }
+    std::printf("[ rsm ] mean indirect, 1 cascade %.5f, 4 cascades %.5f\n", mean[0] / (96 * 72), mean[1] / (96 * 72));
+    ASSERT_GT(mean[0], 0.0);
+    EXPECT_NEAR(mean[1] / mean[0], 1.0, 0.25);
+}

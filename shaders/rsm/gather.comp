@@ -61,14 +61,23 @@ float samplingDisc(GpuRsmLayer layer, vec3 x, out vec2 st) {
 vec3 gather(vec3 x, vec3 n) {
     vec3 e = vec3(0.0);
     const int res = int(pc.sizes.z);
+    uint usedCascadeLight = 0xFFFFFFFFu;
     for (uint layer = 0; layer < pc.mode.z; ++layer) {
+        // Cascades of a light: the first whose map holds x, else the last (seed: SearchCascadeIndex).
+        GpuRsmLayer L = rsmLayers[layer];
+        if (L.cascade.x > 0.0) {
+            if (uint(L.params.z) == usedCascadeLight) continue;
+            vec4 c = L.viewProj * vec4(x, 1.0);
+            if (L.cascade.y < 0.5 && any(greaterThan(abs(c.xy / c.w), vec2(1.0)))) continue;
+            usedCascadeLight = uint(L.params.z);
+        }
         if (pc.mode.x == RSM_GATHER_ALL_TEXELS) {
             for (int ty = 0; ty < res; ++ty)
                 for (int tx = 0; tx < res; ++tx) e += vplIrradiance(ivec2(tx, ty), layer, x, n);
             continue;
         }
         vec2 st;
-        float scale = samplingDisc(rsmLayers[layer], x, st) / pc.params.z;
+        float scale = samplingDisc(L, x, st) * L.cascade.z / pc.params.z;
         for (uint i = 0; i < pc.mode.y; ++i) {
             vec4 s = samples[i];
             vec2 uv = st + s.xy * scale;

@@ -92,6 +92,7 @@ struct GpuRsmLayer {
     mat4 viewProj;
     mat4 invViewProj;
     vec4 params;  // x = texel world size (ortho) or per unit depth (perspective), y = perspective, z = light index
+    vec4 cascade; // x = cascade index + 1 (0: not a cascade), y = 1 on a light's last cascade, z = r_max scale
 };
 
 // RSM gather modes (rsm/gather.comp).

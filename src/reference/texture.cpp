@@ -27,20 +27,20 @@ const std::array<float, 256>& srgbTable() {
 
 glm::vec4 sampleTexture(const Texture& t, glm::vec2 uv) {
     if (t.width == 0 || t.height == 0 || t.rgba8.size() < size_t(t.width) * t.height * 4) return glm::vec4(1.0f);
+    // Repeat wrap: only the fraction of uv matters (which also keeps the integer texel index small).
+    uv -= glm::floor(uv);
     if (!std::isfinite(uv.x) || !std::isfinite(uv.y)) uv = glm::vec2(0.0f);
-    const double x = double(uv.x) * t.width - 0.5, y = double(uv.y) * t.height - 0.5;
-    const double fx = std::floor(x), fy = std::floor(y);
-    const float ax = float(x - fx), ay = float(y - fy);
-    auto wrap = [](double c, uint32_t n) {
-        const double m = std::fmod(c, double(n));
-        return uint32_t(m < 0.0 ? m + n : m) % n;
-    };
-    const uint32_t x0 = wrap(fx, t.width), x1 = wrap(fx + 1.0, t.width);
-    const uint32_t y0 = wrap(fy, t.height), y1 = wrap(fy + 1.0, t.height);
+    const float x = uv.x * float(t.width) - 0.5f, y = uv.y * float(t.height) - 0.5f;
+    const float fx = std::floor(x), fy = std::floor(y);
+    const float ax = x - fx, ay = y - fy;
+    const int w = int(t.width), h = int(t.height);
+    auto wrap = [](int c, int n) { return uint32_t(((c % n) + n) % n); };
+    const uint32_t x0 = wrap(int(fx), w), x1 = wrap(int(fx) + 1, w);
+    const uint32_t y0 = wrap(int(fy), h), y1 = wrap(int(fy) + 1, h);
     const std::array<float, 256>& lut = srgbTable();
     auto texel = [&](uint32_t tx, uint32_t ty) {
         const uint8_t* p = &t.rgba8[(size_t(ty) * t.width + tx) * 4];
-        return glm::vec4(lut[p[0]], lut[p[1]], lut[p[2]], p[3] / 255.0f);
+        return glm::vec4(lut[p[0]], lut[p[1]], lut[p[2]], p[3] * (1.0f / 255.0f));
     };
     return glm::mix(glm::mix(texel(x0, y0), texel(x1, y0), ax), glm::mix(texel(x0, y1), texel(x1, y1), ax), ay);
 }

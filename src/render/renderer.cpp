@@ -18,13 +18,28 @@ gpu::GpuLight toGpu(const Light& l) {
     return g;
 }
 
-// One RSM layer per shadow layer (cascades and cube faces included): the RSM is the shadow pass's
-// light view with more targets. Paraboloid layers have no matrix projection to rasterize with.
-std::vector<RsmLayerSource> rsmLayersOf(const ShadowMapPass& shadow) {
+// RSM layers from the shadow layers: the RSM is the shadow pass's light view with more targets.
+// The RSM gather takes every cascade (it picks one per receiver, as the seed does); LPV injection
+// takes only each light's last, widest cascade, since cascades see the same surfaces and would inject
+// the same light several times. Paraboloid layers have no matrix projection to rasterize with.
+std::vector<RsmLayerSource> rsmLayersOf(const ShadowMapPass& shadow, bool widestCascadeOnly) {
     std::vector<RsmLayerSource> layers;
-    for (uint32_t k = 0; k < shadow.layers().size(); ++k) {
-        const ShadowLayer& l = shadow.layers()[k];
-        if (!l.projection.paraboloid) layers.push_back({l.light, 1 + k, l.projection, shadow.settings().resolution});
+    const uint32_t res = shadow.settings().resolution;
+    for (const ShadowedLight& sl : shadow.layout().shadowed()) {
+        const bool cascades = sl.kind == SHADOW_KIND_CASCADES;
+        for (uint32_t k = 0; k < sl.layerCount; ++k) {
+            const uint32_t index = sl.firstLayer + k;
+            const ShadowLayer& l = shadow.layers()[index];
+            const bool last = k + 1 == sl.layerCount;
+            if (l.projection.paraboloid || (cascades && widestCascadeOnly && !last)) continue;
+            RsmLayerSource src{l.light, 1 + index, l.projection, res};
+            if (cascades && !widestCascadeOnly) {
+                src.cascade = k + 1;
+                src.lastCascade = last;
+                src.radiusScale = shadow.layers()[sl.firstLayer].projection.texelSize / l.projection.texelSize;
+            }
+            layers.push_back(src);
+        }
     }
     return layers;
 }
@@ -85,7 +100,7 @@ void Renderer::setupGi() {
     }
     rsm_ = std::make_unique<RsmPass>(alloc_, *sceneGpu_, rsmSettings);
     // The layers' projections are set every frame (cascades follow the camera): see updateBuffers.
-    const std::vector<RsmLayerSource> layers = rsmLayersOf(*shadow_);
+    const std::vector<RsmLayerSource> layers = rsmLayersOf(*shadow_, lpv_ != nullptr);
     if (layers.empty()) warnings_.push_back("GI: no directional or spot light casts shadows; no indirect light");
     rsm_->setLayers(layers);
 }
@@ -131,7 +146,7 @@ void Renderer::updateBuffers(const Camera& camera) {
     const float aspect = float(settings_.width) / float(settings_.height);
     zfar_ = sceneFar(camera, scene_.bounds);
     shadow_->update(camera, aspect, zfar_);
-    if (rsm_) rsm_->setLayers(rsmLayersOf(*shadow_));
+    if (rsm_) rsm_->setLayers(rsmLayersOf(*shadow_, lpv_ != nullptr));
     gpu::FrameUniforms f{};
     f.viewProj = cameraViewProj(camera, aspect, zfar_);
     f.invViewProj = glm::inverse(f.viewProj);

@@ -47,7 +47,8 @@ void RsmPass::setLayers(const std::vector<RsmLayerSource>& layers) {
         // The projection's texel size is for the shadow map; RSM texels are larger by the ratio.
         const float texel = s.projection.texelSize * float(s.shadowResolution) / float(r);
         table[i] = {s.projection.viewProj, glm::inverse(s.projection.viewProj),
-                    {texel, s.projection.perspective ? 1.0f : 0.0f, float(s.light), 0.0f}};
+                    {texel, s.projection.perspective ? 1.0f : 0.0f, float(s.light), 0.0f},
+                    {float(s.cascade), s.lastCascade ? 1.0f : 0.0f, s.radiusScale, 0.0f}};
     }
     layerTable_.write(table.data(), table.size() * sizeof(gpu::GpuRsmLayer));
 }

@@ -18,6 +18,10 @@ struct RsmLayerSource {
     uint32_t viewIndex;
     LightProjection projection;  // texelSize as for the shadow map's resolution
     uint32_t shadowResolution;
+    // Cascades of one directional light see the same surfaces: the gather uses one per receiver.
+    uint32_t cascade = 0;       // cascade index + 1, 0 = not a cascade
+    bool lastCascade = false;
+    float radiusScale = 1.0f;   // keeps r_max's world size equal to the first cascade's
 };
 
 class RsmPass {
