@@ -98,6 +98,8 @@ CLI::App* addEvalCommand(CLI::App& app, EvalCliOptions& o) {
         ->check(CLI::Range(1e-6, 1e6));
     cmd->add_option("--indirect-exposure", o.indirectExposure, "Figure: exposure of the indirect images (default 4)")
         ->check(CLI::Range(1e-6, 1e6));
+    cmd->add_option("--figure-width", o.figureCellWidth, "Figure: largest cell width, pixels (default 480)")
+        ->check(CLI::Range(16, 16384));
     return cmd;
 }
 
@@ -133,7 +135,8 @@ int runEvalCommand(const EvalCliOptions& o, const vk::ContextOptions& vkOptions)
         fs::create_directories(o.images, ec);
         double heat = 0.0;
         uint32_t w = 0, h = 0;
-        const std::vector<uint8_t> fig = evalFigure(rows, truth, o.reference.exposure, o.indirectExposure, heat, w, h);
+        const std::vector<uint8_t> fig =
+            evalFigure(rows, truth, o.reference.exposure, o.indirectExposure, o.figureCellWidth, heat, w, h);
         const std::string path = (fs::path(o.images) / "figure.png").string();
         writePng(path, w, h, fig);
         fmt::print("figure {}: columns reference, RSM interpolated, LPV 32^3; rows final, indirect (x{}), indirect "

@@ -32,6 +32,23 @@ void blit(std::vector<uint8_t>& dst, uint32_t dstWidth, const std::vector<uint8_
                   dst.begin() + ((size_t(row) * (h + kGap) + y) * dstWidth + size_t(col) * (w + kGap)) * 4);
 }
 
+// Box-filters a w x h RGBA8 image down by an integer factor (the figure's cells stay small).
+std::vector<uint8_t> shrink(const std::vector<uint8_t>& src, uint32_t w, uint32_t h, uint32_t factor) {
+    if (factor <= 1) return src;
+    const uint32_t sw = w / factor, sh = h / factor;
+    std::vector<uint8_t> out(size_t(sw) * sh * 4);
+    for (uint32_t y = 0; y < sh; ++y)
+        for (uint32_t x = 0; x < sw; ++x)
+            for (int c = 0; c < 4; ++c) {
+                uint32_t sum = 0;
+                for (uint32_t j = 0; j < factor; ++j)
+                    for (uint32_t i = 0; i < factor; ++i)
+                        sum += src[((size_t(y) * factor + j) * w + size_t(x) * factor + i) * 4 + c];
+                out[(size_t(y) * sw + x) * 4 + c] = uint8_t((sum + factor * factor / 2) / (factor * factor));
+            }
+    return out;
+}
+
 // The heat map's colour ramp across a cell (left 0, right = the scale), for the reference column.
 std::vector<uint8_t> rampCell(uint32_t w, uint32_t h) {
     ImageF zero{w, h, std::vector<float>(size_t(w) * h * 4, 0.0f)}, ramp = zero;
@@ -156,11 +173,15 @@ nlohmann::json evalRowsJson(const std::vector<EvalRow>& rows) {
 }
 
 std::vector<uint8_t> evalFigure(const std::vector<EvalRow>& rows, const GroundTruth& truth, float exposure,
-                                float indirectExposure, double& heatScale, uint32_t& width, uint32_t& height) {
+                                float indirectExposure, uint32_t maxCellWidth, double& heatScale, uint32_t& width,
+                                uint32_t& height) {
     std::vector<const EvalRow*> shown;
     for (const EvalRow& r : rows)
         if (r.variant.figure) shown.push_back(&r);
-    const uint32_t w = truth.final.width, h = truth.final.height, cols = uint32_t(shown.size()) + 1;
+    const uint32_t fw = truth.final.width, fh = truth.final.height;
+    const uint32_t factor = std::clamp((fw + maxCellWidth - 1) / std::max(maxCellWidth, 1u), 1u, std::min(fw, fh));
+    const uint32_t w = std::max(1u, fw / factor), h = std::max(1u, fh / factor), cols = uint32_t(shown.size()) + 1;
+    auto cell = [&](const std::vector<uint8_t>& full) { return factor > 1 ? shrink(full, fw, fh, factor) : full; };
     width = w * cols + kGap * (cols - 1), height = h * 3 + kGap * 2;
     std::vector<uint8_t> out(size_t(width) * height * 4, 255);
     // One heat scale for every column, so that the maps compare: the largest of their 99th percentiles.
@@ -170,14 +191,14 @@ std::vector<uint8_t> evalFigure(const std::vector<EvalRow>& rows, const GroundTr
         errorHeatMap(r->indirectImage, truth.indirect, truth.mask, s);
         heatScale = std::max(heatScale, s);
     }
-    blit(out, width, toneMap(truth.final, exposure), w, h, 0, 0);
-    blit(out, width, toneMap(truth.indirect, indirectExposure), w, h, 0, 1);
+    blit(out, width, cell(toneMap(truth.final, exposure)), w, h, 0, 0);
+    blit(out, width, cell(toneMap(truth.indirect, indirectExposure)), w, h, 0, 1);
     blit(out, width, rampCell(w, h), w, h, 0, 2);
     for (uint32_t c = 0; c < shown.size(); ++c) {
-        blit(out, width, toneMap(shown[c]->final, exposure), w, h, c + 1, 0);
-        blit(out, width, toneMap(shown[c]->indirectImage, indirectExposure), w, h, c + 1, 1);
+        blit(out, width, cell(toneMap(shown[c]->final, exposure)), w, h, c + 1, 0);
+        blit(out, width, cell(toneMap(shown[c]->indirectImage, indirectExposure)), w, h, c + 1, 1);
         double s = heatScale;
-        blit(out, width, errorHeatMap(shown[c]->indirectImage, truth.indirect, truth.mask, s), w, h, c + 1, 2);
+        blit(out, width, cell(errorHeatMap(shown[c]->indirectImage, truth.indirect, truth.mask, s)), w, h, c + 1, 2);
     }
     return out;
 }

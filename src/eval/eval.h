@@ -58,7 +58,9 @@ double relativeBias(const ImageMetrics& m);
 // Side by side (RGBA8): a column for the reference and one per figure variant; rows: final radiance
 // (tone-mapped at `exposure`), indirect radiance (at `indirectExposure`), the indirect error heat
 // map (one scale for every column, returned in `heatScale`; the reference column shows the ramp).
+// Cells wider than `maxCellWidth` are box-filtered down by an integer factor.
 std::vector<uint8_t> evalFigure(const std::vector<EvalRow>& rows, const GroundTruth& truth, float exposure,
-                                float indirectExposure, double& heatScale, uint32_t& width, uint32_t& height);
+                                float indirectExposure, uint32_t maxCellWidth, double& heatScale, uint32_t& width,
+                                uint32_t& height);
 
 }  // namespace penumbra
