@@ -113,7 +113,9 @@ int runEvalCommand(const EvalCliOptions& o, const vk::ContextOptions& vkOptions)
     RenderSettings base;
     base.width = o.reference.settings.width;
     base.height = o.reference.settings.height;
-    const std::vector<EvalVariant> variants = evalVariants(base);
+    bool sun = false;
+    for (const Light& l : f.scene.lights) sun |= l.type == LightType::Directional && l.castsShadow;
+    const std::vector<EvalVariant> variants = evalVariants(base, sun);
     const std::vector<EvalRow> rows =
         runEval(ctx, f.scene, f.camera, variants, truth, o.frames, [&](size_t i, size_t n, const std::string& name) {
             if (verbose) fmt::print(stderr, "\reval: {}/{} {:<60}", i + 1, n, name), std::fflush(stderr);

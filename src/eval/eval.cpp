@@ -74,7 +74,7 @@ nlohmann::json metricsJson(const ImageMetrics& m) {
 
 }  // namespace
 
-std::vector<EvalVariant> evalVariants(const RenderSettings& base) {
+std::vector<EvalVariant> evalVariants(const RenderSettings& base, bool sun) {
     std::vector<EvalVariant> v;
     v.push_back(giVariant(base, GiMode::None, "none", "direct light only, hard shadows"));
     EvalVariant rsmFull = giVariant(base, GiMode::Rsm, "rsm full", "");
@@ -88,6 +88,12 @@ std::vector<EvalVariant> evalVariants(const RenderSettings& base) {
     rsmInterp.settings += fmt::format(", 1/{} res", rsmInterp.render.rsm.lowResFactor);
     rsmInterp.figure = true;
     v.push_back(rsmInterp);
+    if (sun) {  // a sun's RSM follows its shadow cascades (one per receiver); one map of the whole scene instead
+        EvalVariant one = rsmFull;
+        one.render.shadow.cascades.count = 1;
+        one.settings += ", 1 cascade";
+        v.push_back(one);
+    }
     // LPV: the default, a finer grid with more steps, and a coarse grid that carries light far.
     const std::pair<uint32_t, uint32_t> lpv[] = {{32, 8}, {64, 16}, {16, 32}};
     for (auto [res, steps] : lpv) {

@@ -22,8 +22,9 @@ struct EvalVariant {
 };
 
 // The GI modes (none, RSM full and interpolated, LPV at three settings) with hard shadows, then
-// every other shadow filter without GI. `base` provides the size and everything not varied.
-std::vector<EvalVariant> evalVariants(const RenderSettings& base);
+// every other shadow filter without GI. `base` provides the size and everything not varied. `sun`
+// (the scene has a shadowed directional light) adds RSM full with one shadow cascade.
+std::vector<EvalVariant> evalVariants(const RenderSettings& base, bool sun = false);
 
 // The reference's radiance: direct, indirect, final = direct + indirect; mask = pixels with geometry.
 // noise*: the reference's own relative L2 error, sqrt(sum var / sum B^2) over the mask from its
