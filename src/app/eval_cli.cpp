@@ -98,7 +98,7 @@ CLI::App* addEvalCommand(CLI::App& app, EvalCliOptions& o) {
         ->check(CLI::Range(1e-6, 1e6));
     cmd->add_option("--indirect-exposure", o.indirectExposure, "Figure: exposure of the indirect images (default 4)")
         ->check(CLI::Range(1e-6, 1e6));
-    cmd->add_option("--figure-width", o.figureCellWidth, "Figure: largest cell width, pixels (default 480)")
+    cmd->add_option("--figure-width", o.figureCellWidth, "Figure: largest cell width, pixels (default 320)")
         ->check(CLI::Range(16, 16384));
     return cmd;
 }

@@ -41,7 +41,7 @@ struct EvalCliOptions {
     std::string images;             // directory for the side-by-side figure
     int frames = 5;
     float indirectExposure = 4.0f;
-    uint32_t figureCellWidth = 480;  // the figure's cells are shrunk to at most this width
+    uint32_t figureCellWidth = 320;  // the figure's cells are shrunk to at most this width
     std::string command;            // recorded in the JSON
 };
 CLI::App* addEvalCommand(CLI::App& app, EvalCliOptions& options);

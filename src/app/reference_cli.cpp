@@ -103,7 +103,9 @@ int runCompareCommand(const CompareCliOptions& o) {
     if (o.json) {
         nlohmann::json j{{"a", o.a}, {"b", o.b}, {"pixels", m.pixels}, {"rmse", jsonNumber(m.rmse)},
                          {"rel_l1", jsonNumber(m.relL1)}, {"rel_l2", jsonNumber(m.relL2)},
-                         {"mean_bias", jsonNumber(m.meanBias)}, {"max_error", jsonNumber(m.maxError)},
+                         {"mean_bias", jsonNumber(m.meanBias)},
+                         {"relative_bias", jsonNumber(m.refMean > 0.0 ? m.meanBias / m.refMean : NAN)},
+                         {"max_error", jsonNumber(m.maxError)},
                          {"ssim", jsonNumber(m.ssim)}, {"ssim_range", jsonNumber(m.ssimRange)},
                          {"ssim_window", fmt::format("{0}x{0} Gaussian, sigma {1}", kSsimWindow, kSsimSigma)}};
         if (!o.mask.empty()) j["mask"] = o.mask;
@@ -112,9 +114,10 @@ int runCompareCommand(const CompareCliOptions& o) {
         return 0;
     }
     fmt::print("compared {} pixels{} of {}x{}\n", m.pixels, o.mask.empty() ? "" : " (mask)", a.width, a.height);
-    fmt::print("  rmse        {}\n  rel L1      {}\n  rel L2      {}\n  mean bias   {} (A - B)\n  max error   {}\n",
+    fmt::print("  rmse        {}\n  rel L1      {}\n  rel L2      {}\n  mean bias   {} (A - B; relative {})\n"
+               "  max error   {}\n",
                fmtMetric(m.rmse), fmtMetric(m.relL1), fmtMetric(m.relL2), fmtMetric(m.meanBias),
-               fmtMetric(m.maxError));
+               fmtMetric(m.refMean > 0.0 ? m.meanBias / m.refMean : NAN), fmtMetric(m.maxError));
     fmt::print("  SSIM        {} (luminance, {}x{} Gaussian window, sigma {}, L = {})\n", fmtMetric(m.ssim),
                kSsimWindow, kSsimWindow, kSsimSigma, fmtMetric(m.ssimRange));
     if (!o.heatMap.empty())

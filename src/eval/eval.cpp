@@ -91,7 +91,7 @@ std::vector<EvalVariant> evalVariants(const RenderSettings& base, bool sun) {
     if (sun) {  // a sun's RSM follows its shadow cascades (one per receiver); one map of the whole scene instead
         EvalVariant one = rsmFull;
         one.render.shadow.cascades.count = 1;
-        one.settings += ", 1 cascade";
+        one.settings += ", 1 sun cascade";
         v.push_back(one);
     }
     // LPV: the default, a finer grid with more steps, and a coarse grid that carries light far.
@@ -154,10 +154,10 @@ std::vector<EvalRow> runEval(vk::Context& ctx, const Scene& scene, const Camera&
 
 std::string formatEvalTable(const std::vector<EvalRow>& rows, bool gpu) {
     // Markdown: the README pastes it as it is.
-    constexpr const char* kRow = "| {:<18} | {:<40} | {:>8} | {:>9} | {:>9} | {:>10} | {:>9} | {:>11} |\n";
+    constexpr const char* kRow = "| {:<18} | {:<46} | {:>8} | {:>9} | {:>9} | {:>10} | {:>9} | {:>11} |\n";
     std::string out = fmt::format(kRow, "technique", "settings", "GPU ms", "direct L2", "total L2", "total SSIM",
                                   "indir. L2", "indir. bias");
-    out += fmt::format(kRow, std::string(18, '-'), std::string(40, '-'), "-------:", "--------:", "--------:",
+    out += fmt::format(kRow, std::string(18, '-'), std::string(46, '-'), "-------:", "--------:", "--------:",
                        "---------:", "--------:", "----------:");
     for (const EvalRow& r : rows)
         out += fmt::format(kRow, r.variant.technique, r.variant.settings, gpu ? fmtValue(r.frameMs) : "-",
