@@ -27,7 +27,8 @@ namespace {
 
 ImageF constant(uint32_t w, uint32_t h, const glm::vec3& c) {
     ImageF img{w, h, std::vector<float>(size_t(w) * h * 4, 1.0f)};
-    for (size_t i = 0; i < size_t(w) * h; ++i) img.rgba[i * 4] = c.x, img.rgba[i * 4 + 1] = c.y, img.rgba[i * 4 + 2] = c.z;
+    for (size_t i = 0; i < size_t(w) * h; ++i)
+        for (int k = 0; k < 3; ++k) img.rgba[i * 4 + k] = c[k];
     return img;
 }
 

@@ -97,7 +97,8 @@ TEST(Reference, SpotAndPointFalloffMatchClosedForm) {
                 const double window = std::pow(std::clamp(1.0 - std::pow(d / light.range, 4.0), 0.0, 1.0), 2.0);
                 double cone = 1.0;
                 if (light.type == LightType::Spot) {
-                    const double co = std::cos(double(light.outerConeAngle)), ci = std::cos(double(light.innerConeAngle));
+                    const double co = std::cos(double(light.outerConeAngle));
+                    const double ci = std::cos(double(light.innerConeAngle));
                     const double t = std::clamp((glm::dot(-v / d, dvec3(light.direction)) - co) / (ci - co), 0.0, 1.0);
                     cone = t * t;
                 }

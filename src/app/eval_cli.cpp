@@ -77,7 +77,8 @@ GroundTruth groundTruth(const EvalCliOptions& o, const PreparedFrame& f) {
 
 void checkWritable(const std::string& path, const std::string& option) {
     if (path.empty()) return;
-    if (!std::ofstream(path, std::ios::app)) throw std::invalid_argument(fmt::format("{} {}: cannot write", option, path));
+    if (!std::ofstream(path, std::ios::app))
+        throw std::invalid_argument(fmt::format("{} {}: cannot write", option, path));
 }
 
 }  // namespace

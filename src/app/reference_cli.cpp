@@ -121,7 +121,8 @@ int runCompareCommand(const CompareCliOptions& o) {
     fmt::print("  SSIM        {} (luminance, {}x{} Gaussian window, sigma {}, L = {})\n", fmtMetric(m.ssim),
                kSsimWindow, kSsimWindow, kSsimSigma, fmtMetric(m.ssimRange));
     if (!o.heatMap.empty())
-        fmt::print("heat map {}: |Y(A) - Y(B)|, black = 0 .. pale yellow = {} and above\n", o.heatMap, fmtMetric(scale));
+        fmt::print("heat map {}: |Y(A) - Y(B)|, black = 0 .. pale yellow = {} and above\n", o.heatMap,
+                   fmtMetric(scale));
     return 0;
 }
 

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <limits>
 #include <stdexcept>
@@ -159,7 +160,8 @@ ImageF readExrChecked(const std::string& path, const std::string& what) {
     char magic[4] = {};
     std::ifstream(path, std::ios::binary).read(magic, 4);
     // OpenEXR files start with 0x76 0x2f 0x31 0x01.
-    if (uint8_t(magic[0]) != 0x76 || uint8_t(magic[1]) != 0x2f || uint8_t(magic[2]) != 0x31 || uint8_t(magic[3]) != 0x01)
+    const uint8_t exr[4] = {0x76, 0x2f, 0x31, 0x01};
+    if (std::memcmp(magic, exr, 4) != 0)
         throw std::invalid_argument(fmt::format("{} {}: not an OpenEXR file", what, path));
     return readExr(path);
 }

@@ -9,7 +9,8 @@
 namespace penumbra {
 namespace {
 
-EvalVariant giVariant(const RenderSettings& base, GiMode gi, const std::string& technique, const std::string& settings) {
+EvalVariant giVariant(const RenderSettings& base, GiMode gi, const std::string& technique,
+                      const std::string& settings) {
     EvalVariant v{technique, settings, base, false};
     v.render.gi = gi;
     v.render.shadow.filter = ShadowFilter::Hard;

@@ -101,7 +101,12 @@ struct Accumulator {
     void finish(uint32_t n, glm::vec3& mean, glm::vec3& varianceOfMean) const {
         const glm::dvec3 m = sum / double(n);
         mean = glm::vec3(m);
-        varianceOfMean = n > 1 ? glm::vec3(glm::max(sumSq / double(n) - m * m, 0.0) / double(n - 1)) : glm::vec3(0.0f);
+        if (n < 2) {
+            varianceOfMean = glm::vec3(0.0f);
+            return;
+        }
+        const glm::dvec3 variance = glm::max(sumSq / double(n) - m * m, 0.0) * (double(n) / double(n - 1));
+        varianceOfMean = glm::vec3(variance / double(n));
     }
 };
 
@@ -127,8 +132,9 @@ void renderPixel(const Tracer& tracer, const PinholeCamera& cam, const Reference
         }
         out.covered[index] = 1;
         // The texture footprint of the pixel, as the rasterizer's derivatives see it.
-        const reference::PixelFootprint footprint{cam.eye, cam.direction(float(x) + jx + 1.0f, float(y) + jy, s.width, s.height),
-                                                  cam.direction(float(x) + jx, float(y) + jy + 1.0f, s.width, s.height)};
+        const float px = float(x) + jx, py = float(y) + jy;
+        const reference::PixelFootprint footprint{cam.eye, cam.direction(px + 1.0f, py, s.width, s.height),
+                                                  cam.direction(px, py + 1.0f, s.width, s.height)};
         const SurfacePoint sp = tracer.rays.surface(*hit, dir, &footprint);
         const glm::vec3 d = tracer.direct(sp, count);
         for (uint32_t k = 0; k < paths; ++k) {
@@ -175,9 +181,9 @@ double ReferenceImage::relativeNoise(ReferenceAov aov) const {
     double var = 0.0, sq = 0.0;
     for (size_t i = 0; i < covered.size(); ++i) {
         if (!covered[i]) continue;
-        const bool d = aov != ReferenceAov::Indirect, in = aov != ReferenceAov::Direct;
-        const glm::dvec3 v = glm::dvec3(d ? directVar[i] : glm::vec3(0.0f)) + glm::dvec3(in ? indirectVar[i] : glm::vec3(0.0f));
-        const glm::dvec3 m = glm::dvec3(d ? direct[i] : glm::vec3(0.0f)) + glm::dvec3(in ? indirect[i] : glm::vec3(0.0f));
+        const double d = aov != ReferenceAov::Indirect ? 1.0 : 0.0, in = aov != ReferenceAov::Direct ? 1.0 : 0.0;
+        const glm::dvec3 v = d * glm::dvec3(directVar[i]) + in * glm::dvec3(indirectVar[i]);
+        const glm::dvec3 m = d * glm::dvec3(direct[i]) + in * glm::dvec3(indirect[i]);
         var += v.x + v.y + v.z, sq += glm::dot(m, m);
     }
     return sq > 0.0 ? std::sqrt(var / sq) : 0.0;
@@ -236,7 +242,8 @@ ReferenceImage renderReference(const Scene& scene, const Camera& camera, const R
         for (uint32_t t; (t = nextTile.fetch_add(1)) < tiles; doneTiles.fetch_add(1)) {
             const uint32_t x0 = (t % tilesX) * kTile, y0 = (t / tilesX) * kTile;
             for (uint32_t y = y0; y < std::min(y0 + kTile, s.height); ++y)
-                for (uint32_t x = x0; x < std::min(x0 + kTile, s.width); ++x) renderPixel(tracer, cam, s, x, y, out, count);
+                for (uint32_t x = x0; x < std::min(x0 + kTile, s.width); ++x)
+                    renderPixel(tracer, cam, s, x, y, out, count);
         }
         rayTotal += count;
     };

@@ -69,8 +69,8 @@ uint32_t textureLayerSize(const std::vector<Texture>& textures) {
 }
 
 MipChain::MipChain(const Texture& original, uint32_t squareSize) : original_(&original) {
-    if (original.width == 0 || original.height == 0 || original.rgba8.size() < size_t(original.width) * original.height * 4)
-        return;
+    const size_t texels = size_t(original.width) * original.height;
+    if (texels == 0 || original.rgba8.size() < texels * 4) return;
     if (squareSize > 0) resampled_ = resample(original, squareSize, squareSize);
     const Texture& base = level(0);
     uint32_t w = base.width, h = base.height;
