@@ -289,6 +289,7 @@ TEST_F(RsmTest, CascadedSunCountsEachSurfaceOnce) {
         s.rsm.resolution = 64;
         s.rsm.mode = RsmMode::AllTexels;
         s.shadow.cascades.count = i == 0 ? 1 : 4;
+        s.rsm.perCascade = true;  // exercise the per-receiver cascade choice
         Renderer r(ctx(), scene, s);
         r.render(scene.cameras[0]);
         std::vector<float> img = r.readHdr();

@@ -45,6 +45,8 @@ void addGiOptions(CLI::App& cmd, RenderSettings& rs) {
         ->transform(CLI::CheckedTransformer(weights));
     cmd.add_option("--rsm-lowres", rs.rsm.lowResFactor, "Low-resolution gather factor (default 4)")
         ->check(CLI::Range(1, 32));
+    cmd.add_flag("--rsm-per-cascade", rs.rsm.perCascade,
+                 "A sun's RSM per cascade (the seed's way) instead of from its widest cascade only");
     addLpvOptions(cmd, rs.lpv);
 }
 

@@ -19,9 +19,10 @@ gpu::GpuLight toGpu(const Light& l) {
 }
 
 // RSM layers from the shadow layers: the RSM is the shadow pass's light view with more targets.
-// The RSM gather takes every cascade (it picks one per receiver, as the seed does); LPV injection
-// takes only each light's last, widest cascade, since cascades see the same surfaces and would inject
-// the same light several times. Paraboloid layers have no matrix projection to rasterize with.
+// LPV injection and, by default, the RSM gather take only each sun's last, widest cascade: cascades
+// see the same surfaces, and a fine one lacks the distant VPLs (RsmSettings::perCascade); with
+// perCascade the gather takes every cascade and picks one per receiver, as the seed does.
+// Paraboloid layers have no matrix projection to rasterize with.
 std::vector<RsmLayerSource> rsmLayersOf(const ShadowMapPass& shadow, bool widestCascadeOnly) {
     std::vector<RsmLayerSource> layers;
     const uint32_t res = shadow.settings().resolution;
@@ -100,7 +101,7 @@ void Renderer::setupGi() {
     }
     rsm_ = std::make_unique<RsmPass>(alloc_, *sceneGpu_, rsmSettings);
     // The layers' projections are set every frame (cascades follow the camera): see updateBuffers.
-    const std::vector<RsmLayerSource> layers = rsmLayersOf(*shadow_, lpv_ != nullptr);
+    const std::vector<RsmLayerSource> layers = rsmLayersOf(*shadow_, lpv_ != nullptr || !settings_.rsm.perCascade);
     if (layers.empty()) warnings_.push_back("GI: no directional or spot light casts shadows; no indirect light");
     rsm_->setLayers(layers);
 }
@@ -146,7 +147,7 @@ void Renderer::updateBuffers(const Camera& camera) {
     const float aspect = float(settings_.width) / float(settings_.height);
     zfar_ = sceneFar(camera, scene_.bounds);
     shadow_->update(camera, aspect, zfar_);
-    if (rsm_) rsm_->setLayers(rsmLayersOf(*shadow_, lpv_ != nullptr));
+    if (rsm_) rsm_->setLayers(rsmLayersOf(*shadow_, lpv_ != nullptr || !settings_.rsm.perCascade));
     gpu::FrameUniforms f{};
     f.viewProj = cameraViewProj(camera, aspect, zfar_);
     f.invViewProj = glm::inverse(f.viewProj);
