@@ -58,16 +58,6 @@ Texture resample(const Texture& src, uint32_t w, uint32_t h) {
 
 }  // namespace
 
-uint32_t textureLayerSize(const std::vector<Texture>& textures) {
-    uint32_t largest = 1;
-    for (const Texture& t : textures) largest = std::max({largest, t.width, t.height});
-    uint32_t size = 1;
-    while (size < largest && size < 2048) size *= 2;
-    const uint64_t budget = uint64_t(256) << 20;
-    while (size > 64 && uint64_t(size) * size * 4 * textures.size() * 4 / 3 > budget) size /= 2;
-    return size;
-}
-
 MipChain::MipChain(const Texture& original, uint32_t squareSize) : original_(&original) {
     const size_t texels = size_t(original.width) * original.height;
     if (texels == 0 || original.rgba8.size() < texels * 4) return;

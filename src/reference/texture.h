@@ -43,8 +43,4 @@ private:
     }
 };
 
-// The side of the renderer's square texture-array layers for these textures: the largest texture's
-// side rounded up to a power of two, at most 2048, halved while the array would exceed 256 MiB.
-uint32_t textureLayerSize(const std::vector<Texture>& textures);
-
 }  // namespace penumbra::reference

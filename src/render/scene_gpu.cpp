@@ -7,18 +7,6 @@
 namespace penumbra {
 namespace {
 
-// Side of the square texture-array layers: the largest texture's, as a power of two, capped so
-// that the array stays within a memory budget.
-uint32_t layerSize(const std::vector<Texture>& textures) {
-    uint32_t largest = 1;
-    for (const Texture& t : textures) largest = std::max({largest, t.width, t.height});
-    uint32_t size = 1;
-    while (size < largest && size < 2048) size *= 2;
-    const uint64_t budget = uint64_t(256) << 20;
-    while (size > 64 && uint64_t(size) * size * 4 * textures.size() * 4 / 3 > budget) size /= 2;
-    return size;
-}
-
 uint32_t mipCount(uint32_t size) {
     uint32_t n = 1;
     while (size > 1) size /= 2, ++n;
@@ -78,7 +66,7 @@ vk::DescriptorWrites SceneGpu::drawSetWrites(const vk::Buffer& views) const {
 void SceneGpu::uploadTextures(vk::CommandContext& cmd) {
     // Every texture is resampled (in linear light) to a square layer with a full CPU-built mip chain.
     const std::vector<Texture>& src = scene_.textures;
-    const uint32_t size = src.empty() ? 1 : layerSize(src);
+    const uint32_t size = src.empty() ? 1 : textureLayerSize(src);
     const uint32_t levels = mipCount(size);
     const uint32_t layers = std::max<uint32_t>(1, uint32_t(src.size()));
     textures_ = vk::Image(cmd.allocator(), {VK_FORMAT_R8G8B8A8_SRGB, size, size, layers,
