@@ -4,6 +4,7 @@
 #pragma once
 #include <cmath>
 #include <cstdint>
+#include <cstring>
 #include <memory>
 #include <optional>
 #include <string>
@@ -78,6 +79,24 @@ protected:
 private:
     std::unique_ptr<vk::Context> ctx_;
 };
+
+// World positions of the last frame's G-buffer pixels, reconstructed in double precision from the
+// read-back depth (nullopt where no surface was drawn). Row-major, top row first.
+inline std::vector<std::optional<glm::dvec3>> gbufferWorldPositions(Renderer& r) {
+    const uint32_t w = r.settings().width, h = r.settings().height;
+    const std::vector<uint8_t> depth = r.commands().readImage(r.gbuffer().depth, 4);
+    const glm::dmat4 inv(r.frameUniforms().invViewProj);
+    std::vector<std::optional<glm::dvec3>> out(size_t(w) * h);
+    for (size_t i = 0; i < out.size(); ++i) {
+        float d;
+        std::memcpy(&d, depth.data() + i * 4, 4);
+        if (d >= 1.0f) continue;
+        const glm::dvec4 p = inv * glm::dvec4((double(i % w) + 0.5) / w * 2.0 - 1.0,
+                                              (double(i / w) + 0.5) / h * 2.0 - 1.0, d, 1.0);
+        out[i] = glm::dvec3(p) / p.w;
+    }
+    return out;
+}
 
 // ---- Analytic helpers (double precision, independent of the renderer's matrices) ----
 

@@ -242,17 +242,13 @@ TEST_F(GpuTest, LpvCornellBleedsWallColoursAndLightsTheCeiling) {
     Renderer r(ctx(), scene, s);
     r.render(scene.cameras[0]);
     FloatImage img{s.width, s.height, r.readHdr()};
-    auto depth = r.commands().readImage(r.gbuffer().depth, 4);
-    const glm::dmat4 inv(r.frameUniforms().invViewProj);
+    const auto world = gbufferWorldPositions(r);
     dvec3 nearRed(0.0), nearGreen(0.0), ceiling(0.0);
     size_t ceilingPixels = 0;
     for (uint32_t y = 0; y < s.height; ++y)
         for (uint32_t x = 0; x < s.width; ++x) {
-            float d;
-            std::memcpy(&d, depth.data() + (size_t(y) * s.width + x) * 4, 4);
-            if (d >= 1.0f) continue;
-            glm::dvec4 p = inv * glm::dvec4((x + 0.5) / s.width * 2 - 1, (y + 0.5) / s.height * 2 - 1, d, 1.0);
-            const dvec3 w = dvec3(p) / p.w;
+            if (!world[size_t(y) * s.width + x]) continue;
+            const dvec3 w = *world[size_t(y) * s.width + x];
             const dvec3 c(img.at(x, y, 0), img.at(x, y, 1), img.at(x, y, 2));
             if (w.y < 0.01 && w.x < -0.7) nearRed += c;
             if (w.y < 0.01 && w.x > 0.7) nearGreen += c;

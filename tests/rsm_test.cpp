@@ -55,8 +55,7 @@ Frame readFrame(Renderer& r) {
     Frame f{r.settings().width, r.settings().height, {}, {}, {}, {}};
     vk::CommandContext& cmd = r.commands();
     const gpu::FrameUniforms& fu = r.frameUniforms();
-    const glm::dmat4 invCam(fu.invViewProj);
-    auto depth = cmd.readImage(r.gbuffer().depth, 4);
+    const auto world = gbufferWorldPositions(r);
     auto normal = cmd.readImage(r.gbuffer().normal, 8);
     auto irr = cmd.readImage(r.rsmGather()->irradiance(), 16);
     const size_t n = size_t(f.width) * f.height;
@@ -64,11 +63,9 @@ Frame readFrame(Renderer& r) {
     f.normal.resize(n);
     f.gpuIrradiance.resize(n);
     for (size_t i = 0; i < n; ++i) {
-        const double d = f32(depth, i);
         f.gpuIrradiance[i] = {f32(irr, i * 4), f32(irr, i * 4 + 1), f32(irr, i * 4 + 2)};
-        if (d >= 1.0) continue;
-        const double u = (double(i % f.width) + 0.5) / f.width, v = (double(i / f.width) + 0.5) / f.height;
-        f.position[i] = unproject(invCam, u, v, d);
+        if (!world[i]) continue;
+        f.position[i] = *world[i];
         dvec3 nn = glm::normalize(dvec3(half(normal, i * 4), half(normal, i * 4 + 1), half(normal, i * 4 + 2)));
         if (glm::dot(nn, dvec3(fu.cameraPos) - f.position[i]) < 0.0) nn = -nn;
         f.normal[i] = nn;

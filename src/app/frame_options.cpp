@@ -65,13 +65,6 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o, RenderSettings& rs) {
     addGiOptions(cmd, rs);
     cmd.add_option("--exposure", rs.exposure, "Linear exposure multiplier before tone mapping")
         ->check(CLI::Range(1e-6, 1e6));
-    cmd.add_option("--shadow-res", rs.shadow.resolution, "Shadow map resolution")->check(CLI::Range(16, 16384));
-    cmd.add_option("--shadow-bias-constant", rs.shadow.depthBiasConstant, "Rasterizer constant depth bias")
-        ->check(CLI::Range(0.0, 1e6));
-    cmd.add_option("--shadow-bias-slope", rs.shadow.depthBiasSlope, "Rasterizer slope-scaled depth bias")
-        ->check(CLI::Range(0.0, 100.0));
-    cmd.add_option("--shadow-normal-offset", rs.shadow.normalOffset, "Receiver normal offset in shadow texels")
-        ->check(CLI::Range(0.0, 100.0));
     addShadowOptions(cmd, rs.shadow, o.lightFilters, rs.dsm.enabled);
     addDsmOptions(cmd, rs.dsm, o.builtin);
 }

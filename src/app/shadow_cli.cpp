@@ -31,6 +31,13 @@ void parseShadowOption(const std::string& value, ShadowFilter& filter, bool& dee
 void addShadowOptions(CLI::App& cmd, ShadowSettings& s, std::vector<std::string>& lightFilters, bool& deepShadows) {
     const std::map<std::string, PointShadowMode> pointModes{{"cube", PointShadowMode::Cube},
                                                            {"paraboloid", PointShadowMode::Paraboloid}};
+    cmd.add_option("--shadow-res", s.resolution, "Shadow map resolution")->check(CLI::Range(16, 16384));
+    cmd.add_option("--shadow-bias-constant", s.depthBiasConstant, "Rasterizer constant depth bias")
+        ->check(CLI::Range(0.0, 1e6));
+    cmd.add_option("--shadow-bias-slope", s.depthBiasSlope, "Rasterizer slope-scaled depth bias")
+        ->check(CLI::Range(0.0, 100.0));
+    cmd.add_option("--shadow-normal-offset", s.normalOffset, "Receiver normal offset in shadow texels")
+        ->check(CLI::Range(0.0, 100.0));
     cmd.add_option_function<std::string>(
         "--shadow", [&s, &deepShadows](const std::string& v) { parseShadowOption(v, s.filter, deepShadows); },
         "Shadow filter of every light: hard (default), pcf, pcss, vsm, evsm, msm; dsm (alone or e.g. pcf,dsm) adds "

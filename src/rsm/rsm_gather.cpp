@@ -60,6 +60,15 @@ RsmGather::RsmGather(vk::Allocator& alloc, vk::CommandContext& cmd, uint32_t wid
                                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "rsm-samples");
 }
 
+// Push constants shared by the gather and interpolation passes; sizes are the low-resolution grid's
+// for RSM_GATHER_LOWRES (which the interpolation reads), the full image's otherwise.
+gpu::RsmPush RsmGather::constants(uint32_t mode, uint32_t layers) const {
+    const bool low = mode == RSM_GATHER_LOWRES;
+    return {{mode, settings_.samples, layers, std::max(1u, settings_.lowResFactor)},
+            {low ? lowWidth_ : width_, low ? lowHeight_ : height_, settings_.resolution, 0},
+            {settings_.normalThreshold, settings_.distanceThreshold, settings_.radius, 0}};
+}
+
 PassDesc RsmGather::gatherPass(const char* name, uint32_t mode, vk::Image& out, const vk::Buffer& frame,
                                GBufferPass& g, RsmPass& rsm) {
     PassDesc pass;
@@ -71,10 +80,7 @@ PassDesc RsmGather::gatherPass(const char* name, uint32_t mode, vk::Image& out, 
         pass.buffers.push_back({&pixelList_, Use::StorageRead});
         pass.buffers.push_back({&dispatchArgs_, Use::IndirectArgs});
     }
-    const bool low = mode == RSM_GATHER_LOWRES;
-    gpu::RsmPush pc{{mode, settings_.samples, rsm.layerCount(), std::max(1u, settings_.lowResFactor)},
-                    {low ? lowWidth_ : width_, low ? lowHeight_ : height_, settings_.resolution, 0},
-                    {settings_.normalThreshold, settings_.distanceThreshold, settings_.radius, 0}};
+    const gpu::RsmPush pc = constants(mode, rsm.layerCount());
     pass.record = [this, mode, pc, &out, &frame, &g, &rsm](VkCommandBuffer cmd) {
         gather_.pipeline.bind(cmd);
         const VkImageLayout depthRead = VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL;
@@ -113,9 +119,7 @@ void RsmGather::addTo(FrameGraph& graph, const vk::Buffer& frame, GBufferPass& g
     interp.images = {{&g.normal, Use::Sampled}, {&g.depth, Use::Sampled}, {&low_, Use::Sampled},
                      {&irradiance_, Use::StorageWrite}};
     interp.buffers = {{&frame, Use::Uniform}, {&pixelList_, Use::StorageWrite}};
-    gpu::RsmPush pc{{RSM_GATHER_LOWRES, settings_.samples, rsm.layerCount(), std::max(1u, settings_.lowResFactor)},
-                    {lowWidth_, lowHeight_, settings_.resolution, 0},
-                    {settings_.normalThreshold, settings_.distanceThreshold, settings_.radius, 0}};
+    const gpu::RsmPush pc = constants(RSM_GATHER_LOWRES, rsm.layerCount());  // sizes = the low-res grid
     interp.record = [this, pc, &frame, &g](VkCommandBuffer cmd) {
         interpolate_.pipeline.bind(cmd);
         vk::DescriptorWrites()

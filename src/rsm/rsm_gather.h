@@ -24,6 +24,7 @@ public:
     double fallbackFraction();
 
 private:
+    gpu::RsmPush constants(uint32_t mode, uint32_t layers) const;
     PassDesc gatherPass(const char* name, uint32_t mode, vk::Image& out, const vk::Buffer& frame, GBufferPass& g,
                         RsmPass& rsm);
     vk::Allocator& alloc_;
