@@ -6,6 +6,7 @@ PKGS=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslc
   libglm-dev libtinygltf-dev nlohmann-json3-dev libstb-dev libtinyexr-dev libcli11-dev libfmt-dev
   libgtest-dev libembree-dev
+  libglfw3-dev libimgui-dev xvfb xauth ccache
 )
 missing=()
 for p in "${PKGS[@]}"; do
