@@ -83,7 +83,7 @@ protected:
         LightPropagationVolume lpv(alloc, 8, 8, s, unitCube());
         lpv.update(glm::vec3(0.0f));
         lpv.setVpls(cmd, vpls);
-        FrameGraph graph;
+        FrameGraph graph(ctx());
         lpv.addPropagationFromVpls(graph);
         cmd.submitAndWait([&](VkCommandBuffer c) { graph.execute(c, nullptr); });
         VolumeRun r;

@@ -37,13 +37,10 @@ void DeepShadowBuildPass::recordLayer(VkCommandBuffer cmd, uint32_t layer) const
     beginRaster(cmd, target);
     gpu::HairDrawPush push{{layer, 0, layer, uint32_t(res_.capacity)}, l.view.viewer, l.view.footprint};
     push.footprint.z = float(res_.resolution);
+    // Both pipelines share one set layout: the set the pass pushed stays bound across them.
     for (const vk::Pipeline* p : {&hairPipeline_, &meshPipeline_}) {
         if (!p->handle()) continue;
         p->bind(cmd);
-        vk::DescriptorWrites w = scene_.drawSetWrites(res_.views);
-        if (hair_) hair_->write(w);
-        w.storageBuffer(5, res_.heads).storageBuffer(6, res_.nodes).storageBuffer(7, res_.stats);
-        w.push(alloc_.context(), cmd, *p);
         if (p == &hairPipeline_) {
             hair_->draw(cmd, *p, push);
             continue;
@@ -60,28 +57,27 @@ void DeepShadowBuildPass::recordLayer(VkCommandBuffer cmd, uint32_t layer) const
 }
 
 void DeepShadowBuildPass::addTo(FrameGraph& graph) {
-    PassDesc clear{"dsm.clear", PassKind::Transfer, {}, {}, {}};
-    clear.buffers = {{&res_.heads, Use::TransferDst}, {&res_.stats, Use::TransferDst}};
-    clear.bytes = res_.heads.size();  // a fill: bound by memory bandwidth
-    clear.record = [this](VkCommandBuffer cmd) {
-        vkCmdFillBuffer(cmd, res_.heads.handle(), 0, VK_WHOLE_SIZE, DSM_NONE);
-        vkCmdFillBuffer(cmd, res_.stats.handle(), 0, VK_WHOLE_SIZE, 0);
-    };
-    graph.add(std::move(clear));
+    const BufferHandle heads = graph.import(res_.heads), nodes = graph.import(res_.nodes),
+                       stats = graph.import(res_.stats);
+    graph.pass("dsm.clear", PassKind::Transfer)
+        .use(heads, Use::TransferDst)
+        .use(stats, Use::TransferDst)
+        .bytes(res_.heads.size())  // a fill: bound by memory bandwidth
+        .record([heads, stats](PassContext& c) {
+            vkCmdFillBuffer(c.cmd, c.buffer(heads).handle(), 0, VK_WHOLE_SIZE, DSM_NONE);
+            vkCmdFillBuffer(c.cmd, c.buffer(stats).handle(), 0, VK_WHOLE_SIZE, 0);
+        });
 
-    PassDesc build{"dsm.build", PassKind::Raster, {}, {}, {}};
-    build.images = {{&scene_.textures(), Use::Sampled}};
-    build.buffers = {{&res_.views, Use::StorageRead}, {&scene_.materials(), Use::StorageRead},
-                     {&res_.heads, Use::StorageWrite}, {&res_.nodes, Use::StorageWrite},
-                     {&res_.stats, Use::StorageWrite}};
-    if (hair_) {
-        build.buffers.push_back({&hair_->points(), Use::StorageRead});
-        build.buffers.push_back({&hair_->strands(), Use::StorageRead});
-    }
-    build.record = [this](VkCommandBuffer cmd) {
-        for (uint32_t layer = 0; layer < res_.layerCount(); ++layer) recordLayer(cmd, layer);
-    };
-    graph.add(std::move(build));
+    PassBuilder build = graph.pass("dsm.build", PassKind::Raster);
+    build.pipeline(setLayoutPipeline());
+    scene_.declareDrawSet(build, graph.import(res_.views));
+    if (hair_) hair_->declare(build);
+    build.storageBuffer(5, heads, Use::StorageWrite)
+        .storageBuffer(6, nodes, Use::StorageWrite)
+        .storageBuffer(7, stats, Use::StorageWrite)
+        .record([this](PassContext& c) {
+            for (uint32_t layer = 0; layer < res_.layerCount(); ++layer) recordLayer(c.cmd, layer);
+        });
 }
 
 }  // namespace penumbra

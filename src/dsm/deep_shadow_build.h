@@ -16,6 +16,7 @@ public:
 
 private:
     void recordLayer(VkCommandBuffer cmd, uint32_t layer) const;
+    const vk::Pipeline& setLayoutPipeline() const { return hair_ ? hairPipeline_ : meshPipeline_; }
     vk::Allocator& alloc_;
     SceneGpu& scene_;
     const HairGpu* hair_;

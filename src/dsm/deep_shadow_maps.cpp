@@ -8,16 +8,16 @@
 namespace penumbra {
 namespace {
 
-std::vector<DsmLayer> chooseLayers(const Scene& scene, const DsmSettings& s, uint32_t res,
-                                   std::vector<std::string>& warnings) {
+std::vector<DsmLayer> chooseLayers(const std::vector<Light>& lights, const Bounds& bounds, const DsmSettings& s,
+                                   uint32_t res, std::vector<std::string>& warnings) {
     for (uint32_t i : s.lights)
-        if (i >= scene.lights.size())
+        if (i >= lights.size())
             throw vk::VulkanError(fmt::format("--dsm-lights: light {} does not exist (the scene has {})", i,
-                                              scene.lights.size()));
+                                              lights.size()));
     std::vector<DsmLayer> layers;
     if (!s.enabled) return layers;
-    for (uint32_t i = 0; i < scene.lights.size(); ++i) {
-        const Light& l = scene.lights[i];
+    for (uint32_t i = 0; i < lights.size(); ++i) {
+        const Light& l = lights[i];
         const bool listed = std::find(s.lights.begin(), s.lights.end(), i) != s.lights.end();
         if (!(s.lights.empty() ? l.castsShadow : listed)) continue;
         if (l.type == LightType::Point) {
@@ -27,8 +27,8 @@ std::vector<DsmLayer> chooseLayers(const Scene& scene, const DsmSettings& s, uin
             continue;
         }
         const LightProjection p = l.type == LightType::Directional
-                                      ? directionalProjection(l.direction, scene.bounds, res)
-                                      : spotProjection(l, scene.bounds, res);
+                                      ? directionalProjection(l.direction, bounds, res)
+                                      : spotProjection(l, bounds, res);
         layers.push_back({i, p, lightRibbonView(l, p)});
     }
     return layers;
@@ -45,15 +45,16 @@ double mib(uint64_t bytes) { return double(bytes) / (1024.0 * 1024.0); }
 }  // namespace
 
 DeepShadowMaps::DeepShadowMaps(vk::Allocator& alloc, SceneGpu& scene, const HairGpu* hair, const DsmSettings& settings,
-                               uint32_t shadowResolution, std::vector<std::string>& warnings)
+                               uint32_t shadowResolution, const std::vector<Light>& lights,
+                               std::vector<std::string>& warnings)
     : settings_(settings) {
     if (settings.maxList < 1 || settings.maxList > DSM_MAX_LIST_CAP)
         throw vk::VulkanError(fmt::format("--dsm-max-list {}: must be in 1..{}", settings.maxList, DSM_MAX_LIST_CAP));
     const uint32_t res = settings.resolution ? settings.resolution : shadowResolution;
-    std::vector<DsmLayer> layers = chooseLayers(scene.scene(), settings, res, warnings);
+    std::vector<DsmLayer> layers = chooseLayers(lights, scene.scene().bounds, settings, res, warnings);
     if (settings.enabled && layers.empty())
         warnings.push_back("--shadow dsm: no directional or spot light casts shadows; no deep shadow map");
-    res_ = std::make_unique<DsmResources>(alloc, settings, res, std::move(layers), scene.scene().lights.size());
+    res_ = std::make_unique<DsmResources>(alloc, settings, res, std::move(layers), lights.size());
     if (!active()) return;
     build_ = std::make_unique<DeepShadowBuildPass>(alloc, scene, hair, *res_);
     resolve_ = std::make_unique<DeepShadowResolvePass>(alloc, *res_);
@@ -64,19 +65,13 @@ bool DeepShadowMaps::covers(uint32_t light) const {
 }
 
 void DeepShadowMaps::addTo(FrameGraph& graph) {
+    graph.publish("dsm.lights", graph.import(res_->lightTable));
+    graph.publish("dsm.heads", graph.import(res_->heads));
+    graph.publish("dsm.nodes", graph.import(res_->nodes));
+    graph.publish("dsm.links", graph.import(res_->upLinks));
     if (!active()) return;
     build_->addTo(graph);
     resolve_->addTo(graph);
-}
-
-void DeepShadowMaps::addLookupInputs(PassDesc& pass) const {
-    for (const vk::Buffer* b : {&res_->lightTable, &res_->heads, &res_->nodes, &res_->upLinks})
-        pass.buffers.push_back({b, Use::StorageRead});
-}
-
-void DeepShadowMaps::writeLookup(vk::DescriptorWrites& w) const {
-    w.storageBuffer(8, res_->lightTable).storageBuffer(9, res_->heads).storageBuffer(10, res_->nodes)
-        .storageBuffer(11, res_->upLinks);
 }
 
 DsmFrameStats DeepShadowMaps::readStats(vk::CommandContext& cmd) const {

@@ -32,16 +32,14 @@ public:
     // Gives a DSM to the lights `settings` selects (directional and spot; point lights get a warning).
     // Throws on bad settings (light index, pool size beyond the device).
     DeepShadowMaps(vk::Allocator& alloc, SceneGpu& scene, const HairGpu* hair, const DsmSettings& settings,
-                   uint32_t shadowResolution, std::vector<std::string>& warnings);
+                   uint32_t shadowResolution, const std::vector<Light>& lights, std::vector<std::string>& warnings);
 
     bool active() const { return !res_->layers.empty(); }
     // Whether light `light` has a DSM: its translucent casters then stay out of its ordinary map.
     bool covers(uint32_t light) const;
+    // The build and resolve passes (when active), and the lookup's inputs by name (placeholders when
+    // inactive): "dsm.lights", "dsm.heads", "dsm.nodes", "dsm.links".
     void addTo(FrameGraph& graph);
-
-    // The lookup's inputs (bindings 8-11 of render/lighting.comp); valid placeholders when inactive.
-    void addLookupInputs(PassDesc& pass) const;
-    void writeLookup(vk::DescriptorWrites& writes) const;
 
     DsmFrameStats readStats(vk::CommandContext& cmd) const;
     const DsmResources& resources() const { return *res_; }

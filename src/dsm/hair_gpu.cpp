@@ -64,7 +64,9 @@ std::vector<vk::Binding> HairGpu::bindings() {
     return {{3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, {4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
 }
 
-void HairGpu::write(vk::DescriptorWrites& writes) const { writes.storageBuffer(3, points_).storageBuffer(4, strands_); }
+void HairGpu::declare(PassBuilder& pass) const {
+    pass.storageBuffer(3, pass.graph().import(points_)).storageBuffer(4, pass.graph().import(strands_));
+}
 
 vk::GraphicsDesc HairGpu::pipelineDesc(const std::string& fragmentShader) {
     vk::GraphicsDesc d;

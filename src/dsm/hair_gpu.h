@@ -28,7 +28,7 @@ public:
 
     // Bindings 3 (points) and 4 (strand colour and opacity) of the hair pipelines' set 0.
     static std::vector<vk::Binding> bindings();
-    void write(vk::DescriptorWrites& writes) const;
+    void declare(PassBuilder& pass) const;
     // A ribbon pipeline: dsm/hair.vert, no vertex input, triangle strip, no culling.
     static vk::GraphicsDesc pipelineDesc(const std::string& fragmentShader);
     // Every ribbon of the scene in one draw; `push` says which view.

@@ -12,12 +12,9 @@ vk::DescriptorLayout ribbonLayout(vk::Context& ctx) {
     return vk::DescriptorLayout(ctx, b);
 }
 
-void pushRibbonSet(vk::Context& ctx, VkCommandBuffer cmd, const vk::Pipeline& p, const vk::Buffer& views,
-                   const HairGpu& hair) {
-    vk::DescriptorWrites w;
-    w.storageBuffer(0, views);
-    hair.write(w);
-    w.push(ctx, cmd, p);
+void declareRibbonSet(PassBuilder& pass, const HairGpu& hair) {
+    pass.storageBuffer(0, pass.graph().buffer("views"));
+    hair.declare(pass);
 }
 
 gpu::HairDrawPush ribbonPush(uint32_t viewRow, const RibbonView& v) {
@@ -34,24 +31,20 @@ HairGBufferPass::HairGBufferPass(vk::Allocator& alloc, const HairGpu& hair, cons
     pipeline_ = vk::Pipeline::graphics(alloc.context(), d, {layout_.handle()}, sizeof(gpu::HairDrawPush));
 }
 
-void HairGBufferPass::addTo(FrameGraph& graph, GBufferPass& g, const vk::Buffer& views, const RibbonView& camera) {
-    PassDesc pass;
-    pass.name = "hair.gbuffer";
-    pass.kind = PassKind::Raster;
-    pass.images = {{&g.albedo, Use::ColorAttachment}, {&g.normal, Use::ColorAttachment},
-                   {&g.depth, Use::DepthAttachment}};
-    pass.buffers = {{&views, Use::StorageRead}, {&hair_.points(), Use::StorageRead},
-                    {&hair_.strands(), Use::StorageRead}};
-    pass.record = [this, &g, &views, camera](VkCommandBuffer cmd) {
-        RasterTarget target{g.albedo.extent(), {{g.albedo.view(), {}}, {g.normal.view(), {}}}, g.depth.view()};
+void HairGBufferPass::addTo(FrameGraph& graph, const RibbonView& camera) {
+    const ImageHandle a = graph.image("gbuffer.albedo"), n = graph.image("gbuffer.normal"),
+                      d = graph.image("gbuffer.depth");
+    PassBuilder pass = graph.pass("hair.gbuffer", PassKind::Raster);
+    pass.pipeline(pipeline_).use(a, Use::ColorAttachment).use(n, Use::ColorAttachment).use(d, Use::DepthAttachment);
+    declareRibbonSet(pass, hair_);
+    pass.record([this, a, n, d, camera](PassContext& c) {
+        RasterTarget target{c.image(a).extent(), {{c.image(a).view(), {}}, {c.image(n).view(), {}}},
+                            c.image(d).view()};
         target.load = true;
-        beginRaster(cmd, target);
-        pipeline_.bind(cmd);
-        pushRibbonSet(alloc_.context(), cmd, pipeline_, views, hair_);
-        hair_.draw(cmd, pipeline_, ribbonPush(0, camera));
-        vkCmdEndRendering(cmd);
-    };
-    graph.add(std::move(pass));
+        beginRaster(c.cmd, target);
+        hair_.draw(c.cmd, pipeline_, ribbonPush(0, camera));
+        vkCmdEndRendering(c.cmd);
+    });
 }
 
 HairShadowPass::HairShadowPass(vk::Allocator& alloc, const HairGpu& hair, float depthBiasConstant,
@@ -64,28 +57,23 @@ HairShadowPass::HairShadowPass(vk::Allocator& alloc, const HairGpu& hair, float 
     pipeline_ = vk::Pipeline::graphics(alloc.context(), d, {layout_.handle()}, sizeof(gpu::HairDrawPush));
 }
 
-void HairShadowPass::addTo(FrameGraph& graph, vk::Image& map, const vk::Buffer& views,
-                           std::vector<HairShadowLayer> layers) {
+void HairShadowPass::addTo(FrameGraph& graph, std::vector<HairShadowLayer> layers) {
     if (layers.empty()) return;
-    PassDesc pass;
-    pass.name = "hair.shadow-map";
-    pass.kind = PassKind::Raster;
-    pass.images = {{&map, Use::DepthAttachment}};
-    pass.buffers = {{&views, Use::StorageRead}, {&hair_.points(), Use::StorageRead},
-                    {&hair_.strands(), Use::StorageRead}};
-    pass.record = [this, &map, &views, layers = std::move(layers)](VkCommandBuffer cmd) {
+    const ImageHandle map = graph.image("shadow.map");
+    PassBuilder pass = graph.pass("hair.shadow-map", PassKind::Raster);
+    pass.pipeline(pipeline_).use(map, Use::DepthAttachment);
+    declareRibbonSet(pass, hair_);
+    pass.record([this, map, layers = std::move(layers)](PassContext& c) {
+        vk::Image& image = c.image(map);
         for (const HairShadowLayer& l : layers) {
-            RasterTarget target{map.extent(), {}, map.layerView(l.layer)};
+            RasterTarget target{image.extent(), {}, image.layerView(l.layer)};
             target.load = true;
-            beginRaster(cmd, target);
-            vkCmdSetDepthBias(cmd, biasConstant_, 0.0f, biasSlope_);
-            pipeline_.bind(cmd);
-            pushRibbonSet(alloc_.context(), cmd, pipeline_, views, hair_);
-            hair_.draw(cmd, pipeline_, ribbonPush(l.viewRow, l.view));
-            vkCmdEndRendering(cmd);
+            beginRaster(c.cmd, target);
+            vkCmdSetDepthBias(c.cmd, biasConstant_, 0.0f, biasSlope_);
+            hair_.draw(c.cmd, pipeline_, ribbonPush(l.viewRow, l.view));
+            vkCmdEndRendering(c.cmd);
         }
-    };
-    graph.add(std::move(pass));
+    });
 }
 
 }  // namespace penumbra

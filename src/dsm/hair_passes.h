@@ -12,7 +12,8 @@ namespace penumbra {
 class HairGBufferPass {
 public:
     HairGBufferPass(vk::Allocator& alloc, const HairGpu& hair, const GBufferPass& gbuffer);
-    void addTo(FrameGraph& graph, GBufferPass& gbuffer, const vk::Buffer& views, const RibbonView& camera);
+    // Draws into the published G-buffer ("gbuffer.*"), row 0 of "views".
+    void addTo(FrameGraph& graph, const RibbonView& camera);
 
 private:
     vk::Allocator& alloc_;
@@ -32,7 +33,9 @@ struct HairShadowLayer {
 class HairShadowPass {
 public:
     HairShadowPass(vk::Allocator& alloc, const HairGpu& hair, float depthBiasConstant, float depthBiasSlope);
-    void addTo(FrameGraph& graph, vk::Image& shadowMap, const vk::Buffer& views, std::vector<HairShadowLayer> layers);
+    // Draws into layers of "shadow.map" with rows of "views".
+    void addTo(FrameGraph& graph, std::vector<HairShadowLayer> layers);
+    void setBias(float constant, float slope) { biasConstant_ = constant, biasSlope_ = slope; }
 
 private:
     vk::Allocator& alloc_;

@@ -81,29 +81,32 @@ void LightPropagationVolume::update(const glm::vec3& eye) {
     for (uint32_t k = 0; k < cascadeCount_; ++k) push_.cascades[k] = c[k];
 }
 
-void LightPropagationVolume::run(VkCommandBuffer cmd, vk::ComputeKernel& kernel, vk::DescriptorWrites& writes,
-                                 const gpu::LpvPush& push, glm::uvec3 groups) {
-    kernel.pipeline.bind(cmd);
-    writes.push(alloc_.context(), cmd, kernel.pipeline);
-    kernel.pipeline.push(cmd, push);
-    vkCmdDispatch(cmd, groups.x, groups.y, groups.z);
+// One dispatch with this pass's push constants (its pipeline and set are bound by the graph).
+void LightPropagationVolume::run(PassContext& c, const vk::ComputeKernel& kernel, const gpu::LpvPush& push,
+                                 glm::uvec3 groups) {
+    kernel.pipeline.push(c.cmd, push);
+    vkCmdDispatch(c.cmd, groups.x, groups.y, groups.z);
 }
 
-void LightPropagationVolume::addTo(FrameGraph& graph, const vk::Buffer& frame, const vk::Buffer& lights,
-                                   GBufferPass& g, RsmPass& rsm) {
-    if (layers_ != rsm.layerCount()) {
-        layers_ = rsm.layerCount();
+void LightPropagationVolume::setSettings(const LpvSettings& settings) {
+    settings_ = settings;
+    push_.params = {settings.occlusion ? 1.0f : 0.0f, settings.blendCells, float(settings.cameraGeometryStep), 0};
+}
+
+void LightPropagationVolume::addTo(FrameGraph& graph, uint32_t rsmLayers) {
+    if (layers_ != rsmLayers) {
+        layers_ = rsmLayers;
         const uint32_t n = settings_.vplResolution;
         vpls_ = vk::Buffer(alloc_, VkDeviceSize(std::max(layers_, 1u)) * n * n * sizeof(gpu::GpuVpl),
                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, false, "lpv-vpls");
         push_.counts.x = layers_ * n * n;
         push_.counts.w = layers_;
     }
-    if (layers_ > 0) addDownsample(graph, lights, rsm);
+    if (layers_ > 0) addDownsample(graph);
     addInjection(graph);
-    addCameraGeometry(graph, frame, g);
+    addCameraGeometry(graph);
     addPropagation(graph);
-    addGather(graph, frame, g);
+    addGather(graph);
 }
 
 void LightPropagationVolume::setVpls(vk::CommandContext& cmd, const std::vector<gpu::GpuVpl>& vpls) {
@@ -118,108 +121,97 @@ void LightPropagationVolume::addPropagationFromVpls(FrameGraph& graph) {
     addPropagation(graph);
 }
 
-void LightPropagationVolume::addDownsample(FrameGraph& graph, const vk::Buffer& lights, RsmPass& rsm) {
-    PassDesc pass{"lpv.downsample", PassKind::Compute, {}, {}, {}};
-    pass.images = {{&rsm.depth(), Use::Sampled}, {&rsm.normal(), Use::Sampled}, {&rsm.flux(), Use::Sampled}};
-    pass.buffers = {{&rsm.layerTable(), Use::StorageRead}, {&lights, Use::StorageRead}, {&vpls_, Use::StorageWrite}};
+void LightPropagationVolume::addDownsample(FrameGraph& graph) {
+    const VkSampler point = pointSampler_.handle();
     // Each RSM texel read once (depth 4 + normal 4 + flux 8 bytes), each VPL written once.
     const uint64_t texels = uint64_t(settings_.rsmResolution) * settings_.rsmResolution * layers_;
-    pass.bytes = texels * 16 + uint64_t(push_.counts.x) * sizeof(gpu::GpuVpl);
-    pass.record = [this, &lights, &rsm, push = push_](VkCommandBuffer cmd) {
-        const VkImageLayout depthRead = VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL;
-        vk::DescriptorWrites w;
-        w.sampled(0, rsm.depth().view(), pointSampler_.handle(), depthRead)
-            .sampled(1, rsm.normal().view(), pointSampler_.handle())
-            .sampled(2, rsm.flux().view(), pointSampler_.handle())
-            .storageBuffer(3, rsm.layerTable())
-            .storageBuffer(4, lights)
-            .storageBuffer(5, vpls_);
-        const uint32_t n = vk::divUp(settings_.vplResolution, 8);
-        run(cmd, downsample_, w, push, {n, n, layers_});
-    };
-    graph.add(std::move(pass));
+    const uint32_t n = vk::divUp(settings_.vplResolution, 8);
+    graph.pass("lpv.downsample")
+        .pipeline(downsample_.pipeline)
+        .sampled(0, graph.image("rsm.depth"), point)
+        .sampled(1, graph.image("rsm.normal"), point)
+        .sampled(2, graph.image("rsm.flux"), point)
+        .storageBuffer(3, graph.buffer("rsm.layers"))
+        .storageBuffer(4, graph.buffer("lights"))
+        .storageBuffer(5, graph.import(vpls_), Use::StorageWrite)
+        .bytes(texels * 16 + uint64_t(push_.counts.x) * sizeof(gpu::GpuVpl))
+        .record([this, push = push_, n](PassContext& c) { run(c, downsample_, push, {n, n, layers_}); });
 }
 
 void LightPropagationVolume::addInjection(FrameGraph& graph) {
-    PassDesc clear{"lpv.clear", PassKind::Transfer, {}, {}, {}};
-    clear.bytes = volumeA_.size() + accum_.size() + geometry_.size();
-    clear.buffers = {{&volumeA_, Use::TransferDst}, {&accum_, Use::TransferDst}, {&geometry_, Use::TransferDst}};
-    clear.record = [this](VkCommandBuffer cmd) {
-        for (const vk::Buffer* b : {&volumeA_, &accum_, &geometry_}) vkCmdFillBuffer(cmd, b->handle(), 0, VK_WHOLE_SIZE, 0);
-    };
-    graph.add(std::move(clear));
-    if (layers_ > 0) {
-        PassDesc inject{"lpv.inject", PassKind::Compute, {}, {}, {}};
-        inject.buffers = {{&vpls_, Use::StorageRead}, {&volumeA_, Use::StorageWrite}, {&geometry_, Use::StorageWrite}};
-        // Each VPL read once; per cascade 16 atomic read-modify-writes of 4 bytes.
-        inject.bytes = uint64_t(push_.counts.x) * (sizeof(gpu::GpuVpl) + cascadeCount_ * 16 * 8);
-        inject.record = [this, push = push_](VkCommandBuffer cmd) {
-            vk::DescriptorWrites w;
-            w.storageBuffer(0, vpls_).storageBuffer(1, volumeA_).storageBuffer(2, geometry_);
-            run(cmd, inject_, w, push, {vk::divUp(push.counts.x, 64), 1, 1});
-        };
-        graph.add(std::move(inject));
-    }
+    const BufferHandle a = graph.import(volumeA_), sum = graph.import(accum_), geometry = graph.import(geometry_);
+    graph.pass("lpv.clear", PassKind::Transfer)
+        .use(a, Use::TransferDst)
+        .use(sum, Use::TransferDst)
+        .use(geometry, Use::TransferDst)
+        .bytes(volumeA_.size() + accum_.size() + geometry_.size())
+        .record([a, sum, geometry](PassContext& c) {
+            for (BufferHandle h : {a, sum, geometry}) vkCmdFillBuffer(c.cmd, c.buffer(h).handle(), 0, VK_WHOLE_SIZE, 0);
+        });
+    if (layers_ == 0) return;
+    // Each VPL read once; per cascade 16 atomic read-modify-writes of 4 bytes.
+    graph.pass("lpv.inject")
+        .pipeline(inject_.pipeline)
+        .storageBuffer(0, graph.import(vpls_))
+        .storageBuffer(1, a, Use::StorageWrite)
+        .storageBuffer(2, geometry, Use::StorageWrite)
+        .bytes(uint64_t(push_.counts.x) * (sizeof(gpu::GpuVpl) + cascadeCount_ * 16 * 8))
+        .record([this, push = push_](PassContext& c) { run(c, inject_, push, {vk::divUp(push.counts.x, 64), 1, 1}); });
 }
 
-void LightPropagationVolume::addCameraGeometry(FrameGraph& graph, const vk::Buffer& frame, GBufferPass& g) {
+void LightPropagationVolume::addCameraGeometry(FrameGraph& graph) {
     if (!settings_.cameraGeometry || !settings_.occlusion) return;
-    PassDesc camera{"lpv.inject-camera", PassKind::Compute, {}, {}, {}};
-    camera.images = {{&g.normal, Use::Sampled}, {&g.depth, Use::Sampled}};
-    camera.buffers = {{&frame, Use::Uniform}, {&geometry_, Use::StorageWrite}};
-    camera.record = [this, &frame, &g, push = push_](VkCommandBuffer cmd) {
-        vk::DescriptorWrites w;
-        w.uniformBuffer(0, frame)
-            .sampled(1, g.normal.view(), pointSampler_.handle())
-            .sampled(2, g.depth.view(), pointSampler_.handle(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
-            .storageBuffer(3, geometry_);
-        const uint32_t step = settings_.cameraGeometryStep;
-        run(cmd, injectCamera_, w, push, {vk::divUp(vk::divUp(width_, step), 8), vk::divUp(vk::divUp(height_, step), 8), 1});
-    };
-    graph.add(std::move(camera));
+    const VkSampler point = pointSampler_.handle();
+    const uint32_t step = settings_.cameraGeometryStep;
+    const glm::uvec3 groups{vk::divUp(vk::divUp(width_, step), 8), vk::divUp(vk::divUp(height_, step), 8), 1};
+    graph.pass("lpv.inject-camera")
+        .pipeline(injectCamera_.pipeline)
+        .uniform(0, graph.buffer("frame"))
+        .sampled(1, graph.image("gbuffer.normal"), point)
+        .sampled(2, graph.image("gbuffer.depth"), point)
+        .storageBuffer(3, graph.import(geometry_), Use::StorageWrite)
+        .record([this, push = push_, groups](PassContext& c) { run(c, injectCamera_, push, groups); });
 }
 
 void LightPropagationVolume::addPropagation(FrameGraph& graph) {
     const uint32_t r = settings_.resolution;
+    const BufferHandle a = graph.import(volumeA_), b = graph.import(volumeB_), sum = graph.import(accum_),
+                       geometry = graph.import(geometry_);
     for (uint32_t i = 0; i < settings_.iterations; ++i) {
-        const vk::Buffer& src = i % 2 ? volumeB_ : volumeA_;
-        const vk::Buffer& dst = i % 2 ? volumeA_ : volumeB_;
-        PassDesc pass{fmt::format("lpv.propagate[{}]", i), PassKind::Compute, {}, {}, {}};
-        pass.buffers = {{&src, Use::StorageRead}, {&dst, Use::StorageWrite}, {&accum_, Use::StorageWrite},
-                        {&geometry_, Use::StorageRead}};
         gpu::LpvPush push = push_;
         push.grid.z = i == 0 ? 1u : 0u;
         // Per cell, once: source 48, geometry 16, destination 48, running sum read + written 96.
-        pass.bytes = uint64_t(r) * r * r * cascadeCount_ * (48 + 16 + 48 + 96);
-        pass.record = [this, &src, &dst, push, r](VkCommandBuffer cmd) {
-            vk::DescriptorWrites w;
-            w.storageBuffer(0, src).storageBuffer(1, dst).storageBuffer(2, accum_).storageBuffer(3, geometry_);
-            run(cmd, propagate_, w, push, {vk::divUp(r, 4), vk::divUp(r, 4), vk::divUp(r * cascadeCount_, 4)});
-        };
-        graph.add(std::move(pass));
+        graph.pass(fmt::format("lpv.propagate[{}]", i))
+            .pipeline(propagate_.pipeline)
+            .storageBuffer(0, i % 2 ? b : a, Use::StorageRead)
+            .storageBuffer(1, i % 2 ? a : b, Use::StorageWrite)
+            .storageBuffer(2, sum, Use::StorageWrite)
+            .storageBuffer(3, geometry, Use::StorageRead)
+            .bytes(uint64_t(r) * r * r * cascadeCount_ * (48 + 16 + 48 + 96))
+            .record([this, push, r](PassContext& c) {
+                run(c, propagate_, push, {vk::divUp(r, 4), vk::divUp(r, 4), vk::divUp(r * cascadeCount_, 4)});
+            });
     }
 }
 
-void LightPropagationVolume::addGather(FrameGraph& graph, const vk::Buffer& frame, GBufferPass& g) {
-    PassDesc pass{"lpv.gather", PassKind::Compute, {}, {}, {}};
-    pass.images = {{&g.normal, Use::Sampled}, {&g.depth, Use::Sampled}, {&irradiance_, Use::StorageWrite}};
-    pass.buffers = {{&frame, Use::Uniform}, {&accum_, Use::StorageRead}, {&geometry_, Use::StorageRead}};
-    // Per pixel: depth 4 + normal 8 read, irradiance 16 written; the summed volume read once.
-    pass.bytes = uint64_t(width_) * height_ * 28 + accum_.size();
+void LightPropagationVolume::addGather(FrameGraph& graph) {
+    const VkSampler point = pointSampler_.handle();
+    const ImageHandle irradiance = graph.import(irradiance_);
+    graph.publish("gi.irradiance", irradiance);
     gpu::LpvPush push = push_;
     push.grid.z = settings_.sliceAxis;
     push.grid.w = std::min(settings_.sliceIndex, settings_.resolution - 1);
-    pass.record = [this, &frame, &g, push](VkCommandBuffer cmd) {
-        vk::DescriptorWrites w;
-        w.uniformBuffer(0, frame)
-            .sampled(1, g.normal.view(), pointSampler_.handle())
-            .sampled(2, g.depth.view(), pointSampler_.handle(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
-            .storageBuffer(3, accum_)
-            .storageBuffer(4, geometry_)
-            .storageImage(5, irradiance_.view());
-        run(cmd, gather_, w, push, {vk::divUp(width_, 8), vk::divUp(height_, 8), 1});
-    };
-    graph.add(std::move(pass));
+    // Per pixel: depth 4 + normal 8 read, irradiance 16 written; the summed volume read once.
+    graph.pass("lpv.gather")
+        .pipeline(gather_.pipeline)
+        .uniform(0, graph.buffer("frame"))
+        .sampled(1, graph.image("gbuffer.normal"), point)
+        .sampled(2, graph.image("gbuffer.depth"), point)
+        .storageBuffer(3, graph.import(accum_))
+        .storageBuffer(4, graph.import(geometry_))
+        .storageImage(5, irradiance)
+        .bytes(uint64_t(width_) * height_ * 28 + accum_.size())
+        .record([this, push](PassContext& c) { run(c, gather_, push, {vk::divUp(width_, 8), vk::divUp(height_, 8), 1}); });
 }
 
 }  // namespace penumbra

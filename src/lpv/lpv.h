@@ -13,8 +13,8 @@
 
 #include "lpv/lpv_settings.h"
 #include "render/frame_graph.h"
-#include "render/gbuffer_pass.h"
-#include "rsm/rsm_pass.h"
+#include "shared/types.h"
+#include "scene/scene.h"
 
 namespace penumbra {
 
@@ -29,7 +29,11 @@ public:
                            const Bounds& sceneBounds);
     // Places the cascades around the camera for this frame.
     void update(const glm::vec3& eye);
-    void addTo(FrameGraph& graph, const vk::Buffer& frame, const vk::Buffer& lights, GBufferPass& g, RsmPass& rsm);
+    // Reads "frame", "lights", the G-buffer and the RSM ("rsm.*", `rsmLayers` layers); publishes
+    // "gi.irradiance".
+    void addTo(FrameGraph& graph, uint32_t rsmLayers);
+    // Per-frame values (occlusion, blend band, debug slice); sizes and the pass count must not change.
+    void setSettings(const LpvSettings& settings);
 
     // Test entry: VPLs given directly (no RSM, no camera), then clear + inject + propagate only.
     void setVpls(vk::CommandContext& cmd, const std::vector<gpu::GpuVpl>& vpls);
@@ -46,13 +50,12 @@ public:
     const vk::Buffer& vpls() const { return vpls_; }
 
 private:
-    void addDownsample(FrameGraph& graph, const vk::Buffer& lights, RsmPass& rsm);
+    void addDownsample(FrameGraph& graph);
     void addInjection(FrameGraph& graph);
-    void addCameraGeometry(FrameGraph& graph, const vk::Buffer& frame, GBufferPass& g);
+    void addCameraGeometry(FrameGraph& graph);
     void addPropagation(FrameGraph& graph);
-    void addGather(FrameGraph& graph, const vk::Buffer& frame, GBufferPass& g);
-    void run(VkCommandBuffer cmd, vk::ComputeKernel& kernel, vk::DescriptorWrites& writes,
-             const gpu::LpvPush& push, glm::uvec3 groups);
+    void addGather(FrameGraph& graph);
+    static void run(PassContext& c, const vk::ComputeKernel& kernel, const gpu::LpvPush& push, glm::uvec3 groups);
 
     vk::Allocator& alloc_;
     LpvSettings settings_;

@@ -61,6 +61,11 @@ constexpr VkAccessFlags2 kWriteAccess =
     VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT | VK_ACCESS_2_COLOR_ATTACHMENT_WRITE_BIT |
     VK_ACCESS_2_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT | VK_ACCESS_2_TRANSFER_WRITE_BIT | VK_ACCESS_2_HOST_WRITE_BIT;
 
+VkImageLayout sampledLayout(const vk::Image& image) {
+    return vk::isDepthFormat(image.format()) ? VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL
+                                             : VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL;
+}
+
 const char* useName(Use u) {
     static const char* names[] = {"sampled", "storage-read", "storage-write", "color", "depth",
                                   "uniform", "vertex",       "transfer-src",  "transfer-dst", "indirect"};
@@ -71,9 +76,10 @@ const char* useName(Use u) {
 
 void FrameGraph::barriers(VkCommandBuffer cmd, const PassDesc& pass) {
     std::vector<VkImageMemoryBarrier2> imageBarriers;
-    for (const ImageAccess& a : pass.images) {
-        Sync s = syncFor(a.use, pass.kind, vk::isDepthFormat(a.image->format()));
-        vk::ImageState& st = a.image->state();
+    for (const auto& [handle, use] : pass.images) {
+        vk::Image& image = imageOf(handle);
+        Sync s = syncFor(use, pass.kind, vk::isDepthFormat(image.format()));
+        vk::ImageState& st = image.state();
         const bool hazard = s.writes || (st.access & kWriteAccess) || st.layout != s.layout;
         if (!hazard) {  // read after read in the same layout: just widen the reader set
             st.stage |= s.stage;
@@ -89,16 +95,16 @@ void FrameGraph::barriers(VkCommandBuffer cmd, const PassDesc& pass) {
         b.oldLayout = st.layout;
         b.newLayout = s.layout;
         b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-        b.image = a.image->handle();
-        b.subresourceRange = a.image->fullRange();
+        b.image = image.handle();
+        b.subresourceRange = image.fullRange();
         imageBarriers.push_back(b);
         st = {s.layout, s.stage, s.access};
     }
     VkMemoryBarrier2 mem{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
     bool needMem = false;
-    for (const BufferAccess& a : pass.buffers) {
-        Sync s = syncFor(a.use, pass.kind, false);
-        BufferState& st = bufferStates_[a.buffer->handle()];
+    for (const auto& [handle, use] : pass.buffers) {
+        Sync s = syncFor(use, pass.kind, false);
+        BufferState& st = bufferStates_[bufferOf(handle).handle()];
         if (s.writes || (st.access & kWriteAccess)) {
             mem.srcStageMask |= st.stage ? st.stage : VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT;
             mem.srcAccessMask |= st.access & kWriteAccess;
@@ -120,15 +126,143 @@ void FrameGraph::barriers(VkCommandBuffer cmd, const PassDesc& pass) {
     vkCmdPipelineBarrier2(cmd, &dep);
 }
 
+// Binds the pass's pipeline and pushes its set 0, made only from the pass's declarations.
+void FrameGraph::bind(VkCommandBuffer cmd, const PassDesc& pass) {
+    if (!pass.pipeline) return;
+    pass.pipeline->bind(cmd);
+    if (pass.bindings.empty()) return;
+    vk::DescriptorWrites writes;
+    for (const PassBinding& b : pass.bindings) {
+        switch (b.type) {
+            case VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER: {
+                const vk::Image& image = imageOf(b.image);
+                writes.sampled(b.binding, image.view(), b.sampler, sampledLayout(image));
+                break;
+            }
+            case VK_DESCRIPTOR_TYPE_STORAGE_IMAGE: writes.storageImage(b.binding, imageOf(b.image).view()); break;
+            case VK_DESCRIPTOR_TYPE_STORAGE_BUFFER: writes.storageBuffer(b.binding, bufferOf(b.buffer)); break;
+            case VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER: writes.uniformBuffer(b.binding, bufferOf(b.buffer)); break;
+            default: throw vk::VulkanError("frame graph: unsupported descriptor type in pass " + pass.name);
+        }
+    }
+    writes.push(ctx_, cmd, *pass.pipeline);
+}
+
 void FrameGraph::execute(VkCommandBuffer cmd, vk::GpuTimer* timer) {
-    bufferStates_.clear();
-    for (const PassDesc& pass : passes_) {
+    for (uint32_t i = 0; i < passes_.size(); ++i) {
+        const PassDesc& pass = passes_[i];
         barriers(cmd, pass);
         uint32_t scope = timer ? timer->begin(cmd, pass.name) : 0;
-        pass.record(cmd);
+        bind(cmd, pass);
+        PassContext context(cmd, *this, i);
+        if (pass.record) pass.record(context);
         if (timer) timer->end(cmd, scope);
     }
 }
+
+void FrameGraph::clear() {
+    passes_.clear();
+    images_.clear();
+    buffers_.clear();
+    indexOf_.clear();
+    imageNames_.clear();
+    bufferNames_.clear();
+}
+
+ImageHandle FrameGraph::import(vk::Image& image) {
+    auto [it, added] = indexOf_.emplace(&image, uint32_t(images_.size()));
+    if (added) images_.push_back(&image);
+    return ImageHandle{it->second};
+}
+
+BufferHandle FrameGraph::import(const vk::Buffer& buffer) {
+    auto [it, added] = indexOf_.emplace(&buffer, uint32_t(buffers_.size()));
+    if (added) buffers_.push_back(&buffer);
+    return BufferHandle{it->second};
+}
+
+void FrameGraph::publish(const std::string& name, ImageHandle image) { imageNames_[name] = image; }
+void FrameGraph::publish(const std::string& name, BufferHandle buffer) { bufferNames_[name] = buffer; }
+
+ImageHandle FrameGraph::image(const std::string& name) const {
+    auto it = imageNames_.find(name);
+    if (it == imageNames_.end()) throw vk::VulkanError("frame graph: no image published as '" + name + "'");
+    return it->second;
+}
+
+BufferHandle FrameGraph::buffer(const std::string& name) const {
+    auto it = bufferNames_.find(name);
+    if (it == bufferNames_.end()) throw vk::VulkanError("frame graph: no buffer published as '" + name + "'");
+    return it->second;
+}
+
+vk::Image& PassContext::image(ImageHandle h) const {
+    for (const auto& [declared, use] : graph_.passes_[pass_].images)
+        if (declared.index == h.index) return graph_.imageOf(h);
+    throw vk::VulkanError("frame graph: pass " + graph_.passes_[pass_].name + " uses an image it did not declare");
+}
+
+const vk::Buffer& PassContext::buffer(BufferHandle h) const {
+    for (const auto& [declared, use] : graph_.passes_[pass_].buffers)
+        if (declared.index == h.index) return graph_.bufferOf(h);
+    throw vk::VulkanError("frame graph: pass " + graph_.passes_[pass_].name + " uses a buffer it did not declare");
+}
+
+PassBuilder::PassBuilder(FrameGraph& g, std::string name, PassKind kind) : graph_(g) {
+    pass_.name = std::move(name);
+    pass_.kind = kind;
+}
+
+PassBuilder& PassBuilder::pipeline(const vk::Pipeline& p) {
+    pass_.pipeline = &p;
+    return *this;
+}
+
+PassBuilder& PassBuilder::sampled(uint32_t binding, ImageHandle image, VkSampler sampler) {
+    pass_.images.push_back({image, Use::Sampled});
+    pass_.bindings.push_back({binding, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, image, {}, sampler});
+    return *this;
+}
+
+PassBuilder& PassBuilder::storageImage(uint32_t binding, ImageHandle image, Use use) {
+    pass_.images.push_back({image, use});
+    pass_.bindings.push_back({binding, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, image, {}, VK_NULL_HANDLE});
+    return *this;
+}
+
+PassBuilder& PassBuilder::storageBuffer(uint32_t binding, BufferHandle buffer, Use use) {
+    pass_.buffers.push_back({buffer, use});
+    pass_.bindings.push_back({binding, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, {}, buffer, VK_NULL_HANDLE});
+    return *this;
+}
+
+PassBuilder& PassBuilder::uniform(uint32_t binding, BufferHandle buffer) {
+    pass_.buffers.push_back({buffer, Use::Uniform});
+    pass_.bindings.push_back({binding, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, {}, buffer, VK_NULL_HANDLE});
+    return *this;
+}
+
+PassBuilder& PassBuilder::use(ImageHandle image, Use use) {
+    pass_.images.push_back({image, use});
+    return *this;
+}
+
+PassBuilder& PassBuilder::use(BufferHandle buffer, Use use) {
+    pass_.buffers.push_back({buffer, use});
+    return *this;
+}
+
+PassBuilder& PassBuilder::bytes(uint64_t moved) {
+    pass_.bytes = moved;
+    return *this;
+}
+
+void PassBuilder::record(std::function<void(PassContext&)> fn) {
+    pass_.record = std::move(fn);
+    graph_.add(std::move(pass_));
+}
+
+
 
 std::string FrameGraph::describe() const {
     std::string out;
@@ -138,8 +272,8 @@ std::string FrameGraph::describe() const {
             Sync s = syncFor(u, p.kind, false);
             (s.writes ? writes : reads).push_back(fmt::format("{}({})", name, useName(u)));
         };
-        for (const ImageAccess& a : p.images) sort(a.image->name(), a.use);
-        for (const BufferAccess& a : p.buffers) sort(a.buffer->name(), a.use);
+        for (const auto& [h, use] : p.images) sort(imageOf(h).name(), use);
+        for (const auto& [h, use] : p.buffers) sort(bufferOf(h).name(), use);
         out += fmt::format("{:<22} {:<8} reads [{}] writes [{}]\n", p.name,
                            p.kind == PassKind::Raster ? "raster" : p.kind == PassKind::Compute ? "compute" : "copy",
                            fmt::join(reads, ", "), fmt::join(writes, ", "));

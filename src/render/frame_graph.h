@@ -1,13 +1,20 @@
-// An explicit pass list: each pass declares the images and buffers it reads and writes; the graph
-// inserts the barriers between passes and wraps each pass in a GPU timestamp scope.
-// Techniques plug in by adding passes (see Renderer::buildFrame for the order).
+// The frame graph: passes declare every image and buffer they touch, by handle, and the graph binds
+// the descriptor set of each pass from those declarations (push descriptors), inserts the barriers
+// between passes (and across frames: resource states persist), and wraps each pass in a GPU
+// timestamp scope. A pass cannot bind what it did not declare: descriptor pushes exist only here.
+//
+// Resources enter a frame with import() and get a handle; techniques publish their outputs by name
+// (publish("shadow.mask", h)) and read other techniques' outputs the same way (image("shadow.mask")),
+// so the lighting pass knows names, not technique classes. See Renderer::recordFrame for the order.
 #pragma once
 #include <functional>
+#include <map>
 #include <string>
 #include <unordered_map>
 #include <vector>
 
 #include "vk/commands.h"
+#include "vk/pipeline.h"
 #include "vk/timestamps.h"
 
 namespace penumbra {
@@ -27,44 +34,123 @@ enum class Use {
     IndirectArgs,     // indirect dispatch or draw arguments
 };
 
-struct ImageAccess {
-    vk::Image* image;
-    Use use;
+// Typed handles into the graph's resource table, valid while the frame is being built and run.
+struct ImageHandle {
+    uint32_t index = UINT32_MAX;
+    explicit operator bool() const { return index != UINT32_MAX; }
+};
+struct BufferHandle {
+    uint32_t index = UINT32_MAX;
+    explicit operator bool() const { return index != UINT32_MAX; }
 };
 
-struct BufferAccess {
-    const vk::Buffer* buffer;
-    Use use;
+// One descriptor of a pass's set 0, made from a declaration.
+struct PassBinding {
+    uint32_t binding;
+    VkDescriptorType type;
+    ImageHandle image;
+    BufferHandle buffer;
+    VkSampler sampler = VK_NULL_HANDLE;
+};
+
+class FrameGraph;
+
+// What a pass's record function may touch: the command buffer and its declared resources.
+class PassContext {
+public:
+    VkCommandBuffer cmd;
+    vk::Image& image(ImageHandle h) const;           // throws unless the pass declared h
+    const vk::Buffer& buffer(BufferHandle h) const;  // throws unless the pass declared h
+
+private:
+    friend class FrameGraph;
+    PassContext(VkCommandBuffer c, FrameGraph& g, uint32_t pass) : cmd(c), graph_(g), pass_(pass) {}
+    FrameGraph& graph_;
+    uint32_t pass_;
 };
 
 struct PassDesc {
     std::string name;
     PassKind kind = PassKind::Compute;
-    std::vector<ImageAccess> images;
-    std::vector<BufferAccess> buffers;
-    std::function<void(VkCommandBuffer)> record;
+    const vk::Pipeline* pipeline = nullptr;  // bound, with set 0 pushed from `bindings`, before record
+    std::vector<std::pair<ImageHandle, Use>> images;
+    std::vector<std::pair<BufferHandle, Use>> buffers;
+    std::vector<PassBinding> bindings;
+    std::function<void(PassContext&)> record;
     // Bytes the pass must move at the least (reads + writes of its data, once), for passes bound by
     // memory bandwidth; `penumbra bench` reports the achieved GB/s against the copy bandwidth. 0 = n/a.
     uint64_t bytes = 0;
 };
 
+// Declares one pass: every call both declares the access (for barriers) and, for the descriptor
+// forms, binds it at `binding` of set 0 of the pass's pipeline.
+class PassBuilder {
+public:
+    PassBuilder& pipeline(const vk::Pipeline& p);
+    PassBuilder& sampled(uint32_t binding, ImageHandle image, VkSampler sampler);
+    PassBuilder& storageImage(uint32_t binding, ImageHandle image, Use use = Use::StorageWrite);
+    PassBuilder& storageBuffer(uint32_t binding, BufferHandle buffer, Use use = Use::StorageRead);
+    PassBuilder& uniform(uint32_t binding, BufferHandle buffer);
+    // Accesses without a descriptor: attachments, indirect arguments, transfers, vertex input.
+    PassBuilder& use(ImageHandle image, Use use);
+    PassBuilder& use(BufferHandle buffer, Use use);
+    PassBuilder& bytes(uint64_t moved);
+    // Adds the pass to the graph.
+    void record(std::function<void(PassContext&)> fn);
+    FrameGraph& graph() { return graph_; }
+
+private:
+    friend class FrameGraph;
+    PassBuilder(FrameGraph& g, std::string name, PassKind kind);
+    FrameGraph& graph_;
+    PassDesc pass_;
+};
+
 class FrameGraph {
 public:
+    explicit FrameGraph(vk::Context& ctx) : ctx_(ctx) {}
+    // Registers a resource for this frame (the same object twice gives the same handle).
+    ImageHandle import(vk::Image& image);
+    BufferHandle import(const vk::Buffer& buffer);
+    // The blackboard: outputs by name. Reading a name nobody published throws.
+    void publish(const std::string& name, ImageHandle image);
+    void publish(const std::string& name, BufferHandle buffer);
+    ImageHandle image(const std::string& name) const;
+    BufferHandle buffer(const std::string& name) const;
+    bool hasImage(const std::string& name) const { return imageNames_.count(name) > 0; }
+    bool hasBuffer(const std::string& name) const { return bufferNames_.count(name) > 0; }
+
+    PassBuilder pass(std::string name, PassKind kind = PassKind::Compute) {
+        return PassBuilder(*this, std::move(name), kind);
+    }
     void add(PassDesc pass) { passes_.push_back(std::move(pass)); }
-    void clear() { passes_.clear(); }
+    // Forgets the frame's passes, handles and names (resource states are kept: they span frames).
+    void clear();
+    // After resources were destroyed and re-created: forget their last uses too.
+    void forgetStates() { bufferStates_.clear(); }
     // Records every pass in order with barriers and (when `timer` is set) one timestamp scope each.
     void execute(VkCommandBuffer cmd, vk::GpuTimer* timer);
     const std::vector<PassDesc>& passes() const { return passes_; }
+    vk::Image& imageOf(ImageHandle h) const { return *images_.at(h.index); }
+    const vk::Buffer& bufferOf(BufferHandle h) const { return *buffers_.at(h.index); }
     // One line per pass: name, kind, what it reads and writes (for `--print-passes` and the docs).
     std::string describe() const;
 
 private:
+    friend class PassContext;
     struct BufferState {
         VkPipelineStageFlags2 stage = VK_PIPELINE_STAGE_2_NONE;
         VkAccessFlags2 access = VK_ACCESS_2_NONE;
     };
     void barriers(VkCommandBuffer cmd, const PassDesc& pass);
+    void bind(VkCommandBuffer cmd, const PassDesc& pass);
+    vk::Context& ctx_;
     std::vector<PassDesc> passes_;
+    std::vector<vk::Image*> images_;
+    std::vector<const vk::Buffer*> buffers_;
+    std::unordered_map<const void*, uint32_t> indexOf_;
+    std::map<std::string, ImageHandle> imageNames_;
+    std::map<std::string, BufferHandle> bufferNames_;
     std::unordered_map<VkBuffer, BufferState> bufferStates_;
 };
 

@@ -28,26 +28,24 @@ GBufferPass::GBufferPass(vk::Allocator& alloc, SceneGpu& scene, uint32_t width, 
                                        sizeof(gpu::DrawPush));
 }
 
-void GBufferPass::addTo(FrameGraph& graph, const vk::Buffer& views) {
-    PassDesc pass;
-    pass.name = "gbuffer";
-    pass.kind = PassKind::Raster;
-    pass.images = {{&albedo, Use::ColorAttachment}, {&normal, Use::ColorAttachment}, {&depth, Use::DepthAttachment}};
-    pass.images.push_back({&scene_.textures(), Use::Sampled});
-    pass.buffers = {{&views, Use::StorageRead}, {&scene_.materials(), Use::StorageRead}};
-    pass.record = [this, &views](VkCommandBuffer cmd) {
-        beginRaster(cmd, {albedo.extent(),
-                          {{albedo.view(), {{0, 0, 0, 0}}}, {normal.view(), {{0, 0, 0, 0}}}},
-                          depth.view()});
-        pipeline_.bind(cmd);
-        scene_.pushDrawSet(cmd, pipeline_, views);
+void GBufferPass::addTo(FrameGraph& graph) {
+    const ImageHandle a = graph.import(albedo), n = graph.import(normal), d = graph.import(depth);
+    graph.publish("gbuffer.albedo", a);
+    graph.publish("gbuffer.normal", n);
+    graph.publish("gbuffer.depth", d);
+    PassBuilder pass = graph.pass("gbuffer", PassKind::Raster);
+    pass.pipeline(pipeline_).use(a, Use::ColorAttachment).use(n, Use::ColorAttachment).use(d, Use::DepthAttachment);
+    scene_.declareDrawSet(pass, graph.buffer("views"));
+    pass.record([this, a, n, d](PassContext& c) {
+        beginRaster(c.cmd, {c.image(a).extent(),
+                            {{c.image(a).view(), {{0, 0, 0, 0}}}, {c.image(n).view(), {{0, 0, 0, 0}}}},
+                            c.image(d).view()});
         scene_.draw(
-            cmd, [&](const Draw& d) { pipeline_.push(cmd, gpu::DrawPush{0, d.material, 0, 0}); },
+            c.cmd, [&](const Draw& draw) { pipeline_.push(c.cmd, gpu::DrawPush{0, draw.material, 0, 0}); },
             // Blended materials are drawn like masked ones until the deep-shadow-map issue.
             [](const Material&) { return true; });
-        vkCmdEndRendering(cmd);
-    };
-    graph.add(std::move(pass));
+        vkCmdEndRendering(c.cmd);
+    });
 }
 
 }  // namespace penumbra

@@ -9,7 +9,8 @@ class GBufferPass {
 public:
     GBufferPass(vk::Allocator& alloc, SceneGpu& scene, uint32_t width, uint32_t height,
                 VkDescriptorSetLayout drawLayout);
-    void addTo(FrameGraph& graph, const vk::Buffer& views);
+    // Reads "views"; publishes "gbuffer.albedo", "gbuffer.normal", "gbuffer.depth".
+    void addTo(FrameGraph& graph);
 
     vk::Image albedo, normal, depth;
 

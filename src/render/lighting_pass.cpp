@@ -22,32 +22,28 @@ LightingPass::LightingPass(vk::Allocator& alloc, uint32_t width, uint32_t height
     pointSampler_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
 }
 
-void LightingPass::addTo(FrameGraph& graph, const vk::Buffer& frame, const vk::Buffer& lights, GBufferPass& g,
-                         vk::Image& shadowMask, vk::Image& indirect, const DeepShadowMaps& dsm) {
-    PassDesc pass;
-    pass.name = "lighting";
-    pass.kind = PassKind::Compute;
-    pass.images = {{&g.albedo, Use::Sampled}, {&g.normal, Use::Sampled}, {&g.depth, Use::Sampled},
-                   {&shadowMask, Use::Sampled}, {&indirect, Use::Sampled}, {&hdr, Use::StorageWrite}};
-    pass.buffers = {{&frame, Use::Uniform}, {&lights, Use::StorageRead}};
-    dsm.addLookupInputs(pass);
-    pass.record = [this, &frame, &lights, &g, &shadowMask, &indirect, &dsm](VkCommandBuffer cmd) {
-        pipeline_.bind(cmd);
-        vk::DescriptorWrites writes;
-        dsm.writeLookup(writes);
-        writes
-            .uniformBuffer(0, frame)
-            .storageBuffer(1, lights)
-            .sampled(2, g.albedo.view(), pointSampler_.handle())
-            .sampled(3, g.normal.view(), pointSampler_.handle())
-            .sampled(4, g.depth.view(), pointSampler_.handle(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
-            .sampled(5, shadowMask.view(), pointSampler_.handle())
-            .storageImage(6, hdr.view())
-            .sampled(7, indirect.view(), pointSampler_.handle())
-            .push(alloc_.context(), cmd, pipeline_);
-        vkCmdDispatch(cmd, vk::divUp(hdr.width(), 8), vk::divUp(hdr.height(), 8), 1);
-    };
-    graph.add(std::move(pass));
+void LightingPass::addTo(FrameGraph& graph) {
+    const ImageHandle out = graph.import(hdr);
+    graph.publish("hdr", out);
+    const VkSampler point = pointSampler_.handle();
+    graph.pass("lighting")
+        .pipeline(pipeline_)
+        .uniform(0, graph.buffer("frame"))
+        .storageBuffer(1, graph.buffer("lights"))
+        .sampled(2, graph.image("gbuffer.albedo"), point)
+        .sampled(3, graph.image("gbuffer.normal"), point)
+        .sampled(4, graph.image("gbuffer.depth"), point)
+        .sampled(5, graph.image("shadow.mask"), point)
+        .storageImage(6, out)
+        .sampled(7, graph.image("gi.irradiance"), point)
+        .storageBuffer(8, graph.buffer("dsm.lights"))
+        .storageBuffer(9, graph.buffer("dsm.heads"))
+        .storageBuffer(10, graph.buffer("dsm.nodes"))
+        .storageBuffer(11, graph.buffer("dsm.links"))
+        .record([out](PassContext& c) {
+            const vk::Image& image = c.image(out);
+            vkCmdDispatch(c.cmd, vk::divUp(image.width(), 8), vk::divUp(image.height(), 8), 1);
+        });
 }
 
 TonemapPass::TonemapPass(vk::Allocator& alloc, uint32_t width, uint32_t height) : alloc_(alloc) {
@@ -58,19 +54,17 @@ TonemapPass::TonemapPass(vk::Allocator& alloc, uint32_t width, uint32_t height) 
     pipeline_ = vk::Pipeline::compute(ctx, "render/tonemap.comp", {layout_.handle()}, sizeof(gpu::TonemapPush));
 }
 
-void TonemapPass::addTo(FrameGraph& graph, vk::Image& hdr, const gpu::TonemapPush& params) {
-    PassDesc pass;
-    pass.name = "tonemap";
-    pass.kind = PassKind::Compute;
-    pass.images = {{&hdr, Use::StorageRead}, {&ldr, Use::StorageWrite}};
-    pass.record = [this, &hdr, params](VkCommandBuffer cmd) {
-        pipeline_.bind(cmd);
-        vk::DescriptorWrites().storageImage(0, hdr.view()).storageImage(1, ldr.view())
-            .push(alloc_.context(), cmd, pipeline_);
-        pipeline_.push(cmd, params);
-        vkCmdDispatch(cmd, vk::divUp(ldr.width(), 8), vk::divUp(ldr.height(), 8), 1);
-    };
-    graph.add(std::move(pass));
+void TonemapPass::addTo(FrameGraph& graph, const gpu::TonemapPush& params) {
+    const ImageHandle out = graph.import(ldr);
+    graph.publish("ldr", out);
+    graph.pass("tonemap")
+        .pipeline(pipeline_)
+        .storageImage(0, graph.image("hdr"), Use::StorageRead)
+        .storageImage(1, out)
+        .record([this, out, params](PassContext& c) {
+            pipeline_.push(c.cmd, params);
+            vkCmdDispatch(c.cmd, vk::divUp(ldr.width(), 8), vk::divUp(ldr.height(), 8), 1);
+        });
 }
 
 }  // namespace penumbra

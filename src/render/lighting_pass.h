@@ -1,20 +1,20 @@
 // Deferred direct lighting in compute (render/lighting.comp): every light, shadow-map visibility,
 // writes the HDR image or the selected AOV.
 #pragma once
-#include "dsm/deep_shadow_maps.h"
 #include "render/frame_graph.h"
-#include "render/gbuffer_pass.h"
+#include "shared/types.h"
+#include "vk/pipeline.h"
 
 namespace penumbra {
 
 class LightingPass {
 public:
     LightingPass(vk::Allocator& alloc, uint32_t width, uint32_t height);
-    // `shadowMask`: filtered visibility per shadowed light (ShadowMapPass::mask, written by shadow.filter).
-    // `indirect`: indirect irradiance per pixel (GI on) or a 1x1 placeholder (FrameUniforms.options.x = 0).
-    // `dsm`: deep shadow maps (transmittance of translucent casters, bindings 8-11).
-    void addTo(FrameGraph& graph, const vk::Buffer& frame, const vk::Buffer& lights, GBufferPass& gbuffer,
-               vk::Image& shadowMask, vk::Image& indirect, const DeepShadowMaps& dsm);
+    // Reads by name: "frame", "lights", the G-buffer, "shadow.mask" (filtered visibility per shadowed
+    // light), "gi.irradiance" (indirect irradiance per pixel, or a 1x1 placeholder when
+    // FrameUniforms.options.x = 0), and the deep shadow maps' lookup buffers "dsm.lights",
+    // "dsm.heads", "dsm.nodes", "dsm.links" (bindings 8-11). Publishes "hdr".
+    void addTo(FrameGraph& graph);
 
     vk::Image hdr;  // RGBA32F radiance (or AOV values)
 
@@ -28,7 +28,8 @@ private:
 class TonemapPass {
 public:
     TonemapPass(vk::Allocator& alloc, uint32_t width, uint32_t height);
-    void addTo(FrameGraph& graph, vk::Image& hdr, const gpu::TonemapPush& params);
+    // Reads "hdr", publishes "ldr".
+    void addTo(FrameGraph& graph, const gpu::TonemapPush& params);
 
     vk::Image ldr;  // RGBA8, sRGB-encoded values in a UNORM image (storage images cannot be sRGB)
 

@@ -1,6 +1,8 @@
 #include "render/renderer.h"
 
 #include <algorithm>
+#include <chrono>
+#include <cstring>
 
 #include <fmt/format.h>
 
@@ -18,33 +20,6 @@ gpu::GpuLight toGpu(const Light& l) {
     return g;
 }
 
-// RSM layers from the shadow layers: the RSM is the shadow pass's light view with more targets.
-// LPV injection and, by default, the RSM gather take only each sun's last, widest cascade: cascades
-// see the same surfaces, and a fine one lacks the distant VPLs (RsmSettings::perCascade); with
-// perCascade the gather takes every cascade and picks one per receiver, as the seed does.
-// Paraboloid layers have no matrix projection to rasterize with.
-std::vector<RsmLayerSource> rsmLayersOf(const ShadowMapPass& shadow, bool widestCascadeOnly) {
-    std::vector<RsmLayerSource> layers;
-    const uint32_t res = shadow.settings().resolution;
-    for (const ShadowedLight& sl : shadow.layout().shadowed()) {
-        const bool cascades = sl.kind == SHADOW_KIND_CASCADES;
-        for (uint32_t k = 0; k < sl.layerCount; ++k) {
-            const uint32_t index = sl.firstLayer + k;
-            const ShadowLayer& l = shadow.layers()[index];
-            const bool last = k + 1 == sl.layerCount;
-            if (l.projection.paraboloid || (cascades && widestCascadeOnly && !last)) continue;
-            RsmLayerSource src{l.light, 1 + index, l.projection, res};
-            if (cascades && !widestCascadeOnly) {
-                src.cascade = k + 1;
-                src.lastCascade = last;
-                src.radiusScale = shadow.layers()[sl.firstLayer].projection.texelSize / l.projection.texelSize;
-            }
-            layers.push_back(src);
-        }
-    }
-    return layers;
-}
-
 // Far plane that encloses the whole scene from the eye.
 float sceneFar(const Camera& c, const Bounds& b) {
     if (c.zfar > 0.0f) return c.zfar;
@@ -56,168 +31,285 @@ float sceneFar(const Camera& c, const Bounds& b) {
     return far * 1.05f;
 }
 
+// What of a light sizes or structures the shadow resources (its position, direction, colour and
+// intensity are per-frame values).
+bool sameLayout(const Light& a, const Light& b) {
+    return a.type == b.type && a.castsShadow == b.castsShadow && a.shadowFilter == b.shadowFilter;
+}
+
+double msSince(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
 }  // namespace
 
+// One frame in flight: its command buffer, fence and timestamp pool.
+struct Renderer::FrameSlot {
+    vk::Context& ctx;
+    VkCommandPool pool = VK_NULL_HANDLE;
+    VkCommandBuffer cmd = VK_NULL_HANDLE;
+    VkFence fence = VK_NULL_HANDLE;
+    vk::GpuTimer timer;
+    bool pending = false;
+    FrameTimings timings;
+
+    explicit FrameSlot(vk::Context& c) : ctx(c), timer(c, 512) {
+        VkCommandPoolCreateInfo ci{VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO};
+        ci.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
+        ci.queueFamilyIndex = ctx.queueFamily();
+        VK_CHECK(vkCreateCommandPool(ctx.device(), &ci, nullptr, &pool));
+        VkCommandBufferAllocateInfo ai{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
+        ai.commandPool = pool;
+        ai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+        ai.commandBufferCount = 1;
+        VK_CHECK(vkAllocateCommandBuffers(ctx.device(), &ai, &cmd));
+        VkFenceCreateInfo fi{VK_STRUCTURE_TYPE_FENCE_CREATE_INFO};
+        VK_CHECK(vkCreateFence(ctx.device(), &fi, nullptr, &fence));
+    }
+    ~FrameSlot() {
+        if (pending) vkWaitForFences(ctx.device(), 1, &fence, VK_TRUE, UINT64_MAX);
+        vkDestroyFence(ctx.device(), fence, nullptr);
+        vkDestroyCommandPool(ctx.device(), pool, nullptr);
+    }
+};
+
+Renderer::Renderer(vk::Context& ctx, GpuScene& scene, const RenderSettings& settings, uint32_t framesInFlight)
+    : ctx_(ctx), scene_(scene), settings_(settings), alloc_(ctx), cmd_(alloc_),
+      framesInFlight_(std::clamp(framesInFlight, 1u, vk::kMaxFramesInFlight)), graph_(ctx) {
+    init();
+}
+
 Renderer::Renderer(vk::Context& ctx, const Scene& scene, const RenderSettings& settings)
-    : ctx_(ctx), scene_(scene), settings_(settings), alloc_(ctx), cmd_(alloc_), timer_(ctx) {
-    if (settings.width == 0 || settings.height == 0 || settings.width > 16384 || settings.height > 16384)
-        throw vk::VulkanError(fmt::format("image size {}x{} is out of range (1..16384)", settings.width,
-                                          settings.height));
-    sceneGpu_ = std::make_unique<SceneGpu>(cmd_, scene);
-    drawLayout_ = vk::DescriptorLayout(ctx, SceneGpu::drawSetBindings());
-    shadow_ = std::make_unique<ShadowMapPass>(alloc_, *sceneGpu_, settings.shadow, drawLayout_.handle());
-    gbuffer_ = std::make_unique<GBufferPass>(alloc_, *sceneGpu_, settings.width, settings.height,
-                                             drawLayout_.handle());
-    lighting_ = std::make_unique<LightingPass>(alloc_, settings.width, settings.height);
-    tonemap_ = std::make_unique<TonemapPass>(alloc_, settings.width, settings.height);
-
-    shadow_->assign(scene.lights);
-    const size_t lightCount = std::max<size_t>(scene.lights.size(), 1);
-    setupGi();
-    setupHairAndDsm();
-    frame_ = vk::Buffer(alloc_, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true, "frame");
-    views_ = vk::Buffer(alloc_, sizeof(glm::mat4) * (1 + shadow_->layers().size()), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
-                        true, "views");
-    lights_ = vk::Buffer(alloc_, sizeof(gpu::GpuLight) * lightCount, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true,
-                         "lights");
+    : ownedScene_(std::make_unique<GpuScene>(ctx, scene)), ctx_(ctx), scene_(*ownedScene_), settings_(settings),
+      alloc_(ctx), cmd_(alloc_), framesInFlight_(1), graph_(ctx) {
+    init();
 }
 
-Renderer::~Renderer() { ctx_.waitIdle(); }
+void Renderer::init() {
+    if (settings_.width == 0 || settings_.height == 0 || settings_.width > 16384 || settings_.height > 16384)
+        throw vk::VulkanError(fmt::format("image size {}x{} is out of range (1..16384)", settings_.width,
+                                          settings_.height));
+    for (uint32_t i = 0; i < framesInFlight_; ++i) slots_.push_back(std::make_unique<FrameSlot>(ctx_));
+    drawLayout_ = vk::DescriptorLayout(ctx_, SceneGpu::drawSetBindings());
+    frame_ = vk::BufferRing(alloc_, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, "frame");
+    lights_ = scene_.scene().lights;
+    build(kPartShadow | kPartCamera | kPartGi | kPartDsm);
+}
 
-void Renderer::setupGi() {
-    noIndirect_ = vk::Image(alloc_, {VK_FORMAT_R16G16B16A16_SFLOAT, 1, 1, 1,
-                                     VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, "no-indirect"});
-    const uint64_t zero = 0;
-    cmd_.uploadImage(noIndirect_, &zero, sizeof(zero));
-    if (settings_.gi == GiMode::None) return;
-    // Both GI techniques start from the RSM; LPV renders it larger and down-samples it.
-    RsmSettings rsmSettings = settings_.rsm;
-    if (settings_.gi == GiMode::Lpv) {
-        rsmSettings.resolution = settings_.lpv.rsmResolution;
-        lpv_ = std::make_unique<LightPropagationVolume>(alloc_, settings_.width, settings_.height, settings_.lpv,
-                                                        scene_.bounds);
-    } else {
-        rsmGather_ = std::make_unique<RsmGather>(alloc_, cmd_, settings_.width, settings_.height, settings_.rsm);
+Renderer::~Renderer() {
+    // The frames in flight finish before their resources go (FrameSlot waits for its fence).
+    slots_.clear();
+}
+
+// Re-creates the techniques in `parts` (the caller made sure no frame in flight uses them). Shadow
+// maps, deep shadow maps and GI depend on one another's layout: any of the first two rebuilds all three.
+void Renderer::build(uint32_t parts) {
+    if (parts & (kPartShadow | kPartDsm)) parts |= kPartShadow | kPartDsm | kPartGi;
+    if (parts & kPartCamera) parts |= kPartGi;
+    warnings_.clear();
+    if (parts & kPartGi) rsm_.reset(), lpv_.reset();
+    if (parts & kPartShadow) shadow_.reset(), dsm_.reset();
+    if (parts & kPartCamera) camera_.reset(), lighting_.reset();
+
+    if (parts & kPartDsm) dsm_ = std::make_unique<DsmTechnique>(alloc_, scene_, settings_, lights_, warnings_);
+    if (parts & kPartShadow) {
+        shadow_ = std::make_unique<ShadowTechnique>(
+            alloc_, scene_, settings_, drawLayout_.handle(), lights_,
+            [this](uint32_t light) { return dsm_ && dsm_->maps().covers(light); }, warnings_);
+        const size_t layers = shadow_->pass().layers().size();
+        views_ = vk::BufferRing(alloc_, sizeof(glm::mat4) * (1 + layers), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "views");
+        lights_buffer_ = vk::BufferRing(alloc_, sizeof(gpu::GpuLight) * std::max<size_t>(lights_.size(), 1),
+                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "lights");
     }
-    rsm_ = std::make_unique<RsmPass>(alloc_, *sceneGpu_, rsmSettings);
-    // The layers' projections are set every frame (cascades follow the camera): see updateBuffers.
-    const std::vector<RsmLayerSource> layers = rsmLayersOf(*shadow_, lpv_ != nullptr || !settings_.rsm.perCascade);
-    if (layers.empty()) warnings_.push_back("GI: no directional or spot light casts shadows; no indirect light");
-    rsm_->setLayers(layers);
-}
-
-// Hair (src/dsm) in the G-buffer and, for lights without a deep shadow map, as an opaque caster in
-// the ordinary shadow map; blended meshes and hair of lights with one go to their DSM instead.
-void Renderer::setupHairAndDsm() {
-    if (!scene_.strands.empty()) hair_ = std::make_unique<HairGpu>(cmd_, scene_);
-    dsm_ = std::make_unique<DeepShadowMaps>(alloc_, *sceneGpu_, hair_.get(), settings_.dsm, settings_.shadow.resolution,
-                                            warnings_);
-    std::vector<uint32_t> deep;
-    for (uint32_t i = 0; i < scene_.lights.size(); ++i)
-        if (dsm_->covers(i)) deep.push_back(i);
-    shadow_->setDeepShadowLights(deep);
-    if (!hair_) return;
-    for (uint32_t i = 0; i < scene_.lights.size(); ++i)
-        if (scene_.lights[i].type == LightType::Point && scene_.lights[i].castsShadow &&
-            settings_.shadow.pointMode == PointShadowMode::Paraboloid) {
-            warnings_.push_back("hair casts no shadow in paraboloid point-light maps (use --point-shadow cube)");
-            break;
-        }
-    hairGBuffer_ = std::make_unique<HairGBufferPass>(alloc_, *hair_, *gbuffer_);
-    hairShadow_ = std::make_unique<HairShadowPass>(alloc_, *hair_, settings_.shadow.depthBiasConstant,
-                                                   settings_.shadow.depthBiasSlope);
-    shadow_->setExtraCasters([this](FrameGraph& g, vk::Image& map) {
-        hairShadow_->addTo(g, map, views_, hairShadowLayers());
-    });
-}
-
-// The shadow layers hair is drawn into: those of lights without a DSM (paraboloid point-light maps
-// bend edges, which the ribbon vertex shader does not: hair casts no shadow there).
-std::vector<HairShadowLayer> Renderer::hairShadowLayers() const {
-    std::vector<HairShadowLayer> out;
-    for (uint32_t k = 0; k < shadow_->layers().size(); ++k) {
-        const ShadowLayer& l = shadow_->layers()[k];
-        if (l.projection.paraboloid || dsm_->covers(l.light)) continue;
-        out.push_back({k, 1 + k, lightRibbonView(scene_.lights[l.light], l.projection)});
+    if (parts & kPartCamera) {
+        camera_ = std::make_unique<CameraTechnique>(alloc_, scene_, settings_, drawLayout_.handle());
+        lighting_ = std::make_unique<LightingTechnique>(alloc_, cmd_, settings_);
     }
+    if ((parts & kPartGi) && settings_.gi != GiMode::None) {
+        const bool lpv = settings_.gi == GiMode::Lpv;
+        rsm_ = std::make_unique<RsmTechnique>(alloc_, cmd_, scene_, settings_, shadow_->pass(), !lpv);
+        if (lpv) lpv_ = std::make_unique<LpvTechnique>(alloc_, scene_.scene().bounds, settings_, rsm_->pass());
+        if (shadow_->pass().layout().shadowed().empty())
+            warnings_.push_back("GI: no directional or spot light casts shadows; no indirect light");
+    }
+    graph_.forgetStates();
+}
+
+std::vector<Technique*> Renderer::techniques() const {
+    std::vector<Technique*> out{camera_.get(), shadow_.get(), dsm_.get()};
+    if (rsm_) out.push_back(rsm_.get());
+    if (lpv_) out.push_back(lpv_.get());
+    out.push_back(lighting_.get());
     return out;
 }
 
-void Renderer::updateBuffers(const Camera& camera) {
+SettingsChange Renderer::apply(const RenderSettings& settings) {
+    const SettingsDiff diff = diffSettings(settings_, settings);
+    if (diff.change == SettingsChange::None) return diff.change;
+    if (diff.change == SettingsChange::PerFrame) {
+        settings_ = settings;
+        for (Technique* t : techniques()) t->applyPerFrame(settings_);
+        return diff.change;
+    }
+    finish();  // what is rebuilt may be in use by the frames in flight
+    settings_ = settings;
+    build(diff.parts);
+    for (Technique* t : techniques()) t->applyPerFrame(settings_);
+    return diff.change;
+}
+
+bool Renderer::layoutChanged(const std::vector<Light>& lights) const {
+    if (lights.size() != lights_.size()) return true;
+    for (size_t i = 0; i < lights.size(); ++i)
+        if (!sameLayout(lights[i], lights_[i])) return true;
+    return false;
+}
+
+Renderer::FrameSlot& Renderer::acquireSlot() {
+    FrameSlot& slot = *slots_[frameIndex_ % slots_.size()];
+    if (slot.pending) collect(slot);
+    return slot;
+}
+
+// Waits for the slot's last frame and keeps its timings.
+void Renderer::collect(FrameSlot& slot) {
+    VK_CHECK(vkWaitForFences(ctx_.device(), 1, &slot.fence, VK_TRUE, UINT64_MAX));
+    VK_CHECK(vkResetFences(ctx_.device(), 1, &slot.fence));
+    slot.pending = false;
+    std::vector<vk::ScopeTiming> scopes = slot.timer.results();
+    if (!scopes.empty()) {  // scope 0 spans the whole frame
+        slot.timings.gpuMs = scopes.front().ms;
+        slot.timings.passes.assign(scopes.begin() + 1, scopes.end());
+    }
+    if (slot.timings.frame >= lastTimings_.frame) lastTimings_ = slot.timings;
+    completed_.push_back(slot.timings);
+    if (completed_.size() > 4096) completed_.erase(completed_.begin(), completed_.begin() + 2048);
+}
+
+void Renderer::finish() {
+    // Oldest first, so that completed_ stays in frame order.
+    std::vector<FrameSlot*> pending;
+    for (auto& s : slots_)
+        if (s->pending) pending.push_back(s.get());
+    std::sort(pending.begin(), pending.end(),
+              [](const FrameSlot* a, const FrameSlot* b) { return a->timings.frame < b->timings.frame; });
+    for (FrameSlot* s : pending) collect(*s);
+}
+
+std::vector<FrameTimings> Renderer::takeCompletedTimings() {
+    std::vector<FrameTimings> out;
+    out.swap(completed_);
+    return out;
+}
+
+void Renderer::writeFrameData(FrameSlot& slot, const FrameInputs& in) {
+    (void)slot;
+    const Camera& camera = in.camera;
     const float aspect = float(settings_.width) / float(settings_.height);
-    zfar_ = sceneFar(camera, scene_.bounds);
-    shadow_->update(camera, aspect, zfar_);
-    if (rsm_) rsm_->setLayers(rsmLayersOf(*shadow_, lpv_ != nullptr || !settings_.rsm.perCascade));
     gpu::FrameUniforms f{};
     f.viewProj = cameraViewProj(camera, aspect, zfar_);
     f.invViewProj = glm::inverse(f.viewProj);
     f.cameraPos = glm::vec4(camera.eye, zfar_);
-    f.size = {settings_.width, settings_.height, uint32_t(scene_.lights.size()), uint32_t(settings_.aov)};
-    f.options = {rsm_ ? 1u : 0u, 0u, 0u, 0u};
+    f.size = {settings_.width, settings_.height, uint32_t(in.lights.size()), uint32_t(settings_.aov)};
+    f.options = {settings_.gi != GiMode::None ? 1u : 0u, 0u, 0u, 0u};
     f.lens = {2.0f * std::tan(0.5f * camera.fovy) / float(settings_.height), 0.0f, 0.0f, 0.0f};
     frame_.write(&f, sizeof(f));
     frameConstants_ = f;
 
     std::vector<glm::mat4> views{f.viewProj};
-    for (const ShadowLayer& l : shadow_->layers()) views.push_back(l.projection.viewProj);
+    for (const ShadowLayer& l : shadow_->pass().layers()) views.push_back(l.projection.viewProj);
     views_.write(views.data(), views.size() * sizeof(glm::mat4));
 
     std::vector<gpu::GpuLight> lights;
-    for (uint32_t i = 0; i < scene_.lights.size(); ++i) {
-        lights.push_back(toGpu(scene_.lights[i]));
-        shadow_->fillGpuLight(i, lights.back());
+    for (uint32_t i = 0; i < in.lights.size(); ++i) {
+        lights.push_back(toGpu(in.lights[i]));
+        shadow_->pass().fillGpuLight(i, lights.back());
     }
-    if (!lights.empty()) lights_.write(lights.data(), lights.size() * sizeof(gpu::GpuLight));
+    if (!lights.empty()) lights_buffer_.write(lights.data(), lights.size() * sizeof(gpu::GpuLight));
 }
 
-gpu::TonemapPush Renderer::tonemapParams(float zfar) const {
-    switch (settings_.aov) {
-        case Aov::Direct:
-        case Aov::Final:
-        case Aov::Indirect:
-        case Aov::LpvSlice: return {{settings_.exposure, 0.0f, float(TONEMAP_ACES), 0.0f}};
-        case Aov::GvSlice: return {{1.0f, 0.0f, float(TONEMAP_LINEAR), 0.0f}};
-        case Aov::Albedo:
-        case Aov::Cascade: return {{1.0f, 0.0f, float(TONEMAP_SRGB), 0.0f}};
-        case Aov::Normal: return {{0.5f, 0.5f, float(TONEMAP_LINEAR), 0.0f}};
-        case Aov::Depth: return {{1.0f / zfar, 0.0f, float(TONEMAP_LINEAR), 0.0f}};
-        case Aov::Shadow:
-        case Aov::Transmittance: return {{1.0f, 0.0f, float(TONEMAP_LINEAR), 0.0f}};
-        case Aov::DsmLists: return {{1.0f / float(settings_.dsm.maxList), 0.0f, float(TONEMAP_LINEAR), 0.0f}};
-    }
-    return {};
-}
-
-void Renderer::render(const Camera& camera) {
-    updateBuffers(camera);
+void Renderer::recordFrame(FrameSlot& slot, const FrameInputs& in, const FrameHooks& hooks) {
+    const uint32_t index = uint32_t(frameIndex_ % slots_.size());
+    for (vk::BufferRing* r : {&frame_, &views_, &lights_buffer_}) r->select(index);
+    zfar_ = sceneFar(in.camera, scene_.scene().bounds);
     graph_.clear();
-    shadow_->addTo(graph_, views_, 1);
-    gbuffer_->addTo(graph_, views_);
-    if (hairGBuffer_)
-        hairGBuffer_->addTo(graph_, *gbuffer_, views_, cameraRibbonView(camera.eye, frameConstants_.lens.x));
-    shadow_->addFilterTo(graph_, frame_, lights_, *gbuffer_);
-    if (rsm_) rsm_->addTo(graph_, views_, lights_);
-    if (rsmGather_) rsmGather_->addTo(graph_, frame_, *gbuffer_, *rsm_);
-    if (lpv_) {
-        lpv_->update(camera.eye);
-        lpv_->addTo(graph_, frame_, lights_, *gbuffer_, *rsm_);
-    }
-    vk::Image& indirect = rsmGather_ ? rsmGather_->irradiance() : lpv_ ? lpv_->irradiance() : noIndirect_;
-    dsm_->addTo(graph_);
-    lighting_->addTo(graph_, frame_, lights_, *gbuffer_, shadow_->mask(), indirect, *dsm_);
-    tonemap_->addTo(graph_, lighting_->hdr, tonemapParams(zfar_));
-    timer_.reset();
-    cmd_.submitAndWait([&](VkCommandBuffer cmd) { graph_.execute(cmd, &timer_); });
-    timings_ = timer_.results();
+    const float aspect = float(settings_.width) / float(settings_.height);
+    FrameContext context{graph_, index, in.camera, in.lights, settings_, aspect, zfar_, frameConstants_};
+    const std::vector<Technique*> list = techniques();
+    for (Technique* t : list) t->update(context);
+    writeFrameData(slot, in);
+    graph_.publish("frame", graph_.import(frame_.current()));
+    graph_.publish("views", graph_.import(views_.current()));
+    graph_.publish("lights", graph_.import(lights_buffer_.current()));
+    for (Technique* t : list) t->addPasses(context);
+
+    VK_CHECK(vkResetCommandPool(ctx_.device(), slot.pool, 0));
+    VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
+    bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    VK_CHECK(vkBeginCommandBuffer(slot.cmd, &bi));
+    slot.timer.reset();
+    const uint32_t whole = slot.timer.begin(slot.cmd, "frame");
+    graph_.execute(slot.cmd, &slot.timer);
+    slot.timer.end(slot.cmd, whole);
+    if (hooks.record) hooks.record(slot.cmd, lighting_->tonemap().ldr);
+    VK_CHECK(vkEndCommandBuffer(slot.cmd));
 }
+
+void Renderer::submit(const FrameInputs& in, const FrameHooks& hooks) {
+    const auto t0 = std::chrono::steady_clock::now();
+    if (layoutChanged(in.lights)) {
+        finish();
+        lights_ = in.lights;
+        build(kPartShadow | kPartDsm | kPartGi);
+    } else if (dsm_->maps().active()) {
+        // Deep shadow maps fit their projections to the lights when built: moving lights rebuild them.
+        bool moved = false;
+        for (size_t i = 0; i < in.lights.size(); ++i)
+            moved |= in.lights[i].position != lights_[i].position || in.lights[i].direction != lights_[i].direction;
+        if (moved) {
+            finish();
+            lights_ = in.lights;
+            build(kPartDsm);
+        }
+    }
+    FrameSlot& slot = acquireSlot();
+    recordFrame(slot, in, hooks);
+
+    VkCommandBufferSubmitInfo cb{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
+    cb.commandBuffer = slot.cmd;
+    VkSemaphoreSubmitInfo wait{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO};
+    wait.semaphore = hooks.wait;
+    wait.stageMask = hooks.waitStage;
+    VkSemaphoreSubmitInfo signal{VK_STRUCTURE_TYPE_SEMAPHORE_SUBMIT_INFO};
+    signal.semaphore = hooks.signal;
+    signal.stageMask = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+    VkSubmitInfo2 si{VK_STRUCTURE_TYPE_SUBMIT_INFO_2};
+    si.commandBufferInfoCount = 1;
+    si.pCommandBufferInfos = &cb;
+    si.waitSemaphoreInfoCount = hooks.wait ? 1 : 0;
+    si.pWaitSemaphoreInfos = &wait;
+    si.signalSemaphoreInfoCount = hooks.signal ? 1 : 0;
+    si.pSignalSemaphoreInfos = &signal;
+    VK_CHECK(vkQueueSubmit2(ctx_.queue(), 1, &si, slot.fence));
+    slot.pending = true;
+    slot.timings = {};
+    slot.timings.frame = frameIndex_++;
+    slot.timings.cpuMs = msSince(t0);
+}
+
+void Renderer::render(const Camera& camera) { render(FrameInputs{camera, scene_.scene().lights}); }
 
 std::vector<float> Renderer::readHdr() {
-    std::vector<uint8_t> bytes = cmd_.readImage(lighting_->hdr, 16);
+    finish();
+    std::vector<uint8_t> bytes = cmd_.readImage(lighting_->lighting().hdr, 16);
     std::vector<float> out(bytes.size() / 4);
     std::memcpy(out.data(), bytes.data(), bytes.size());
     return out;
 }
 
-std::vector<uint8_t> Renderer::readLdr() { return cmd_.readImage(tonemap_->ldr, 4); }
+std::vector<uint8_t> Renderer::readLdr() {
+    finish();
+    return cmd_.readImage(lighting_->tonemap().ldr, 4);
+}
 
 }  // namespace penumbra

@@ -1,58 +1,75 @@
-// The frame: shadow maps -> G-buffer -> deferred lighting -> tone map, wired through a FrameGraph.
-// Where the techniques go: RSM writes beside the shadow map (shadow pass), its gather and the LPV
-// passes sit between the G-buffer and lighting, deep shadow maps build and resolve before lighting.
+// The frame pipeline: G-buffer -> shadow maps -> deep shadow maps -> RSM (gather or LPV) -> deferred
+// lighting -> tone map, each a Technique declaring its passes on a FrameGraph, over a long-lived
+// GpuScene. Frames in flight (2 by default): per-slot command buffers, fences, timestamp pools and
+// host-written buffers; the loop never waits for the device to idle. Settings changes rebuild only
+// what they invalidate (render/settings_change.h).
 #pragma once
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
-#include "dsm/hair_passes.h"
-#include "render/gbuffer_pass.h"
-#include "render/lighting_pass.h"
-#include "lpv/lpv.h"
-#include "rsm/rsm_gather.h"
-#include "shadow/shadow_map_pass.h"
+#include "render/frame_techniques.h"
+#include "render/gpu_scene.h"
+#include "render/render_settings.h"
+#include "render/settings_change.h"
 
 namespace penumbra {
 
-enum class Aov {
-    Direct = AOV_DIRECT,
-    Albedo = AOV_ALBEDO,
-    Normal = AOV_NORMAL,
-    Depth = AOV_DEPTH,
-    Shadow = AOV_SHADOW,
-    Final = AOV_FINAL,
-    Indirect = AOV_INDIRECT,
-    LpvSlice = AOV_LPV_SLICE,
-    GvSlice = AOV_GV_SLICE,
-    Cascade = AOV_CASCADE,
-    Transmittance = AOV_TRANSMITTANCE,
-    DsmLists = AOV_DSM_LISTS,
+// What one frame shows besides the settings: the camera and the lights (moved, added or removed
+// freely: a changed light count or shadow layout re-creates the shadow resources, nothing else).
+struct FrameInputs {
+    Camera camera;
+    std::vector<Light> lights;
 };
 
-enum class GiMode { None, Rsm, Lpv };
+// Recorded into a frame's command buffer after its last pass (a viewer's present blit and UI), with
+// the semaphores the frame's submission waits on and signals.
+struct FrameHooks {
+    std::function<void(VkCommandBuffer, vk::Image& ldr)> record;
+    VkSemaphore wait = VK_NULL_HANDLE;
+    VkPipelineStageFlags2 waitStage = VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT;
+    VkSemaphore signal = VK_NULL_HANDLE;
+};
 
-struct RenderSettings {
-    uint32_t width = 1280;
-    uint32_t height = 720;
-    Aov aov = Aov::Final;
-    float exposure = 1.0f;  // linear multiplier before the tone mapper
-    ShadowSettings shadow;
-    GiMode gi = GiMode::None;
-    RsmSettings rsm;
-    LpvSettings lpv;
-    DsmSettings dsm;
+// GPU timings of one completed frame: per pass, and the whole frame between two timestamps.
+struct FrameTimings {
+    uint64_t frame = 0;                  // index of the frame they belong to
+    std::vector<vk::ScopeTiming> passes;
+    double gpuMs = 0.0;                  // timestamp before the first pass to after the last
+    double cpuMs = 0.0;                  // recording + submission on the host
 };
 
 class Renderer {
 public:
+    static constexpr uint32_t kDefaultFramesInFlight = 2;
+    // The frame pipeline for `settings` over a long-lived scene (uploaded once, shared).
+    Renderer(vk::Context& ctx, GpuScene& scene, const RenderSettings& settings,
+             uint32_t framesInFlight = kDefaultFramesInFlight);
+    // One-shot form (tests, single images): uploads its own copy of `scene`.
     Renderer(vk::Context& ctx, const Scene& scene, const RenderSettings& settings);
     ~Renderer();
 
-    // Renders one frame and waits for it; timings() then holds its per-pass GPU times.
+    // Takes new settings; returns the largest class of what changed. Per-frame values apply to the
+    // next frame; structure and size changes wait for the frames in flight, then rebuild what they own.
+    SettingsChange apply(const RenderSettings& settings);
+
+    // Records and submits one frame, waiting only for the frame slot it reuses (frames in flight).
+    void submit(const FrameInputs& inputs, const FrameHooks& hooks = {});
+    // Waits for every frame in flight (their fences) and collects their timings.
+    void finish();
+    // One frame with the scene's own lights, waited for (render, tests).
     void render(const Camera& camera);
-    const std::vector<vk::ScopeTiming>& timings() const { return timings_; }
-    std::vector<float> readHdr();     // RGBA32F, row-major, top row first
+    void render(const FrameInputs& inputs) { submit(inputs); finish(); }
+
+    // Per-pass GPU times of the newest completed frame.
+    const std::vector<vk::ScopeTiming>& timings() const { return lastTimings_.passes; }
+    const FrameTimings& frameTimings() const { return lastTimings_; }
+    // Every completed frame's timings since the last call (bench), oldest first.
+    std::vector<FrameTimings> takeCompletedTimings();
+    uint64_t framesSubmitted() const { return frameIndex_; }
+
+    std::vector<float> readHdr();     // RGBA32F, row-major, top row first (after finish())
     std::vector<uint8_t> readLdr();   // RGBA8 (sRGB-encoded for radiance and colour AOVs)
     std::string describePasses() const { return graph_.describe(); }
     const std::vector<PassDesc>& passes() const { return graph_.passes(); }
@@ -60,52 +77,56 @@ public:
     const std::vector<std::string>& warnings() const { return warnings_; }
     vk::Allocator& allocator() { return alloc_; }
     const RenderSettings& settings() const { return settings_; }
-    // The AOV of the next frames (it only selects what the lighting pass writes; `penumbra eval` reads
-    // Final and Indirect of one renderer).
+    const Scene& scene() const { return scene_.scene(); }
+    GpuScene& gpuScene() { return scene_; }
+    // The AOV of the next frames (a per-frame value).
     void setAov(Aov aov) { settings_.aov = aov; }
     // Internals for tests and statistics: the G-buffer, read-backs, the last frame's constants.
-    GBufferPass& gbuffer() { return *gbuffer_; }
-    ShadowMapPass& shadow() { return *shadow_; }  // layers, shadow map, mask
+    GBufferPass& gbuffer() { return camera_->gbuffer(); }
+    ShadowMapPass& shadow() { return shadow_->pass(); }  // layers, shadow map, mask
     vk::CommandContext& commands() { return cmd_; }
     const gpu::FrameUniforms& frameUniforms() const { return frameConstants_; }
     // GI internals, for tests and statistics (null when that GI mode is off).
-    RsmPass* rsm() { return rsm_.get(); }
-    RsmGather* rsmGather() { return rsmGather_.get(); }
-    LightPropagationVolume* lpv() { return lpv_.get(); }
+    RsmPass* rsm() { return rsm_ ? &rsm_->pass() : nullptr; }
+    RsmGather* rsmGather() { return rsm_ ? rsm_->gather() : nullptr; }
+    LightPropagationVolume* lpv() { return lpv_ ? &lpv_->volume() : nullptr; }
     // Deep shadow maps (always present; inactive unless --shadow dsm) and the hair (null without strands).
-    DeepShadowMaps& deepShadows() { return *dsm_; }
-    const HairGpu* hair() const { return hair_.get(); }
+    DeepShadowMaps& deepShadows() { return dsm_->maps(); }
+    const HairGpu* hair() const { return scene_.hair(); }
+    vk::Image& ldr() { return lighting_->tonemap().ldr; }
 
 private:
-    void updateBuffers(const Camera& camera);
-    void setupGi();
-    void setupHairAndDsm();
-    std::vector<HairShadowLayer> hairShadowLayers() const;
-    gpu::TonemapPush tonemapParams(float zfar) const;
+    struct FrameSlot;
+    void init();
+    void build(uint32_t parts);
+    bool layoutChanged(const std::vector<Light>& lights) const;
+    FrameSlot& acquireSlot();
+    void writeFrameData(FrameSlot& slot, const FrameInputs& in);
+    void recordFrame(FrameSlot& slot, const FrameInputs& in, const FrameHooks& hooks);
+    void collect(FrameSlot& slot);
+    std::vector<Technique*> techniques() const;
 
+    std::unique_ptr<GpuScene> ownedScene_;  // the one-shot form's
     vk::Context& ctx_;
-    const Scene& scene_;
+    GpuScene& scene_;
     RenderSettings settings_;
     vk::Allocator alloc_;
     vk::CommandContext cmd_;
-    vk::GpuTimer timer_;
-    std::unique_ptr<SceneGpu> sceneGpu_;
+    uint32_t framesInFlight_;
+    std::vector<std::unique_ptr<FrameSlot>> slots_;
+    uint64_t frameIndex_ = 0;
+    std::vector<Light> lights_;  // the lights the shadow layout was built for
     vk::DescriptorLayout drawLayout_;
-    std::unique_ptr<ShadowMapPass> shadow_;
-    std::unique_ptr<GBufferPass> gbuffer_;
-    std::unique_ptr<LightingPass> lighting_;
-    std::unique_ptr<TonemapPass> tonemap_;
-    std::unique_ptr<RsmPass> rsm_;
-    std::unique_ptr<RsmGather> rsmGather_;
-    std::unique_ptr<LightPropagationVolume> lpv_;
-    std::unique_ptr<HairGpu> hair_;
-    std::unique_ptr<HairGBufferPass> hairGBuffer_;
-    std::unique_ptr<HairShadowPass> hairShadow_;
-    std::unique_ptr<DeepShadowMaps> dsm_;
-    vk::Image noIndirect_;  // bound in place of the indirect irradiance when GI is off
-    vk::Buffer frame_, views_, lights_;
+    vk::BufferRing frame_, views_, lights_buffer_;
+    std::unique_ptr<DsmTechnique> dsm_;
+    std::unique_ptr<ShadowTechnique> shadow_;
+    std::unique_ptr<CameraTechnique> camera_;
+    std::unique_ptr<RsmTechnique> rsm_;
+    std::unique_ptr<LpvTechnique> lpv_;
+    std::unique_ptr<LightingTechnique> lighting_;
     FrameGraph graph_;
-    std::vector<vk::ScopeTiming> timings_;
+    FrameTimings lastTimings_;
+    std::vector<FrameTimings> completed_;
     std::vector<std::string> warnings_;
     float zfar_ = 1.0f;
     gpu::FrameUniforms frameConstants_{};

@@ -57,10 +57,10 @@ std::vector<vk::Binding> SceneGpu::drawSetBindings() {
             {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}};
 }
 
-vk::DescriptorWrites SceneGpu::drawSetWrites(const vk::Buffer& views) const {
-    vk::DescriptorWrites w;
-    w.storageBuffer(0, views).storageBuffer(1, materials_).sampled(2, textures_.view(), sampler_.handle());
-    return w;
+void SceneGpu::declareDrawSet(PassBuilder& pass, BufferHandle views) {
+    FrameGraph& g = pass.graph();
+    pass.storageBuffer(0, views).storageBuffer(1, g.import(materials_)).sampled(2, g.import(textures_),
+                                                                                sampler_.handle());
 }
 
 void SceneGpu::uploadTextures(vk::CommandContext& cmd) {

@@ -3,6 +3,7 @@
 #pragma once
 #include <vector>
 
+#include "render/frame_graph.h"
 #include "scene/scene.h"
 #include "shared/types.h"
 #include "vk/commands.h"
@@ -25,11 +26,8 @@ public:
     vk::Image& textures() { return textures_; }
     VkSampler textureSampler() const { return sampler_.handle(); }
     // Set 0 of the pipelines that draw the scene: views, materials, textures (bindings 0-2); a pass
-    // may add its own bindings before pushing.
-    vk::DescriptorWrites drawSetWrites(const vk::Buffer& views) const;
-    void pushDrawSet(VkCommandBuffer cmd, const vk::Pipeline& pipeline, const vk::Buffer& views) const {
-        drawSetWrites(views).push(ctx_, cmd, pipeline);
-    }
+    // may declare more bindings of its own.
+    void declareDrawSet(PassBuilder& pass, BufferHandle views);
     static std::vector<vk::Binding> drawSetBindings();
 
     // Vertex input of penumbra::Vertex for GraphicsDesc.

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <random>
 
+#include <fmt/format.h>
+
 namespace penumbra {
 namespace {
 
@@ -55,9 +57,17 @@ RsmGather::RsmGather(vk::Allocator& alloc, vk::CommandContext& cmd, uint32_t wid
     } else {
         pixelList_ = vk::Buffer(alloc, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false, "rsm-unused-list");
     }
-    std::vector<glm::vec4> pattern = rsmSamplePattern(settings);
-    samples_ = cmd.createDeviceBuffer(pattern.data(), pattern.size() * sizeof(glm::vec4),
-                                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "rsm-samples");
+    // Sized for the largest sample count, so that --rsm-samples is a per-frame value.
+    samples_ = vk::BufferRing(alloc, sizeof(glm::vec4) * kMaxRsmSamples, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                              "rsm-samples");
+    setSettings(settings);
+}
+
+void RsmGather::setSettings(const RsmSettings& s) {
+    if (s.samples > kMaxRsmSamples) throw vk::VulkanError(fmt::format("--rsm-samples {}: at most {}", s.samples,
+                                                                     kMaxRsmSamples));
+    settings_ = s;
+    pattern_ = rsmSamplePattern(s);
 }
 
 // Push constants shared by the gather and interpolation passes; sizes are the low-resolution grid's
@@ -69,82 +79,69 @@ gpu::RsmPush RsmGather::constants(uint32_t mode, uint32_t layers) const {
             {settings_.normalThreshold, settings_.distanceThreshold, settings_.radius, 0}};
 }
 
-PassDesc RsmGather::gatherPass(const char* name, uint32_t mode, vk::Image& out, const vk::Buffer& frame,
-                               GBufferPass& g, RsmPass& rsm) {
-    PassDesc pass;
-    pass.name = name;
-    pass.images = {{&g.normal, Use::Sampled}, {&g.depth, Use::Sampled}, {&rsm.depth(), Use::Sampled},
-                   {&rsm.normal(), Use::Sampled}, {&rsm.flux(), Use::Sampled}, {&out, Use::StorageWrite}};
-    pass.buffers = {{&frame, Use::Uniform}, {&rsm.layerTable(), Use::StorageRead}, {&samples_, Use::StorageRead}};
-    if (mode == RSM_GATHER_LIST) {
-        pass.buffers.push_back({&pixelList_, Use::StorageRead});
-        pass.buffers.push_back({&dispatchArgs_, Use::IndirectArgs});
-    }
-    const gpu::RsmPush pc = constants(mode, rsm.layerCount());
-    pass.record = [this, mode, pc, &out, &frame, &g, &rsm](VkCommandBuffer cmd) {
-        gather_.pipeline.bind(cmd);
-        const VkImageLayout depthRead = VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL;
-        vk::DescriptorWrites()
-            .uniformBuffer(0, frame)
-            .sampled(1, g.normal.view(), pointSampler_.handle())
-            .sampled(2, g.depth.view(), pointSampler_.handle(), depthRead)
-            .sampled(3, rsm.depth().view(), pointSampler_.handle(), depthRead)
-            .sampled(4, rsm.normal().view(), pointSampler_.handle())
-            .sampled(5, rsm.flux().view(), pointSampler_.handle())
-            .storageBuffer(6, rsm.layerTable())
-            .storageBuffer(7, samples_)
-            .storageImage(8, out.view())
-            .storageBuffer(9, pixelList_)
-            .push(alloc_.context(), cmd, gather_.pipeline);
-        gather_.pipeline.push(cmd, pc);
-        if (mode == RSM_GATHER_LIST) vkCmdDispatchIndirect(cmd, dispatchArgs_.handle(), 0);
-        else vkCmdDispatch(cmd, vk::divUp(pc.sizes.x, 8), vk::divUp(pc.sizes.y, 8), 1);
-    };
-    return pass;
+void RsmGather::addGather(FrameGraph& graph, const char* name, uint32_t mode, ImageHandle out, uint32_t layers) {
+    const VkSampler point = pointSampler_.handle();
+    PassBuilder pass = graph.pass(name);
+    pass.pipeline(gather_.pipeline)
+        .uniform(0, graph.buffer("frame"))
+        .sampled(1, graph.image("gbuffer.normal"), point)
+        .sampled(2, graph.image("gbuffer.depth"), point)
+        .sampled(3, graph.image("rsm.depth"), point)
+        .sampled(4, graph.image("rsm.normal"), point)
+        .sampled(5, graph.image("rsm.flux"), point)
+        .storageBuffer(6, graph.buffer("rsm.layers"))
+        .storageBuffer(7, graph.import(samples_.current()))
+        .storageImage(8, out)
+        .storageBuffer(9, graph.import(pixelList_));
+    const BufferHandle args = mode == RSM_GATHER_LIST ? graph.import(dispatchArgs_) : BufferHandle{};
+    if (args) pass.use(args, Use::IndirectArgs);
+    const gpu::RsmPush pc = constants(mode, layers);
+    pass.record([this, pc, args](PassContext& c) {
+        gather_.pipeline.push(c.cmd, pc);
+        if (args) vkCmdDispatchIndirect(c.cmd, c.buffer(args).handle(), 0);
+        else vkCmdDispatch(c.cmd, vk::divUp(pc.sizes.x, 8), vk::divUp(pc.sizes.y, 8), 1);
+    });
 }
 
-void RsmGather::addTo(FrameGraph& graph, const vk::Buffer& frame, GBufferPass& g, RsmPass& rsm) {
+void RsmGather::addTo(FrameGraph& graph, uint32_t layers, uint32_t slot) {
+    samples_.select(slot);
+    samples_.write(pattern_.data(), pattern_.size() * sizeof(glm::vec4));
+    const ImageHandle irradiance = graph.import(irradiance_);
+    graph.publish("gi.irradiance", irradiance);
     if (settings_.mode == RsmMode::Full || settings_.mode == RsmMode::AllTexels) {
         const uint32_t mode = settings_.mode == RsmMode::Full ? RSM_GATHER_FULL : RSM_GATHER_ALL_TEXELS;
-        graph.add(gatherPass("rsm.gather", mode, irradiance_, frame, g, rsm));
+        addGather(graph, "rsm.gather", mode, irradiance, layers);
         return;
     }
-    graph.add(gatherPass("rsm.gather-lowres", RSM_GATHER_LOWRES, low_, frame, g, rsm));
+    const ImageHandle low = graph.import(low_);
+    const BufferHandle list = graph.import(pixelList_), args = graph.import(dispatchArgs_);
+    addGather(graph, "rsm.gather-lowres", RSM_GATHER_LOWRES, low, layers);
 
-    PassDesc clear{"rsm.clear-list", PassKind::Transfer, {}, {{&pixelList_, Use::TransferDst}}, {}};
-    clear.record = [this](VkCommandBuffer cmd) { vkCmdFillBuffer(cmd, pixelList_.handle(), 0, 16, 0); };
-    graph.add(std::move(clear));
+    graph.pass("rsm.clear-list", PassKind::Transfer).use(list, Use::TransferDst).record([list](PassContext& c) {
+        vkCmdFillBuffer(c.cmd, c.buffer(list).handle(), 0, 16, 0);
+    });
 
-    PassDesc interp{"rsm.interpolate", PassKind::Compute, {}, {}, {}};
-    interp.images = {{&g.normal, Use::Sampled}, {&g.depth, Use::Sampled}, {&low_, Use::Sampled},
-                     {&irradiance_, Use::StorageWrite}};
-    interp.buffers = {{&frame, Use::Uniform}, {&pixelList_, Use::StorageWrite}};
-    const gpu::RsmPush pc = constants(RSM_GATHER_LOWRES, rsm.layerCount());  // sizes = the low-res grid
-    interp.record = [this, pc, &frame, &g](VkCommandBuffer cmd) {
-        interpolate_.pipeline.bind(cmd);
-        vk::DescriptorWrites()
-            .uniformBuffer(0, frame)
-            .sampled(1, g.normal.view(), pointSampler_.handle())
-            .sampled(2, g.depth.view(), pointSampler_.handle(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
-            .sampled(3, low_.view(), pointSampler_.handle())
-            .storageImage(4, irradiance_.view())
-            .storageBuffer(5, pixelList_)
-            .push(alloc_.context(), cmd, interpolate_.pipeline);
-        interpolate_.pipeline.push(cmd, pc);
-        vkCmdDispatch(cmd, vk::divUp(width_, 8), vk::divUp(height_, 8), 1);
-    };
-    graph.add(std::move(interp));
+    const VkSampler point = pointSampler_.handle();
+    const gpu::RsmPush pc = constants(RSM_GATHER_LOWRES, layers);  // sizes = the low-res grid
+    graph.pass("rsm.interpolate")
+        .pipeline(interpolate_.pipeline)
+        .uniform(0, graph.buffer("frame"))
+        .sampled(1, graph.image("gbuffer.normal"), point)
+        .sampled(2, graph.image("gbuffer.depth"), point)
+        .sampled(3, low, point)
+        .storageImage(4, irradiance)
+        .storageBuffer(5, list, Use::StorageWrite)
+        .record([this, pc](PassContext& c) {
+            interpolate_.pipeline.push(c.cmd, pc);
+            vkCmdDispatch(c.cmd, vk::divUp(width_, 8), vk::divUp(height_, 8), 1);
+        });
 
-    PassDesc args{"rsm.fallback-args", PassKind::Compute, {}, {}, {}};
-    args.buffers = {{&pixelList_, Use::StorageRead}, {&dispatchArgs_, Use::StorageWrite}};
-    args.record = [this](VkCommandBuffer cmd) {
-        args_.pipeline.bind(cmd);
-        vk::DescriptorWrites().storageBuffer(0, pixelList_).storageBuffer(1, dispatchArgs_)
-            .push(alloc_.context(), cmd, args_.pipeline);
-        vkCmdDispatch(cmd, 1, 1, 1);
-    };
-    graph.add(std::move(args));
-    graph.add(gatherPass("rsm.gather-fallback", RSM_GATHER_LIST, irradiance_, frame, g, rsm));
+    graph.pass("rsm.fallback-args")
+        .pipeline(args_.pipeline)
+        .storageBuffer(0, list, Use::StorageRead)
+        .storageBuffer(1, args, Use::StorageWrite)
+        .record([](PassContext& c) { vkCmdDispatch(c.cmd, 1, 1, 1); });
+    addGather(graph, "rsm.gather-fallback", RSM_GATHER_LIST, irradiance, layers);
 }
 
 double RsmGather::fallbackFraction() {

@@ -4,7 +4,6 @@
 #include <vector>
 
 #include "render/frame_graph.h"
-#include "render/gbuffer_pass.h"
 #include "rsm/rsm_pass.h"
 
 namespace penumbra {
@@ -17,7 +16,11 @@ class RsmGather {
 public:
     RsmGather(vk::Allocator& alloc, vk::CommandContext& cmd, uint32_t width, uint32_t height,
               const RsmSettings& settings);
-    void addTo(FrameGraph& graph, const vk::Buffer& frame, GBufferPass& gbuffer, RsmPass& rsm);
+    // Reads "frame", the G-buffer, the RSM ("rsm.*"); publishes "gi.irradiance".
+    void addTo(FrameGraph& graph, uint32_t layerCount, uint32_t slot);
+    // Per-frame values (samples, radius, seed, weights, thresholds); mode, resolution and the low-res
+    // factor size resources and must not change.
+    void setSettings(const RsmSettings& settings);
 
     vk::Image& irradiance() { return irradiance_; }
     // Fraction of full-resolution pixels gathered in full by the interpolated path in the last frame.
@@ -25,8 +28,7 @@ public:
 
 private:
     gpu::RsmPush constants(uint32_t mode, uint32_t layers) const;
-    PassDesc gatherPass(const char* name, uint32_t mode, vk::Image& out, const vk::Buffer& frame, GBufferPass& g,
-                        RsmPass& rsm);
+    void addGather(FrameGraph& graph, const char* name, uint32_t mode, ImageHandle out, uint32_t layers);
     vk::Allocator& alloc_;
     vk::CommandContext& cmd_;
     RsmSettings settings_;
@@ -34,7 +36,9 @@ private:
     vk::ComputeKernel gather_, interpolate_, args_;
     vk::Sampler pointSampler_;
     vk::Image irradiance_, low_;
-    vk::Buffer samples_, pixelList_, dispatchArgs_;
+    std::vector<glm::vec4> pattern_;
+    vk::BufferRing samples_;  // the pattern, rewritten each frame into the frame slot's copy
+    vk::Buffer pixelList_, dispatchArgs_;
 };
 
 }  // namespace penumbra

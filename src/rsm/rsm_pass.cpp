@@ -23,10 +23,10 @@ RsmPass::RsmPass(vk::Allocator& alloc, SceneGpu& scene, const RsmSettings& setti
     d.dynamicCullMode = true;
     d.frontFace = SceneGpu::sceneFrontFace(false);
     pipeline_ = vk::Pipeline::graphics(ctx, d, {layout_.handle()}, sizeof(gpu::RsmDrawPush));
-    setLayers({});
+    setLayers({}, 0);
 }
 
-void RsmPass::setLayers(const std::vector<RsmLayerSource>& layers) {
+void RsmPass::setLayers(const std::vector<RsmLayerSource>& layers, uint32_t slot) {
     sources_ = layers;
     const uint32_t n = std::max<uint32_t>(1, uint32_t(layers.size()));
     const uint32_t r = settings_.resolution;
@@ -38,9 +38,10 @@ void RsmPass::setLayers(const std::vector<RsmLayerSource>& layers) {
                                      "rsm-normal", 1, true});
         flux_ = vk::Image(alloc_, {VK_FORMAT_R16G16B16A16_SFLOAT, r, r, n,
                                    target | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, "rsm-flux", 1, true});
-        layerTable_ = vk::Buffer(alloc_, sizeof(gpu::GpuRsmLayer) * n, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, true,
-                                 "rsm-layers");
+        layerTable_ = vk::BufferRing(alloc_, sizeof(gpu::GpuRsmLayer) * n, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                     "rsm-layers");
     }
+    layerTable_.select(slot);
     std::vector<gpu::GpuRsmLayer> table(n);
     for (size_t i = 0; i < layers.size(); ++i) {
         const RsmLayerSource& s = layers[i];
@@ -53,36 +54,36 @@ void RsmPass::setLayers(const std::vector<RsmLayerSource>& layers) {
     layerTable_.write(table.data(), table.size() * sizeof(gpu::GpuRsmLayer));
 }
 
-void RsmPass::addTo(FrameGraph& graph, const vk::Buffer& views, const vk::Buffer& lights) {
+void RsmPass::addTo(FrameGraph& graph) {
+    const ImageHandle depth = graph.import(depth_), normal = graph.import(normal_), flux = graph.import(flux_);
+    const BufferHandle table = graph.import(layerTable_.current());
+    graph.publish("rsm.depth", depth);
+    graph.publish("rsm.normal", normal);
+    graph.publish("rsm.flux", flux);
+    graph.publish("rsm.layers", table);
     if (sources_.empty()) return;
-    PassDesc pass;
-    pass.name = "rsm.render";
-    pass.kind = PassKind::Raster;
-    pass.images = {{&depth_, Use::DepthAttachment},
-                   {&normal_, Use::ColorAttachment},
-                   {&flux_, Use::ColorAttachment},
-                   {&scene_.textures(), Use::Sampled}};
-    pass.buffers = {{&views, Use::StorageRead}, {&scene_.materials(), Use::StorageRead},
-                    {&lights, Use::StorageRead}, {&layerTable_, Use::StorageRead}};
-    pass.record = [this, &views, &lights](VkCommandBuffer cmd) {
+    PassBuilder pass = graph.pass("rsm.render", PassKind::Raster);
+    pass.pipeline(pipeline_)
+        .use(depth, Use::DepthAttachment)
+        .use(normal, Use::ColorAttachment)
+        .use(flux, Use::ColorAttachment);
+    scene_.declareDrawSet(pass, graph.buffer("views"));
+    pass.storageBuffer(3, graph.buffer("lights")).storageBuffer(4, table);
+    pass.record([this](PassContext& c) {
         const uint32_t r = settings_.resolution;
         for (uint32_t layer = 0; layer < sources_.size(); ++layer) {
             RasterTarget target{{r, r}};
             target.colors = {{normal_.layerView(layer), {{0, 0, 0, 0}}}, {flux_.layerView(layer), {{0, 0, 0, 0}}}};
             target.depth = depth_.layerView(layer);
-            beginRaster(cmd, target);
-            pipeline_.bind(cmd);
-            vk::DescriptorWrites w = scene_.drawSetWrites(views);
-            w.storageBuffer(3, lights).storageBuffer(4, layerTable_).push(alloc_.context(), cmd, pipeline_);
+            beginRaster(c.cmd, target);
             const RsmLayerSource& s = sources_[layer];
             scene_.draw(
-                cmd,
-                [&](const Draw& d) { pipeline_.push(cmd, gpu::RsmDrawPush{s.viewIndex, d.material, s.light, layer}); },
+                c.cmd,
+                [&](const Draw& d) { pipeline_.push(c.cmd, gpu::RsmDrawPush{s.viewIndex, d.material, s.light, layer}); },
                 [](const Material&) { return true; });
-            vkCmdEndRendering(cmd);
+            vkCmdEndRendering(c.cmd);
         }
-    };
-    graph.add(std::move(pass));
+    });
 }
 
 }  // namespace penumbra

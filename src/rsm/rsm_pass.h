@@ -28,16 +28,17 @@ class RsmPass {
 public:
     RsmPass(vk::Allocator& alloc, SceneGpu& scene, const RsmSettings& settings);
 
-    // Fixes the layers for the coming frames (writes the layer table, sizes the images).
-    void setLayers(const std::vector<RsmLayerSource>& layers);
-    void addTo(FrameGraph& graph, const vk::Buffer& views, const vk::Buffer& lights);
+    // The layers of this frame (writes frame slot `slot`'s layer table; a new count re-sizes the images).
+    void setLayers(const std::vector<RsmLayerSource>& layers, uint32_t slot);
+    // rsm.render: reads "views", "lights"; publishes "rsm.depth", "rsm.normal", "rsm.flux", "rsm.layers".
+    void addTo(FrameGraph& graph);
 
     uint32_t layerCount() const { return uint32_t(sources_.size()); }
     const RsmSettings& settings() const { return settings_; }
     vk::Image& depth() { return depth_; }
     vk::Image& normal() { return normal_; }
     vk::Image& flux() { return flux_; }
-    const vk::Buffer& layerTable() const { return layerTable_; }
+    const vk::Buffer& layerTable() const { return layerTable_.current(); }
 
 private:
     vk::Allocator& alloc_;
@@ -47,7 +48,7 @@ private:
     vk::Pipeline pipeline_;
     std::vector<RsmLayerSource> sources_;
     vk::Image depth_, normal_, flux_;
-    vk::Buffer layerTable_;
+    vk::BufferRing layerTable_;
 };
 
 }  // namespace penumbra

@@ -16,6 +16,8 @@ enum class RsmMode {
 // uniform VPL field gives the exact disc sum.
 enum class RsmWeights { Unbiased, Paper };
 
+inline constexpr uint32_t kMaxRsmSamples = 16384;  // --rsm-samples' range: the pattern buffer's size
+
 struct RsmSettings {
     uint32_t resolution = 512;   // RSM texels per side (per shadowed light)
     uint32_t samples = 400;      // gather samples per receiver

@@ -29,35 +29,30 @@ void ShadowFilterPass::ensureMask(uint32_t width, uint32_t height, uint32_t laye
                                "shadow-mask", 1, true});
 }
 
-void ShadowFilterPass::addTo(FrameGraph& graph, const vk::Buffer& frame, const vk::Buffer& lights, GBufferPass& g,
-                             const ShadowFilterInputs& in, uint32_t shadowedLights) {
-    ensureMask(g.depth.width(), g.depth.height(), std::max(shadowedLights, 1u));
+void ShadowFilterPass::addTo(FrameGraph& graph, uint32_t shadowedLights) {
+    const ImageHandle depth = graph.image("gbuffer.depth");
+    const vk::Image& target = graph.imageOf(depth);
+    ensureMask(target.width(), target.height(), std::max(shadowedLights, 1u));
+    const ImageHandle mask = graph.import(mask_);
+    graph.publish("shadow.mask", mask);
     if (shadowedLights == 0) return;  // the lighting pass reads no layer of the mask
-    PassDesc pass;
-    pass.name = "shadow.filter";
-    pass.images = {{&g.depth, Use::Sampled}, {&g.normal, Use::Sampled}, {in.depthMap, Use::Sampled},
-                   {in.moments, Use::Sampled}, {&mask_, Use::StorageWrite}};
-    pass.buffers = {{&frame, Use::Uniform}, {&lights, Use::StorageRead}, {in.layerTable, Use::StorageRead},
-                    {in.lightTable, Use::StorageRead}, {in.params, Use::Uniform}};
-    pass.record = [this, &frame, &lights, &g, in](VkCommandBuffer cmd) {
-        const VkImageLayout depthRead = VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL;
-        kernel_.pipeline.bind(cmd);
-        vk::DescriptorWrites()
-            .uniformBuffer(0, frame)
-            .storageBuffer(1, lights)
-            .sampled(2, g.depth.view(), point_.handle(), depthRead)
-            .sampled(3, g.normal.view(), point_.handle())
-            .sampled(4, in.depthMap->view(), compare_.handle(), depthRead)
-            .sampled(5, in.depthMap->view(), depth_.handle(), depthRead)
-            .sampled(6, in.moments->view(), moments_.handle())
-            .storageBuffer(7, *in.layerTable)
-            .storageBuffer(8, *in.lightTable)
-            .uniformBuffer(9, *in.params)
-            .storageImage(10, mask_.view())
-            .push(alloc_.context(), cmd, kernel_.pipeline);
-        vkCmdDispatch(cmd, vk::divUp(mask_.width(), 8), vk::divUp(mask_.height(), 8), 1);
-    };
-    graph.add(std::move(pass));
+    const ImageHandle map = graph.image("shadow.map");
+    graph.pass("shadow.filter")
+        .pipeline(kernel_.pipeline)
+        .uniform(0, graph.buffer("frame"))
+        .storageBuffer(1, graph.buffer("lights"))
+        .sampled(2, depth, point_.handle())
+        .sampled(3, graph.image("gbuffer.normal"), point_.handle())
+        .sampled(4, map, compare_.handle())
+        .sampled(5, map, depth_.handle())
+        .sampled(6, graph.image("shadow.moments"), moments_.handle())
+        .storageBuffer(7, graph.buffer("shadow.layers"))
+        .storageBuffer(8, graph.buffer("shadow.lights"))
+        .uniform(9, graph.buffer("shadow.params"))
+        .storageImage(10, mask)
+        .record([this](PassContext& c) {
+            vkCmdDispatch(c.cmd, vk::divUp(mask_.width(), 8), vk::divUp(mask_.height(), 8), 1);
+        });
 }
 
 }  // namespace penumbra

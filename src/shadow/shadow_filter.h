@@ -4,19 +4,9 @@
 // filter's cost is this pass's GPU time.
 #pragma once
 #include "render/frame_graph.h"
-#include "render/gbuffer_pass.h"
 #include "vk/pipeline.h"
 
 namespace penumbra {
-
-// The tables and images the filter reads, owned by ShadowMapPass.
-struct ShadowFilterInputs {
-    vk::Image* depthMap;
-    vk::Image* moments;
-    const vk::Buffer* layerTable;
-    const vk::Buffer* lightTable;
-    const vk::Buffer* params;
-};
 
 class ShadowFilterPass {
 public:
@@ -24,8 +14,9 @@ public:
     // D32_SFLOAT can be filtered linearly on this device: PCF uses the hardware's bilinear compare.
     // Otherwise (lavapipe) the shader does the same 2x2 bilinear from a compare gather.
     bool linearCompare() const { return linearCompare_; }
-    void addTo(FrameGraph& graph, const vk::Buffer& frame, const vk::Buffer& lights, GBufferPass& gbuffer,
-               const ShadowFilterInputs& in, uint32_t shadowedLights);
+    // Reads "frame", "lights", the G-buffer's depth and normal, "shadow.map", "shadow.moments",
+    // "shadow.layers", "shadow.lights", "shadow.params"; publishes "shadow.mask".
+    void addTo(FrameGraph& graph, uint32_t shadowedLights);
     vk::Image& mask() { return mask_; }
 
 private:

@@ -40,6 +40,9 @@ public:
     // cameraFar = the view's far plane).
     void update(const std::vector<Light>& lights, const Camera& camera, float aspect, float cameraFar);
 
+    // Per-frame values only (radii, splits); what assign() sized must stay as it was.
+    void setSettings(const ShadowSettings& settings) { settings_ = settings; }
+
     const std::vector<ShadowLayer>& layers() const { return layers_; }
     const std::vector<ShadowedLight>& shadowed() const { return shadowed_; }
     int shadowIndexOf(uint32_t light) const { return light < indexOfLight_.size() ? indexOfLight_[light] : -1; }

@@ -33,22 +33,31 @@ void ShadowMapPass::assign(const std::vector<Light>& lights) {
                                       VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                                   "shadow-map", 1, true});
     moments_.resize(layout_.momentLayerCount());
-    // Host-visible tables, rewritten by update() while the GPU is idle between frames.
+    // Host-visible tables, one copy per frame in flight, rewritten by update().
     const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
-    layerTable_ = vk::Buffer(alloc_, sizeof(gpu::GpuShadowLayer) * layers, storage, true, "shadow-layers");
-    lightTable_ = vk::Buffer(alloc_, sizeof(gpu::GpuShadowLight) * std::max<size_t>(layout_.shadowed().size(), 1),
-                             storage, true, "shadow-lights");
-    params_ = vk::Buffer(alloc_, sizeof(gpu::GpuShadowParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, true,
-                         "shadow-params");
+    layerTable_ = vk::BufferRing(alloc_, sizeof(gpu::GpuShadowLayer) * layers, storage, "shadow-layers");
+    lightTable_ = vk::BufferRing(alloc_, sizeof(gpu::GpuShadowLight) * std::max<size_t>(layout_.shadowed().size(), 1),
+                                 storage, "shadow-lights");
+    params_ = vk::BufferRing(alloc_, sizeof(gpu::GpuShadowParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, "shadow-params");
 }
 
-void ShadowMapPass::update(const Camera& camera, float aspect, float cameraFar) {
+void ShadowMapPass::setSettings(const ShadowSettings& settings) {
+    validate(settings);
+    settings_ = settings;
+    layout_.setSettings(settings);
+    raster_.setSettings(settings);
+}
+
+void ShadowMapPass::update(const std::vector<Light>& lights, const Camera& camera, float aspect, float cameraFar,
+                           uint32_t slot) {
+    lights_ = lights;
+    for (vk::BufferRing* ring : {&layerTable_, &lightTable_, &params_}) ring->select(slot);
     layout_.update(lights_, camera, aspect, cameraFar);
     const std::vector<gpu::GpuShadowLayer> layers = layout_.gpuLayers();
-    const std::vector<gpu::GpuShadowLight> lights = layout_.gpuLights();
+    const std::vector<gpu::GpuShadowLight> shadowed = layout_.gpuLights();
     const gpu::GpuShadowParams params = layout_.gpuParams(filter_.linearCompare());
     if (!layers.empty()) layerTable_.write(layers.data(), layers.size() * sizeof(layers[0]));
-    if (!lights.empty()) lightTable_.write(lights.data(), lights.size() * sizeof(lights[0]));
+    if (!shadowed.empty()) lightTable_.write(shadowed.data(), shadowed.size() * sizeof(shadowed[0]));
     params_.write(&params, sizeof(params));
 }
 
@@ -63,23 +72,22 @@ void ShadowMapPass::fillGpuLight(uint32_t light, gpu::GpuLight& g) const {
     g.shadowViewProj = p.viewProj;
 }
 
-void ShadowMapPass::addTo(FrameGraph& graph, const vk::Buffer& views, uint32_t firstView) {
-    if (layers().empty()) return;
-    PassDesc pass;
-    pass.name = "shadow.map";
-    pass.kind = PassKind::Raster;
-    pass.images = {{&map_, Use::DepthAttachment}, {&scene_.textures(), Use::Sampled}};
-    pass.buffers = {{&views, Use::StorageRead}, {&scene_.materials(), Use::StorageRead}};
-    pass.record = [this, &views, firstView](VkCommandBuffer cmd) { raster_.record(cmd, map_, views, firstView, layout_); };
-    graph.add(std::move(pass));
-    if (extraCasters_) extraCasters_(graph, map_);
-    moments_.addTo(graph, map_, layerTable_, params_);
+void ShadowMapPass::addTo(FrameGraph& graph, uint32_t firstView) {
+    const ImageHandle map = graph.import(map_);
+    graph.publish("shadow.map", map);
+    graph.publish("shadow.layers", graph.import(layerTable_.current()));
+    graph.publish("shadow.lights", graph.import(lightTable_.current()));
+    graph.publish("shadow.params", graph.import(params_.current()));
+    if (!layers().empty()) {
+        PassBuilder pass = graph.pass("shadow.map", PassKind::Raster);
+        pass.pipeline(raster_.setLayoutPipeline()).use(map, Use::DepthAttachment);
+        scene_.declareDrawSet(pass, graph.buffer("views"));
+        pass.record([this, map, firstView](PassContext& c) { raster_.record(c.cmd, c.image(map), firstView, layout_); });
+        if (extraCasters_) extraCasters_(graph);
+    }
+    moments_.addTo(graph);
 }
 
-void ShadowMapPass::addFilterTo(FrameGraph& graph, const vk::Buffer& frame, const vk::Buffer& lights,
-                                GBufferPass& gbuffer) {
-    filter_.addTo(graph, frame, lights, gbuffer, {&map_, &moments(), &layerTable_, &lightTable_, &params_},
-                  uint32_t(layout_.shadowed().size()));
-}
+void ShadowMapPass::addFilterTo(FrameGraph& graph) { filter_.addTo(graph, uint32_t(layout_.shadowed().size())); }
 
 }  // namespace penumbra

@@ -10,7 +10,6 @@
 #include <vector>
 
 #include "render/frame_graph.h"
-#include "render/gbuffer_pass.h"
 #include "render/scene_gpu.h"
 #include "shadow/shadow_filter.h"
 #include "shadow/shadow_layout.h"
@@ -27,9 +26,13 @@ public:
 
     // Gives every shadow-casting light its layers; fixes the images' sizes.
     void assign(const std::vector<Light>& lights);
-    // Per frame, before the views buffer is written: refits the cascades to the camera (aspect =
-    // width / height, cameraFar = the camera's far plane) and writes the shaders' tables.
-    void update(const Camera& camera, float aspect, float cameraFar);
+    // Per frame, before the views buffer is written: takes the lights' new positions, directions and
+    // intensities (the same lights as assign()'s, else call assign), refits the cascades to the camera
+    // (aspect = width / height, cameraFar = the camera's far plane) and writes the shaders' tables
+    // into the copies of frame slot `slot`.
+    void update(const std::vector<Light>& lights, const Camera& camera, float aspect, float cameraFar, uint32_t slot);
+    // Per-frame values (biases, filter radii, cascade splits); the sizes and filter kinds must not change.
+    void setSettings(const ShadowSettings& settings);
 
     // The shadow layers, in array-layer order; layer k is row firstView + k of the views buffer.
     const std::vector<ShadowLayer>& layers() const { return layout_.layers(); }
@@ -37,17 +40,17 @@ public:
     // The shadow fields of light `light`'s GpuLight: shadow index (or NO_SHADOW) and its first layer.
     void fillGpuLight(uint32_t light, gpu::GpuLight& g) const;
 
-    // shadow.map, then shadow.moments + shadow.blur when a light uses a moment filter.
-    void addTo(FrameGraph& graph, const vk::Buffer& views, uint32_t firstView);
-    // Casters drawn by other modules (hair, src/dsm): `passes` adds their passes into the shadow map
+    // shadow.map (layer k drawn with row firstView + k of "views"), then shadow.moments + shadow.blur
+    // when a light uses a moment filter. Publishes "shadow.map", "shadow.moments", "shadow.layers",
+    // "shadow.lights", "shadow.params".
+    void addTo(FrameGraph& graph, uint32_t firstView);
+    // Casters drawn by other modules (hair, src/dsm): `passes` adds their passes into "shadow.map"
     // after shadow.map, before the moments are taken from it.
-    void setExtraCasters(std::function<void(FrameGraph&, vk::Image& map)> passes) {
-        extraCasters_ = std::move(passes);
-    }
+    void setExtraCasters(std::function<void(FrameGraph&)> passes) { extraCasters_ = std::move(passes); }
     // Lights with a deep shadow map: their alphaMode BLEND casters stay out of the shadow map.
     void setDeepShadowLights(std::vector<uint32_t> lights) { raster_.setDeepShadowLights(std::move(lights)); }
-    // shadow.filter: reads the G-buffer, writes mask().
-    void addFilterTo(FrameGraph& graph, const vk::Buffer& frame, const vk::Buffer& lights, GBufferPass& gbuffer);
+    // shadow.filter: reads the G-buffer, publishes "shadow.mask".
+    void addFilterTo(FrameGraph& graph);
 
     vk::Image& shadowMap() { return map_; }          // D32_SFLOAT array, one layer per ShadowLayer
     vk::Image& mask() { return filter_.mask(); }     // RG16F array, one layer per shadowed light
@@ -65,8 +68,8 @@ private:
     ShadowMoments moments_;
     ShadowFilterPass filter_;
     vk::Image map_;
-    vk::Buffer layerTable_, lightTable_, params_;
-    std::function<void(FrameGraph&, vk::Image&)> extraCasters_;
+    vk::BufferRing layerTable_, lightTable_, params_;
+    std::function<void(FrameGraph&)> extraCasters_;
 };
 
 }  // namespace penumbra

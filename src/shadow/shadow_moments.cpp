@@ -32,41 +32,31 @@ void ShadowMoments::resize(uint32_t layers) {
                          : vk::Image();
 }
 
-void ShadowMoments::addTo(FrameGraph& graph, vk::Image& depthMap, const vk::Buffer& layerTable,
-                          const vk::Buffer& params) {
+void ShadowMoments::addTo(FrameGraph& graph) {
+    const ImageHandle out = graph.import(moments_);
+    graph.publish("shadow.moments", out);
     if (layers_ == 0) return;
-    const uint32_t res = resolution_, shadowLayers = depthMap.layers();
-    PassDesc rows;
-    rows.name = "shadow.moments";
-    rows.images = {{&depthMap, Use::Sampled}, {&rowMoments_, Use::StorageWrite}};
-    rows.buffers = {{&layerTable, Use::StorageRead}, {&params, Use::Uniform}};
-    rows.record = [this, &depthMap, &layerTable, &params, res, shadowLayers](VkCommandBuffer cmd) {
-        rows_.pipeline.bind(cmd);
-        vk::DescriptorWrites()
-            .sampled(0, depthMap.view(), nearest_.handle(), VK_IMAGE_LAYOUT_DEPTH_READ_ONLY_OPTIMAL)
-            .storageImage(1, rowMoments_.view())
-            .storageBuffer(2, layerTable)
-            .uniformBuffer(3, params)
-            .push(alloc_.context(), cmd, rows_.pipeline);
-        vkCmdDispatch(cmd, vk::divUp(res, kGroup), vk::divUp(res, kLanes), shadowLayers);
-    };
-    graph.add(std::move(rows));
-
-    PassDesc columns;
-    columns.name = "shadow.blur";
-    columns.images = {{&rowMoments_, Use::StorageRead}, {&moments_, Use::StorageWrite}};
-    columns.buffers = {{&layerTable, Use::StorageRead}, {&params, Use::Uniform}};
-    columns.record = [this, &layerTable, &params, res, shadowLayers](VkCommandBuffer cmd) {
-        columns_.pipeline.bind(cmd);
-        vk::DescriptorWrites()
-            .storageImage(0, rowMoments_.view())
-            .storageImage(1, moments_.view())
-            .storageBuffer(2, layerTable)
-            .uniformBuffer(3, params)
-            .push(alloc_.context(), cmd, columns_.pipeline);
-        vkCmdDispatch(cmd, vk::divUp(res, kLanes), vk::divUp(res, kGroup), shadowLayers);
-    };
-    graph.add(std::move(columns));
+    const ImageHandle depthMap = graph.image("shadow.map"), rows = graph.import(rowMoments_);
+    const BufferHandle layerTable = graph.buffer("shadow.layers"), params = graph.buffer("shadow.params");
+    const uint32_t res = resolution_, shadowLayers = graph.imageOf(depthMap).layers();
+    graph.pass("shadow.moments")
+        .pipeline(rows_.pipeline)
+        .sampled(0, depthMap, nearest_.handle())
+        .storageImage(1, rows)
+        .storageBuffer(2, layerTable)
+        .uniform(3, params)
+        .record([res, shadowLayers](PassContext& c) {
+            vkCmdDispatch(c.cmd, vk::divUp(res, kGroup), vk::divUp(res, kLanes), shadowLayers);
+        });
+    graph.pass("shadow.blur")
+        .pipeline(columns_.pipeline)
+        .storageImage(0, rows, Use::StorageRead)
+        .storageImage(1, out)
+        .storageBuffer(2, layerTable)
+        .uniform(3, params)
+        .record([res, shadowLayers](PassContext& c) {
+            vkCmdDispatch(c.cmd, vk::divUp(res, kLanes), vk::divUp(res, kGroup), shadowLayers);
+        });
 }
 
 }  // namespace penumbra

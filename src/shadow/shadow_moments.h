@@ -13,7 +13,8 @@ public:
     ShadowMoments(vk::Allocator& alloc, uint32_t resolution);
     // RGBA32F arrays of `layers` moment layers (0: a 1x1 placeholder, no passes are added).
     void resize(uint32_t layers);
-    void addTo(FrameGraph& graph, vk::Image& depthMap, const vk::Buffer& layerTable, const vk::Buffer& params);
+    // Reads "shadow.map", "shadow.layers", "shadow.params"; publishes "shadow.moments" (always).
+    void addTo(FrameGraph& graph);
     vk::Image& moments() { return moments_; }
 
 private:

@@ -35,12 +35,12 @@ ShadowRaster::Pipelines ShadowRaster::make(vk::Context& ctx, vk::GraphicsDesc d,
     return p;
 }
 
-void ShadowRaster::drawLight(VkCommandBuffer cmd, const Pipelines& pipelines, const vk::Buffer& views,
-                             const gpu::ShadowDrawPush& push, uint32_t instances, bool blended) const {
+void ShadowRaster::drawLight(VkCommandBuffer cmd, const Pipelines& pipelines, const gpu::ShadowDrawPush& push,
+                             uint32_t instances, bool blended) const {
+    // Every pipeline here shares the draw set's layout: the set pushed for the pass stays bound.
     for (const vk::Pipeline* p : {&pipelines.opaque, &pipelines.masked}) {
         const bool maskedPass = p == &pipelines.masked;
         p->bind(cmd);
-        scene_.pushDrawSet(cmd, *p, views);
         scene_.draw(
             cmd,
             [&](const Draw& d) {
@@ -56,8 +56,7 @@ void ShadowRaster::drawLight(VkCommandBuffer cmd, const Pipelines& pipelines, co
     }
 }
 
-void ShadowRaster::record(VkCommandBuffer cmd, vk::Image& map, const vk::Buffer& views, uint32_t firstView,
-                          const ShadowLayout& layout) const {
+void ShadowRaster::record(VkCommandBuffer cmd, vk::Image& map, uint32_t firstView, const ShadowLayout& layout) const {
     const uint32_t res = settings_.resolution;
     VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
     depth.imageView = map.view();  // all layers: the draws pick theirs with gl_Layer
@@ -84,7 +83,7 @@ void ShadowRaster::record(VkCommandBuffer cmd, vk::Image& map, const vk::Buffer&
             push.paraboloid = {first.zNear, first.zFar, first.discScale, maxEdge};
         const bool blended =
             std::find(deepShadowLights_.begin(), deepShadowLights_.end(), s.light) == deepShadowLights_.end();
-        drawLight(cmd, paraboloid ? paraboloid_ : layered_, views, push, s.layerCount, blended);
+        drawLight(cmd, paraboloid ? paraboloid_ : layered_, push, s.layerCount, blended);
     }
     vkCmdEndRendering(cmd);
 }

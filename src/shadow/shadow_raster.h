@@ -13,9 +13,13 @@ class ShadowRaster {
 public:
     ShadowRaster(vk::Context& ctx, const SceneGpu& scene, const ShadowSettings& settings,
                  VkDescriptorSetLayout drawLayout);
-    // Clears and renders all layers of `map`; layer k uses row firstView + k of `views`.
-    void record(VkCommandBuffer cmd, vk::Image& map, const vk::Buffer& views, uint32_t firstView,
-                const ShadowLayout& layout) const;
+    // The pipeline whose set 0 (the scene's draw set) the pass declares; the others share its layout.
+    const vk::Pipeline& setLayoutPipeline() const { return layered_.opaque; }
+    // Clears and renders all layers of `map`; layer k uses row firstView + k of the views buffer
+    // bound in the pass's draw set.
+    void record(VkCommandBuffer cmd, vk::Image& map, uint32_t firstView, const ShadowLayout& layout) const;
+    // Per-frame values (biases, tessellation): the sizes must not change.
+    void setSettings(const ShadowSettings& settings) { settings_ = settings; }
     // Lights whose alphaMode BLEND casters go to a deep shadow map instead (src/dsm).
     void setDeepShadowLights(std::vector<uint32_t> lights) { deepShadowLights_ = std::move(lights); }
 
@@ -24,8 +28,8 @@ private:
         vk::Pipeline opaque, masked;
     };
     Pipelines make(vk::Context& ctx, vk::GraphicsDesc desc, VkDescriptorSetLayout drawLayout) const;
-    void drawLight(VkCommandBuffer cmd, const Pipelines& p, const vk::Buffer& views,
-                   const gpu::ShadowDrawPush& push, uint32_t instances, bool blended) const;
+    void drawLight(VkCommandBuffer cmd, const Pipelines& p, const gpu::ShadowDrawPush& push, uint32_t instances,
+                   bool blended) const;
 
     const SceneGpu& scene_;
     ShadowSettings settings_;

@@ -199,12 +199,21 @@ void Context::createInstance(bool validate) {
     dbg.pUserData = this;
     VkInstanceCreateInfo ci{VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO};
     ci.pApplicationInfo = &app;
+    // Synchronization validation: hazards between passes and across frames in flight.
+    const VkValidationFeatureEnableEXT syncFeature = VK_VALIDATION_FEATURE_ENABLE_SYNCHRONIZATION_VALIDATION_EXT;
+    VkValidationFeaturesEXT features{VK_STRUCTURE_TYPE_VALIDATION_FEATURES_EXT};
+    features.enabledValidationFeatureCount = 1;
+    features.pEnabledValidationFeatures = &syncFeature;
     if (validate) {
         ci.enabledLayerCount = 1;
         ci.ppEnabledLayerNames = &kValidationLayer;
         ci.enabledExtensionCount = 1;
         ci.ppEnabledExtensionNames = &ext;
         ci.pNext = &dbg;  // also reports problems inside vkCreateInstance itself
+        if (options_.syncValidation) {
+            features.pNext = &dbg;
+            ci.pNext = &features;
+        }
     }
     VkResult r = vkCreateInstance(&ci, nullptr, &instance_);
     if (r == VK_ERROR_INCOMPATIBLE_DRIVER)

@@ -15,6 +15,7 @@ struct ContextOptions {
     bool validate = false;     // enable VK_LAYER_KHRONOS_validation; every message is counted
     std::string device;        // "" = best (discrete GPU first, lavapipe last); index or name substring
     bool quiet = false;        // do not echo validation messages to stderr
+    bool syncValidation = false;  // with `validate`: also the layer's synchronization validation
 };
 
 struct DeviceInfo {
@@ -57,6 +58,10 @@ public:
 
     void waitIdle() const;
 
+    // Pipelines created on this device so far (tests: what a settings change costs).
+    uint64_t pipelinesCreated() const { return pipelinesCreated_.load(); }
+    void countPipeline() { ++pipelinesCreated_; }
+
     // Extension entry point (the loader exports core functions only).
     PFN_vkCmdPushDescriptorSetKHR cmdPushDescriptorSet = nullptr;
 
@@ -79,6 +84,7 @@ private:
     VkPhysicalDeviceProperties properties_{};
     DeviceInfo info_;
     std::atomic<uint32_t> validationMessages_{0};
+    std::atomic<uint64_t> pipelinesCreated_{0};
     std::vector<std::string> validationLog_;
 };
 

@@ -78,6 +78,7 @@ Allocation Allocator::allocate(const VkMemoryRequirements& req, VkMemoryProperty
     }
     Block& b = blocks_[blockIndex];
     inUse_ += size;
+    ++allocations_;
     return Allocation{b.memory, offset, size, b.mapped ? b.mapped + offset : nullptr, type, blockIndex};
 }
 

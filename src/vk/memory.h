@@ -34,6 +34,9 @@ public:
     Context& context() const { return ctx_; }
     VkDeviceSize bytesReserved() const;  // device memory held in blocks
     VkDeviceSize bytesInUse() const { return inUse_; }
+    // Lifetime counters, for tests that check what a settings change allocates.
+    uint64_t allocations() const { return allocations_; }      // allocate() calls
+    uint32_t blockCount() const { return uint32_t(blocks_.size()); }
 
 private:
     struct Block {
@@ -53,6 +56,7 @@ private:
     VkPhysicalDeviceMemoryProperties props_{};
     std::vector<Block> blocks_;
     VkDeviceSize inUse_ = 0;
+    uint64_t allocations_ = 0;
 };
 
 }  // namespace penumbra::vk

@@ -74,6 +74,7 @@ Pipeline Pipeline::compute(Context& ctx, const std::string& shader, const std::v
     ci.stage = stage(VK_SHADER_STAGE_COMPUTE_BIT, m);
     ci.layout = p.layout_;
     VkResult r = vkCreateComputePipelines(ctx.device(), VK_NULL_HANDLE, 1, &ci, nullptr, &p.pipeline_);
+    ctx.countPipeline();
     vkDestroyShaderModule(ctx.device(), m, nullptr);
     VK_CHECK(r);
     return p;
@@ -152,6 +153,7 @@ Pipeline Pipeline::graphics(Context& ctx, const GraphicsDesc& d, const std::vect
     ci.pDynamicState = &dy;
     ci.layout = p.layout_;
     VkResult r = vkCreateGraphicsPipelines(ctx.device(), VK_NULL_HANDLE, 1, &ci, nullptr, &p.pipeline_);
+    ctx.countPipeline();
     for (VkShaderModule m : modules) vkDestroyShaderModule(ctx.device(), m, nullptr);
     VK_CHECK(r);
     return p;

@@ -48,6 +48,10 @@ void Buffer::reset() {
     alloc_ = {};
 }
 
+BufferRing::BufferRing(Allocator& alloc, VkDeviceSize size, VkBufferUsageFlags usage, const char* name) {
+    for (Buffer& b : copies_) b = Buffer(alloc, size, usage, true, name);
+}
+
 bool isDepthFormat(VkFormat f) {
     return f == VK_FORMAT_D32_SFLOAT || f == VK_FORMAT_D16_UNORM || f == VK_FORMAT_D24_UNORM_S8_UINT ||
            f == VK_FORMAT_D32_SFLOAT_S8_UINT;

@@ -35,6 +35,25 @@ private:
     Allocation alloc_;
 };
 
+// Host-visible copies of one buffer, one per frame in flight: the host writes the copy of the frame
+// it records while the GPU may still read the others. select() picks the copy for the frame slot.
+inline constexpr uint32_t kMaxFramesInFlight = 3;
+
+class BufferRing {
+public:
+    BufferRing() = default;
+    BufferRing(Allocator& alloc, VkDeviceSize size, VkBufferUsageFlags usage, const char* name = "");
+    void select(uint32_t slot) { slot_ = slot; }
+    Buffer& current() { return copies_[slot_]; }
+    const Buffer& current() const { return copies_[slot_]; }
+    void write(const void* data, VkDeviceSize bytes) { current().write(data, bytes); }
+    explicit operator bool() const { return bool(copies_[0]); }
+
+private:
+    Buffer copies_[kMaxFramesInFlight];
+    uint32_t slot_ = 0;
+};
+
 struct ImageDesc {
     VkFormat format = VK_FORMAT_R8G8B8A8_UNORM;
     uint32_t width = 1, height = 1, layers = 1;

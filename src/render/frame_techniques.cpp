@@ -1,0 +1,164 @@
+#include "render/frame_techniques.h"
+
+namespace penumbra {
+namespace {
+
+// RSM layers from the shadow layers: the RSM is the shadow pass's light view with more targets.
+// LPV injection and, by default, the RSM gather take only each sun's last, widest cascade: cascades
+// see the same surfaces, and a fine one lacks the distant VPLs (RsmSettings::perCascade); with
+// perCascade the gather takes every cascade and picks one per receiver, as the seed does.
+// Paraboloid layers have no matrix projection to rasterize with.
+std::vector<RsmLayerSource> rsmLayersOf(const ShadowMapPass& shadow, bool widestCascadeOnly) {
+    std::vector<RsmLayerSource> layers;
+    const uint32_t res = shadow.settings().resolution;
+    for (const ShadowedLight& sl : shadow.layout().shadowed()) {
+        const bool cascades = sl.kind == SHADOW_KIND_CASCADES;
+        for (uint32_t k = 0; k < sl.layerCount; ++k) {
+            const uint32_t index = sl.firstLayer + k;
+            const ShadowLayer& l = shadow.layers()[index];
+            const bool last = k + 1 == sl.layerCount;
+            if (l.projection.paraboloid || (cascades && widestCascadeOnly && !last)) continue;
+            RsmLayerSource src{l.light, 1 + index, l.projection, res};
+            if (cascades && !widestCascadeOnly) {
+                src.cascade = k + 1;
+                src.lastCascade = last;
+                src.radiusScale = shadow.layers()[sl.firstLayer].projection.texelSize / l.projection.texelSize;
+            }
+            layers.push_back(src);
+        }
+    }
+    return layers;
+}
+
+}  // namespace
+
+CameraTechnique::CameraTechnique(vk::Allocator& alloc, GpuScene& scene, const RenderSettings& s,
+                                 VkDescriptorSetLayout drawLayout)
+    : gbuffer_(alloc, scene.meshes(), s.width, s.height, drawLayout) {
+    if (scene.hair()) hair_ = std::make_unique<HairGBufferPass>(alloc, *scene.hair(), gbuffer_);
+}
+
+void CameraTechnique::addPasses(const FrameContext& f) {
+    gbuffer_.addTo(f.graph);
+    if (hair_) hair_->addTo(f.graph, cameraRibbonView(f.camera.eye, f.uniforms.lens.x));
+}
+
+// Hair (src/dsm) is an opaque caster in the ordinary shadow map of lights without a deep shadow
+// map; blended meshes and hair of lights with one go to their DSM instead.
+ShadowTechnique::ShadowTechnique(vk::Allocator& alloc, GpuScene& scene, const RenderSettings& s,
+                                 VkDescriptorSetLayout drawLayout, const std::vector<Light>& lights,
+                                 std::function<bool(uint32_t)> coveredByDsm, std::vector<std::string>& warnings)
+    : pass_(alloc, scene.meshes(), s.shadow, drawLayout), coveredByDsm_(std::move(coveredByDsm)),
+      hairGpu_(scene.hair()) {
+    pass_.assign(lights);
+    std::vector<uint32_t> deep;
+    for (uint32_t i = 0; i < lights.size(); ++i)
+        if (coveredByDsm_(i)) deep.push_back(i);
+    pass_.setDeepShadowLights(deep);
+    if (!hairGpu_) return;
+    for (const Light& l : lights)
+        if (l.type == LightType::Point && l.castsShadow && s.shadow.pointMode == PointShadowMode::Paraboloid) {
+            warnings.push_back("hair casts no shadow in paraboloid point-light maps (use --point-shadow cube)");
+            break;
+        }
+    hair_ = std::make_unique<HairShadowPass>(alloc, *hairGpu_, s.shadow.depthBiasConstant, s.shadow.depthBiasSlope);
+}
+
+void ShadowTechnique::applyPerFrame(const RenderSettings& s) {
+    pass_.setSettings(s.shadow);
+    if (hair_) hair_->setBias(s.shadow.depthBiasConstant, s.shadow.depthBiasSlope);
+}
+
+void ShadowTechnique::update(const FrameContext& f) { pass_.update(f.lights, f.camera, f.aspect, f.zfar, f.slot); }
+
+// The shadow layers hair is drawn into: those of lights without a DSM (paraboloid point-light maps
+// bend edges, which the ribbon vertex shader does not: hair casts no shadow there).
+std::vector<HairShadowLayer> ShadowTechnique::hairLayers(const std::vector<Light>& lights) const {
+    std::vector<HairShadowLayer> out;
+    for (uint32_t k = 0; k < pass_.layers().size(); ++k) {
+        const ShadowLayer& l = pass_.layers()[k];
+        if (l.projection.paraboloid || coveredByDsm_(l.light)) continue;
+        out.push_back({k, 1 + k, lightRibbonView(lights[l.light], l.projection)});
+    }
+    return out;
+}
+
+void ShadowTechnique::addPasses(const FrameContext& f) {
+    if (hair_) {
+        std::vector<HairShadowLayer> layers = hairLayers(f.lights);
+        pass_.setExtraCasters([this, layers](FrameGraph& g) { hair_->addTo(g, layers); });
+    }
+    pass_.addTo(f.graph, 1);
+    pass_.addFilterTo(f.graph);
+}
+
+DsmTechnique::DsmTechnique(vk::Allocator& alloc, GpuScene& scene, const RenderSettings& s,
+                           const std::vector<Light>& lights, std::vector<std::string>& warnings)
+    : maps_(alloc, scene.meshes(), scene.hair(), s.dsm, s.shadow.resolution, lights, warnings) {}
+
+RsmTechnique::RsmTechnique(vk::Allocator& alloc, vk::CommandContext& cmd, GpuScene& scene, const RenderSettings& s,
+                           ShadowMapPass& shadow, bool gather)
+    : shadow_(shadow),
+      widestCascadeOnly_(!gather || !s.rsm.perCascade),
+      pass_(alloc, scene.meshes(), [&] {
+          // LPV renders the RSM larger and down-samples it.
+          RsmSettings r = s.rsm;
+          if (!gather) r.resolution = s.lpv.rsmResolution;
+          return r;
+      }()) {
+    if (gather) gather_ = std::make_unique<RsmGather>(alloc, cmd, s.width, s.height, s.rsm);
+}
+
+// The layers' projections change every frame (cascades follow the camera).
+void RsmTechnique::update(const FrameContext& f) { pass_.setLayers(rsmLayersOf(shadow_, widestCascadeOnly_), f.slot); }
+
+void RsmTechnique::addPasses(const FrameContext& f) {
+    pass_.addTo(f.graph);
+    if (gather_) gather_->addTo(f.graph, pass_.layerCount(), f.slot);
+}
+
+void RsmTechnique::applyPerFrame(const RenderSettings& s) {
+    if (gather_) gather_->setSettings(s.rsm);
+}
+
+LpvTechnique::LpvTechnique(vk::Allocator& alloc, const Bounds& bounds, const RenderSettings& s, RsmPass& rsm)
+    : rsm_(rsm), volume_(alloc, s.width, s.height, s.lpv, bounds) {}
+
+void LpvTechnique::addPasses(const FrameContext& f) {
+    volume_.update(f.camera.eye);
+    volume_.addTo(f.graph, rsm_.layerCount());
+}
+
+LightingTechnique::LightingTechnique(vk::Allocator& alloc, vk::CommandContext& cmd, const RenderSettings& s)
+    : lighting_(alloc, s.width, s.height), tonemap_(alloc, s.width, s.height) {
+    noIndirect_ = vk::Image(alloc, {VK_FORMAT_R16G16B16A16_SFLOAT, 1, 1, 1,
+                                    VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, "no-indirect"});
+    const uint64_t zero = 0;
+    cmd.uploadImage(noIndirect_, &zero, sizeof(zero));
+}
+
+gpu::TonemapPush LightingTechnique::tonemapParams(const RenderSettings& s, float zfar) const {
+    switch (s.aov) {
+        case Aov::Direct:
+        case Aov::Final:
+        case Aov::Indirect:
+        case Aov::LpvSlice: return {{s.exposure, 0.0f, float(TONEMAP_ACES), 0.0f}};
+        case Aov::GvSlice: return {{1.0f, 0.0f, float(TONEMAP_LINEAR), 0.0f}};
+        case Aov::Albedo:
+        case Aov::Cascade: return {{1.0f, 0.0f, float(TONEMAP_SRGB), 0.0f}};
+        case Aov::Normal: return {{0.5f, 0.5f, float(TONEMAP_LINEAR), 0.0f}};
+        case Aov::Depth: return {{1.0f / zfar, 0.0f, float(TONEMAP_LINEAR), 0.0f}};
+        case Aov::Shadow:
+        case Aov::Transmittance: return {{1.0f, 0.0f, float(TONEMAP_LINEAR), 0.0f}};
+        case Aov::DsmLists: return {{1.0f / float(s.dsm.maxList), 0.0f, float(TONEMAP_LINEAR), 0.0f}};
+    }
+    return {};
+}
+
+void LightingTechnique::addPasses(const FrameContext& f) {
+    if (!f.graph.hasImage("gi.irradiance")) f.graph.publish("gi.irradiance", f.graph.import(noIndirect_));
+    lighting_.addTo(f.graph);
+    tonemap_.addTo(f.graph, tonemapParams(f.settings, f.zfar));
+}
+
+}  // namespace penumbra

@@ -1,0 +1,117 @@
+// The techniques of penumbra's frame, each behind the Technique interface: camera (G-buffer and
+// hair), shadow maps (with hair as a caster), deep shadow maps, reflective shadow maps with their
+// gather, light propagation volumes, and lighting with tone mapping. Renderer builds them per
+// settings over one long-lived GpuScene and rebuilds only those a settings change invalidates.
+#pragma once
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "dsm/deep_shadow_maps.h"
+#include "dsm/hair_passes.h"
+#include "lpv/lpv.h"
+#include "render/gbuffer_pass.h"
+#include "render/gpu_scene.h"
+#include "render/lighting_pass.h"
+#include "render/technique.h"
+#include "rsm/rsm_gather.h"
+#include "shadow/shadow_map_pass.h"
+
+namespace penumbra {
+
+// G-buffer (scene.vert/gbuffer.frag) and hair ribbons drawn into it.
+class CameraTechnique : public Technique {
+public:
+    CameraTechnique(vk::Allocator& alloc, GpuScene& scene, const RenderSettings& s, VkDescriptorSetLayout drawLayout);
+    const char* name() const override { return "camera"; }
+    void addPasses(const FrameContext& f) override;
+    GBufferPass& gbuffer() { return gbuffer_; }
+
+private:
+    GBufferPass gbuffer_;
+    std::unique_ptr<HairGBufferPass> hair_;
+};
+
+class ShadowTechnique : public Technique {
+public:
+    // `coveredByDsm(light)`: whether a deep shadow map takes that light's translucent casters.
+    ShadowTechnique(vk::Allocator& alloc, GpuScene& scene, const RenderSettings& s, VkDescriptorSetLayout drawLayout,
+                    const std::vector<Light>& lights, std::function<bool(uint32_t)> coveredByDsm,
+                    std::vector<std::string>& warnings);
+    const char* name() const override { return "shadow"; }
+    void update(const FrameContext& f) override;
+    void addPasses(const FrameContext& f) override;
+    void applyPerFrame(const RenderSettings& s) override;
+    ShadowMapPass& pass() { return pass_; }
+
+private:
+    std::vector<HairShadowLayer> hairLayers(const std::vector<Light>& lights) const;
+    ShadowMapPass pass_;
+    std::function<bool(uint32_t)> coveredByDsm_;
+    std::unique_ptr<HairShadowPass> hair_;
+    const HairGpu* hairGpu_;
+};
+
+class DsmTechnique : public Technique {
+public:
+    DsmTechnique(vk::Allocator& alloc, GpuScene& scene, const RenderSettings& s, const std::vector<Light>& lights,
+                 std::vector<std::string>& warnings);
+    const char* name() const override { return "dsm"; }
+    void addPasses(const FrameContext& f) override { maps_.addTo(f.graph); }
+    DeepShadowMaps& maps() { return maps_; }
+
+private:
+    DeepShadowMaps maps_;
+};
+
+// The RSM of every shadowed light, rendered with the shadow layers' projections; with `gather`
+// (GI rsm) also the indirect light from it, without (GI lpv) only the RSM for injection.
+class RsmTechnique : public Technique {
+public:
+    RsmTechnique(vk::Allocator& alloc, vk::CommandContext& cmd, GpuScene& scene, const RenderSettings& s,
+                 ShadowMapPass& shadow, bool gather);
+    const char* name() const override { return "rsm"; }
+    void update(const FrameContext& f) override;
+    void addPasses(const FrameContext& f) override;
+    void applyPerFrame(const RenderSettings& s) override;
+    RsmPass& pass() { return pass_; }
+    RsmGather* gather() { return gather_.get(); }
+
+private:
+    ShadowMapPass& shadow_;
+    bool widestCascadeOnly_;
+    RsmPass pass_;
+    std::unique_ptr<RsmGather> gather_;
+};
+
+class LpvTechnique : public Technique {
+public:
+    LpvTechnique(vk::Allocator& alloc, const Bounds& bounds, const RenderSettings& s, RsmPass& rsm);
+    const char* name() const override { return "lpv"; }
+    void addPasses(const FrameContext& f) override;
+    void applyPerFrame(const RenderSettings& s) override { volume_.setSettings(s.lpv); }
+    LightPropagationVolume& volume() { return volume_; }
+
+private:
+    RsmPass& rsm_;
+    LightPropagationVolume volume_;
+};
+
+// Deferred lighting and tone mapping; publishes a black "gi.irradiance" when no GI technique did.
+class LightingTechnique : public Technique {
+public:
+    LightingTechnique(vk::Allocator& alloc, vk::CommandContext& cmd, const RenderSettings& s);
+    const char* name() const override { return "lighting"; }
+    void addPasses(const FrameContext& f) override;
+    LightingPass& lighting() { return lighting_; }
+    TonemapPass& tonemap() { return tonemap_; }
+
+private:
+    gpu::TonemapPush tonemapParams(const RenderSettings& s, float zfar) const;
+    LightingPass lighting_;
+    TonemapPass tonemap_;
+    vk::Image noIndirect_;  // bound in place of the indirect irradiance when GI is off
+};
+
+}  // namespace penumbra

@@ -1,0 +1,44 @@
+// The settings of a frame pipeline: image size, output, and each technique's own settings.
+// The CLI, `bench`, the viewer and tests fill it; Renderer::apply takes changes of it at run time
+// (render/settings_change.h says what each change costs).
+#pragma once
+#include <cstdint>
+
+#include "dsm/dsm_settings.h"
+#include "lpv/lpv_settings.h"
+#include "rsm/rsm_settings.h"
+#include "shadow/shadow_settings.h"
+#include "shared/types.h"
+
+namespace penumbra {
+
+enum class Aov {
+    Direct = AOV_DIRECT,
+    Albedo = AOV_ALBEDO,
+    Normal = AOV_NORMAL,
+    Depth = AOV_DEPTH,
+    Shadow = AOV_SHADOW,
+    Final = AOV_FINAL,
+    Indirect = AOV_INDIRECT,
+    LpvSlice = AOV_LPV_SLICE,
+    GvSlice = AOV_GV_SLICE,
+    Cascade = AOV_CASCADE,
+    Transmittance = AOV_TRANSMITTANCE,
+    DsmLists = AOV_DSM_LISTS,
+};
+
+enum class GiMode { None, Rsm, Lpv };
+
+struct RenderSettings {
+    uint32_t width = 1280;
+    uint32_t height = 720;
+    Aov aov = Aov::Final;
+    float exposure = 1.0f;  // linear multiplier before the tone mapper
+    ShadowSettings shadow;
+    GiMode gi = GiMode::None;
+    RsmSettings rsm;
+    LpvSettings lpv;
+    DsmSettings dsm;
+};
+
+}  // namespace penumbra
