@@ -37,6 +37,7 @@ protected:
     void SetUp() override {
         vk::ContextOptions options;
         options.validate = true;
+        options.syncValidation = true;  // hazards between passes and across frames in flight
         options.quiet = true;  // the log is printed by TearDown when something was reported
         ctx_ = std::make_unique<vk::Context>(options);
     }

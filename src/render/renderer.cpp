@@ -243,7 +243,7 @@ void Renderer::recordFrame(FrameSlot& slot, const FrameInputs& in, const FrameHo
     graph_.publish("lights", graph_.import(lights_buffer_.current()));
     for (Technique* t : list) t->addPasses(context);
 
-    VK_CHECK(vkResetCommandPool(ctx_.device(), slot.pool, 0));
+    VK_CHECK(vkResetCommandPool(ctx_.device(), slot.pool, VK_COMMAND_POOL_RESET_RELEASE_RESOURCES_BIT));
     VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
     VK_CHECK(vkBeginCommandBuffer(slot.cmd, &bi));

@@ -172,7 +172,10 @@ Context::Context(const ContextOptions& options, InstanceOnly) : options_(options
     }
 }
 
-Context::~Context() { destroyHandles(instance_, messenger_, device_); }
+Context::~Context() {
+    pipelineCache_.reset();  // its pipelines and layouts go before the device
+    destroyHandles(instance_, messenger_, device_);
+}
 
 void Context::createInstance(bool validate) {
     if (validate) {

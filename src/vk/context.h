@@ -2,6 +2,7 @@
 #pragma once
 #include <atomic>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -10,6 +11,11 @@
 #include "vk/check.h"
 
 namespace penumbra::vk {
+
+// Pipelines and set layouts of this device, made once per description (vk/pipeline.cpp): a rebuilt
+// frame pipeline gets the same objects back instead of compiling them again.
+struct PipelineCache;
+void destroyPipelineCache(PipelineCache* cache);
 
 struct ContextOptions {
     bool validate = false;     // enable VK_LAYER_KHRONOS_validation; every message is counted
@@ -60,7 +66,12 @@ public:
 
     // Pipelines created on this device so far (tests: what a settings change costs).
     uint64_t pipelinesCreated() const { return pipelinesCreated_.load(); }
-    void countPipeline() { ++pipelinesCreated_; }
+    int64_t pipelinesAlive() const { return pipelinesAlive_.load(); }
+    void countPipeline(int delta) {
+        if (delta > 0) ++pipelinesCreated_;
+        pipelinesAlive_ += delta;
+    }
+    PipelineCache& pipelineCache();
 
     // Extension entry point (the loader exports core functions only).
     PFN_vkCmdPushDescriptorSetKHR cmdPushDescriptorSet = nullptr;
@@ -85,6 +96,8 @@ private:
     DeviceInfo info_;
     std::atomic<uint32_t> validationMessages_{0};
     std::atomic<uint64_t> pipelinesCreated_{0};
+    std::atomic<int64_t> pipelinesAlive_{0};
+    std::unique_ptr<PipelineCache, void (*)(PipelineCache*)> pipelineCache_{nullptr, destroyPipelineCache};
     std::vector<std::string> validationLog_;
 };
 

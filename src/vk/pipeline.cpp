@@ -1,7 +1,10 @@
 #include "vk/pipeline.h"
 
 #include <array>
+#include <map>
 #include <utility>
+
+#include <fmt/format.h>
 
 #include "vk/shader_registry.h"
 
@@ -26,10 +29,57 @@ VkPipelineShaderStageCreateInfo stage(VkShaderStageFlagBits s, VkShaderModule m)
     return info;
 }
 
+std::string layoutsKey(const std::vector<VkDescriptorSetLayout>& sets, uint32_t pushBytes) {
+    std::string key = fmt::format("push {}", pushBytes);
+    for (VkDescriptorSetLayout s : sets) key += fmt::format(" set {}", fmt::ptr(s));
+    return key;
+}
+
+std::string graphicsKey(const GraphicsDesc& d) {
+    std::string key = fmt::format("G {} {} {} {} depth {} stride {} cull {} {} front {} bias {} clamp {} topo {}",
+                                  d.vertexShader, d.fragmentShader, d.tessControlShader, d.tessEvalShader,
+                                  int(d.depthFormat), d.vertexStride, d.cullMode, d.dynamicCullMode, int(d.frontFace),
+                                  d.depthBias, d.depthClamp, int(d.topology));
+    for (VkFormat f : d.colorFormats) key += fmt::format(" color {}", int(f));
+    for (const VkVertexInputAttributeDescription& a : d.vertexAttributes)
+        key += fmt::format(" attr {} {} {}", a.location, int(a.format), a.offset);
+    return key;
+}
+
 }  // namespace
+
+// Every pipeline and set layout lives as long as the device: rebuilding a technique finds its
+// pipelines here (no second compilation, no pipeline growth over settings changes).
+struct PipelineCache {
+    VkDevice device;
+    std::map<std::string, VkDescriptorSetLayout> layouts;
+    std::map<std::string, std::pair<VkPipeline, VkPipelineLayout>> pipelines;
+};
+
+void destroyPipelineCache(PipelineCache* cache) {
+    if (!cache) return;
+    for (auto& [key, p] : cache->pipelines) {
+        vkDestroyPipeline(cache->device, p.first, nullptr);
+        vkDestroyPipelineLayout(cache->device, p.second, nullptr);
+    }
+    for (auto& [key, l] : cache->layouts) vkDestroyDescriptorSetLayout(cache->device, l, nullptr);
+    delete cache;
+}
+
+PipelineCache& Context::pipelineCache() {
+    if (!pipelineCache_) pipelineCache_.reset(new PipelineCache{device_, {}, {}});
+    return *pipelineCache_;
+}
 
 DescriptorLayout::DescriptorLayout(Context& ctx, const std::vector<Binding>& bindings, bool pushDescriptor)
     : device_(ctx.device()) {
+    std::string key = pushDescriptor ? "push" : "pooled";
+    for (const Binding& x : bindings) key += fmt::format(" {}:{}x{}", x.binding, int(x.type), x.count);
+    PipelineCache& cache = ctx.pipelineCache();
+    if (auto it = cache.layouts.find(key); it != cache.layouts.end()) {
+        layout_ = it->second;
+        return;
+    }
     std::vector<VkDescriptorSetLayoutBinding> b;
     for (const Binding& x : bindings) b.push_back({x.binding, x.type, x.count, VK_SHADER_STAGE_ALL, nullptr});
     VkDescriptorSetLayoutCreateInfo ci{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
@@ -37,6 +87,7 @@ DescriptorLayout::DescriptorLayout(Context& ctx, const std::vector<Binding>& bin
     ci.bindingCount = static_cast<uint32_t>(b.size());
     ci.pBindings = b.data();
     VK_CHECK(vkCreateDescriptorSetLayout(device_, &ci, nullptr, &layout_));
+    cache.layouts[key] = layout_;
 }
 
 DescriptorLayout& DescriptorLayout::operator=(DescriptorLayout&& o) noexcept {
@@ -48,13 +99,11 @@ DescriptorLayout& DescriptorLayout::operator=(DescriptorLayout&& o) noexcept {
     return *this;
 }
 
-void DescriptorLayout::reset() {
-    if (layout_) vkDestroyDescriptorSetLayout(device_, layout_, nullptr);
-    layout_ = VK_NULL_HANDLE;
-}
+void DescriptorLayout::reset() { layout_ = VK_NULL_HANDLE; }  // the cache owns it
 
 void Pipeline::createLayout(Context& ctx, const std::vector<VkDescriptorSetLayout>& sets, uint32_t pushBytes) {
     device_ = ctx.device();
+    ctx_ = &ctx;
     VkPushConstantRange range{VK_SHADER_STAGE_ALL, 0, pushBytes};
     VkPipelineLayoutCreateInfo ci{VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO};
     ci.setLayoutCount = static_cast<uint32_t>(sets.size());
@@ -64,9 +113,28 @@ void Pipeline::createLayout(Context& ctx, const std::vector<VkDescriptorSetLayou
     VK_CHECK(vkCreatePipelineLayout(device_, &ci, nullptr, &layout_));
 }
 
+bool Pipeline::fromCache(Context& ctx, const std::string& key) {
+    ctx_ = &ctx;
+    device_ = ctx.device();
+    PipelineCache& cache = ctx.pipelineCache();
+    auto it = cache.pipelines.find(key);
+    if (it == cache.pipelines.end()) return false;
+    pipeline_ = it->second.first;
+    layout_ = it->second.second;
+    return true;
+}
+
+void Pipeline::addToCache(Context& ctx, const std::string& key) {
+    ctx.pipelineCache().pipelines[key] = {pipeline_, layout_};
+    ctx.countPipeline(1);
+}
+
 Pipeline Pipeline::compute(Context& ctx, const std::string& shader, const std::vector<VkDescriptorSetLayout>& sets,
                            uint32_t pushBytes) {
     Pipeline p;
+    p.bindPoint_ = VK_PIPELINE_BIND_POINT_COMPUTE;
+    const std::string key = "C " + shader + " " + layoutsKey(sets, pushBytes);
+    if (p.fromCache(ctx, key)) return p;
     p.createLayout(ctx, sets, pushBytes);
     p.bindPoint_ = VK_PIPELINE_BIND_POINT_COMPUTE;
     VkShaderModule m = createModule(ctx.device(), shader);
@@ -74,17 +142,19 @@ Pipeline Pipeline::compute(Context& ctx, const std::string& shader, const std::v
     ci.stage = stage(VK_SHADER_STAGE_COMPUTE_BIT, m);
     ci.layout = p.layout_;
     VkResult r = vkCreateComputePipelines(ctx.device(), VK_NULL_HANDLE, 1, &ci, nullptr, &p.pipeline_);
-    ctx.countPipeline();
     vkDestroyShaderModule(ctx.device(), m, nullptr);
     VK_CHECK(r);
+    p.addToCache(ctx, key);
     return p;
 }
 
 Pipeline Pipeline::graphics(Context& ctx, const GraphicsDesc& d, const std::vector<VkDescriptorSetLayout>& sets,
                             uint32_t pushBytes) {
     Pipeline p;
-    p.createLayout(ctx, sets, pushBytes);
     p.bindPoint_ = VK_PIPELINE_BIND_POINT_GRAPHICS;
+    const std::string key = graphicsKey(d) + " " + layoutsKey(sets, pushBytes);
+    if (p.fromCache(ctx, key)) return p;
+    p.createLayout(ctx, sets, pushBytes);
     std::vector<VkShaderModule> modules{createModule(ctx.device(), d.vertexShader)};
     std::vector<VkPipelineShaderStageCreateInfo> stages{stage(VK_SHADER_STAGE_VERTEX_BIT, modules[0])};
     if (!d.fragmentShader.empty()) {
@@ -153,15 +223,16 @@ Pipeline Pipeline::graphics(Context& ctx, const GraphicsDesc& d, const std::vect
     ci.pDynamicState = &dy;
     ci.layout = p.layout_;
     VkResult r = vkCreateGraphicsPipelines(ctx.device(), VK_NULL_HANDLE, 1, &ci, nullptr, &p.pipeline_);
-    ctx.countPipeline();
     for (VkShaderModule m : modules) vkDestroyShaderModule(ctx.device(), m, nullptr);
     VK_CHECK(r);
+    p.addToCache(ctx, key);
     return p;
 }
 
 Pipeline& Pipeline::operator=(Pipeline&& o) noexcept {
     if (this != &o) {
         reset();
+        ctx_ = o.ctx_;
         device_ = o.device_;
         pipeline_ = std::exchange(o.pipeline_, VK_NULL_HANDLE);
         layout_ = std::exchange(o.layout_, VK_NULL_HANDLE);
@@ -171,8 +242,7 @@ Pipeline& Pipeline::operator=(Pipeline&& o) noexcept {
 }
 
 void Pipeline::reset() {
-    if (pipeline_) vkDestroyPipeline(device_, pipeline_, nullptr);
-    if (layout_) vkDestroyPipelineLayout(device_, layout_, nullptr);
+    // The device's PipelineCache owns both.
     pipeline_ = VK_NULL_HANDLE;
     layout_ = VK_NULL_HANDLE;
 }

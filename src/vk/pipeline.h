@@ -8,6 +8,10 @@
 
 #include "vk/resources.h"
 
+namespace penumbra {
+class FrameGraph;
+}
+
 namespace penumbra::vk {
 
 struct Binding {
@@ -28,7 +32,7 @@ public:
 
 private:
     VkDevice device_ = VK_NULL_HANDLE;
-    VkDescriptorSetLayout layout_ = VK_NULL_HANDLE;
+    VkDescriptorSetLayout layout_ = VK_NULL_HANDLE;  // owned by the device's PipelineCache
 };
 
 struct GraphicsDesc {
@@ -69,7 +73,10 @@ public:
 
 private:
     void createLayout(Context& ctx, const std::vector<VkDescriptorSetLayout>& sets, uint32_t pushBytes);
+    bool fromCache(Context& ctx, const std::string& key);
+    void addToCache(Context& ctx, const std::string& key);
     VkDevice device_ = VK_NULL_HANDLE;
+    Context* ctx_ = nullptr;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
     VkPipelineLayout layout_ = VK_NULL_HANDLE;
     VkPipelineBindPoint bindPoint_ = VK_PIPELINE_BIND_POINT_COMPUTE;
@@ -96,10 +103,12 @@ public:
     DescriptorWrites& storageImage(uint32_t binding, VkImageView view);
     DescriptorWrites& storageBuffer(uint32_t binding, const Buffer& buffer);
     DescriptorWrites& uniformBuffer(uint32_t binding, const Buffer& buffer);
-    void push(const Context& ctx, VkCommandBuffer cmd, const Pipeline& pipeline, uint32_t set = 0);
     void update(VkDevice device, VkDescriptorSet set);  // for pooled sets
 
 private:
+    // Only the frame graph pushes sets, from what a pass declared (render/frame_graph.h).
+    friend class ::penumbra::FrameGraph;
+    void push(const Context& ctx, VkCommandBuffer cmd, const Pipeline& pipeline, uint32_t set = 0);
     VkWriteDescriptorSet& add(uint32_t binding, VkDescriptorType type);
     std::vector<VkWriteDescriptorSet> writes_;
     std::deque<VkDescriptorImageInfo> images_;

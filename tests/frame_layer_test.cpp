@@ -1,0 +1,218 @@
+// The frame layer (issue 11): one long-lived GpuScene under every settings change, per-frame values
+// applied without allocation or pipeline creation, structure and size changes rebuilding only what
+// they own, frames in flight under synchronization validation, and a settings table that covers
+// every render option. Every image is checked against a renderer built afresh for the same settings.
+#include <fstream>
+#include <set>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "app/frame_options.h"
+#include "gpu_fixture.h"
+#include "render/settings_change.h"
+
+namespace penumbra::test {
+namespace {
+
+constexpr uint32_t kW = 48, kH = 32;
+
+RenderSettings smallSettings() {
+    RenderSettings s;
+    s.width = kW;
+    s.height = kH;
+    s.shadow.resolution = 128;
+    s.rsm.resolution = 32;
+    s.rsm.samples = 16;
+    s.lpv.resolution = 8;
+    s.lpv.iterations = 2;
+    s.lpv.rsmResolution = 64;
+    s.lpv.vplResolution = 16;
+    s.lpv.sliceIndex = 4;
+    return s;
+}
+
+// Resident process memory in KiB (Linux).
+long residentKiB() {
+    std::ifstream statm("/proc/self/statm");
+    long pages = 0, resident = 0;
+    statm >> pages >> resident;
+    return resident * 4;
+}
+
+class FrameLayerTest : public GpuTest {
+protected:
+    // What a fresh renderer with `s` renders of `scene` (the reference for a changed live one).
+    std::vector<float> fresh(GpuScene& scene, const RenderSettings& s, const Camera& camera) {
+        Renderer r(ctx(), scene, s, 1);
+        r.render(camera);
+        return r.readHdr();
+    }
+};
+
+struct Change {
+    const char* what;
+    std::function<void(RenderSettings&)> apply;
+    SettingsChange expected;
+};
+
+std::vector<Change> changes() {
+    return {
+        {"exposure", [](RenderSettings& s) { s.exposure = 2.0f; }, SettingsChange::PerFrame},
+        {"aov normal", [](RenderSettings& s) { s.aov = Aov::Normal; }, SettingsChange::PerFrame},
+        {"shadow pcf", [](RenderSettings& s) { s.shadow.filter = ShadowFilter::Pcf; }, SettingsChange::Structure},
+        {"pcf radius", [](RenderSettings& s) { s.shadow.pcfRadius = 3.0f; }, SettingsChange::PerFrame},
+        {"shadow bias", [](RenderSettings& s) { s.shadow.depthBiasSlope = 3.0f; }, SettingsChange::PerFrame},
+        {"normal offset", [](RenderSettings& s) { s.shadow.normalOffset = 2.0f; }, SettingsChange::PerFrame},
+        {"gi rsm", [](RenderSettings& s) { s.gi = GiMode::Rsm; }, SettingsChange::Structure},
+        {"rsm samples", [](RenderSettings& s) { s.rsm.samples = 40; }, SettingsChange::PerFrame},
+        {"rsm radius", [](RenderSettings& s) { s.rsm.radius = 0.5f; }, SettingsChange::PerFrame},
+        {"rsm resolution", [](RenderSettings& s) { s.rsm.resolution = 64; }, SettingsChange::Sizes},
+        {"gi lpv", [](RenderSettings& s) { s.gi = GiMode::Lpv; }, SettingsChange::Structure},
+        {"lpv occlusion", [](RenderSettings& s) { s.lpv.occlusion = false; }, SettingsChange::PerFrame},
+        {"lpv iterations", [](RenderSettings& s) { s.lpv.iterations = 3; }, SettingsChange::Structure},
+        {"shadow resolution", [](RenderSettings& s) { s.shadow.resolution = 256; }, SettingsChange::Sizes},
+        {"image size", [](RenderSettings& s) { s.width = 40, s.height = 24; }, SettingsChange::Sizes},
+    };
+}
+
+// Each change applied to a live renderer (2 frames in flight) gives the image a renderer built for
+// the new settings gives, and a per-frame change allocates nothing and creates no pipeline.
+TEST_F(FrameLayerTest, EachChangeMatchesAFreshRendererAndPerFrameChangesAllocateNothing) {
+    GpuScene scene(ctx(), makeBuiltinScene("cornell"));
+    const Camera camera = scene.scene().cameras[0];
+    RenderSettings s = smallSettings();
+    Renderer live(ctx(), scene, s, 2);
+    for (int i = 0; i < 3; ++i) live.submit({camera, scene.scene().lights});
+    for (const Change& c : changes()) {
+        c.apply(s);
+        const uint64_t allocations = live.allocator().allocations(), pipelines = ctx().pipelinesCreated();
+        const SettingsChange got = live.apply(s);
+        EXPECT_EQ(got, c.expected) << c.what;
+        for (int i = 0; i < 3; ++i) live.submit({camera, scene.scene().lights});
+        if (got == SettingsChange::PerFrame) {
+            EXPECT_EQ(live.allocator().allocations(), allocations) << c.what << " allocated";
+            EXPECT_EQ(ctx().pipelinesCreated(), pipelines) << c.what << " created a pipeline";
+        }
+        std::printf("[ change   ] %-18s %-9s %3llu allocations %3llu pipelines\n", c.what, settingsChangeName(got),
+                    (unsigned long long)(live.allocator().allocations() - allocations),
+                    (unsigned long long)(ctx().pipelinesCreated() - pipelines));
+        EXPECT_EQ(live.readHdr(), fresh(scene, s, camera)) << "after " << c.what;
+    }
+    EXPECT_EQ(scene.geometryUploads(), 1u);
+}
+
+// Moving the camera and the light frame after frame with frames in flight: no hazard (synchronization
+// validation, checked by the fixture) and the last frame equals a one-shot render of its inputs.
+TEST_F(FrameLayerTest, FramesInFlightWithMovingCameraAndLight) {
+    GpuScene scene(ctx(), makeBuiltinScene("cornell"));
+    RenderSettings s = smallSettings();
+    s.gi = GiMode::Lpv;
+    s.shadow.filter = ShadowFilter::Vsm;
+    Renderer live(ctx(), scene, s, 2);
+    FrameInputs in{scene.scene().cameras[0], scene.scene().lights};
+    for (int i = 0; i < 6; ++i) {
+        in.camera.eye.x = 0.05f * float(i);
+        in.lights[0].position.x = -0.3f + 0.1f * float(i);
+        live.submit(in);
+    }
+    const std::vector<float> last = live.readHdr();
+    EXPECT_EQ(live.takeCompletedTimings().size(), 6u);
+    Renderer once(ctx(), scene, s, 1);
+    once.render(in);
+    EXPECT_EQ(last, once.readHdr());
+    EXPECT_GT(live.frameTimings().gpuMs, 0.0);
+}
+
+// Adding and removing lights re-creates the shadow resources; the image follows.
+TEST_F(FrameLayerTest, AddingAndRemovingLightsRebuildsShadows) {
+    GpuScene scene(ctx(), makeBuiltinScene("cornell"));
+    RenderSettings s = smallSettings();
+    Renderer live(ctx(), scene, s, 2);
+    FrameInputs in{scene.scene().cameras[0], scene.scene().lights};
+    Light sun;
+    sun.direction = glm::normalize(glm::vec3(0.2f, -1.0f, 0.1f));
+    sun.intensity = 1.0f;
+    in.lights.push_back(sun);
+    live.submit(in);
+    Renderer two(ctx(), scene, s, 1);
+    two.render(in);
+    EXPECT_EQ(live.readHdr(), two.readHdr());
+    in.lights.pop_back();
+    live.submit(in);
+    EXPECT_EQ(live.readHdr(), fresh(scene, s, in.camera));
+}
+
+// 30 cycles through 10 settings states: the allocator's bytes and blocks and the live pipelines stay
+// where the first cycle left them, and resident memory has no upward trend.
+TEST_F(FrameLayerTest, CyclingSettingsLeavesNoResidue) {
+    GpuScene scene(ctx(), makeBuiltinScene("cornell"));
+    const Camera camera = scene.scene().cameras[0];
+    std::vector<RenderSettings> states(10, smallSettings());
+    states[1].shadow.filter = ShadowFilter::Pcf;
+    states[2].shadow.filter = ShadowFilter::Msm;
+    states[3].gi = GiMode::Rsm;
+    states[4].gi = GiMode::Lpv;
+    states[5].shadow.resolution = 256;
+    states[6].width = 32;
+    states[7].gi = GiMode::Rsm, states[7].rsm.mode = RsmMode::Full;
+    states[8].shadow.cascades.count = 2, states[8].exposure = 3.0f;
+    states[9].gi = GiMode::Lpv, states[9].lpv.resolution = 16;
+    Renderer live(ctx(), scene, states[0], 2);
+    struct Counters {
+        VkDeviceSize bytes;
+        uint32_t blocks;
+        int64_t pipelines;
+    };
+    Counters first{};
+    std::vector<long> rss;
+    for (int cycle = 0; cycle < 30; ++cycle) {
+        for (const RenderSettings& st : states) {
+            live.apply(st);
+            live.submit({camera, scene.scene().lights});
+        }
+        live.finish();
+        const Counters now{live.allocator().bytesInUse(), live.allocator().blockCount(), ctx().pipelinesAlive()};
+        if (cycle == 0) first = now;
+        EXPECT_EQ(now.bytes, first.bytes) << "cycle " << cycle;
+        EXPECT_EQ(now.blocks, first.blocks) << "cycle " << cycle;
+        EXPECT_EQ(now.pipelines, first.pipelines) << "cycle " << cycle;
+        rss.push_back(residentKiB());
+    }
+    // No trend from the changes: lavapipe's own resident memory grows with every frame (about 0.75 MiB
+    // per frame in Mesa 22.3, with or without settings changes, in the old loop as in this one), so the
+    // last ten cycles are compared with as many frames rendered without any change.
+    const long before = residentKiB();
+    for (int i = 0; i < 10 * int(states.size()); ++i) live.submit({camera, scene.scene().lights});
+    live.finish();
+    const long steady = residentKiB() - before, changing = rss.back() - rss[19];
+    EXPECT_LE(changing, steady + 1024) << "10 cycles of changes grew resident memory by " << changing
+                                       << " KiB, as many unchanged frames by " << steady << " KiB";
+}
+
+// Every option `render` takes is classified, except the frame inputs and the scene's own options.
+TEST(SettingsTable, CoversEveryRenderOption) {
+    CLI::App app;
+    FrameOptions fo;
+    RenderSettings rs;
+    addFrameOptions(app, fo, rs);
+    std::set<std::string> table;
+    for (const SettingsOption& o : settingsOptionTable()) table.insert(o.flag);
+    const std::set<std::string> inputs{"--help", "--camera", "--camera-index", "--light", "--light-shadow", "--strands"};
+    for (const CLI::Option* o : app.get_options()) {
+        if (o->get_lnames().empty()) continue;  // the positional scene
+        const std::string name = "--" + o->get_lnames().front();
+        if (inputs.count(name)) continue;
+        EXPECT_TRUE(table.count(name)) << name << " has no settings class";
+    }
+}
+
+TEST(SettingsTable, SizesAndPassCountsAreNotPerFrame) {
+    for (const char* flag : {"--shadow-res", "--rsm-res", "--lpv-res", "--dsm-res", "--cascades", "--width",
+                             "--lpv-iterations", "--lpv-vpl-res", "--lpv-rsm-res"})
+        for (const SettingsOption& o : settingsOptionTable())
+            if (std::string(o.flag) == flag) EXPECT_NE(o.change, SettingsChange::PerFrame) << flag;
+}
+
+}  // namespace
+}  // namespace penumbra::test
