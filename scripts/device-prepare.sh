@@ -17,10 +17,13 @@ cp build/penumbra .device/
 # Every shared library it links except the C runtime and the Vulkan loader (unpacked from .gl).
 ldd build/penumbra | awk '$3 ~ /^\// {print $3}' | grep -Ev '/(libc|libm|libvulkan|ld-linux[^/]*)\.so' |
   while read -r lib; do cp -L "$lib" .device/lib/; done
-[ -d ../shared/assets ] && cp -r ../shared/assets/VC .device/assets/
+[ -d ../shared/assets ] && cp -r ../shared/assets/VC ../shared/assets/sponza .device/assets/
+# Packed: Embree alone is 44 MB, and the tree that travels to the GPU machine holds 64 MiB at most.
+tar -cJf .device/lib.tar.xz -C .device lib && rm -rf .device/lib
 cat > .device/env.sh <<'EOS'
-# Sourced first in every device command: unpack the Vulkan loader, find the carried libraries.
+# Sourced first in every device command: unpack the Vulkan loader and the carried libraries.
 for f in .gl/*.deb; do dpkg -x "$f" /; done; ldconfig
+tar -xJf .device/lib.tar.xz -C .device
 export LD_LIBRARY_PATH=$PWD/.device/lib
 EOS
 du -sh .gl .device

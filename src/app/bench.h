@@ -12,6 +12,7 @@ struct BenchOptions {
     FrameOptions frame;
     int frames = 100;
     int warmup = 10;
+    int framesInFlight = 2;  // 1: the old loop, each frame waited for before the next is recorded
     std::string json;     // output file, "" = none
     std::string command;  // the command line, recorded in the JSON
 };

@@ -256,7 +256,6 @@ void Renderer::recordFrame(FrameSlot& slot, const FrameInputs& in, const FrameHo
 }
 
 void Renderer::submit(const FrameInputs& in, const FrameHooks& hooks) {
-    const auto t0 = std::chrono::steady_clock::now();
     if (layoutChanged(in.lights)) {
         finish();
         lights_ = in.lights;
@@ -273,6 +272,7 @@ void Renderer::submit(const FrameInputs& in, const FrameHooks& hooks) {
         }
     }
     FrameSlot& slot = acquireSlot();
+    const auto t0 = std::chrono::steady_clock::now();  // CPU time: recording and submission only
     recordFrame(slot, in, hooks);
 
     VkCommandBufferSubmitInfo cb{VK_STRUCTURE_TYPE_COMMAND_BUFFER_SUBMIT_INFO};
