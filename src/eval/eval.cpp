@@ -123,18 +123,21 @@ std::vector<EvalRow> runEval(vk::Context& ctx, const Scene& scene, const Camera&
                              const std::vector<EvalVariant>& variants, const GroundTruth& truth, int frames,
                              const std::function<void(size_t, size_t, const std::string&)>& progress) {
     std::vector<EvalRow> rows;
+    // One upload of the scene; each variant is a settings change of one renderer (frames waited for).
+    GpuScene gpuScene(ctx, scene);
+    std::unique_ptr<Renderer> renderer;
     for (size_t i = 0; i < variants.size(); ++i) {
         const EvalVariant& v = variants[i];
         if (progress) progress(i, variants.size(), v.technique + " " + v.settings);
         RenderSettings s = v.render;
         s.aov = Aov::Final;
-        Renderer r(ctx, scene, s);
+        if (renderer) renderer->apply(s);
+        else renderer = std::make_unique<Renderer>(ctx, gpuScene, s, 1);
+        Renderer& r = *renderer;
         std::vector<double> ms;
         for (int f = 0; f < std::max(frames, 1); ++f) {
             r.render(camera);
-            double sum = 0.0;
-            for (const vk::ScopeTiming& t : r.timings()) sum += t.ms;
-            if (f > 0 || frames <= 1) ms.push_back(sum);  // the first frame warms caches
+            if (f > 0 || frames <= 1) ms.push_back(r.frameTimings().gpuMs);  // the first frame warms caches
         }
         EvalRow row{v, median(ms), {}, {}, {}, {}, {}};
         ImageF final{s.width, s.height, r.readHdr()};
