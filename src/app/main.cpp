@@ -142,6 +142,7 @@ int main(int argc, char** argv) {
         fmt::print(stderr, "penumbra: error: {} (see --help)\n", msg);
         return 2;
     }
+    vkOptions.syncValidation = vkOptions.validate;  // --validate checks synchronization too
     try {
         if (*info) return runInfo(vkOptions);
         if (*bench) return runBench(bo, vkOptions, bs);
