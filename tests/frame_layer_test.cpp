@@ -124,6 +124,31 @@ TEST_F(FrameLayerTest, FramesInFlightWithMovingCameraAndLight) {
     EXPECT_GT(live.frameTimings().gpuMs, 0.0);
 }
 
+// A moving light with a deep shadow map: the DSM is refitted per frame (no allocation) and the
+// last frame equals a one-shot render.
+TEST_F(FrameLayerTest, MovingLightWithDeepShadowMapAllocatesNothing) {
+    BuiltinOptions hair;
+    hair.hairStrands = 200;
+    GpuScene scene(ctx(), makeBuiltinScene("hair", hair));
+    RenderSettings s = smallSettings();
+    s.dsm.enabled = true;
+    s.dsm.resolution = 128;
+    Renderer live(ctx(), scene, s, 2);
+    FrameInputs in{scene.scene().cameras[0], scene.scene().lights};
+    live.submit(in);
+    live.finish();
+    const uint64_t allocations = live.allocator().allocations();
+    for (int i = 0; i < 4; ++i) {
+        in.lights[0].position.x += 0.1f;
+        live.submit(in);
+    }
+    EXPECT_EQ(live.allocator().allocations(), allocations);
+    const std::vector<float> last = live.readHdr();
+    Renderer once(ctx(), scene, s, 1);
+    once.render(in);
+    EXPECT_EQ(last, once.readHdr());
+}
+
 // Adding and removing lights re-creates the shadow resources; the image follows.
 TEST_F(FrameLayerTest, AddingAndRemovingLightsRebuildsShadows) {
     GpuScene scene(ctx(), makeBuiltinScene("cornell"));

@@ -70,7 +70,7 @@ void DeepShadowBuildPass::addTo(FrameGraph& graph) {
 
     PassBuilder build = graph.pass("dsm.build", PassKind::Raster);
     build.pipeline(setLayoutPipeline());
-    scene_.declareDrawSet(build, graph.import(res_.views));
+    scene_.declareDrawSet(build, graph.import(res_.views.current()));
     if (hair_) hair_->declare(build);
     build.storageBuffer(5, heads, Use::StorageWrite)
         .storageBuffer(6, nodes, Use::StorageWrite)

@@ -60,12 +60,23 @@ DeepShadowMaps::DeepShadowMaps(vk::Allocator& alloc, SceneGpu& scene, const Hair
     resolve_ = std::make_unique<DeepShadowResolvePass>(alloc, *res_);
 }
 
+void DeepShadowMaps::update(const std::vector<Light>& lights, const Bounds& bounds, uint32_t slot) {
+    for (DsmLayer& layer : res_->layers) {
+        const Light& l = lights.at(layer.light);
+        layer.projection = l.type == LightType::Directional
+                               ? directionalProjection(l.direction, bounds, res_->resolution)
+                               : spotProjection(l, bounds, res_->resolution);
+        layer.view = lightRibbonView(l, layer.projection);
+    }
+    res_->writeTables(settings_, slot);
+}
+
 bool DeepShadowMaps::covers(uint32_t light) const {
     return std::any_of(res_->layers.begin(), res_->layers.end(), [&](const DsmLayer& l) { return l.light == light; });
 }
 
 void DeepShadowMaps::addTo(FrameGraph& graph) {
-    graph.publish("dsm.lights", graph.import(res_->lightTable));
+    graph.publish("dsm.lights", graph.import(res_->lightTable.current()));
     graph.publish("dsm.heads", graph.import(res_->heads));
     graph.publish("dsm.nodes", graph.import(res_->nodes));
     graph.publish("dsm.links", graph.import(res_->upLinks));

@@ -35,6 +35,8 @@ public:
                    uint32_t shadowResolution, const std::vector<Light>& lights, std::vector<std::string>& warnings);
 
     bool active() const { return !res_->layers.empty(); }
+    // Per frame: refits each DSM to its light's current position and direction (same lights as built).
+    void update(const std::vector<Light>& lights, const Bounds& sceneBounds, uint32_t slot);
     // Whether light `light` has a DSM: its translucent casters then stay out of its ordinary map.
     bool covers(uint32_t light) const;
     // The build and resolve passes (when active), and the lookup's inputs by name (placeholders when

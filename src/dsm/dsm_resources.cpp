@@ -78,17 +78,25 @@ DsmResources::DsmResources(vk::Allocator& alloc, const DsmSettings& settings, ui
     upLinks = vk::Buffer(alloc, capacity * 4, cleared, false, "dsm-up-links");
     stats = vk::Buffer(alloc, sizeof(gpu::DsmStats), cleared, false, "dsm-stats");
 
+    views = vk::BufferRing(alloc, std::max<size_t>(layers.size(), 1) * sizeof(glm::mat4), storage, "dsm-views");
+    lightTable = vk::BufferRing(alloc, std::max<size_t>(lightCount, 1) * sizeof(gpu::GpuDsmLight), storage,
+                               "dsm-lights");
+    lightCount_ = std::max<size_t>(lightCount, 1);
+    for (uint32_t slot = 0; slot < vk::kMaxFramesInFlight; ++slot) writeTables(settings, slot);
+}
+
+void DsmResources::writeTables(const DsmSettings& settings, uint32_t slot) {
     std::vector<glm::mat4> rows{glm::mat4(1.0f)};
-    std::vector<gpu::GpuDsmLight> table(std::max<size_t>(lightCount, 1));
-    for (gpu::GpuDsmLight& g : table) g.params = {0.0f, 0.0f, -1.0f, float(res)};  // no DSM
+    std::vector<gpu::GpuDsmLight> table(lightCount_);
+    for (gpu::GpuDsmLight& g : table) g.params = {0.0f, 0.0f, -1.0f, float(resolution)};  // no DSM
     for (size_t i = 0; i < layers.size(); ++i) {
-        table.at(layers[i].light) = tableEntry(layers[i], int(i), res, settings);
+        table.at(layers[i].light) = tableEntry(layers[i], int(i), resolution, settings);
         if (i == 0) rows.clear();
         rows.push_back(layers[i].projection.viewProj);
     }
-    views = vk::Buffer(alloc, rows.size() * sizeof(glm::mat4), storage, true, "dsm-views");
+    views.select(slot);
+    lightTable.select(slot);
     views.write(rows.data(), rows.size() * sizeof(glm::mat4));
-    lightTable = vk::Buffer(alloc, table.size() * sizeof(gpu::GpuDsmLight), storage, true, "dsm-lights");
     lightTable.write(table.data(), table.size() * sizeof(gpu::GpuDsmLight));
 }
 

@@ -26,21 +26,24 @@ struct DsmResources {
     uint64_t capacity = 1;  // nodes in the pool
     uint32_t maxList = 50;
     std::vector<DsmLayer> layers;
-    vk::Buffer views;       // row k: layer k's viewProj (binding 0 of the build)
-    vk::Buffer lightTable;  // GpuDsmLight per scene light
+    vk::BufferRing views;       // row k: layer k's viewProj (binding 0 of the build), per frame slot
+    vk::BufferRing lightTable;  // GpuDsmLight per scene light, per frame slot
     vk::Buffer heads;       // uint per texel and layer
     vk::Buffer nodes;       // uvec4 per node
     vk::Buffer upLinks;     // uint per node
     vk::Buffer stats;       // DsmStats
 
     static constexpr VkDeviceSize kNodeBytes = 16 + 4;  // node + upper link
+    size_t lightCount_ = 1;
 
-    // Allocates every buffer and writes the static tables. Throws vk::VulkanError with a clear message
+    // Allocates every buffer and writes the tables of every slot. Throws vk::VulkanError with a clear message
     // when the pool does not fit the device (storage-buffer range, allocation size, memory heap).
     DsmResources(vk::Allocator& alloc, const DsmSettings& settings, uint32_t resolution, std::vector<DsmLayer> layers,
                  size_t lightCount);
 
     uint32_t layerCount() const { return uint32_t(layers.size()); }
+    // Writes frame slot `slot`'s tables from the layers' current projections.
+    void writeTables(const DsmSettings& settings, uint32_t slot);
     VkDeviceSize poolBytes() const { return VkDeviceSize(capacity) * kNodeBytes; }
     VkDeviceSize headBytes() const { return heads.size(); }
 };

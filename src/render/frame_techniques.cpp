@@ -94,7 +94,8 @@ void ShadowTechnique::addPasses(const FrameContext& f) {
 
 DsmTechnique::DsmTechnique(vk::Allocator& alloc, GpuScene& scene, const RenderSettings& s,
                            const std::vector<Light>& lights, std::vector<std::string>& warnings)
-    : maps_(alloc, scene.meshes(), scene.hair(), s.dsm, s.shadow.resolution, lights, warnings) {}
+    : maps_(alloc, scene.meshes(), scene.hair(), s.dsm, s.shadow.resolution, lights, warnings),
+      bounds_(scene.scene().bounds) {}
 
 RsmTechnique::RsmTechnique(vk::Allocator& alloc, vk::CommandContext& cmd, GpuScene& scene, const RenderSettings& s,
                            ShadowMapPass& shadow, bool gather)

@@ -58,11 +58,13 @@ public:
     DsmTechnique(vk::Allocator& alloc, GpuScene& scene, const RenderSettings& s, const std::vector<Light>& lights,
                  std::vector<std::string>& warnings);
     const char* name() const override { return "dsm"; }
+    void update(const FrameContext& f) override { maps_.update(f.lights, bounds_, f.slot); }
     void addPasses(const FrameContext& f) override { maps_.addTo(f.graph); }
     DeepShadowMaps& maps() { return maps_; }
 
 private:
     DeepShadowMaps maps_;
+    Bounds bounds_;
 };
 
 // The RSM of every shadowed light, rendered with the shadow layers' projections; with `gather`

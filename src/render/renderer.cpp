@@ -260,16 +260,6 @@ void Renderer::submit(const FrameInputs& in, const FrameHooks& hooks) {
         finish();
         lights_ = in.lights;
         build(kPartShadow | kPartDsm | kPartGi);
-    } else if (dsm_->maps().active()) {
-        // Deep shadow maps fit their projections to the lights when built: moving lights rebuild them.
-        bool moved = false;
-        for (size_t i = 0; i < in.lights.size(); ++i)
-            moved |= in.lights[i].position != lights_[i].position || in.lights[i].direction != lights_[i].direction;
-        if (moved) {
-            finish();
-            lights_ = in.lights;
-            build(kPartDsm);
-        }
     }
     FrameSlot& slot = acquireSlot();
     const auto t0 = std::chrono::steady_clock::now();  // CPU time: recording and submission only
