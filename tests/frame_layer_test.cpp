@@ -62,6 +62,8 @@ std::vector<Change> changes() {
         {"aov normal", [](RenderSettings& s) { s.aov = Aov::Normal; }, SettingsChange::PerFrame},
         {"shadow pcf", [](RenderSettings& s) { s.shadow.filter = ShadowFilter::Pcf; }, SettingsChange::Structure},
         {"pcf radius", [](RenderSettings& s) { s.shadow.pcfRadius = 3.0f; }, SettingsChange::PerFrame},
+        {"shadow msm", [](RenderSettings& s) { s.shadow.filter = ShadowFilter::Msm; }, SettingsChange::Structure},
+        {"vsm blur", [](RenderSettings& s) { s.shadow.blurRadius = 5; }, SettingsChange::PerFrame},
         {"shadow bias", [](RenderSettings& s) { s.shadow.depthBiasSlope = 3.0f; }, SettingsChange::PerFrame},
         {"normal offset", [](RenderSettings& s) { s.shadow.normalOffset = 2.0f; }, SettingsChange::PerFrame},
         {"gi rsm", [](RenderSettings& s) { s.gi = GiMode::Rsm; }, SettingsChange::Structure},
@@ -71,6 +73,7 @@ std::vector<Change> changes() {
         {"gi lpv", [](RenderSettings& s) { s.gi = GiMode::Lpv; }, SettingsChange::Structure},
         {"lpv occlusion", [](RenderSettings& s) { s.lpv.occlusion = false; }, SettingsChange::PerFrame},
         {"lpv iterations", [](RenderSettings& s) { s.lpv.iterations = 3; }, SettingsChange::Structure},
+        {"lpv camera geom.", [](RenderSettings& s) { s.lpv.cameraGeometry = false; }, SettingsChange::Structure},
         {"shadow resolution", [](RenderSettings& s) { s.shadow.resolution = 256; }, SettingsChange::Sizes},
         {"image size", [](RenderSettings& s) { s.width = 40, s.height = 24; }, SettingsChange::Sizes},
     };

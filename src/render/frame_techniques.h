@@ -43,6 +43,7 @@ public:
     void update(const FrameContext& f) override;
     void addPasses(const FrameContext& f) override;
     void applyPerFrame(const RenderSettings& s) override;
+    void setFilters(const RenderSettings& s, const std::vector<Light>& lights) { pass_.setFilters(s.shadow, lights); }
     ShadowMapPass& pass() { return pass_; }
 
 private:

@@ -105,6 +105,7 @@ Renderer::~Renderer() {
 // maps, deep shadow maps and GI depend on one another's layout: any of the first two rebuilds all three.
 void Renderer::build(uint32_t parts) {
     if (parts & (kPartShadow | kPartDsm)) parts |= kPartShadow | kPartDsm | kPartGi;
+    if ((parts & kPartShadowFilters) && !(parts & kPartShadow)) shadow_->setFilters(settings_, lights_);
     if (parts & kPartCamera) parts |= kPartGi;
     warnings_.clear();
     if (parts & kPartGi) rsm_.reset(), lpv_.reset();
@@ -153,7 +154,7 @@ SettingsChange Renderer::apply(const RenderSettings& settings) {
     }
     finish();  // what is rebuilt may be in use by the frames in flight
     settings_ = settings;
-    build(diff.parts);
+    if (diff.parts != kPartNone) build(diff.parts);
     for (Technique* t : techniques()) t->applyPerFrame(settings_);
     return diff.change;
 }

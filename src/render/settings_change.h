@@ -27,6 +27,7 @@ enum FrameParts : uint32_t {
     kPartCamera = 2,  // G-buffer, lighting, tone mapping (image size)
     kPartGi = 4,      // RSM, its gather, LPV
     kPartDsm = 8,     // deep shadow maps
+    kPartShadowFilters = 16,  // the lights' shadow filters: re-assigned in place (moments sized, passes listed)
 };
 
 struct SettingsOption {

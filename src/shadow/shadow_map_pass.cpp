@@ -33,12 +33,21 @@ void ShadowMapPass::assign(const std::vector<Light>& lights) {
                                       VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                                   "shadow-map", 1, true});
     moments_.resize(layout_.momentLayerCount());
-    // Host-visible tables, one copy per frame in flight, rewritten by update().
+    // Host-visible tables, one copy per frame in flight, rewritten by update(); kept while their sizes hold.
+    const size_t shadowed = std::max<size_t>(layout_.shadowed().size(), 1);
+    if (layerTable_ && layerTable_.current().size() == sizeof(gpu::GpuShadowLayer) * layers &&
+        lightTable_.current().size() == sizeof(gpu::GpuShadowLight) * shadowed)
+        return;
     const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     layerTable_ = vk::BufferRing(alloc_, sizeof(gpu::GpuShadowLayer) * layers, storage, "shadow-layers");
     lightTable_ = vk::BufferRing(alloc_, sizeof(gpu::GpuShadowLight) * std::max<size_t>(layout_.shadowed().size(), 1),
                                  storage, "shadow-lights");
     params_ = vk::BufferRing(alloc_, sizeof(gpu::GpuShadowParams), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, "shadow-params");
+}
+
+void ShadowMapPass::setFilters(const ShadowSettings& settings, const std::vector<Light>& lights) {
+    setSettings(settings);
+    assign(lights);
 }
 
 void ShadowMapPass::setSettings(const ShadowSettings& settings) {

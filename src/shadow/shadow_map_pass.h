@@ -33,6 +33,9 @@ public:
     void update(const std::vector<Light>& lights, const Camera& camera, float aspect, float cameraFar, uint32_t slot);
     // Per-frame values (biases, filter radii, cascade splits); the sizes and filter kinds must not change.
     void setSettings(const ShadowSettings& settings);
+    // New filter kinds (settings or the lights' own): the layout is assigned again in place; only the
+    // moment images change size, the depth map and the tables stay.
+    void setFilters(const ShadowSettings& settings, const std::vector<Light>& lights);
 
     // The shadow layers, in array-layer order; layer k is row firstView + k of the views buffer.
     const std::vector<ShadowLayer>& layers() const { return layout_.layers(); }
