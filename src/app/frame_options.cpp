@@ -69,7 +69,7 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o, RenderSettings& rs) {
     addDsmOptions(cmd, rs.dsm, o.builtin);
 }
 
-PreparedFrame prepareFrame(const FrameOptions& o, RenderSettings& settings) {
+void checkFrameSettings(const FrameOptions& o, RenderSettings& settings) {
     settings.aov = parseAov(o.aov);
     finishDsmSettings(settings);
     if (settings.gi == GiMode::Lpv && settings.lpv.rsmResolution % settings.lpv.vplResolution)
@@ -78,21 +78,33 @@ PreparedFrame prepareFrame(const FrameOptions& o, RenderSettings& settings) {
         throw std::invalid_argument("--aov lpv-slice/gv-slice need --gi lpv");
     if (settings.gi == GiMode::Rsm && settings.rsm.mode == RsmMode::AllTexels && settings.rsm.resolution > 64)
         throw std::invalid_argument("--rsm-mode all-texels gathers every texel at every pixel: use --rsm-res <= 64");
-    PreparedFrame f;
+}
+
+std::vector<Light> frameLights(const FrameOptions& o, const Scene& loaded) {
     std::vector<Light> lights;
     for (const std::string& l : o.lights) lights.push_back(parseLight(l));
-    if (!o.camera.empty()) f.camera = parseCamera(o.camera);
+    if (lights.empty()) lights = loaded.lights;  // loadScene added the default sun where there is none
+    applyLightFilters(o.lightFilters, lights);
+    return lights;
+}
 
+Camera frameCamera(const FrameOptions& o, const Scene& scene) {
+    if (!o.camera.empty()) return parseCamera(o.camera);
+    if (o.cameraIndex < 0 || o.cameraIndex >= int(scene.cameras.size()))
+        throw std::invalid_argument(
+            fmt::format("--camera-index {}: the scene has {} camera(s)", o.cameraIndex, scene.cameras.size()));
+    return scene.cameras[o.cameraIndex];
+}
+
+PreparedFrame prepareFrame(const FrameOptions& o, RenderSettings& settings) {
+    checkFrameSettings(o, settings);
+    // Malformed --light / --camera values fail before a slow scene load.
+    for (const std::string& l : o.lights) parseLight(l);
+    if (!o.camera.empty()) parseCamera(o.camera);
+    PreparedFrame f;
     f.scene = loadScene(o.scene, o.builtin);
-    if (!lights.empty()) f.scene.lights = lights;
-    addDefaultsIfMissing(f.scene);
-    applyLightFilters(o.lightFilters, f.scene.lights);
-    if (o.camera.empty()) {
-        if (o.cameraIndex < 0 || o.cameraIndex >= int(f.scene.cameras.size()))
-            throw std::invalid_argument(fmt::format("--camera-index {}: the scene has {} camera(s)", o.cameraIndex,
-                                                    f.scene.cameras.size()));
-        f.camera = f.scene.cameras[o.cameraIndex];
-    }
+    f.scene.lights = frameLights(o, f.scene);
+    f.camera = frameCamera(o, f.scene);
     return f;
 }
 

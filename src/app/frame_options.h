@@ -32,4 +32,12 @@ struct PreparedFrame {
 // Throws std::invalid_argument / SceneError with one clear line.
 PreparedFrame prepareFrame(const FrameOptions& o, RenderSettings& settings);
 
+// The parts of prepareFrame, for a viewer that changes options one at a time:
+// the cross-option rules and the values derived after parsing (AOV, DSM);
+void checkFrameSettings(const FrameOptions& o, RenderSettings& settings);
+// the lights of `loaded` (a scene as loadScene returned it) after --light and --light-shadow;
+std::vector<Light> frameLights(const FrameOptions& o, const Scene& loaded);
+// the camera: --camera, else the scene's camera --camera-index.
+Camera frameCamera(const FrameOptions& o, const Scene& scene);
+
 }  // namespace penumbra

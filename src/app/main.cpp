@@ -1,5 +1,5 @@
-// penumbra command line: `render` (headless, PNG/EXR), `bench` (per-pass GPU timings), `info`, and the
-// ground truth: `reference` (CPU path tracer), `compare` (image metrics), `eval` (techniques vs reference).
+// penumbra command line: `render` (headless, PNG/EXR), `view` (interactive), `bench` (per-pass GPU
+// timings), `info`, and the ground truth: `reference` (CPU path tracer), `compare` (image metrics), `eval` (techniques vs reference).
 #include <algorithm>
 #include <cstdio>
 #include <iostream>
@@ -14,6 +14,7 @@
 #include "app/ground_truth_cli.h"
 #include "io/image_io.h"
 #include "render/renderer.h"
+#include "view/view_command.h"
 
 using namespace penumbra;
 
@@ -121,6 +122,8 @@ int main(int argc, char** argv) {
     RenderSettings bs;
     CLI::App* bench = addBenchCommand(app, bo, bs);
     for (int i = 0; i < argc; ++i) bo.command += (i ? " " : "") + std::string(argv[i]);
+    view::ViewCommand viewCommand;
+    CLI::App* viewer = view::addViewCommand(app, viewCommand);
     CLI::App* info = app.add_subcommand("info", "List Vulkan devices and the features penumbra needs");
     ReferenceCliOptions refOptions;
     CLI::App* reference = addReferenceCommand(app, refOptions);
@@ -149,6 +152,7 @@ int main(int argc, char** argv) {
         if (*reference) return runReferenceCommand(refOptions);
         if (*compare) return runCompareCommand(compareOptions);
         if (*eval) return runEvalCommand(evalOptions, vkOptions);
+        if (*viewer) return view::runViewCommand(viewCommand, vkOptions);
         return runRender(ro, vkOptions, rs);
     } catch (const std::exception& e) {
         fmt::print(stderr, "penumbra: error: {}\n", e.what());

@@ -192,7 +192,9 @@ void Context::createInstance(bool validate) {
     app.pApplicationName = "penumbra";
     app.pEngineName = "penumbra";
     app.apiVersion = VK_API_VERSION_1_3;
-    const char* ext = VK_EXT_DEBUG_UTILS_EXTENSION_NAME;
+    std::vector<const char*> exts;
+    for (const std::string& e : options_.instanceExtensions) exts.push_back(e.c_str());
+    if (validate) exts.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
     VkDebugUtilsMessengerCreateInfoEXT dbg{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
     dbg.messageSeverity =
         VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
@@ -210,14 +212,14 @@ void Context::createInstance(bool validate) {
     if (validate) {
         ci.enabledLayerCount = 1;
         ci.ppEnabledLayerNames = &kValidationLayer;
-        ci.enabledExtensionCount = 1;
-        ci.ppEnabledExtensionNames = &ext;
         ci.pNext = &dbg;  // also reports problems inside vkCreateInstance itself
         if (options_.syncValidation) {
             features.pNext = &dbg;
             ci.pNext = &features;
         }
     }
+    ci.enabledExtensionCount = uint32_t(exts.size());
+    ci.ppEnabledExtensionNames = exts.data();
     VkResult r = vkCreateInstance(&ci, nullptr, &instance_);
     if (r == VK_ERROR_INCOMPATIBLE_DRIVER)
         throw VulkanError("no Vulkan driver found (install mesa-vulkan-drivers for lavapipe)");
@@ -269,6 +271,8 @@ void Context::pickDevice(const std::string& selector) {
     physical_ = devices[chosen];
     vkGetPhysicalDeviceProperties(physical_, &properties_);
     queueFamily_ = findQueueFamily(physical_);
+    if (options_.presentSupport && !options_.presentSupport(instance_, physical_, queueFamily_))
+        throw VulkanError(fmt::format("device '{}' cannot present to this display", info_.name));
 }
 
 void Context::createDevice() {
@@ -291,12 +295,13 @@ void Context::createDevice() {
     f.features.fragmentStoresAndAtomics = VK_TRUE;
     f.features.tessellationShader = VK_TRUE;
     f.features.shaderClipDistance = VK_TRUE;
-    const char* exts[] = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME, VK_EXT_SHADER_ATOMIC_FLOAT_EXTENSION_NAME};
+    std::vector<const char*> exts = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME, VK_EXT_SHADER_ATOMIC_FLOAT_EXTENSION_NAME};
+    if (options_.presentSupport) exts.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
     VkDeviceCreateInfo ci{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &f};
     ci.queueCreateInfoCount = 1;
     ci.pQueueCreateInfos = &q;
-    ci.enabledExtensionCount = 2;
-    ci.ppEnabledExtensionNames = exts;
+    ci.enabledExtensionCount = uint32_t(exts.size());
+    ci.ppEnabledExtensionNames = exts.data();
     VK_CHECK(vkCreateDevice(physical_, &ci, nullptr, &device_));
     vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
     cmdPushDescriptorSet = reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(

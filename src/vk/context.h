@@ -2,6 +2,7 @@
 #pragma once
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -22,6 +23,11 @@ struct ContextOptions {
     std::string device;        // "" = best (discrete GPU first, lavapipe last); index or name substring
     bool quiet = false;        // do not echo validation messages to stderr
     bool syncValidation = false;  // with `validate`: also the layer's synchronization validation
+    // Presentation (a viewer; headless when unset): the window system's instance extensions, and a
+    // test that a queue family of a device can present to it. With it, VK_KHR_swapchain is enabled
+    // and a device whose queue cannot present is an error. src/vk stays free of window libraries.
+    std::vector<std::string> instanceExtensions;
+    std::function<bool(VkInstance, VkPhysicalDevice, uint32_t queueFamily)> presentSupport;
 };
 
 struct DeviceInfo {
@@ -63,6 +69,7 @@ public:
     const std::vector<std::string>& validationLog() const { return validationLog_; }
 
     void waitIdle() const;
+    bool presents() const { return bool(options_.presentSupport); }
 
     // Pipelines created on this device so far (tests: what a settings change costs).
     uint64_t pipelinesCreated() const { return pipelinesCreated_.load(); }

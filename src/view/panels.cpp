@@ -1,0 +1,249 @@
+#include "view/panels.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+#include <glm/gtc/constants.hpp>
+#include <imgui.h>
+#include <imgui_stdlib.h>
+
+namespace penumbra::view {
+namespace {
+
+constexpr size_t kFrameHistory = 240;
+
+bool startsWith(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
+
+// The technique an option belongs to, by its CLI name.
+const char* groupOf(const std::string& n) {
+    if (startsWith(n, "rsm-")) return "Reflective shadow maps (--gi rsm)";
+    if (startsWith(n, "lpv-")) return "Light propagation volumes (--gi lpv)";
+    if (startsWith(n, "dsm-") || n == "strands") return "Deep shadow maps and hair";
+    if (startsWith(n, "shadow") || startsWith(n, "pcf-") || startsWith(n, "pcss-") || startsWith(n, "vsm-") ||
+        startsWith(n, "csm-") || n == "cascades" || n == "point-shadow" || n == "light-shadow")
+        return "Shadow maps";
+    if (n == "gi" || n == "aov" || n == "exposure") return "Output: GI mode, debug view (AOV), exposure";
+    return "Scene, camera, lights, size";
+}
+
+// A sun's direction of travel from the azimuth and elevation of the direction towards it.
+glm::vec3 sunDirection(float azimuthDeg, float elevationDeg) {
+    const float az = glm::radians(azimuthDeg), el = glm::radians(elevationDeg);
+    return -glm::vec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
+}
+
+void azimuthElevation(const glm::vec3& direction, float& azimuthDeg, float& elevationDeg) {
+    const glm::vec3 toSun = -glm::normalize(direction);
+    azimuthDeg = glm::degrees(std::atan2(toSun.x, toSun.z));
+    elevationDeg = glm::degrees(std::asin(std::clamp(toSun.y, -1.0f, 1.0f)));
+}
+
+const char* typeName(LightType t) {
+    switch (t) {
+        case LightType::Directional: return "directional";
+        case LightType::Spot: return "spot";
+        case LightType::Point: return "point";
+    }
+    return "?";
+}
+
+// The editors of one light; true when it changed.
+bool lightEditor(Light& l) {
+    bool changed = false;
+    if (l.type == LightType::Directional || l.type == LightType::Spot) {
+        float az, el;
+        azimuthElevation(l.direction, az, el);
+        const bool a = ImGui::SliderFloat("azimuth", &az, -180.0f, 180.0f, "%.1f deg");
+        const bool e = ImGui::SliderFloat("elevation", &el, -89.9f, 89.9f, "%.1f deg");
+        if (a || e) l.direction = sunDirection(az, el), changed = true;
+    }
+    if (l.type != LightType::Directional) changed |= ImGui::DragFloat3("position", &l.position.x, 0.01f);
+    changed |= ImGui::DragFloat(l.type == LightType::Directional ? "irradiance E" : "intensity I", &l.intensity, 0.01f,
+                                0.0f, 1e6f);
+    changed |= ImGui::ColorEdit3("colour", &l.color.x);
+    if (l.type == LightType::Spot) {
+        float outer = glm::degrees(l.outerConeAngle);
+        if (ImGui::SliderFloat("outer cone", &outer, 1.0f, 89.0f, "%.1f deg"))
+            l.outerConeAngle = glm::radians(outer), l.innerConeAngle = std::min(l.innerConeAngle, l.outerConeAngle),
+            changed = true;
+    }
+    changed |= ImGui::Checkbox("casts shadow", &l.castsShadow);
+    return changed;
+}
+
+}  // namespace
+
+void Panels::recordFrameTime(double ms) {
+    frameMs_.push_back(float(ms));
+    while (frameMs_.size() > kFrameHistory) frameMs_.pop_front();
+}
+
+void Panels::loadScene(ViewSession& session, const std::string& path) {
+    try {
+        session.loadScene(path);
+        error_.clear();
+    } catch (const std::exception& e) {
+        error_ = fmt::format("{}: {}", path, e.what());
+    }
+}
+
+void Panels::apply(ViewSession& session, const std::string& option, const std::string& value) {
+    try {
+        session.set(option, value);
+        error_.clear();
+        edits_.erase(option);
+    } catch (const std::exception& e) {
+        error_ = e.what();
+    }
+}
+
+void Panels::animate(ViewSession& session, double dt) {
+    if (!turnSun_) return;
+    std::vector<Light> lights = session.lights();
+    for (Light& l : lights)
+        if (l.type == LightType::Directional) {
+            float az, el;
+            azimuthElevation(l.direction, az, el);
+            l.direction = sunDirection(std::fmod(az + sunDegreesPerSecond_ * float(dt) + 540.0f, 360.0f) - 180.0f, el);
+        }
+    session.setLights(std::move(lights));
+}
+
+void Panels::draw(ViewSession& session, CameraControl& control, const vk::Swapchain& swapchain) {
+    sceneWindow(session, control);
+    timingsWindow(session, swapchain);
+}
+
+void Panels::sceneWindow(ViewSession& session, CameraControl& control) {
+    ImGui::SetNextWindowPos({8, 8}, ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize({380, 520}, ImGuiCond_FirstUseEver);
+    ImGui::Begin("penumbra");
+    const Scene& scene = session.scene();
+    ImGui::Text("%s: %zu triangles, %zu strands", scene.name.c_str(), scene.triangleCount(), scene.strands.size());
+    ImGui::TextDisabled("drop a .gltf/.glb onto the window to load it");
+    if (!error_.empty()) ImGui::TextColored({1.0f, 0.4f, 0.3f, 1.0f}, "%s", error_.c_str());
+    if (ImGui::CollapsingHeader("Camera", ImGuiTreeNodeFlags_DefaultOpen)) {
+        int mode = int(control.mode);
+        ImGui::RadioButton("fly (WASD QE, right-drag)", &mode, 0);
+        ImGui::SameLine();
+        ImGui::RadioButton("orbit (left-drag)", &mode, 1);
+        control.mode = CameraControl::Mode(mode);
+        ImGui::SliderFloat("speed", &control.speed, 1e-3f, 100.0f, "%.3g /s", ImGuiSliderFlags_Logarithmic);
+        for (size_t i = 0; i < scene.cameras.size(); ++i)
+            if (ImGui::Button(fmt::format("file camera {}", i).c_str())) session.setCamera(scene.cameras[i]);
+        const Camera& c = session.camera();
+        ImGui::TextDisabled("eye %.3g %.3g %.3g  target %.3g %.3g %.3g", c.eye.x, c.eye.y, c.eye.z, c.target.x,
+                            c.target.y, c.target.z);
+    }
+    if (ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) lightsSection(session);
+    optionsSection(session);
+    ImGui::End();
+}
+
+void Panels::lightsSection(ViewSession& session) {
+    std::vector<Light> lights = session.lights();
+    bool changed = false;
+    int remove = -1;
+    for (size_t i = 0; i < lights.size(); ++i) {
+        ImGui::PushID(int(i));
+        if (ImGui::TreeNode("light", "%zu: %s %s", i, typeName(lights[i].type), lights[i].name.c_str())) {
+            changed |= lightEditor(lights[i]);
+            if (ImGui::Button("remove")) remove = int(i);
+            ImGui::TreePop();
+        }
+        ImGui::PopID();
+    }
+    if (remove >= 0) lights.erase(lights.begin() + remove), changed = true;
+    const Bounds& b = session.scene().bounds;
+    Light added;
+    added.position = b.empty() ? glm::vec3(0.0f) : b.center() + glm::vec3(0.0f, 0.4f * (b.max.y - b.min.y), 0.0f);
+    added.intensity = b.empty() ? 1.0f : b.radius() * b.radius();  // about E = 1 a radius away
+    for (LightType t : {LightType::Directional, LightType::Spot, LightType::Point}) {
+        if (t != LightType::Directional) ImGui::SameLine();
+        if (ImGui::Button(fmt::format("add {}", typeName(t)).c_str())) {
+            added.type = t;
+            if (t == LightType::Directional) added.intensity = 3.0f, added.direction = sunDirection(30.0f, 45.0f);
+            lights.push_back(added);
+            changed = true;
+        }
+    }
+    ImGui::Checkbox("turn the sun", &turnSun_);
+    ImGui::SameLine();
+    ImGui::SliderFloat("deg/s", &sunDegreesPerSecond_, -90.0f, 90.0f, "%.0f");
+    ImGui::TextDisabled("ctrl + left-drag turns the first directional light");
+    if (changed) session.setLights(std::move(lights));
+}
+
+// Every option of `render` under its CLI name, grouped per technique: choices as combo boxes,
+// flags as check boxes, the rest as text fields applied on Enter through the CLI's own parser.
+void Panels::optionsSection(ViewSession& session) {
+    const std::vector<OptionInfo> options = session.options();
+    std::vector<std::string> groups;
+    for (const OptionInfo& o : options)
+        if (std::find(groups.begin(), groups.end(), groupOf(o.name)) == groups.end()) groups.push_back(groupOf(o.name));
+    for (const std::string& group : groups) {
+        if (!ImGui::CollapsingHeader(group.c_str())) continue;
+        for (const OptionInfo& o : options) {
+            if (groupOf(o.name) != group) continue;
+            ImGui::PushID(o.name.c_str());
+            if (o.flag) {
+                bool on = o.value == "on" || o.value == "true";
+                if (ImGui::Checkbox(o.name.c_str(), &on)) apply(session, o.name, on ? "on" : "off");
+            } else if (!o.choices.empty()) {
+                if (ImGui::BeginCombo(o.name.c_str(), o.value.empty() ? "(default)" : o.value.c_str())) {
+                    for (const std::string& c : o.choices)
+                        if (ImGui::Selectable(c.c_str(), c == o.value)) apply(session, o.name, c);
+                    ImGui::EndCombo();
+                }
+            } else {
+                auto it = edits_.try_emplace(o.name, o.value).first;
+                if (ImGui::InputTextWithHint(o.name.c_str(), "(default)", &it->second,
+                                             ImGuiInputTextFlags_EnterReturnsTrue))
+                    apply(session, o.name, it->second);
+                if (!ImGui::IsItemActive() && !ImGui::IsItemDeactivated()) it->second = o.value;
+            }
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("--%s: %s", o.name.c_str(), o.help.c_str());
+            ImGui::PopID();
+        }
+    }
+}
+
+void Panels::timingsWindow(ViewSession& session, const vk::Swapchain& swapchain) {
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos({display.x - 308, 8}, ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize({300, 300}, ImGuiCond_FirstUseEver);
+    ImGui::Begin("GPU time");
+    const RenderSettings& s = session.settings();
+    ImGui::Text("%ux%u, %s present", s.width, s.height, vk::presentModeName(swapchain.presentMode()));
+    if (!frameMs_.empty()) {
+        std::vector<float> ms(frameMs_.begin(), frameMs_.end());
+        const float newest = ms.back();
+        const float top = *std::max_element(ms.begin(), ms.end());
+        ImGui::PlotLines("##frame", ms.data(), int(ms.size()), 0, fmt::format("frame {:.2f} ms", newest).c_str(), 0.0f,
+                         top * 1.1f, {-1, 60});
+    }
+    if (ImGui::BeginTable("passes", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
+        ImGui::TableSetupColumn("pass");
+        ImGui::TableSetupColumn("GPU ms");
+        ImGui::TableHeadersRow();
+        double total = 0.0;
+        for (const vk::ScopeTiming& t : session.frame().renderer().timings()) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(t.name.c_str());
+            ImGui::TableNextColumn();
+            ImGui::Text("%.3f", t.ms);
+            total += t.ms;
+        }
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted("sum of passes");
+        ImGui::TableNextColumn();
+        ImGui::Text("%.3f", total);
+        ImGui::EndTable();
+    }
+    ImGui::End();
+}
+
+}  // namespace penumbra::view

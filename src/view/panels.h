@@ -1,0 +1,37 @@
+// The viewer's UI: scene and camera, lights, every render option grouped per technique (edited
+// through the same CLI definitions as `render`), the debug view (AOV), GPU timings and frame times.
+#pragma once
+#include <deque>
+#include <map>
+#include <string>
+
+#include "view/camera_control.h"
+#include "view/session.h"
+#include "vk/swapchain.h"
+
+namespace penumbra::view {
+
+class Panels {
+public:
+    void draw(ViewSession& session, CameraControl& control, const vk::Swapchain& swapchain);
+    // Per-frame animation the UI turned on (the turning sun).
+    void animate(ViewSession& session, double dt);
+    void recordFrameTime(double ms);
+    // Drag and drop: a bad file shows its error, the old scene stays.
+    void loadScene(ViewSession& session, const std::string& path);
+
+private:
+    void sceneWindow(ViewSession& session, CameraControl& control);
+    void lightsSection(ViewSession& session);
+    void optionsSection(ViewSession& session);
+    void timingsWindow(ViewSession& session, const vk::Swapchain& swapchain);
+    void apply(ViewSession& session, const std::string& option, const std::string& value);
+
+    std::deque<float> frameMs_;
+    std::map<std::string, std::string> edits_;  // option text fields being typed in
+    std::string error_;
+    bool turnSun_ = false;
+    float sunDegreesPerSecond_ = 10.0f;
+};
+
+}  // namespace penumbra::view

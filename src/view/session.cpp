@@ -1,0 +1,192 @@
+#include "view/session.h"
+
+#include <algorithm>
+
+#include <fmt/format.h>
+
+#include "app/cli_parse.h"
+#include "app/shadow_cli.h"
+#include "io/image_io.h"
+
+namespace penumbra::view {
+namespace {
+
+std::string nameOf(const CLI::Option& opt) {
+    return opt.get_lnames().empty() ? opt.get_name() : "--" + opt.get_lnames().front();
+}
+
+// Named values of an option with a CheckedTransformer, from its description "{a->0,b->1} OR ...".
+std::vector<std::string> choicesOf(const std::string& typeName) {
+    std::vector<std::string> out;
+    const size_t open = typeName.find('{'), close = typeName.find('}');
+    if (open == std::string::npos || close == std::string::npos || close < open) return out;
+    const std::string list = typeName.substr(open + 1, close - open - 1);
+    if (list.find("->") == std::string::npos) return out;
+    size_t start = 0;
+    while (start <= list.size()) {
+        size_t comma = list.find(',', start);
+        if (comma == std::string::npos) comma = list.size();
+        const std::string item = list.substr(start, comma - start);
+        out.push_back(item.substr(0, item.find("->")));
+        start = comma + 1;
+    }
+    return out;
+}
+
+bool sameCamera(const FrameOptions& a, const FrameOptions& b) {
+    return a.camera == b.camera && a.cameraIndex == b.cameraIndex;
+}
+
+}  // namespace
+
+std::vector<CliArg> givenFrameArgs(const CLI::App& cmd) {
+    CLI::App probe;
+    FrameOptions o;
+    RenderSettings rs;
+    addFrameOptions(probe, o, rs);
+    std::vector<CliArg> out;
+    for (const CLI::Option* opt : cmd.get_options()) {
+        if (opt->count() == 0) continue;
+        const std::string name = nameOf(*opt);
+        const bool isFrameOption = std::any_of(probe.get_options().begin(), probe.get_options().end(),
+                                               [&](const CLI::Option* p) { return nameOf(*p) == name; });
+        if (isFrameOption) out.push_back({name, opt->results()});
+    }
+    return out;
+}
+
+ViewSession::ViewSession(vk::Context& ctx, std::vector<CliArg> args) : ctx_(ctx) {
+    Parsed parsed = parse(args);
+    adopt(std::move(args), std::move(parsed));
+}
+
+// A fresh parse of the whole argument list by the render command's own option definitions: the
+// same defaults, validators and cross-option rules as `penumbra render`.
+ViewSession::Parsed ViewSession::parse(const std::vector<CliArg>& args) const {
+    Parsed p;
+    CLI::App app;
+    addFrameOptions(app, p.options, p.settings);
+    std::vector<std::string> argv;
+    for (const CliArg& a : args)
+        for (const std::string& v : a.values) argv.push_back(a.name == "scene" ? v : a.name + "=" + v);
+    std::reverse(argv.begin(), argv.end());  // CLI11 takes its vector last argument first
+    try {
+        app.parse(argv);
+    } catch (const CLI::ParseError& e) {
+        throw std::invalid_argument(e.what());
+    }
+    checkFrameSettings(p.options, p.settings);
+    return p;
+}
+
+// Takes a parsed argument list: reloads the scene, re-derives the lights and the camera only where
+// their options changed (moved lights and a flown camera survive other changes).
+void ViewSession::adopt(std::vector<CliArg> args, Parsed p) {
+    const bool newScene = !loaded_ || p.options.scene != options_.scene ||
+                          p.options.builtin.hairStrands != options_.builtin.hairStrands;
+    Scene scene = newScene ? penumbra::loadScene(p.options.scene, p.options.builtin) : Scene{};
+    const Scene& s = newScene ? scene : scene_;
+    std::vector<Light> lights = lights_;
+    if (newScene || p.options.lights != options_.lights) {
+        lights = frameLights(p.options, s);
+    } else if (p.options.lightFilters != options_.lightFilters) {
+        for (Light& l : lights) l.shadowFilter = ShadowFilter::Default;
+        applyLightFilters(p.options.lightFilters, lights);
+    }
+    const bool newCamera = newScene || !sameCamera(p.options, options_);
+    const Camera camera = newCamera ? frameCamera(p.options, s) : camera_;
+    // Nothing above threw: commit.
+    if (newScene) {
+        frame_.reset();
+        scene_ = std::move(scene);
+        loaded_ = true;
+    }
+    args_ = std::move(args);
+    options_ = std::move(p.options);
+    settings_ = p.settings;
+    lights_ = std::move(lights);
+    camera_ = camera;
+    settingsChanged_ = true;
+}
+
+void ViewSession::set(const std::string& option, const std::string& value) {
+    const std::vector<OptionInfo> known = options();
+    const auto it = std::find_if(known.begin(), known.end(), [&](const OptionInfo& o) { return o.name == option; });
+    if (it == known.end()) throw std::invalid_argument(fmt::format("unknown option '{}'", option));
+    if (it->flag && value != "on" && value != "off")
+        throw std::invalid_argument(fmt::format("{}: a flag takes on or off, not '{}'", option, value));
+    const std::string name = option == "scene" ? option : "--" + option;
+    std::vector<CliArg> args = args_;
+    std::erase_if(args, [&](const CliArg& a) { return a.name == name; });
+    args.push_back({name, {value}});
+    Parsed parsed = parse(args);
+    adopt(std::move(args), std::move(parsed));
+}
+
+void ViewSession::resize(uint32_t width, uint32_t height) {
+    if (width == settings_.width && height == settings_.height) return;
+    set("width", std::to_string(width));
+    set("height", std::to_string(height));
+}
+
+void ViewSession::setLights(std::vector<Light> lights) { lights_ = std::move(lights); }
+
+void ViewSession::setLight(size_t index, const Light& light) {
+    if (index > lights_.size())
+        throw std::invalid_argument(fmt::format("light {}: the scene has {} light(s)", index, lights_.size()));
+    if (index == lights_.size()) lights_.push_back(light);
+    else lights_[index] = light;
+}
+
+void ViewSession::loadScene(const std::string& path) { set("scene", path); }
+
+std::vector<OptionInfo> ViewSession::options() const {
+    CLI::App app;
+    FrameOptions o;
+    RenderSettings rs;
+    addFrameOptions(app, o, rs);
+    std::vector<OptionInfo> out;
+    for (const CLI::Option* opt : app.get_options()) {
+        const std::string name = nameOf(*opt);
+        if (name == "--help") continue;
+        OptionInfo info;
+        info.name = name.rfind("--", 0) == 0 ? name.substr(2) : name;
+        info.flag = opt->get_type_size_max() == 0;
+        info.help = opt->get_description();
+        const std::string type = opt->get_type_name();
+        if (!type.empty()) info.help += " [" + type + "]";
+        info.choices = choicesOf(type);
+        if (info.name == "aov") info.choices = aovNames();
+        for (const CliArg& a : args_)
+            if (a.name == name && !a.values.empty()) info.value = a.values.back();
+        out.push_back(std::move(info));
+    }
+    return out;
+}
+
+FrameAdapter& ViewSession::frame() {
+    if (!frame_) {
+        frame_ = std::make_unique<FrameAdapter>(ctx_, scene_, lights_, settings_);
+    } else if (settingsChanged_) {
+        frame_->apply(settings_);
+    }
+    settingsChanged_ = false;
+    return *frame_;
+}
+
+void ViewSession::renderAndWait() {
+    FrameAdapter& f = frame();
+    f.submit(camera_, lights_, {});
+    f.finish();
+}
+
+void ViewSession::writeImage(const std::string& path) {
+    const std::string ext = fileExtension(path);
+    if (!frame_) throw std::logic_error("writeImage before the first frame");
+    FrameAdapter& f = *frame_;
+    if (ext == ".png") writePng(path, settings_.width, settings_.height, f.readLdr());
+    else if (ext == ".exr") writeExr(path, settings_.width, settings_.height, f.readHdr());
+    else throw std::invalid_argument(fmt::format("{}: a screenshot must end in .png or .exr", path));
+}
+
+}  // namespace penumbra::view

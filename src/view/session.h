@@ -1,0 +1,87 @@
+// What the viewer shows, without the window: the render options as CLI arguments (so that `set`
+// lines, the UI and `penumbra render` share one parser and one set of rules), the loaded scene,
+// the live camera and lights, and the renderer they drive. Usable headless (tests).
+#pragma once
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "app/frame_options.h"
+#include "view/frame_adapter.h"
+
+namespace penumbra::view {
+
+// One render option as given on the command line: "--shadow" and its values ("" for a flag).
+struct CliArg {
+    std::string name;  // "--shadow", or "scene" for the positional scene
+    std::vector<std::string> values;
+};
+
+// The render options of a parsed command (e.g. `view`) that were given, for ViewSession.
+std::vector<CliArg> givenFrameArgs(const CLI::App& cmd);
+
+// The options of `render` as the UI lists them: CLI name, current value, help with the range.
+struct OptionInfo {
+    std::string name;     // without dashes: "shadow-res"
+    std::string value;    // current value as the CLI would take it ("" for an unset flag)
+    std::string help;     // description and accepted values
+    bool flag = false;    // takes on|off
+    std::vector<std::string> choices;  // named values (e.g. hard, pcf, ...), empty for free values
+};
+
+class ViewSession {
+public:
+    ViewSession(vk::Context& ctx, std::vector<CliArg> args);
+
+    // `set OPTION VALUE`: as if `--OPTION VALUE` replaced that option's earlier value on the command
+    // line; flags take on|off. Every cross-option rule is checked; on error (std::invalid_argument
+    // with the CLI's message) nothing changes.
+    void set(const std::string& option, const std::string& value);
+    // The drawable size (window resized): the width and height options.
+    void resize(uint32_t width, uint32_t height);
+
+    // The live view: the camera and lights start as the options give them and then move freely.
+    const Camera& camera() const { return camera_; }
+    void setCamera(const Camera& camera) { camera_ = camera; }
+    const std::vector<Light>& lights() const { return lights_; }
+    void setLights(std::vector<Light> lights);
+    void setLight(size_t index, const Light& light);  // index == count appends; throws out of range
+    float time = 0.0f;  // scene time (animation: a later issue); `time T`, play/pause
+    bool playing = false;
+
+    const Scene& scene() const { return scene_; }
+    const RenderSettings& settings() const { return settings_; }
+    const FrameOptions& frameOptions() const { return options_; }
+    std::vector<OptionInfo> options() const;
+    // Replaces the scene (drag and drop): on a load error the old one stays and the error is thrown.
+    void loadScene(const std::string& path);
+
+    // The renderer for the current settings, lights and scene (rebuilt or re-applied as needed).
+    FrameAdapter& frame();
+    // One frame, waited for (headless use and screenshots); then the tone-mapped or linear image.
+    void renderAndWait();
+    // Writes the last frame's tone-mapped image (.png) or linear values (.exr).
+    void writeImage(const std::string& path);
+
+private:
+    struct Parsed {
+        FrameOptions options;
+        RenderSettings settings;
+    };
+    Parsed parse(const std::vector<CliArg>& args) const;
+    void adopt(std::vector<CliArg> args, Parsed parsed);
+
+    vk::Context& ctx_;
+    std::vector<CliArg> args_;
+    FrameOptions options_;
+    RenderSettings settings_;
+    Scene scene_;  // as loaded (its own lights and cameras)
+    Camera camera_;
+    std::vector<Light> lights_;
+    std::unique_ptr<FrameAdapter> frame_;
+    bool loaded_ = false;
+    bool settingsChanged_ = false;
+};
+
+}  // namespace penumbra::view
