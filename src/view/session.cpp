@@ -151,7 +151,7 @@ std::vector<OptionInfo> ViewSession::options() const {
         if (name == "--help") continue;
         OptionInfo info;
         info.name = name.rfind("--", 0) == 0 ? name.substr(2) : name;
-        info.flag = opt->get_type_size_max() == 0;
+        info.flag = opt->get_expected_max() == 0;
         info.help = opt->get_description();
         const std::string type = opt->get_type_name();
         if (!type.empty()) info.help += " [" + type + "]";
