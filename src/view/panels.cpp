@@ -182,7 +182,14 @@ void Panels::optionsSection(ViewSession& session) {
     std::vector<std::string> groups;
     for (const OptionInfo& o : options)
         if (std::find(groups.begin(), groups.end(), groupOf(o.name)) == groups.end()) groups.push_back(groupOf(o.name));
+    const RenderSettings& rs = session.settings();
     for (const std::string& group : groups) {
+        // The groups of the techniques in use start open.
+        const bool inUse = group == groupOf("shadow") || group == groupOf("gi") ||
+                           (group == groupOf("rsm-res") && rs.gi == GiMode::Rsm) ||
+                           (group == groupOf("lpv-res") && rs.gi == GiMode::Lpv) ||
+                           (group == groupOf("dsm-res") && rs.dsm.enabled);
+        ImGui::SetNextItemOpen(inUse, ImGuiCond_Once);
         if (!ImGui::CollapsingHeader(group.c_str())) continue;
         for (const OptionInfo& o : options) {
             if (groupOf(o.name) != group) continue;
@@ -228,7 +235,7 @@ void Panels::timingsWindow(ViewSession& session, const vk::Swapchain& swapchain)
         ImGui::TableSetupColumn("GPU ms");
         ImGui::TableHeadersRow();
         double total = 0.0;
-        for (const vk::ScopeTiming& t : session.frame().renderer().timings()) {
+        for (const vk::ScopeTiming& t : session.renderer().timings()) {
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
             ImGui::TextUnformatted(t.name.c_str());

@@ -82,10 +82,11 @@ ViewSession::Parsed ViewSession::parse(const std::vector<CliArg>& args) const {
 // Takes a parsed argument list: reloads the scene, re-derives the lights and the camera only where
 // their options changed (moved lights and a flown camera survive other changes).
 void ViewSession::adopt(std::vector<CliArg> args, Parsed p) {
-    const bool newScene = !loaded_ || p.options.scene != options_.scene ||
+    const bool newScene = !gpuScene_ || p.options.scene != options_.scene ||
                           p.options.builtin.hairStrands != options_.builtin.hairStrands;
-    Scene scene = newScene ? penumbra::loadScene(p.options.scene, p.options.builtin) : Scene{};
-    const Scene& s = newScene ? scene : scene_;
+    std::unique_ptr<GpuScene> uploaded;
+    if (newScene) uploaded = std::make_unique<GpuScene>(ctx_, penumbra::loadScene(p.options.scene, p.options.builtin));
+    const Scene& s = newScene ? uploaded->scene() : gpuScene_->scene();
     std::vector<Light> lights = lights_;
     if (newScene || p.options.lights != options_.lights) {
         lights = frameLights(p.options, s);
@@ -97,9 +98,8 @@ void ViewSession::adopt(std::vector<CliArg> args, Parsed p) {
     const Camera camera = newCamera ? frameCamera(p.options, s) : camera_;
     // Nothing above threw: commit.
     if (newScene) {
-        frame_.reset();
-        scene_ = std::move(scene);
-        loaded_ = true;
+        renderer_.reset();  // it draws the old scene
+        gpuScene_ = std::move(uploaded);
     }
     args_ = std::move(args);
     options_ = std::move(p.options);
@@ -164,28 +164,26 @@ std::vector<OptionInfo> ViewSession::options() const {
     return out;
 }
 
-FrameAdapter& ViewSession::frame() {
-    if (!frame_) {
-        frame_ = std::make_unique<FrameAdapter>(ctx_, scene_, lights_, settings_);
-    } else if (settingsChanged_) {
-        frame_->apply(settings_);
-    }
+Renderer& ViewSession::renderer() {
+    if (!renderer_) renderer_ = std::make_unique<Renderer>(ctx_, *gpuScene_, settings_);
+    else if (settingsChanged_) renderer_->apply(settings_);
     settingsChanged_ = false;
-    return *frame_;
+    return *renderer_;
 }
 
+void ViewSession::submit(const FrameHooks& hooks) { renderer().submit({camera_, lights_}, hooks); }
+
 void ViewSession::renderAndWait() {
-    FrameAdapter& f = frame();
-    f.submit(camera_, lights_, {});
-    f.finish();
+    submit({});
+    renderer_->finish();
 }
 
 void ViewSession::writeImage(const std::string& path) {
     const std::string ext = fileExtension(path);
-    if (!frame_) throw std::logic_error("writeImage before the first frame");
-    FrameAdapter& f = *frame_;
-    if (ext == ".png") writePng(path, settings_.width, settings_.height, f.readLdr());
-    else if (ext == ".exr") writeExr(path, settings_.width, settings_.height, f.readHdr());
+    if (!renderer_) throw std::logic_error("writeImage before the first frame");
+    renderer_->finish();
+    if (ext == ".png") writePng(path, settings_.width, settings_.height, renderer_->readLdr());
+    else if (ext == ".exr") writeExr(path, settings_.width, settings_.height, renderer_->readHdr());
     else throw std::invalid_argument(fmt::format("{}: a screenshot must end in .png or .exr", path));
 }
 

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "app/frame_options.h"
-#include "view/frame_adapter.h"
+#include "render/renderer.h"
 
 namespace penumbra::view {
 
@@ -50,18 +50,21 @@ public:
     float time = 0.0f;  // scene time (animation: a later issue); `time T`, play/pause
     bool playing = false;
 
-    const Scene& scene() const { return scene_; }
+    const Scene& scene() const { return gpuScene_->scene(); }
     const RenderSettings& settings() const { return settings_; }
     const FrameOptions& frameOptions() const { return options_; }
     std::vector<OptionInfo> options() const;
     // Replaces the scene (drag and drop): on a load error the old one stays and the error is thrown.
     void loadScene(const std::string& path);
 
-    // The renderer for the current settings, lights and scene (rebuilt or re-applied as needed).
-    FrameAdapter& frame();
-    // One frame, waited for (headless use and screenshots); then the tone-mapped or linear image.
+    // The renderer over the scene, with the current settings applied (Renderer::apply: per-frame
+    // values cost nothing, structure and sizes rebuild only what they own).
+    Renderer& renderer();
+    // One frame of the live camera and lights, with the viewer's commands after its last pass.
+    void submit(const FrameHooks& hooks);
+    // One frame, waited for (headless use and screenshots).
     void renderAndWait();
-    // Writes the last frame's tone-mapped image (.png) or linear values (.exr).
+    // Writes the last finished frame's tone-mapped image (.png) or linear values (.exr).
     void writeImage(const std::string& path);
 
 private:
@@ -76,11 +79,10 @@ private:
     std::vector<CliArg> args_;
     FrameOptions options_;
     RenderSettings settings_;
-    Scene scene_;  // as loaded (its own lights and cameras)
+    std::unique_ptr<GpuScene> gpuScene_;  // the scene as loaded (its own lights and cameras), uploaded once
     Camera camera_;
     std::vector<Light> lights_;
-    std::unique_ptr<FrameAdapter> frame_;
-    bool loaded_ = false;
+    std::unique_ptr<Renderer> renderer_;
     bool settingsChanged_ = false;
 };
 

@@ -19,6 +19,7 @@ CLI::App* addViewCommand(CLI::App& app, ViewCommand& view) {
 int runViewCommand(ViewCommand& view, const vk::ContextOptions& vulkan) {
     checkFrameSettings(view.frame, view.settings);  // cross-option rules before a window opens
     view.options.vulkan = vulkan;
+    view.options.vulkan.syncValidation = vulkan.validate;  // the viewer's --validate checks synchronization too
     Viewer viewer(view.options, givenFrameArgs(*view.cmd), {view.settings.width, view.settings.height});
     viewer.run();
     return 0;

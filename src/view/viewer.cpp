@@ -133,7 +133,7 @@ void Viewer::run() {
         panels_.recordFrameTime(dt * 1000.0);
         if (drawFrame() && script_) finishScriptStep();
     }
-    session_.frame().finish();
+    session_.renderer().finish();
     ctx_.waitIdle();
     if (ctx_.validationMessages() > 0)
         throw std::runtime_error(fmt::format("{} validation message(s) reported", ctx_.validationMessages()));
@@ -160,12 +160,12 @@ bool Viewer::drawFrame() {
     while (rendered_.size() < swapchain_.imageCount()) rendered_.push_back(createSemaphore(ctx_.device()));
     ui_.newFrame();
     panels_.draw(session_, control_, swapchain_);
-    PresentHooks hooks;
+    FrameHooks hooks;
     hooks.record = [&](VkCommandBuffer cmd, vk::Image& ldr) { recordPresent(cmd, ldr, *index); };
     hooks.wait = acquired;
     hooks.waitStage = VK_PIPELINE_STAGE_2_TRANSFER_BIT;  // the blit is the first write to the image
     hooks.signal = rendered_[*index];
-    session_.frame().submit(session_.camera(), session_.lights(), hooks);
+    session_.submit(hooks);
     ++frame_;
     if (!swapchain_.present(*index, rendered_[*index])) swapchain_.recreate(window_.drawableSize());
     return true;
@@ -225,7 +225,7 @@ void Viewer::finishScriptStep() {
         if (step_.frames > 0) --step_.frames;
         return;
     }
-    session_.frame().finish();
+    session_.renderer().finish();
     if (step_.kind == ScriptStep::Screenshot) session_.writeImage(step_.path);
     else writeUiScreenshot(step_.path);
     fmt::print("penumbra: screenshot {}\n", step_.path);
@@ -245,7 +245,7 @@ void Viewer::writeUiScreenshot(const std::string& path) {
 
 // F12: the rendered image without the UI, tone-mapped (PNG) and linear (EXR).
 void Viewer::f12Screenshot() {
-    session_.frame().finish();
+    session_.renderer().finish();
     for (const char* ext : {".png", ".exr"}) {
         const std::string path = fmt::format("penumbra-view-{:03}{}", f12Count_, ext);
         session_.writeImage(path);
