@@ -12,7 +12,7 @@ namespace penumbra::view {
 namespace {
 
 std::string nameOf(const CLI::Option& opt) {
-    return opt.get_lnames().empty() ? opt.get_name() : "--" + opt.get_lnames().front();
+    return opt.get_lnames().empty() ? opt.get_name(true) : "--" + opt.get_lnames().front();  // the positional: "scene"
 }
 
 // Named values of an option with a CheckedTransformer, from its description "{a->0,b->1} OR ...".
@@ -44,11 +44,12 @@ std::vector<CliArg> givenFrameArgs(const CLI::App& cmd) {
     FrameOptions o;
     RenderSettings rs;
     addFrameOptions(probe, o, rs);
+    const std::vector<CLI::Option*> frameOptions = probe.get_options();  // one vector: begin and end of the same
     std::vector<CliArg> out;
     for (const CLI::Option* opt : cmd.get_options()) {
         if (opt->count() == 0) continue;
         const std::string name = nameOf(*opt);
-        const bool isFrameOption = std::any_of(probe.get_options().begin(), probe.get_options().end(),
+        const bool isFrameOption = std::any_of(frameOptions.begin(), frameOptions.end(),
                                                [&](const CLI::Option* p) { return nameOf(*p) == name; });
         if (isFrameOption) out.push_back({name, opt->results()});
     }
