@@ -110,6 +110,18 @@ void Panels::animate(ViewSession& session, double dt) {
     session.setLights(std::move(lights));
 }
 
+void Panels::dragSun(ViewSession& session, float dx, float dy) {
+    std::vector<Light> lights = session.lights();
+    for (Light& l : lights)
+        if (l.type == LightType::Directional) {
+            float az, el;
+            azimuthElevation(l.direction, az, el);
+            l.direction = sunDirection(az + 0.25f * dx, std::clamp(el - 0.25f * dy, -89.9f, 89.9f));
+            session.setLights(std::move(lights));
+            return;
+        }
+}
+
 void Panels::draw(ViewSession& session, CameraControl& control, const vk::Swapchain& swapchain) {
     sceneWindow(session, control);
     timingsWindow(session, swapchain);
@@ -137,6 +149,10 @@ void Panels::sceneWindow(ViewSession& session, CameraControl& control) {
                             c.target.y, c.target.z);
     }
     if (ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) lightsSection(session);
+    if (ImGui::CollapsingHeader("Overlays")) {
+        ImGui::Checkbox("shadow frusta (cascade bounds, spot cones, cube faces)", &overlays_.shadowFrusta);
+        ImGui::Checkbox("LPV cascade boxes", &overlays_.lpvBoxes);
+    }
     optionsSection(session);
     ImGui::End();
 }
@@ -228,7 +244,7 @@ void Panels::timingsWindow(ViewSession& session, const vk::Swapchain& swapchain)
         const float newest = ms.back();
         const float top = *std::max_element(ms.begin(), ms.end());
         ImGui::PlotLines("##frame", ms.data(), int(ms.size()), 0, fmt::format("frame {:.2f} ms", newest).c_str(), 0.0f,
-                         top * 1.1f, {-1, 60});
+                         top * 1.1f, {0, 60});
     }
     if (ImGui::BeginTable("passes", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
         ImGui::TableSetupColumn("pass");

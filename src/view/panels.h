@@ -6,6 +6,7 @@
 #include <string>
 
 #include "view/camera_control.h"
+#include "view/overlays.h"
 #include "view/session.h"
 #include "vk/swapchain.h"
 
@@ -17,6 +18,9 @@ public:
     // Per-frame animation the UI turned on (the turning sun).
     void animate(ViewSession& session, double dt);
     void recordFrameTime(double ms);
+    // Turns the first directional light by a drag of (dx, dy) pixels (ctrl + left-drag).
+    void dragSun(ViewSession& session, float dx, float dy);
+    const OverlayOptions& overlays() const { return overlays_; }
     // Drag and drop: a bad file shows its error, the old scene stays.
     void loadScene(ViewSession& session, const std::string& path);
 
@@ -30,6 +34,7 @@ private:
     std::deque<float> frameMs_;
     std::map<std::string, std::string> edits_;  // option text fields being typed in
     std::string error_;
+    OverlayOptions overlays_;
     bool turnSun_ = false;
     float sunDegreesPerSecond_ = 10.0f;
 };

@@ -140,9 +140,16 @@ void Viewer::run() {
 }
 
 void Viewer::handleInput(double dt) {
+    GLFWwindow* w = window_.handle();
     const bool mouse = !ui_.wantsMouse(), keys = !ui_.wantsKeyboard();
+    const bool ctrl = glfwGetKey(w, GLFW_KEY_LEFT_CONTROL) == GLFW_PRESS || glfwGetKey(w, GLFW_KEY_RIGHT_CONTROL) == GLFW_PRESS;
+    double x, y;
+    glfwGetCursorPos(w, &x, &y);
+    if (ctrl && mouse && glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS)
+        panels_.dragSun(session_, float(x - cursor_.x), float(y - cursor_.y));
+    cursor_ = {x, y};
     Camera camera = session_.camera();
-    if (control_.update(window_.handle(), dt, window_.takeScroll(), mouse, keys, camera)) session_.setCamera(camera);
+    if (control_.update(w, dt, window_.takeScroll(), mouse && !ctrl, keys, camera)) session_.setCamera(camera);
     if (session_.playing) session_.time += float(dt);
     panels_.animate(session_, dt);
     const bool f12 = glfwGetKey(window_.handle(), GLFW_KEY_F12) == GLFW_PRESS;
@@ -160,6 +167,8 @@ bool Viewer::drawFrame() {
     while (rendered_.size() < swapchain_.imageCount()) rendered_.push_back(createSemaphore(ctx_.device()));
     ui_.newFrame();
     panels_.draw(session_, control_, swapchain_);
+    drawOverlays(panels_.overlays(), session_.renderer(), session_.camera(), session_.settings().width,
+                 session_.settings().height);
     FrameHooks hooks;
     hooks.record = [&](VkCommandBuffer cmd, vk::Image& ldr) { recordPresent(cmd, ldr, *index); };
     hooks.wait = acquired;
