@@ -122,9 +122,37 @@ void Panels::dragSun(ViewSession& session, float dx, float dy) {
         }
 }
 
+// The right half of the image from a second renderer with one option changed, e.g. "gi lpv".
+void Panels::splitSection(ViewSession& session) {
+    ImGui::InputText("B: OPTION VALUE", &splitEdit_);
+    if (ImGui::Button(session.rendererB() ? "update B" : "split")) {
+        const size_t space = splitEdit_.find(' ');
+        try {
+            if (space == std::string::npos) throw std::invalid_argument("expected OPTION VALUE, e.g. shadow pcss");
+            session.setSplit(splitEdit_.substr(0, space), splitEdit_.substr(space + 1));
+            error_.clear();
+        } catch (const std::exception& e) {
+            error_ = e.what();
+        }
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("off")) session.clearSplit();
+}
+
+// The split line and which side is which, over the image.
+void Panels::splitLabels(ViewSession& session) {
+    if (!session.rendererB()) return;
+    const ImVec2 size = ImGui::GetIO().DisplaySize;
+    ImDrawList* draw = ImGui::GetBackgroundDrawList();
+    draw->AddLine({size.x * 0.5f, 0.0f}, {size.x * 0.5f, size.y}, IM_COL32(255, 255, 255, 200), 1.0f);
+    draw->AddText({size.x * 0.5f - 16.0f, size.y - 20.0f}, IM_COL32(255, 255, 255, 255), "A");
+    draw->AddText({size.x * 0.5f + 8.0f, size.y - 20.0f}, IM_COL32(255, 255, 255, 255), session.splitLabel().c_str());
+}
+
 void Panels::draw(ViewSession& session, CameraControl& control, const vk::Swapchain& swapchain) {
     sceneWindow(session, control);
     timingsWindow(session, swapchain);
+    splitLabels(session);
 }
 
 void Panels::sceneWindow(ViewSession& session, CameraControl& control) {
@@ -149,6 +177,7 @@ void Panels::sceneWindow(ViewSession& session, CameraControl& control) {
                             c.target.y, c.target.z);
     }
     if (ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) lightsSection(session);
+    if (ImGui::CollapsingHeader("A/B split view")) splitSection(session);
     if (ImGui::CollapsingHeader("Overlays")) {
         ImGui::Checkbox("shadow frusta (cascade bounds, spot cones, cube faces)", &overlays_.shadowFrusta);
         ImGui::Checkbox("LPV cascade boxes", &overlays_.lpvBoxes);

@@ -28,12 +28,15 @@ private:
     void sceneWindow(ViewSession& session, CameraControl& control);
     void lightsSection(ViewSession& session);
     void optionsSection(ViewSession& session);
+    void splitSection(ViewSession& session);
+    void splitLabels(ViewSession& session);
     void timingsWindow(ViewSession& session, const vk::Swapchain& swapchain);
     void apply(ViewSession& session, const std::string& option, const std::string& value);
 
     std::deque<float> frameMs_;
     std::map<std::string, std::string> edits_;  // option text fields being typed in
     std::string error_;
+    std::string splitEdit_ = "shadow pcss";  // the B side's option and value
     OverlayOptions overlays_;
     bool turnSun_ = false;
     float sunDegreesPerSecond_ = 10.0f;

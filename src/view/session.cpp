@@ -99,7 +99,8 @@ void ViewSession::adopt(std::vector<CliArg> args, Parsed p) {
     const Camera camera = newCamera ? frameCamera(p.options, s) : camera_;
     // Nothing above threw: commit.
     if (newScene) {
-        renderer_.reset();  // it draws the old scene
+        renderer_.reset();  // they draw the old scene
+        rendererB_.reset();
         gpuScene_ = std::move(uploaded);
     }
     args_ = std::move(args);
@@ -116,12 +117,46 @@ void ViewSession::set(const std::string& option, const std::string& value) {
     if (it == known.end()) throw std::invalid_argument(fmt::format("unknown option '{}'", option));
     if (it->flag && value != "on" && value != "off")
         throw std::invalid_argument(fmt::format("{}: a flag takes on or off, not '{}'", option, value));
-    const std::string name = option == "scene" ? option : "--" + option;
-    std::vector<CliArg> args = args_;
-    std::erase_if(args, [&](const CliArg& a) { return a.name == name; });
-    args.push_back({name, {value}});
+    std::vector<CliArg> args = withArg(args_, option, value);
     Parsed parsed = parse(args);
     adopt(std::move(args), std::move(parsed));
+    updateSplit();
+}
+
+std::vector<CliArg> ViewSession::withArg(std::vector<CliArg> args, const std::string& option,
+                                         const std::string& value) {
+    const std::string name = option == "scene" ? option : "--" + option;
+    std::erase_if(args, [&](const CliArg& a) { return a.name == name; });
+    args.push_back({name, {value}});
+    return args;
+}
+
+void ViewSession::setSplit(const std::string& option, const std::string& value) {
+    if (option == "scene" || option == "width" || option == "height" || option == "strands")
+        throw std::invalid_argument("the split view shares the scene and the image size: pick another option");
+    settingsB_ = parse(withArg(args_, option, value)).settings;
+    splitOption_ = option;
+    splitValue_ = value;
+    splitLabel_ = fmt::format("B: --{} {}", option, value);
+    if (rendererB_) rendererB_->apply(settingsB_);
+    else rendererB_ = std::make_unique<Renderer>(ctx_, *gpuScene_, settingsB_);
+}
+
+void ViewSession::clearSplit() {
+    splitOption_.clear();
+    rendererB_.reset();
+}
+
+// A's options changed: B follows them, keeping its own option (or ends when that no longer parses).
+void ViewSession::updateSplit() {
+    if (splitOption_.empty()) return;
+    if (!rendererB_) return setSplit(splitOption_, splitValue_);  // a new scene dropped it
+    try {
+        settingsB_ = parse(withArg(args_, splitOption_, splitValue_)).settings;
+        rendererB_->apply(settingsB_);
+    } catch (const std::invalid_argument&) {
+        clearSplit();
+    }
 }
 
 void ViewSession::resize(uint32_t width, uint32_t height) {
@@ -172,11 +207,15 @@ Renderer& ViewSession::renderer() {
     return *renderer_;
 }
 
-void ViewSession::submit(const FrameHooks& hooks) { renderer().submit({camera_, lights_}, hooks); }
+void ViewSession::submit(const FrameHooks& hooks) {
+    if (Renderer* b = rendererB()) b->submit({camera_, lights_});
+    renderer().submit({camera_, lights_}, hooks);
+}
 
 void ViewSession::renderAndWait() {
     submit({});
     renderer_->finish();
+    if (rendererB_) rendererB_->finish();
 }
 
 void ViewSession::writeImage(const std::string& path) {

@@ -61,7 +61,14 @@ public:
     // values cost nothing, structure and sizes rebuild only what they own).
     Renderer& renderer();
     // One frame of the live camera and lights, with the viewer's commands after its last pass.
+    // With a split view, the B renderer's frame is submitted first (same queue: A's commands see it).
     void submit(const FrameHooks& hooks);
+
+    // A/B split view: a second Renderer over the same GpuScene with one option changed; null when off.
+    void setSplit(const std::string& option, const std::string& value);  // throws like set()
+    void clearSplit();
+    Renderer* rendererB() { return splitOption_.empty() ? nullptr : rendererB_.get(); }
+    const std::string& splitLabel() const { return splitLabel_; }
     // One frame, waited for (headless use and screenshots).
     void renderAndWait();
     // Writes the last finished frame's tone-mapped image (.png) or linear values (.exr).
@@ -74,6 +81,8 @@ private:
     };
     Parsed parse(const std::vector<CliArg>& args) const;
     void adopt(std::vector<CliArg> args, Parsed parsed);
+    static std::vector<CliArg> withArg(std::vector<CliArg> args, const std::string& option, const std::string& value);
+    void updateSplit();
 
     vk::Context& ctx_;
     std::vector<CliArg> args_;
@@ -83,6 +92,9 @@ private:
     Camera camera_;
     std::vector<Light> lights_;
     std::unique_ptr<Renderer> renderer_;
+    std::string splitOption_, splitValue_, splitLabel_;
+    RenderSettings settingsB_;
+    std::unique_ptr<Renderer> rendererB_;
     bool settingsChanged_ = false;
 };
 

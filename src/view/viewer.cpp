@@ -133,7 +133,6 @@ void Viewer::run() {
         panels_.recordFrameTime(dt * 1000.0);
         if (drawFrame() && script_) finishScriptStep();
     }
-    session_.renderer().finish();
     ctx_.waitIdle();
     if (ctx_.validationMessages() > 0)
         throw std::runtime_error(fmt::format("{} validation message(s) reported", ctx_.validationMessages()));
@@ -189,13 +188,27 @@ void Viewer::recordPresent(VkCommandBuffer cmd, vk::Image& ldr, uint32_t index) 
                      VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_NONE, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
                      VK_ACCESS_2_TRANSFER_WRITE_BIT);
     // The blit converts RGBA to the swapchain's BGRA (or RGBA) order; equal sizes copy texels 1:1.
-    VkImageBlit blit{};
-    blit.srcSubresource = blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    blit.srcOffsets[1] = {int32_t(ldr.width()), int32_t(ldr.height()), 1};
-    blit.dstOffsets[1] = {int32_t(extent.width), int32_t(extent.height), 1};
-    const bool same = ldr.width() == extent.width && ldr.height() == extent.height;
-    vkCmdBlitImage(cmd, ldr.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target,
-                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, same ? VK_FILTER_NEAREST : VK_FILTER_LINEAR);
+    // Columns [from, to) of `src` (a fraction of its width) go to the same fraction of the target.
+    auto blitColumns = [&](vk::Image& src, float from, float to) {
+        VkImageBlit blit{};
+        blit.srcSubresource = blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        blit.srcOffsets[0] = {int32_t(from * float(src.width())), 0, 0};
+        blit.srcOffsets[1] = {int32_t(to * float(src.width())), int32_t(src.height()), 1};
+        blit.dstOffsets[0] = {int32_t(from * float(extent.width)), 0, 0};
+        blit.dstOffsets[1] = {int32_t(to * float(extent.width)), int32_t(extent.height), 1};
+        const bool same = src.width() == extent.width && src.height() == extent.height;
+        vkCmdBlitImage(cmd, src.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, target,
+                       VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, same ? VK_FILTER_NEAREST : VK_FILTER_LINEAR);
+    };
+    if (Renderer* b = session_.rendererB()) {
+        // A/B split: B's frame was submitted first on the same queue; the barrier orders its writes.
+        vk::transitionImage(cmd, b->ldr(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
+                            VK_ACCESS_2_TRANSFER_READ_BIT);
+        blitColumns(ldr, 0.0f, 0.5f);
+        blitColumns(b->ldr(), 0.5f, 1.0f);
+    } else {
+        blitColumns(ldr, 0.0f, 1.0f);
+    }
     swapchainBarrier(cmd, target, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_COLOR_ATTACHMENT_OPTIMAL,
                      VK_PIPELINE_STAGE_2_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                      VK_PIPELINE_STAGE_2_COLOR_ATTACHMENT_OUTPUT_BIT,

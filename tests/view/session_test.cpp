@@ -58,6 +58,34 @@ TEST(ViewSession, SetUsesTheRenderParserAndRules) {
     EXPECT_EQ(ctx->validationMessages(), 0u) << validationLog(*ctx);
 }
 
+// The A/B split view: a second renderer over the same GpuScene with one option changed renders what
+// a renderer of those settings alone renders, and leaves A's image as it was.
+TEST(ViewSession, SplitViewRendersBWithItsOneOption) {
+    auto ctx = validatingContext();
+    ViewSession s(*ctx, {{"--width", {"64"}}, {"--height", {"48"}}, {"--shadow-res", {"256"}}});
+    s.renderAndWait();
+    const std::vector<uint8_t> a = s.renderer().readLdr();
+    s.setSplit("shadow", "pcss");
+    ASSERT_NE(s.rendererB(), nullptr);
+    EXPECT_EQ(&s.rendererB()->gpuScene(), &s.renderer().gpuScene());
+    s.renderAndWait();
+    EXPECT_EQ(s.renderer().readLdr(), a);
+    RenderSettings pcss = s.settings();
+    pcss.shadow.filter = ShadowFilter::Pcss;
+    Renderer alone(*ctx, s.renderer().gpuScene(), pcss);
+    alone.render({s.camera(), s.lights()});
+    const std::vector<uint8_t> b = s.rendererB()->readLdr();
+    EXPECT_EQ(b, alone.readLdr());
+    EXPECT_NE(b, a);
+    s.set("exposure", "2");  // A's options reach B, which keeps its own
+    EXPECT_EQ(s.rendererB()->settings().exposure, 2.0f);
+    EXPECT_EQ(s.rendererB()->settings().shadow.filter, ShadowFilter::Pcss);
+    EXPECT_THROW(s.setSplit("width", "32"), std::invalid_argument);
+    s.clearSplit();
+    EXPECT_EQ(s.rendererB(), nullptr);
+    EXPECT_EQ(ctx->validationMessages(), 0u) << validationLog(*ctx);
+}
+
 // 10 settings states (per-frame values, filters, GI on and off, resolutions, a moved light), cycled
 // 30 times. Returns the host's RSS after each cycle; checks the device-side counters as it goes.
 std::vector<double> cycleSettings(vk::Context& ctx) {
