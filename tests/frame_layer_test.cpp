@@ -244,3 +244,29 @@ TEST(SettingsTable, SizesAndPassCountsAreNotPerFrame) {
 
 }  // namespace
 }  // namespace penumbra::test
+
+namespace penumbra::test {
+namespace {
+
+// The shadow-map debug view shows the map's texels: at the map's own resolution, pixel (x, y) of
+// the AOV is texel (x, y) of the chosen layer, exactly.
+TEST_F(FrameLayerTest, ShadowMapDebugViewShowsTheLayersTexels) {
+    GpuScene scene(ctx(), makeBuiltinScene("cornell"));
+    RenderSettings s = smallSettings();
+    s.width = s.height = s.shadow.resolution = 64;
+    s.aov = Aov::ShadowMap;
+    Renderer r(ctx(), scene, s, 1);
+    r.render(scene.scene().cameras[0]);
+    const std::vector<float> view = r.readHdr();
+    const std::vector<uint8_t> bytes = r.commands().readImage(r.shadow().shadowMap(), 4, 0);
+    size_t mismatches = 0;
+    for (size_t i = 0; i < size_t(64) * 64; ++i) {
+        float depth;
+        std::memcpy(&depth, bytes.data() + 4 * i, 4);
+        mismatches += view[4 * i] != depth;
+    }
+    EXPECT_EQ(mismatches, 0u);
+}
+
+}  // namespace
+}  // namespace penumbra::test

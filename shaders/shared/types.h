@@ -31,7 +31,11 @@ using uint = uint32_t;
 #define AOV_CASCADE 9    // debug: shadow layer of the first shadowed light (cascade, cube face, hemisphere)
 #define AOV_TRANSMITTANCE 10  // deep shadow map transmittance of the first light with one (1 = nothing translucent)
 #define AOV_DSM_LISTS 11      // debug: list length per texel of the first deep shadow map (its map over the image)
-#define AOV_COUNT 12
+#define AOV_RSM_DEPTH 12   // debug: layer --aov-layer of the RSM's depth (letterboxed square)
+#define AOV_RSM_NORMAL 13  // debug: the RSM's normal, n * 0.5 + 0.5
+#define AOV_RSM_FLUX 14    // debug: the RSM's flux (exposed and tone-mapped like radiance)
+#define AOV_SHADOW_MAP 15  // debug: layer --aov-layer of the shadow-map array's depth
+#define AOV_COUNT 16
 
 #define ALPHA_OPAQUE 0
 #define ALPHA_MASK 1
@@ -82,6 +86,11 @@ struct DrawPush {
 #define TONEMAP_ACES 0
 #define TONEMAP_SRGB 1
 #define TONEMAP_LINEAR 2
+
+// render/debug_view.comp: mode.x = AOV_RSM_* or AOV_SHADOW_MAP, mode.y = the source's layer.
+struct DebugViewPush {
+    uvec4 mode;
+};
 
 struct TonemapPush {
     vec4 params;  // x = exposure or scale, y = bias, z = TONEMAP_* mode, w unused

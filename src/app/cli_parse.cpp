@@ -85,7 +85,8 @@ Light parseLight(const std::string& value) {
 // In AOV_* order (shaders/shared/types.h).
 std::vector<std::string> aovNames() {
     return {"direct",   "albedo",    "normal",   "depth",   "shadow",        "final",
-            "indirect", "lpv-slice", "gv-slice", "cascade", "transmittance", "dsm-lists"};
+            "indirect", "lpv-slice", "gv-slice", "cascade", "transmittance", "dsm-lists",
+            "rsm-depth", "rsm-normal", "rsm-flux", "shadow-map"};
 }
 
 Aov parseAov(const std::string& value) {

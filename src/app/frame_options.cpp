@@ -62,6 +62,8 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o, RenderSettings& rs) {
     cmd.add_option("--light", o.lights, "Replace the scene's lights (repeatable): see README");
     cmd.add_option("--aov", o.aov,
                        "Output: final (default), direct, indirect, albedo, normal, depth, shadow, cascade, ...");
+    cmd.add_option("--aov-layer", rs.aovLayer, "Layer shown by the rsm-depth/normal/flux and shadow-map AOVs (default 0)")
+        ->check(CLI::Range(0, 4096));
     addGiOptions(cmd, rs);
     cmd.add_option("--exposure", rs.exposure, "Linear exposure multiplier before tone mapping")
         ->check(CLI::Range(1e-6, 1e6));
@@ -76,6 +78,9 @@ void checkFrameSettings(const FrameOptions& o, RenderSettings& settings) {
         throw std::invalid_argument("--lpv-rsm-res must be a multiple of --lpv-vpl-res");
     if ((settings.aov == Aov::LpvSlice || settings.aov == Aov::GvSlice) && settings.gi != GiMode::Lpv)
         throw std::invalid_argument("--aov lpv-slice/gv-slice need --gi lpv");
+    const bool rsmView = settings.aov == Aov::RsmDepth || settings.aov == Aov::RsmNormal || settings.aov == Aov::RsmFlux;
+    if (rsmView && settings.gi == GiMode::None)
+        throw std::invalid_argument("--aov rsm-depth/rsm-normal/rsm-flux need --gi rsm or --gi lpv");
     if (settings.gi == GiMode::Rsm && settings.rsm.mode == RsmMode::AllTexels && settings.rsm.resolution > 64)
         throw std::invalid_argument("--rsm-mode all-texels gathers every texel at every pixel: use --rsm-res <= 64");
 }

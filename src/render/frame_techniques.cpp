@@ -131,7 +131,7 @@ void LpvTechnique::addPasses(const FrameContext& f) {
 }
 
 LightingTechnique::LightingTechnique(vk::Allocator& alloc, vk::CommandContext& cmd, const RenderSettings& s)
-    : lighting_(alloc, s.width, s.height), tonemap_(alloc, s.width, s.height) {
+    : lighting_(alloc, s.width, s.height), debugView_(alloc.context()), tonemap_(alloc, s.width, s.height) {
     noIndirect_ = vk::Image(alloc, {VK_FORMAT_R16G16B16A16_SFLOAT, 1, 1, 1,
                                     VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, "no-indirect"});
     const uint64_t zero = 0;
@@ -143,7 +143,11 @@ gpu::TonemapPush LightingTechnique::tonemapParams(const RenderSettings& s, float
         case Aov::Direct:
         case Aov::Final:
         case Aov::Indirect:
-        case Aov::LpvSlice: return {{s.exposure, 0.0f, float(TONEMAP_ACES), 0.0f}};
+        case Aov::LpvSlice:
+        case Aov::RsmFlux: return {{s.exposure, 0.0f, float(TONEMAP_ACES), 0.0f}};
+        case Aov::RsmDepth:
+        case Aov::RsmNormal:
+        case Aov::ShadowMap: return {{1.0f, 0.0f, float(TONEMAP_LINEAR), 0.0f}};
         case Aov::GvSlice: return {{1.0f, 0.0f, float(TONEMAP_LINEAR), 0.0f}};
         case Aov::Albedo:
         case Aov::Cascade: return {{1.0f, 0.0f, float(TONEMAP_SRGB), 0.0f}};
@@ -159,6 +163,7 @@ gpu::TonemapPush LightingTechnique::tonemapParams(const RenderSettings& s, float
 void LightingTechnique::addPasses(const FrameContext& f) {
     if (!f.graph.hasImage("gi.irradiance")) f.graph.publish("gi.irradiance", f.graph.import(noIndirect_));
     lighting_.addTo(f.graph);
+    debugView_.addTo(f.graph, f.settings.aov, f.settings.aovLayer);
     tonemap_.addTo(f.graph, tonemapParams(f.settings, f.zfar));
 }
 

@@ -113,6 +113,7 @@ public:
 private:
     gpu::TonemapPush tonemapParams(const RenderSettings& s, float zfar) const;
     LightingPass lighting_;
+    DebugViewPass debugView_;
     TonemapPass tonemap_;
     vk::Image noIndirect_;  // bound in place of the indirect irradiance when GI is off
 };

@@ -46,6 +46,32 @@ void LightingPass::addTo(FrameGraph& graph) {
         });
 }
 
+DebugViewPass::DebugViewPass(vk::Context& ctx)
+    : kernel_(ctx, "render/debug_view.comp",
+              {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, sizeof(gpu::DebugViewPush)),
+      nearest_(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false}) {}
+
+void DebugViewPass::addTo(FrameGraph& graph, Aov aov, uint32_t layer) {
+    const char* source = aov == Aov::RsmDepth    ? "rsm.depth"
+                         : aov == Aov::RsmNormal ? "rsm.normal"
+                         : aov == Aov::RsmFlux   ? "rsm.flux"
+                         : aov == Aov::ShadowMap ? "shadow.map"
+                                                 : nullptr;
+    if (!source || !graph.hasImage(source)) return;
+    const ImageHandle image = graph.image(source), out = graph.image("hdr");
+    const uint32_t last = graph.imageOf(image).layers() - 1;
+    const gpu::DebugViewPush push{{uint32_t(aov), std::min(layer, last), 0, 0}};
+    graph.pass("debug-view")
+        .pipeline(kernel_.pipeline)
+        .sampled(0, image, nearest_.handle())
+        .storageImage(1, out)
+        .record([this, out, push](PassContext& c) {
+            kernel_.pipeline.push(c.cmd, push);
+            const vk::Image& target = c.image(out);
+            vkCmdDispatch(c.cmd, vk::divUp(target.width(), 8), vk::divUp(target.height(), 8), 1);
+        });
+}
+
 TonemapPass::TonemapPass(vk::Allocator& alloc, uint32_t width, uint32_t height) : alloc_(alloc) {
     vk::Context& ctx = alloc.context();
     ldr = vk::Image(alloc, {VK_FORMAT_R8G8B8A8_UNORM, width, height, 1,

@@ -2,6 +2,7 @@
 // writes the HDR image or the selected AOV.
 #pragma once
 #include "render/frame_graph.h"
+#include "render/render_settings.h"
 #include "shared/types.h"
 #include "vk/pipeline.h"
 
@@ -23,6 +24,19 @@ private:
     vk::DescriptorLayout layout_;
     vk::Pipeline pipeline_;
     vk::Sampler pointSampler_;
+};
+
+// Debug views of light-space images (AOVs rsm-depth, rsm-normal, rsm-flux, shadow-map): overwrites
+// "hdr" with one layer of the published source image, letterboxed.
+class DebugViewPass {
+public:
+    explicit DebugViewPass(vk::Context& ctx);
+    // Adds the pass when `aov` is one of these views and its source is published this frame.
+    void addTo(FrameGraph& graph, Aov aov, uint32_t layer);
+
+private:
+    vk::ComputeKernel kernel_;
+    vk::Sampler nearest_;
 };
 
 class TonemapPass {

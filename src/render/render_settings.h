@@ -25,6 +25,10 @@ enum class Aov {
     Cascade = AOV_CASCADE,
     Transmittance = AOV_TRANSMITTANCE,
     DsmLists = AOV_DSM_LISTS,
+    RsmDepth = AOV_RSM_DEPTH,
+    RsmNormal = AOV_RSM_NORMAL,
+    RsmFlux = AOV_RSM_FLUX,
+    ShadowMap = AOV_SHADOW_MAP,
 };
 
 enum class GiMode { None, Rsm, Lpv };
@@ -33,6 +37,7 @@ struct RenderSettings {
     uint32_t width = 1280;
     uint32_t height = 720;
     Aov aov = Aov::Final;
+    uint32_t aovLayer = 0;  // the layer the rsm-* and shadow-map AOVs show (clamped to the layers there are)
     float exposure = 1.0f;  // linear multiplier before the tone mapper
     ShadowSettings shadow;
     GiMode gi = GiMode::None;

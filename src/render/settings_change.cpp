@@ -21,6 +21,7 @@ std::vector<SettingsOption> makeTable() {
         option("--width", kSizes, kPartCamera | kPartGi, [](S s) { return s.width; }),
         option("--height", kSizes, kPartCamera | kPartGi, [](S s) { return s.height; }),
         option("--aov", kFrame, kPartNone, [](S s) { return s.aov; }),
+        option("--aov-layer", kFrame, kPartNone, [](S s) { return s.aovLayer; }),
         option("--exposure", kFrame, kPartNone, [](S s) { return s.exposure; }),
         // `--shadow` sets both the opaque filter and deep shadow maps on or off (`pcf,dsm`).
         option("--shadow", kStructure, kPartShadowFilters, [](S s) { return s.shadow.filter; }),
