@@ -155,7 +155,7 @@ TEST(ShadowCliErrors, BadValuesGiveOneErrorLine) {
                                           "--csm-lambda 1.5",    "--csm-blend 0.9",     "--point-shadow sphere",
                                           "--pcf-radius -1",     "--vsm-bleed 1",       "--vsm-blur 33",
                                           "--pcss-light-size 0", "--light-shadow 3=pcf", "--light-shadow 0=soft",
-                                          "--light-shadow pcf"};
+                                          "--light-shadow pcf",  "--raster gpu"};
     const std::filesystem::path dir = std::filesystem::temp_directory_path() / "penumbra-shadow-cli";
     std::filesystem::create_directories(dir);
     for (const std::string& args : bad) {

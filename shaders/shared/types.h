@@ -251,6 +251,47 @@ struct DsmPush {
     uvec4 sizes;  // x = resolution, y = layer count, z = node capacity, w = max list length
 };
 
+// ---- Compute rasterizer for depth-only views (src/raster, shaders/raster) ----
+// Triangles whose pixel bounding box fits RASTER_SMALL_EXTENT on both sides are rasterized by the
+// thread that set them up; larger ones are binned into RASTER_TILE_SIZE tiles, one workgroup each.
+#define RASTER_SMALL_EXTENT 16
+#define RASTER_TILE_SIZE 32
+#define RASTER_SETUP_GROUP 64
+#define RASTER_TILE_GROUP 256
+#define RASTER_NO_RECORD 0xFFFFFFFFu   // a tile entry whose triangle went the inline path (lists full)
+
+// One triangle after setup (clipped, snapped, front-facing or double-sided, non-empty), in window
+// coordinates of its layer: what coverage, depth and the alpha test need.
+struct RasterTriangle {
+    uvec4 xy01;      // snapped vertices 0 and 1 (int bits, subpixel units): x0, y0, x1, y1
+    uvec4 xy2;       // x2, y2 (int bits), z = target layer, w = material
+    vec4 origin;     // xy = float window position of vertex 0 (origin of the planes), z = 1: alpha-tested, w unused
+    vec4 depth;      // plane of z: value at the origin, d/dx, d/dy; w = depth bias of the triangle
+    vec4 uOverW;     // planes of u/w, v/w and 1/w (perspective-correct uv): value at origin, d/dx, d/dy
+    vec4 vOverW;
+    vec4 invW;
+};
+
+// One layer the compute rasterizer draws (a host-written table: every layer of every light it
+// draws is one row of the setup dispatch).
+struct RasterLayer {
+    uvec4 info;      // x = views row, y = target layer, z = 1: alphaMode BLEND casters are skipped (a deep
+                     // shadow map takes them), w unused
+};
+
+// Push constants of the compute rasterizer's passes.
+struct RasterPush {
+    uvec4 target;    // x = resolution, y = subpixel precision bits, z = triangle count, w = layer count
+    uvec4 capacity;  // x = triangle records, y = tile entries, zw unused
+    vec4 bias;       // x = constant factor, y = slope factor, zw unused
+};
+
+// Counters of one frame's binning (cleared before setup).
+struct RasterCounters {
+    uvec4 counts;    // x = triangle records taken, y = tile entries taken, z = triangles rasterized inline
+                     // because a list was full, w unused
+};
+
 #ifdef __cplusplus
 }  // namespace penumbra::gpu
 #endif

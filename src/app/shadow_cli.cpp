@@ -62,6 +62,17 @@ void addShadowOptions(CLI::App& cmd, ShadowSettings& s, std::vector<std::string>
         ->check(CLI::Range(0.0, 0.5));
     cmd.add_option("--csm-distance", s.cascades.distance, "Shadowed view distance (default 0: the far plane)")
         ->check(CLI::Range(0.0, 1e9));
+    cmd.add_option_function<std::string>(
+        "--raster",
+        [&s](const std::string& v) {
+            try {
+                s.raster = parseRasterMode(v, "--raster");
+            } catch (const std::invalid_argument& e) {
+                throw CLI::ValidationError(e.what());
+            }
+        },
+        "Who draws the shadow maps: hardware (default), compute (the compute rasterizer; paraboloid point lights "
+        "stay on the hardware), auto (by the device's kind)");
     cmd.add_option("--point-shadow", s.pointMode, "Point-light shadow maps: cube (default) or paraboloid")
         ->transform(CLI::CheckedTransformer(pointModes));
 }

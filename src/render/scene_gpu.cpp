@@ -42,6 +42,11 @@ SceneGpu::SceneGpu(vk::CommandContext& cmd, const Scene& scene)
     }
     materials_ = cmd.createDeviceBuffer(mats.data(), mats.size() * sizeof(gpu::GpuMaterial),
                                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "materials");
+    std::vector<uint32_t> triangleMaterials(std::max<size_t>(scene.indices.size() / 3, 1), 0u);
+    for (const Draw& d : scene.draws)
+        std::fill_n(triangleMaterials.begin() + d.firstIndex / 3, d.indexCount / 3, d.material);
+    triangleMaterials_ = cmd.createDeviceBuffer(triangleMaterials.data(), triangleMaterials.size() * sizeof(uint32_t),
+                                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "triangle-materials");
     uploadTextures(cmd);
 }
 

@@ -21,6 +21,8 @@ public:
     const vk::Buffer& vertices() const { return vertices_; }
     const vk::Buffer& indices() const { return indices_; }
     const vk::Buffer& materials() const { return materials_; }
+    // The material of every triangle (index / 3), for passes that fetch triangles themselves.
+    const vk::Buffer& triangleMaterials() const { return triangleMaterials_; }
     // All base-colour textures as layers of one mip-mapped sRGB 2D array (one descriptor, which
     // fits every device's per-stage sampler limit; lavapipe allows only 32 samplers per stage).
     vk::Image& textures() { return textures_; }
@@ -52,7 +54,7 @@ private:
     void uploadTextures(vk::CommandContext& cmd);
     const Scene& scene_;
     vk::Context& ctx_;
-    vk::Buffer vertices_, indices_, materials_;
+    vk::Buffer vertices_, indices_, materials_, triangleMaterials_;
     vk::Image textures_;
     vk::Sampler sampler_;
 };

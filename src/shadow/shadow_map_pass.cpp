@@ -18,6 +18,7 @@ ShadowMapPass::ShadowMapPass(vk::Allocator& alloc, SceneGpu& scene, const Shadow
       settings_(validated(settings)),
       layout_(settings, scene.scene().bounds),
       raster_(alloc.context(), scene, settings, drawLayout),
+      useCompute_(computeRasterFor(settings.raster, alloc.context().properties())),
       moments_(alloc, settings.resolution),
       filter_(alloc) {
     assign({});
@@ -27,11 +28,14 @@ void ShadowMapPass::assign(const std::vector<Light>& lights) {
     lights_ = lights;
     layout_.assign(lights);
     const uint32_t layers = std::max<uint32_t>(uint32_t(layout_.layers().size()), 1u);
-    if (!map_ || map_.layers() != layers)
+    const bool resized = !map_ || map_.layers() != layers;
+    if (resized)
         map_ = vk::Image(alloc_, {VK_FORMAT_D32_SFLOAT, settings_.resolution, settings_.resolution, layers,
                                   VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
-                                      VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                                      VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                                   "shadow-map", 1, true});
+    if (useCompute_ && (resized || !compute_))
+        compute_ = std::make_unique<ComputeRaster>(alloc_, scene_, settings_.resolution, layers);
     moments_.resize(layout_.momentLayerCount());
     // Host-visible tables, one copy per frame in flight, rewritten by update(); kept while their sizes hold.
     const size_t shadowed = std::max<size_t>(layout_.shadowed().size(), 1);
@@ -60,6 +64,7 @@ void ShadowMapPass::setSettings(const ShadowSettings& settings) {
 void ShadowMapPass::update(const std::vector<Light>& lights, const Camera& camera, float aspect, float cameraFar,
                            uint32_t slot) {
     lights_ = lights;
+    slot_ = slot;
     for (vk::BufferRing* ring : {&layerTable_, &lightTable_, &params_}) ring->select(slot);
     layout_.update(lights_, camera, aspect, cameraFar);
     const std::vector<gpu::GpuShadowLayer> layers = layout_.gpuLayers();
@@ -88,13 +93,39 @@ void ShadowMapPass::addTo(FrameGraph& graph, uint32_t firstView) {
     graph.publish("shadow.lights", graph.import(lightTable_.current()));
     graph.publish("shadow.params", graph.import(params_.current()));
     if (!layers().empty()) {
-        PassBuilder pass = graph.pass("shadow.map", PassKind::Raster);
-        pass.pipeline(raster_.setLayoutPipeline()).use(map, Use::DepthAttachment);
-        scene_.declareDrawSet(pass, graph.buffer("views"));
-        pass.record([this, map, firstView](PassContext& c) { raster_.record(c.cmd, c.image(map), firstView, layout_); });
+        // The hardware pass clears every layer; with the compute rasterizer it draws only paraboloid lights.
+        if (!compute_ || hasParaboloid()) {
+            PassBuilder pass = graph.pass("shadow.map", PassKind::Raster);
+            pass.pipeline(raster_.setLayoutPipeline()).use(map, Use::DepthAttachment);
+            scene_.declareDrawSet(pass, graph.buffer("views"));
+            const bool paraboloidOnly = compute_ != nullptr;
+            pass.record([this, map, firstView, paraboloidOnly](PassContext& c) {
+                raster_.record(c.cmd, c.image(map), firstView, layout_, paraboloidOnly);
+            });
+        }
+        if (compute_) {
+            compute_->setViews(computeViews(firstView), slot_);
+            compute_->addTo(graph, "shadow.raster", map, graph.buffer("views"),
+                            {settings_.depthBiasConstant, settings_.depthBiasSlope});
+        }
         if (extraCasters_) extraCasters_(graph);
     }
     moments_.addTo(graph);
+}
+
+bool ShadowMapPass::hasParaboloid() const {
+    for (const ShadowedLight& s : layout_.shadowed())
+        if (s.kind == SHADOW_KIND_PARABOLOID) return true;
+    return false;
+}
+
+// Every layer of every light but paraboloid ones (their edges bend: hardware tessellation).
+std::vector<RasterViews> ShadowMapPass::computeViews(uint32_t firstView) const {
+    std::vector<RasterViews> views;
+    for (const ShadowedLight& s : layout_.shadowed())
+        if (s.kind != SHADOW_KIND_PARABOLOID)
+            views.push_back({firstView + s.firstLayer, s.firstLayer, s.layerCount, !raster_.drawsBlended(s.light)});
+    return views;
 }
 
 void ShadowMapPass::addFilterTo(FrameGraph& graph) { filter_.addTo(graph, uint32_t(layout_.shadowed().size())); }

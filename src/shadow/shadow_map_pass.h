@@ -4,11 +4,14 @@
 // lighting pass reads. Layers: cascades for directional lights (refit to the camera every frame),
 // one perspective layer per spot light, 6 cube faces or 2 paraboloid hemispheres per point light.
 // Bias: constant + slope-scaled rasterizer bias at render time, normal offset at lookup time.
+// ShadowSettings::raster picks who draws the depth: the hardware (shadow.map) or the compute
+// rasterizer (shadow.raster.*, src/raster) for all but paraboloid lights.
 #pragma once
 #include <functional>
 #include <memory>
 #include <vector>
 
+#include "raster/compute_raster.h"
 #include "render/frame_graph.h"
 #include "render/scene_gpu.h"
 #include "shadow/shadow_filter.h"
@@ -59,6 +62,8 @@ public:
     vk::Image& mask() { return filter_.mask(); }     // RG16F array, one layer per shadowed light
     vk::Image& moments() { return moments_.moments(); }
     bool linearCompare() const { return filter_.linearCompare(); }
+    // The compute rasterizer when it draws this pass's layers (null: the hardware does).
+    const ComputeRaster* computeRaster() const { return compute_.get(); }
     const ShadowSettings& settings() const { return settings_; }
 
 private:
@@ -68,11 +73,17 @@ private:
     ShadowLayout layout_;
     std::vector<Light> lights_;
     ShadowRaster raster_;
+    bool useCompute_;
+    std::unique_ptr<ComputeRaster> compute_;
+    uint32_t slot_ = 0;
     ShadowMoments moments_;
     ShadowFilterPass filter_;
     vk::Image map_;
     vk::BufferRing layerTable_, lightTable_, params_;
     std::function<void(FrameGraph&)> extraCasters_;
+
+    std::vector<RasterViews> computeViews(uint32_t firstView) const;
+    bool hasParaboloid() const;
 };
 
 }  // namespace penumbra

@@ -56,7 +56,12 @@ void ShadowRaster::drawLight(VkCommandBuffer cmd, const Pipelines& pipelines, co
     }
 }
 
-void ShadowRaster::record(VkCommandBuffer cmd, vk::Image& map, uint32_t firstView, const ShadowLayout& layout) const {
+bool ShadowRaster::drawsBlended(uint32_t light) const {
+    return std::find(deepShadowLights_.begin(), deepShadowLights_.end(), light) == deepShadowLights_.end();
+}
+
+void ShadowRaster::record(VkCommandBuffer cmd, vk::Image& map, uint32_t firstView, const ShadowLayout& layout,
+                          bool paraboloidOnly) const {
     const uint32_t res = settings_.resolution;
     VkRenderingAttachmentInfo depth{VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO};
     depth.imageView = map.view();  // all layers: the draws pick theirs with gl_Layer
@@ -79,11 +84,10 @@ void ShadowRaster::record(VkCommandBuffer cmd, vk::Image& map, uint32_t firstVie
         const LightProjection& first = layout.layers()[s.firstLayer].projection;
         gpu::ShadowDrawPush push{firstView + s.firstLayer, 0, s.firstLayer, 0, {}};
         const bool paraboloid = s.kind == SHADOW_KIND_PARABOLOID;
+        if (paraboloidOnly && !paraboloid) continue;
         if (paraboloid)
             push.paraboloid = {first.zNear, first.zFar, first.discScale, maxEdge};
-        const bool blended =
-            std::find(deepShadowLights_.begin(), deepShadowLights_.end(), s.light) == deepShadowLights_.end();
-        drawLight(cmd, paraboloid ? paraboloid_ : layered_, push, s.layerCount, blended);
+        drawLight(cmd, paraboloid ? paraboloid_ : layered_, push, s.layerCount, drawsBlended(s.light));
     }
     vkCmdEndRendering(cmd);
 }

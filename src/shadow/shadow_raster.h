@@ -15,9 +15,13 @@ public:
                  VkDescriptorSetLayout drawLayout);
     // The pipeline whose set 0 (the scene's draw set) the pass declares; the others share its layout.
     const vk::Pipeline& setLayoutPipeline() const { return layered_.opaque; }
-    // Clears and renders all layers of `map`; layer k uses row firstView + k of the views buffer
-    // bound in the pass's draw set.
-    void record(VkCommandBuffer cmd, vk::Image& map, uint32_t firstView, const ShadowLayout& layout) const;
+    // Clears all layers of `map` and renders those of every light (paraboloidOnly: of paraboloid point
+    // lights only, the others being the compute rasterizer's); layer k uses row firstView + k of the
+    // views buffer bound in the pass's draw set.
+    void record(VkCommandBuffer cmd, vk::Image& map, uint32_t firstView, const ShadowLayout& layout,
+                bool paraboloidOnly = false) const;
+    // Whether light `light`'s alphaMode BLEND casters are drawn (no deep shadow map takes them).
+    bool drawsBlended(uint32_t light) const;
     // Per-frame values (biases, tessellation): the sizes must not change.
     void setSettings(const ShadowSettings& settings) { settings_ = settings; }
     // Lights whose alphaMode BLEND casters go to a deep shadow map instead (src/dsm).

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "raster/raster_mode.h"
 #include "scene/scene.h"
 #include "shadow/cascades.h"
 
@@ -36,6 +37,9 @@ struct ShadowSettings {
     CascadeSettings cascades;        // directional lights
     PointShadowMode pointMode = PointShadowMode::Cube;
     float paraboloidMaxEdgeDegrees = 2.0f;  // tessellation: largest angle an edge may span
+    // Who draws the layers: the raster hardware, or the compute rasterizer (src/raster) for every
+    // light but paraboloid point lights (their bent edges stay with the tessellated hardware pass).
+    RasterMode raster = RasterMode::Hardware;
 };
 
 // "hard", "pcf", "pcss", "vsm", "evsm", "msm" (throws std::invalid_argument naming `option`).

@@ -21,7 +21,7 @@ const char* groupOf(const std::string& n) {
     if (startsWith(n, "lpv-")) return "Light propagation volumes (--gi lpv)";
     if (startsWith(n, "dsm-") || n == "strands") return "Deep shadow maps and hair";
     if (startsWith(n, "shadow") || startsWith(n, "pcf-") || startsWith(n, "pcss-") || startsWith(n, "vsm-") ||
-        startsWith(n, "csm-") || n == "cascades" || n == "point-shadow" || n == "light-shadow")
+        startsWith(n, "csm-") || n == "cascades" || n == "point-shadow" || n == "light-shadow" || n == "raster")
         return "Shadow maps";
     if (n == "gi" || n == "aov" || n == "exposure") return "Output: GI mode, debug view (AOV), exposure";
     return "Scene, camera, lights, size";

@@ -1,0 +1,103 @@
+// Coverage, depth and alpha test of one set-up triangle, shared by the setup pass (small triangles,
+// rasterized by the thread that set them up) and the tile pass (large ones, one workgroup per tile).
+// The rules are the hardware's (Vulkan rasterization of a D32_SFLOAT depth-only view):
+//  - sample at the pixel centre; vertices snapped to subPixelPrecisionBits; edge functions exact in
+//    64-bit integers; a sample on an edge is covered only by a top or left edge (top-left rule);
+//  - depth = the plane of z/w through the three window-space vertices, evaluated at the sample;
+//  - depth bias of a float depth buffer: constant * 2^(exponent(max z) - 23) + slope * max(|dz/dx|, |dz/dy|),
+//    then clamped to [0, 1];
+//  - alpha-masked casters sample the base-colour alpha (perspective-correct uv, analytic gradients
+//    for the texture LOD) and drop samples below the material's cutoff.
+// The depth test is a 32-bit atomicMin on the float bits: depths in [0, 1] order like their bits.
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+
+// Set 0 starts like the scene's draw set (render/scene_gpu.h): views, materials, textures.
+layout(set = 0, binding = 0, std430) readonly buffer Views { mat4 viewProj[]; } views;
+layout(set = 0, binding = 1, std430) readonly buffer Materials { GpuMaterial materials[]; };
+layout(set = 0, binding = 2) uniform sampler2DArray materialTextures;
+layout(set = 0, binding = 3, std430) buffer Depth { uint depthBits[]; };
+layout(set = 0, binding = 4, std430) buffer Records { RasterTriangle records[]; };
+layout(set = 0, binding = 5, std430) buffer TileEntries { uvec2 tileEntries[]; };
+layout(set = 0, binding = 6, std430) buffer Counters { RasterCounters counters; };
+
+// Edge functions of a triangle with positive area: E_i(p) = d_i x (p - a_i) > 0 inside.
+struct Edges {
+    i64vec2 a[3];     // start vertex of each edge (subpixel units)
+    i64vec2 d[3];     // edge vector
+    int64_t bias[3];  // 0 on top and left edges (a sample on them is covered), -1 on the others
+    ivec4 bbox;       // covered pixel range, inclusive: x0, y0, x1, y1 (clamped to the target)
+};
+
+// Top edge: horizontal, going right; left edge: going up (y down in window space, positive area =
+// clockwise on screen). Samples exactly on any other edge belong to the neighbouring triangle.
+// (32-bit compares: the edge vectors fit, and lavapipe mis-selects on some 64-bit compares.)
+int64_t edgeBias(ivec2 d) {
+    const bool topLeft = (d.y == 0 && d.x > 0) || d.y < 0;
+    return int64_t(topLeft ? 0 : -1);
+}
+
+Edges makeEdges(ivec2 v0, ivec2 v1, ivec2 v2, int subpixelBits, int resolution) {
+    Edges e;
+    e.a[0] = i64vec2(v0); e.a[1] = i64vec2(v1); e.a[2] = i64vec2(v2);
+    e.d[0] = i64vec2(v1 - v0); e.d[1] = i64vec2(v2 - v1); e.d[2] = i64vec2(v0 - v2);
+    e.bias[0] = edgeBias(v1 - v0); e.bias[1] = edgeBias(v2 - v1); e.bias[2] = edgeBias(v0 - v2);
+    // Pixels whose centre (p + 0.5) lies in [min, max]: ceil((min - half) / one) .. floor((max - half) / one).
+    const int one = 1 << subpixelBits, centre = one >> 1;
+    const ivec2 lo = min(v0, min(v1, v2)), hi = max(v0, max(v1, v2));
+    const ivec2 first = (lo - centre + (one - 1)) >> subpixelBits;  // arithmetic shift: floor division
+    const ivec2 last = (hi - centre) >> subpixelBits;
+    e.bbox = ivec4(max(first, ivec2(0)), min(last, ivec2(resolution - 1)));
+    return e;
+}
+
+// Whether the centre of pixel p is covered (64-bit: snapped coordinates reach 2^23 subpixels).
+bool covers(Edges e, ivec2 p, int subpixelBits) {
+    const i64vec2 s = i64vec2((p << subpixelBits) + (1 << (subpixelBits - 1)));
+    for (int i = 0; i < 3; ++i) {
+        const i64vec2 q = s - e.a[i];
+        if (e.d[i].x * q.y - e.d[i].y * q.x + e.bias[i] < 0l) return false;
+    }
+    return true;
+}
+
+Edges edgesOf(RasterTriangle t, int subpixelBits, int resolution) {
+    const ivec4 xy01 = ivec4(t.xy01);
+    return makeEdges(xy01.xy, xy01.zw, ivec2(t.xy2.xy), subpixelBits, resolution);
+}
+
+float planeAt(vec4 plane, vec2 offset) { return plane.x + plane.y * offset.x + plane.z * offset.y; }
+
+// Alpha test of a masked caster at window position w (perspective-correct uv; the LOD from the
+// analytic uv gradients, which a 2x2 quad's differences equal on orthographic views).
+bool alphaDiscarded(RasterTriangle t, vec2 offset) {
+    const GpuMaterial m = materials[t.xy2.w];
+    const float iw = planeAt(t.invW, offset);
+    const vec2 uvw = vec2(planeAt(t.uOverW, offset), planeAt(t.vOverW, offset));
+    const vec2 uv = uvw / iw;
+    float alpha = m.baseColor.a;
+    if (m.info.x != NO_TEXTURE) {
+        // d(uvw / iw) = (d uvw - uv d iw) / iw
+        const vec2 dx = (vec2(t.uOverW.y, t.vOverW.y) - uv * t.invW.y) / iw;
+        const vec2 dy = (vec2(t.uOverW.z, t.vOverW.z) - uv * t.invW.z) / iw;
+        alpha *= textureGrad(materialTextures, vec3(uv, float(m.info.x)), dx, dy).a;
+    }
+    return alpha < m.params.x;
+}
+
+// Depth test and write of one covered sample.
+void shadeSample(RasterTriangle t, ivec2 p, int resolution) {
+    const vec2 offset = vec2(p) + 0.5 - t.origin.xy;
+    float z = clamp(planeAt(t.depth, offset) + t.depth.w, 0.0, 1.0);
+    const uint bits = floatBitsToUint(z) & 0x7FFFFFFFu;  // -0 -> +0
+    const uint index = (t.xy2.z * uint(resolution) + uint(p.y)) * uint(resolution) + uint(p.x);
+    if (bits >= depthBits[index]) return;  // cheap early reject before the atomic and the texture
+    if (t.origin.z != 0.0 && alphaDiscarded(t, offset)) return;
+    atomicMin(depthBits[index], bits);
+}
+
+// Every covered sample of `t` inside the pixel rectangle r (inclusive).
+void rasterizeRect(RasterTriangle t, Edges e, ivec4 r, int subpixelBits, int resolution) {
+    for (int y = r.y; y <= r.w; ++y)
+        for (int x = r.x; x <= r.z; ++x)
+            if (covers(e, ivec2(x, y), subpixelBits)) shadeSample(t, ivec2(x, y), resolution);
+}

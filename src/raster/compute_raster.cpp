@@ -1,0 +1,144 @@
+#include "raster/compute_raster.h"
+
+#include <algorithm>
+
+namespace penumbra {
+namespace {
+
+constexpr VkDescriptorType kBuffer = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+constexpr VkDescriptorType kSampler = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+constexpr uint32_t kMaxGroups = 65535;  // the smallest maxComputeWorkGroupCount Vulkan allows
+
+// Bin capacities: a quarter of the (triangle, layer) pairs may be large, each in 8 tiles on average;
+// beyond that triangles are rasterized by their setup thread (correct, slower). Capped at 64 MiB.
+uint32_t recordCapacityFor(uint64_t triangles, uint32_t layers) {
+    return uint32_t(std::clamp<uint64_t>(triangles * layers / 4, 4096, 1u << 19));
+}
+
+}  // namespace
+
+ComputeRaster::ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, uint32_t resolution, uint32_t layers)
+    : scene_(scene),
+      resolution_(resolution),
+      layers_(std::max(layers, 1u)),
+      subpixelBits_(alloc.context().properties().limits.subPixelPrecisionBits),
+      recordCapacity_(recordCapacityFor(scene.scene().indices.size() / 3, layers_)),
+      entryCapacity_(recordCapacity_ * 8) {
+    vk::Context& ctx = alloc.context();
+    const uint32_t pushBytes = sizeof(gpu::RasterPush);
+    // Bindings 0-2: the scene's draw set; 3-6: depth, records, tile entries, counters (raster.glsl).
+    std::vector<VkDescriptorType> tiles{kBuffer, kBuffer, kSampler, kBuffer, kBuffer, kBuffer, kBuffer};
+    tiles_ = vk::ComputeKernel(ctx, "raster/tiles.comp", tiles, pushBytes);
+    std::vector<VkDescriptorType> setup = tiles;
+    setup.insert(setup.end(), {kBuffer, kBuffer, kBuffer, kBuffer});  // vertices, indices, materials, layers
+    setup_ = vk::ComputeKernel(ctx, "raster/setup.comp", setup, pushBytes);
+    args_ = vk::ComputeKernel(ctx, "raster/args.comp", {kBuffer, kBuffer}, pushBytes);
+
+    const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
+    const VkBufferUsageFlags transfer = VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+    const VkDeviceSize texels = VkDeviceSize(resolution) * resolution * layers_;
+    depth_ = vk::Buffer(alloc, texels * 4, storage | transfer, false, "raster-depth");
+    records_ = vk::Buffer(alloc, VkDeviceSize(recordCapacity_) * sizeof(gpu::RasterTriangle), storage, false,
+                          "raster-triangles");
+    entries_ = vk::Buffer(alloc, VkDeviceSize(entryCapacity_) * 8, storage, false, "raster-tile-entries");
+    counters_ = vk::Buffer(alloc, sizeof(gpu::RasterCounters), storage | transfer, false, "raster-counters");
+    dispatchArgs_ = vk::Buffer(alloc, sizeof(gpu::uvec4), storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, false,
+                               "raster-dispatch");
+    layerTable_ = vk::BufferRing(alloc, sizeof(gpu::RasterLayer) * layers_, storage, "raster-layers");
+}
+
+void ComputeRaster::setViews(const std::vector<RasterViews>& views, uint32_t slot) {
+    views_ = views;
+    std::vector<gpu::RasterLayer> rows;
+    for (const RasterViews& v : views)
+        for (uint32_t k = 0; k < v.layerCount; ++k)
+            rows.push_back({{v.firstViewRow + k, v.firstLayer + k, v.skipBlended ? 1u : 0u, 0u}});
+    if (rows.size() > layers_) throw std::invalid_argument("compute raster: more layers than it was made for");
+    layerRows_ = uint32_t(rows.size());
+    layerTable_.select(slot);
+    if (!rows.empty()) layerTable_.write(rows.data(), rows.size() * sizeof(rows[0]));
+}
+
+gpu::RasterPush ComputeRaster::push(RasterBias bias) const {
+    const uint32_t triangles = uint32_t(scene_.scene().indices.size() / 3);
+    return {{resolution_, subpixelBits_, triangles, layerRows_},
+            {recordCapacity_, entryCapacity_, 0u, 0u},
+            {bias.constant, bias.slope, 0.0f, 0.0f}};
+}
+
+void ComputeRaster::addSetup(FrameGraph& graph, const std::string& name, BufferHandle viewRows,
+                             const gpu::RasterPush& p) {
+    const BufferHandle depth = graph.import(depth_), counters = graph.import(counters_);
+    PassBuilder setup = graph.pass(name + ".setup");
+    setup.pipeline(setup_.pipeline);
+    scene_.declareDrawSet(setup, viewRows);
+    setup.storageBuffer(3, depth, Use::StorageWrite)
+        .storageBuffer(4, graph.import(records_), Use::StorageWrite)
+        .storageBuffer(5, graph.import(entries_), Use::StorageWrite)
+        .storageBuffer(6, counters, Use::StorageWrite)
+        .storageBuffer(7, graph.import(scene_.vertices()))
+        .storageBuffer(8, graph.import(scene_.indices()))
+        .storageBuffer(9, graph.import(scene_.triangleMaterials()))
+        .storageBuffer(10, graph.import(layerTable_.current()))
+        .record([this, p](PassContext& c) {
+            setup_.pipeline.push(c.cmd, p);
+            const uint32_t groups = std::min(vk::divUp(p.target.z, RASTER_SETUP_GROUP), kMaxGroups);
+            vkCmdDispatch(c.cmd, groups, layerRows_, 1);
+        });
+}
+
+void ComputeRaster::addTo(FrameGraph& graph, const std::string& name, ImageHandle target, BufferHandle viewRows,
+                          RasterBias bias) {
+    const BufferHandle depth = graph.import(depth_), counters = graph.import(counters_),
+                       args = graph.import(dispatchArgs_), records = graph.import(records_),
+                       entries = graph.import(entries_);
+    graph.pass(name + ".clear", PassKind::Transfer)
+        .use(depth, Use::TransferDst)
+        .use(counters, Use::TransferDst)
+        .record([this](PassContext& c) {
+            vkCmdFillBuffer(c.cmd, depth_.handle(), 0, VK_WHOLE_SIZE, 0x3F800000u);  // 1.0f: far
+            vkCmdFillBuffer(c.cmd, counters_.handle(), 0, VK_WHOLE_SIZE, 0u);
+        });
+    if (layerRows_ == 0) return;
+    const gpu::RasterPush p = push(bias);
+    addSetup(graph, name, viewRows, p);
+    graph.pass(name + ".args")
+        .pipeline(args_.pipeline)
+        .storageBuffer(0, counters, Use::StorageRead)
+        .storageBuffer(1, args, Use::StorageWrite)
+        .record([this, p](PassContext& c) {
+            args_.pipeline.push(c.cmd, p);
+            vkCmdDispatch(c.cmd, 1, 1, 1);
+        });
+    PassBuilder tiles = graph.pass(name + ".tiles");
+    tiles.pipeline(tiles_.pipeline);
+    scene_.declareDrawSet(tiles, viewRows);
+    tiles.storageBuffer(3, depth, Use::StorageWrite)
+        .storageBuffer(4, records, Use::StorageRead)
+        .storageBuffer(5, entries, Use::StorageRead)
+        .storageBuffer(6, counters, Use::StorageRead)
+        .use(args, Use::IndirectArgs)
+        .record([this, p](PassContext& c) {
+            tiles_.pipeline.push(c.cmd, p);
+            vkCmdDispatchIndirect(c.cmd, dispatchArgs_.handle(), 0);
+        });
+    graph.pass(name + ".resolve", PassKind::Transfer)
+        .use(depth, Use::TransferSrc)
+        .use(target, Use::TransferDst)
+        .bytes(VkDeviceSize(resolution_) * resolution_ * layerRows_ * 8)
+        .record([this, target](PassContext& c) {
+            std::vector<VkBufferImageCopy> regions;
+            const VkDeviceSize layerBytes = VkDeviceSize(resolution_) * resolution_ * 4;
+            for (const RasterViews& v : views_) {
+                VkBufferImageCopy r{};
+                r.bufferOffset = layerBytes * v.firstLayer;
+                r.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, v.firstLayer, v.layerCount};
+                r.imageExtent = {resolution_, resolution_, 1};
+                if (v.layerCount) regions.push_back(r);
+            }
+            vkCmdCopyBufferToImage(c.cmd, depth_.handle(), c.image(target).handle(),
+                                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, uint32_t(regions.size()), regions.data());
+        });
+}
+
+}  // namespace penumbra

@@ -1,0 +1,64 @@
+// The compute rasterizer for depth-only views (issue 14): shadow-map layers drawn without the raster
+// hardware, equal to it (same matrices, clipping, winding and culling, pixel centres, subpixel
+// snapping, top-left rule, z/w plane, Vulkan's float depth bias, alpha-masked casters).
+//   <name>.clear   fill the depth buffer with 1.0 and the bin counters with 0 (transfer)
+//   <name>.setup   one thread per (triangle, layer), all layers in one dispatch: transform, clip,
+//                  cull, snap; small triangles rasterized right there, large ones binned into tiles
+//   <name>.args    the tile pass's indirect dispatch size
+//   <name>.tiles   one workgroup per (large triangle, tile) entry
+//   <name>.resolve copy of the depth buffer into the D32 target's layers (the filters read it as is)
+// Depth is a 32-bit atomicMin on the float bits in a storage buffer (depths in [0, 1] order like
+// their bits). When a bin list is full its triangle is rasterized by its setup thread: slower, never
+// wrong. See shaders/raster/*.comp; Laine & Karras (HPG 2011) for the binning, Nanite for the
+// small-triangle path.
+#pragma once
+#include <vector>
+
+#include "render/frame_graph.h"
+#include "render/scene_gpu.h"
+#include "shared/types.h"
+
+namespace penumbra {
+
+// A run of target layers (e.g. every layer of one light), view row k for layer firstLayer + k.
+struct RasterViews {
+    uint32_t firstViewRow = 0;
+    uint32_t firstLayer = 0;
+    uint32_t layerCount = 0;
+    bool skipBlended = false;  // alphaMode BLEND casters stay out (a deep shadow map takes them)
+};
+
+struct RasterBias {
+    float constant = 0.0f;  // Vulkan depthBiasConstantFactor
+    float slope = 0.0f;     // depthBiasSlopeFactor
+};
+
+class ComputeRaster {
+public:
+    // Targets of `resolution`^2 texels with up to `layers` layers.
+    ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, uint32_t resolution, uint32_t layers);
+    // Per frame: the layers to draw into this frame slot's table.
+    void setViews(const std::vector<RasterViews>& views, uint32_t slot);
+    // The passes (see above) drawing the views set for this frame with the "views" rows of `views`
+    // into `target` (D32_SFLOAT array, TRANSFER_DST); `name` prefixes the pass names.
+    void addTo(FrameGraph& graph, const std::string& name, ImageHandle target, BufferHandle viewRows, RasterBias bias);
+
+    // Read-backs for tests: depth bits per texel (layer-major), and this frame's RasterCounters.
+    const vk::Buffer& depth() const { return depth_; }
+    const vk::Buffer& counters() const { return counters_; }
+    uint32_t recordCapacity() const { return recordCapacity_; }
+
+private:
+    gpu::RasterPush push(RasterBias bias) const;
+    void addSetup(FrameGraph& graph, const std::string& name, BufferHandle viewRows, const gpu::RasterPush& p);
+    SceneGpu& scene_;
+    uint32_t resolution_, layers_, subpixelBits_;
+    uint32_t recordCapacity_, entryCapacity_;
+    vk::ComputeKernel setup_, tiles_, args_;
+    vk::Buffer depth_, records_, entries_, counters_, dispatchArgs_;
+    vk::BufferRing layerTable_;
+    std::vector<RasterViews> views_;
+    uint32_t layerRows_ = 0;
+};
+
+}  // namespace penumbra
