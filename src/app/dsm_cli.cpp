@@ -2,6 +2,8 @@
 
 #include <fmt/format.h>
 
+#include "app/option_checks.h"
+
 namespace penumbra {
 
 void addDsmOptions(CLI::App& cmd, DsmSettings& dsm, BuiltinOptions& scene) {
@@ -17,9 +19,9 @@ void addDsmOptions(CLI::App& cmd, DsmSettings& dsm, BuiltinOptions& scene) {
     cmd.add_option("--dsm-max-list", dsm.maxList, "Nodes kept per texel, nearest first (default 50)")
         ->check(CLI::Range(1, DSM_MAX_LIST_CAP));
     cmd.add_option("--dsm-filter", dsm.filterWidth, "DSM PCF box width in texels (default 1; 0 = bilinear)")
-        ->check(CLI::Range(0.0, 8.0));
+        ->check(finiteRange(0.0, 8.0));
     cmd.add_option("--dsm-bias", dsm.depthBias, "DSM receiver depth bias in texels (default 2)")
-        ->check(CLI::Range(0.0, 64.0));
+        ->check(finiteRange(0.0, 64.0));
 }
 
 void finishDsmSettings(RenderSettings& s) {

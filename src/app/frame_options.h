@@ -28,6 +28,10 @@ struct PreparedFrame {
     Camera camera;
 };
 
+// Parses the AOV and checks the settings' combinations (no file or GPU work); throws
+// std::invalid_argument with one line. prepareFrame calls it first.
+void checkFrameSettings(const FrameOptions& o, RenderSettings& settings);
+
 // Checks the settings' combinations, loads the scene, applies light overrides, picks the camera.
 // Throws std::invalid_argument / SceneError with one clear line.
 PreparedFrame prepareFrame(const FrameOptions& o, RenderSettings& settings);

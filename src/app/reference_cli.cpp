@@ -8,6 +8,7 @@
 #include "app/ground_truth_cli.h"
 #include "eval/compare.h"
 #include "io/image_io.h"
+#include "app/option_checks.h"
 
 namespace penumbra {
 namespace {
@@ -51,26 +52,28 @@ CLI::App* addReferenceCommand(CLI::App& app, ReferenceCliOptions& o) {
     CLI::App* cmd = app.add_subcommand("reference", "Path-trace the ground truth on the CPU (Embree): EXR radiance");
     addReferenceSceneOptions(*cmd, o);
     cmd->add_option("-o,--output", o.output, "Output image: .exr (linear) or .png (tone-mapped)");
-    cmd->add_option("--aov", o.aov, "final (default: direct + indirect), direct, indirect, mask (1 on geometry)");
+    cmd->add_option("--aov", o.aov, "final (direct + indirect), direct, indirect, mask (1 on geometry)");
     cmd->add_option("--exposure", o.exposure, "PNG only: linear multiplier before tone mapping")
-        ->check(CLI::Range(1e-6, 1e6));
+        ->check(finiteRange(1e-6, 1e6));
     return cmd;
 }
 
-int runReferenceCommand(const ReferenceCliOptions& o) {
+int runReferenceCommand(const ReferenceCliOptions& o, bool dryRun) {
     const std::string ext = fileExtension(o.output);
     if (ext != ".exr" && ext != ".png")
         throw std::invalid_argument(fmt::format("-o {}: the output must end in .exr or .png", o.output));
+    checkWritable(o.output, "-o");
     const ReferenceAov aov = parseReferenceAov(o.aov);
     PreparedFrame f = prepareReferenceFrame(o);
+    if (dryRun) return 0;
     const ReferenceImage img = renderReference(f.scene, f.camera, o.settings);
     const ImageF out{img.width, img.height, img.rgba(aov)};
     if (ext == ".exr") writeExr(o.output, out.width, out.height, out.rgba);
     else writePng(o.output, out.width, out.height, toneMap(out, o.exposure));
     if (o.settings.progress)
-        fmt::print("penumbra: reference '{}' ({} triangles, {} lights) {}x{}, {} paths/pixel, {} bounce(s): "
+        fmt::print("penumbra: reference '{}' ({} triangles, {}) {}x{}, {} paths/pixel, {} bounce(s): "
                    "{:.1f} s, {:.1f} M rays/s -> {}\n",
-                   f.scene.name, f.scene.triangleCount(), f.scene.lights.size(), img.width, img.height, img.spp,
+                   f.scene.name, f.scene.triangleCount(), plural(f.scene.lights.size(), "light"), img.width, img.height, img.spp,
                    o.settings.bounces, img.seconds, double(img.rays) / img.seconds * 1e-6, o.output);
     return 0;
 }
@@ -83,7 +86,7 @@ CLI::App* addCompareCommand(CLI::App& app, CompareCliOptions& o) {
     cmd->add_option("--mask", o.mask, "EXR or PNG of the same size: only its non-zero pixels are compared");
     cmd->add_option("-o,--output", o.heatMap, "Heat map of |luminance(A) - luminance(B)| (PNG)");
     cmd->add_option("--heat-max", o.heatMax, "Error at the top of the heat map (default: 99th percentile)")
-        ->check(CLI::Range(0.0, 1e30));
+        ->check(finiteRange(0.0, 1e30));
     cmd->add_flag("--json", o.json, "Print the metrics as JSON");
     return cmd;
 }
@@ -91,6 +94,7 @@ CLI::App* addCompareCommand(CLI::App& app, CompareCliOptions& o) {
 int runCompareCommand(const CompareCliOptions& o) {
     if (!o.heatMap.empty() && fileExtension(o.heatMap) != ".png")
         throw std::invalid_argument(fmt::format("-o {}: the heat map must end in .png", o.heatMap));
+    if (!o.heatMap.empty()) checkWritable(o.heatMap, "-o");
     const ImageF a = readExrChecked(o.a, "A");
     const ImageF b = readExrChecked(o.b, "B");
     if (a.width != b.width || a.height != b.height)

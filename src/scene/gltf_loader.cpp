@@ -17,6 +17,7 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <tiny_gltf.h>
 
+#include "io/one_line.h"
 #include "scene/builders.h"
 #include "scene/gltf_accessor.h"
 #include "scene/scene.h"
@@ -33,21 +34,6 @@ bool isTolerableRequiredExtension(const std::string& name) {
                                                "KHR_materials_emissive_strength", "KHR_materials_unlit",
                                                "KHR_texture_transform", "KHR_materials_ior"};
     return std::find(ok.begin(), ok.end(), name) != ok.end();
-}
-
-// tinygltf messages span several lines and may quote raw bytes of a corrupt file; the CLI prints
-// errors as one printable line.
-std::string oneLine(const std::string& text) {
-    std::string out;
-    for (char c : text) {
-        if (c == '\n' || c == '\r') {
-            if (!out.empty() && out.back() != ' ') out += "; ";
-        } else {
-            out += (c >= 0x20 && c < 0x7f) ? c : '?';
-        }
-    }
-    while (!out.empty() && (out.back() == ' ' || out.back() == ';')) out.pop_back();
-    return out.empty() ? "unknown error" : out;
 }
 
 bool hasGlbMagic(const std::string& path) {
