@@ -157,7 +157,7 @@ int Cli::run() {
     if (*infoCmd) return runInfo(vk);
     if (*benchCmd) return runBench(bench, vk, benchSettings, dryRun);
     if (*referenceCmd) return runReferenceCommand(reference, dryRun);
-    if (*compareCmd) return runCompareCommand(compare);
+    if (*compareCmd) return runCompareCommand(compare, dryRun);
     if (*evalCmd) return runEvalCommand(eval, vk, dryRun);
     return runRender(render, vk, renderSettings, dryRun);
 }

@@ -32,7 +32,7 @@ struct CompareCliOptions {
     bool json = false;
 };
 CLI::App* addCompareCommand(CLI::App& app, CompareCliOptions& options);
-int runCompareCommand(const CompareCliOptions& options);
+int runCompareCommand(const CompareCliOptions& options, bool dryRun = false);
 
 struct EvalCliOptions {
     ReferenceCliOptions reference;  // scene, camera, lights, size, spp, bounces, seed

@@ -72,8 +72,10 @@ void requireFiniteNumbers(CLI::App& app) {
             return parseNumber(text, v);
         },
         "", "FINITE");
-    for (CLI::Option* opt : app.get_options())
-        if (opt->get_type_name().rfind("FLOAT", 0) == 0) opt->check(finite);
+    for (CLI::Option* opt : app.get_options()) {
+        const std::string type = opt->get_type_name();
+        if (type.rfind("FLOAT", 0) == 0 || type.rfind("INT", 0) == 0 || type.rfind("UINT", 0) == 0) opt->check(finite);
+    }
     for (CLI::App* sub : app.get_subcommands({})) requireFiniteNumbers(*sub);
 }
 

@@ -14,9 +14,9 @@ namespace penumbra {
 // is false) and takes "inf" as a float, which renders black images or vanished shadows.
 CLI::Validator finiteRange(double min, double max);
 
-// Adds a finite-number check to every floating-point option of `app` and its subcommands (CLI11 type
-// name FLOAT), so that an option registered without a range still refuses NaN and infinity. Call it
-// after every option has been added.
+// Adds a finite-number check to every numeric option of `app` and its subcommands (CLI11 type names
+// FLOAT, INT, UINT), so that an option registered without a range still refuses NaN, infinity and an
+// empty value (which CLI11 takes as "keep the default"). Call it after every option has been added.
 void requireFiniteNumbers(CLI::App& app);
 
 // An option whose value is one of `choices` (name -> value): the help lists the names ("none|rsm|lpv")

@@ -91,7 +91,7 @@ CLI::App* addCompareCommand(CLI::App& app, CompareCliOptions& o) {
     return cmd;
 }
 
-int runCompareCommand(const CompareCliOptions& o) {
+int runCompareCommand(const CompareCliOptions& o, bool dryRun) {
     if (!o.heatMap.empty() && fileExtension(o.heatMap) != ".png")
         throw std::invalid_argument(fmt::format("-o {}: the heat map must end in .png", o.heatMap));
     if (!o.heatMap.empty()) checkWritable(o.heatMap, "-o");
@@ -101,6 +101,7 @@ int runCompareCommand(const CompareCliOptions& o) {
         throw std::invalid_argument(
             fmt::format("A is {}x{}, B is {}x{}: the sizes must match", a.width, a.height, b.width, b.height));
     const std::vector<uint8_t> mask = o.mask.empty() ? std::vector<uint8_t>{} : loadMask(o.mask, a.width, a.height);
+    if (dryRun) return 0;
     const ImageMetrics m = compareImages(a, b, mask);
     double scale = o.heatMax;
     if (!o.heatMap.empty()) writePng(o.heatMap, a.width, a.height, errorHeatMap(a, b, mask, scale));
