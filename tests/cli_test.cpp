@@ -16,6 +16,7 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -243,6 +244,41 @@ TEST(Cli, UnwritableEvalOutputsFailBeforeTheWork) {
         EXPECT_EQ(r.err.rfind("penumbra: error: " + args[2] + " /proc/", 0), 0u) << describe(r);
         EXPECT_LT(seconds, 5.0) << "the error came after the work";
     }
+}
+
+// 200000 nodes (400000 triangles over two materials) rendered at 64^2: the draws are merged at load
+// time (GltfScale tests the structure). CPU time of the child (lavapipe's threads included), so that a
+// busy machine does not decide; the target is under 10 s.
+TEST(Cli, TwoHundredThousandNodesRenderFast) {
+    TempDir tmp;
+    const std::string file = tmp.file("many.gltf");
+    {
+        std::ofstream f(file);
+        f << R"({"asset":{"version":"2.0"},"scene":0,"materials":[{},{"doubleSided":true}],)"
+          << R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"material":0},)"
+          << R"({"attributes":{"POSITION":0},"material":1}]}],)"
+          << R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"}],)"
+          << R"("bufferViews":[{"buffer":0,"byteLength":36}],"buffers":[{"byteLength":36,"uri":)"
+          << R"("data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],"nodes":[)";
+        for (int i = 0; i < 200000; ++i)
+            f << (i ? "," : "") << R"({"mesh":0,"translation":[)" << (i % 448) * 1.5 << ",0," << (i / 448) * 1.5 << "]}";
+        f << R"(],"scenes":[{"nodes":[)";
+        for (int i = 0; i < 200000; ++i) f << (i ? "," : "") << i;
+        f << "]}]}";
+    }
+    rusage before{}, after{};
+    getrusage(RUSAGE_CHILDREN, &before);
+    const ProcessResult r = runPenumbra({"render", file, "-o", tmp.file("many.png"), "--width", "64", "--height", "64"});
+    getrusage(RUSAGE_CHILDREN, &after);
+    expectCleanExit(r);
+    EXPECT_NE(r.out.find("400000 triangles"), std::string::npos) << r.out;
+    auto seconds = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
+    const double cpu = seconds(after.ru_utime) + seconds(after.ru_stime) - seconds(before.ru_utime) -
+                       seconds(before.ru_stime);
+    std::printf("200000 nodes at 64x64: %.2f s CPU\n", cpu);
+#if !defined(__SANITIZE_ADDRESS__)
+    EXPECT_LT(cpu, 10.0);
+#endif
 }
 
 // More timed scopes than one query pool holds (LPV: one per propagation step).

@@ -180,3 +180,50 @@ TEST(GltfWarnings, NegativeLightValuesAreClampedWithAWarning) {
     EXPECT_TRUE(hasWarning(s, "colour")) << ::testing::PrintToString(s.warnings);
     EXPECT_EQ(s.warnings.size(), 2u);
 }
+
+// 200000 node references: `count` distinct nodes on a grid, each with a mesh of two primitives (two
+// materials, one double-sided, so the draws alternate as the nodes are visited).
+static json manyNodes(int count) {
+    json doc = goodDoc();
+    doc["materials"].push_back({{"pbrMetallicRoughness", {{"baseColorFactor", {0.1, 0.8, 0.1, 1}}}}});
+    json& prims = doc["meshes"][0]["primitives"];
+    prims[0].erase("attributes");
+    prims[0]["attributes"] = {{"POSITION", 0}};
+    prims.push_back(prims[0]);
+    prims[1]["material"] = 1;
+    json nodes = json::array(), roots = json::array();
+    for (int i = 0; i < count; ++i) {
+        nodes.push_back({{"mesh", 0}, {"translation", {(i % 448) * 1.5, 0, (i / 448) * 1.5}}});
+        roots.push_back(i);
+    }
+    doc["nodes"] = nodes;
+    doc["scenes"] = {{{"nodes", roots}}};
+    doc.erase("cameras");
+    doc.erase("extensions");
+    return doc;
+}
+
+// Transforms are baked, so the loader sorts the triangles by material: the draw calls of every pass
+// are one per material however many nodes the file lists (they alternated: 400000 draws before).
+TEST(GltfScale, TwoHundredThousandNodesDrawOncePerMaterial) {
+    TempDir dir;
+    const Scene s = loadGltf(writeGltf(dir, "many.gltf", manyNodes(200000)));
+    EXPECT_EQ(s.triangleCount(), 400000u);
+    ASSERT_EQ(s.draws.size(), 2u);
+    EXPECT_EQ(s.draws[0].material, 1u);
+    EXPECT_EQ(s.draws[1].material, 2u);
+    EXPECT_EQ(s.draws[0].indexCount, 600000u);
+    expectConsistent(s);
+}
+
+// One node listed 200000 times drew one triangle 200000 times over itself (minutes of shadow-map fill).
+TEST(GltfScale, RepeatedNodeReferencesAreSkippedWithAWarning) {
+    TempDir dir;
+    json doc = goodDoc();
+    doc["scenes"][0]["nodes"] = json::array();
+    for (int i = 0; i < 200000; ++i) doc["scenes"][0]["nodes"].push_back(0);
+    const Scene s = loadGltf(writeGltf(dir, "repeated.gltf", doc));
+    EXPECT_EQ(s.triangleCount(), 2u);  // node 0 and its child, once
+    ASSERT_EQ(s.warnings.size(), 1u);
+    EXPECT_NE(s.warnings[0].find("199999 repeat(s) skipped"), std::string::npos) << s.warnings[0];
+}

@@ -9,6 +9,7 @@
 #include <fstream>
 #include <numeric>
 #include <optional>
+#include <unordered_set>
 
 #include <fmt/format.h>
 #include <glm/gtc/constants.hpp>
@@ -178,7 +179,7 @@ public:
 
     void run() {
         loadMaterials();
-        for (int root : rootNodes()) visitTree(root);
+        for (int root : withoutRepeats(rootNodes(), "the scene")) visitTree(root);
     }
 
 private:
@@ -265,7 +266,8 @@ private:
             if (node.camera >= 0) addCamera(node.camera, world);
             addLight(node, world);
             stack.push_back({index, world, step.depth, true});
-            for (auto child = node.children.rbegin(); child != node.children.rend(); ++child)
+            const std::vector<int> children = withoutRepeats(node.children, fmt::format("node {}", index));
+            for (auto child = children.rbegin(); child != children.rend(); ++child)
                 stack.push_back({*child, world, step.depth + 1, false});  // reversed: visited in file order
         }
     }
@@ -408,6 +410,20 @@ private:
         s_.cameras.push_back(cam);
     }
 
+    // glTF lists each node once (scene.nodes and node.children are uniqueItems): a repeat would draw the
+    // same triangles again on top of themselves (a file listing one node 200000 times rendered for
+    // minutes), so repeats are skipped with one warning.
+    std::vector<int> withoutRepeats(const std::vector<int>& nodes, const std::string& where) {
+        std::vector<int> out;
+        std::unordered_set<int> seen;
+        for (int n : nodes)
+            if (seen.insert(n).second) out.push_back(n);
+        if (out.size() < nodes.size())
+            warn(fmt::format("{} lists a node more than once: {} repeat(s) skipped (glTF lists each node once)", where,
+                             nodes.size() - out.size()));
+        return out;
+    }
+
     // One line per dropped or changed thing, once even when many nodes refer to it.
     void warn(const std::string& line) {
         if (std::find(s_.warnings.begin(), s_.warnings.end(), line) == s_.warnings.end()) s_.warnings.push_back(line);
@@ -456,6 +472,7 @@ Scene loadGltf(const std::string& path) {
     }
     if (scene.indices.empty() && scene.strands.empty())
         throw SceneError(fmt::format("{}: no triangles or lines in the default scene", path));
+    mergeDrawsByMaterial(scene);
     scene.computeBounds();
     placeCameraTargets(scene);
     return scene;
