@@ -82,8 +82,8 @@ std::string today() {
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o, RenderSettings& rs) {
     CLI::App* cmd = app.add_subcommand("bench", "Time every pass over many frames (GPU timestamps), write JSON");
     addFrameOptions(*cmd, o.frame, rs);
-    cmd->add_option("--frames", o.frames, "Measured frames (default 100)")->check(CLI::Range(1, 1000000));
-    cmd->add_option("--warmup", o.warmup, "Frames rendered first and not measured (default 10)")
+    cmd->add_option("--frames", o.frames, "Measured frames")->check(CLI::Range(1, 1000000));
+    cmd->add_option("--warmup", o.warmup, "Frames rendered first and not measured")
         ->check(CLI::Range(0, 1000000));
     cmd->add_option("--json", o.json, "Write the results as JSON to this file");
     cmd->add_option("--frames-in-flight", o.framesInFlight,

@@ -90,13 +90,13 @@ CLI::App* addEvalCommand(CLI::App& app, EvalCliOptions& o) {
     cmd->add_option("--reference", o.referenceDir, "Reference cache directory: reused when scene and settings match");
     cmd->add_option("--json", o.json, "Write the table and every metric as JSON to this file");
     cmd->add_option("--images", o.images, "Directory for figure.png: reference, RSM, LPV, their error maps");
-    cmd->add_option("--frames", o.frames, "Frames per technique; GPU ms is the median after the first (default 5)")
+    cmd->add_option("--frames", o.frames, "Frames per technique; GPU ms is the median after the first")
         ->check(CLI::Range(1, 10000));
     cmd->add_option("--exposure", o.reference.exposure, "Figure: exposure of the final images")
         ->check(finiteRange(1e-6, 1e6));
-    cmd->add_option("--indirect-exposure", o.indirectExposure, "Figure: exposure of the indirect images (default 4)")
+    cmd->add_option("--indirect-exposure", o.indirectExposure, "Figure: exposure of the indirect images")
         ->check(finiteRange(1e-6, 1e6));
-    cmd->add_option("--figure-width", o.figureCellWidth, "Figure: largest cell width, pixels (default 320)")
+    cmd->add_option("--figure-width", o.figureCellWidth, "Figure: largest cell width, pixels")
         ->check(CLI::Range(16, 16384));
     return cmd;
 }

@@ -28,7 +28,7 @@ void addReferenceSceneOptions(CLI::App& cmd, ReferenceCliOptions& o) {
     cmd.add_option("--camera", o.frame.camera, "Camera override: ex,ey,ez,tx,ty,tz,ux,uy,uz,fovy_deg");
     cmd.add_option("--camera-index", o.frame.cameraIndex, "Which of the scene's cameras to use");
     cmd.add_option("--light", o.frame.lights, "Replace the scene's lights (repeatable): see README");
-    cmd.add_option("--spp", o.settings.spp, "Paths per pixel (default 64)")->check(CLI::Range(1, 1 << 20));
+    cmd.add_option("--spp", o.settings.spp, "Paths per pixel")->check(CLI::Range(1, 1 << 20));
     cmd.add_option("--bounces", o.settings.bounces, "Diffuse bounces, 0..16 (default 1, what RSM and LPV approximate)")
         ->check(CLI::Range(0u, kMaxReferenceBounces));
     cmd.add_option("--seed", o.settings.seed, "Random seed (the image is a function of it)");

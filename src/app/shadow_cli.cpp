@@ -49,24 +49,24 @@ void addShadowOptions(CLI::App& cmd, ShadowSettings& s, std::vector<std::string>
         "Shadow filter of every light: hard, pcf, pcss, vsm, evsm, msm (default pcf); dsm (alone or e.g. pcf,dsm) adds "
         "deep shadow maps for hair and blended meshes");
     cmd.add_option("--light-shadow", lightFilters, "Filter of one light, overriding --shadow: N=MODE (repeatable)");
-    cmd.add_option("--pcf-radius", s.pcfRadius, "PCF kernel radius in shadow texels (default 1.5)")
+    cmd.add_option("--pcf-radius", s.pcfRadius, "PCF kernel radius in shadow texels")
         ->check(finiteRange(0.0, 64.0));
-    cmd.add_option("--pcss-light-size", s.pcssLightSize, "PCSS: spot/point light diameter, world units (default 0.1)")
+    cmd.add_option("--pcss-light-size", s.pcssLightSize, "PCSS: spot/point light diameter, world units")
         ->check(finiteRange(1e-6, 1e6));
-    cmd.add_option("--pcss-sun-angle", s.pcssSunAngle, "PCSS: directional light angular diameter, degrees (default 1)")
+    cmd.add_option("--pcss-sun-angle", s.pcssSunAngle, "PCSS: directional light angular diameter, degrees")
         ->check(finiteRange(1e-4, 89.0));
-    cmd.add_option("--pcss-max-radius", s.pcssMaxRadius, "PCSS: largest search/filter radius, texels (default 24)")
+    cmd.add_option("--pcss-max-radius", s.pcssMaxRadius, "PCSS: largest search/filter radius, texels")
         ->check(finiteRange(1.0, 128.0));
-    cmd.add_option("--vsm-blur", s.blurRadius, "VSM/EVSM/MSM blur radius, texels (default 3)")->check(CLI::Range(0, 32));
-    cmd.add_option("--vsm-bleed", s.bleedReduction, "VSM/EVSM/MSM light-bleeding reduction in [0, 0.99] (default 0.25)")
+    cmd.add_option("--vsm-blur", s.blurRadius, "VSM/EVSM/MSM blur radius, texels")->check(CLI::Range(0, 32));
+    cmd.add_option("--vsm-bleed", s.bleedReduction, "VSM/EVSM/MSM light-bleeding reduction in [0, 0.99]")
         ->check(finiteRange(0.0, 0.99));
-    cmd.add_option("--cascades", s.cascades.count, "Directional lights: cascade count 1-8 (default 4)")
+    cmd.add_option("--cascades", s.cascades.count, "Directional lights: cascade count 1-8")
         ->check(CLI::Range(1, 8));
-    cmd.add_option("--csm-lambda", s.cascades.lambda, "Cascade split: 0 uniform .. 1 logarithmic (default 0.75)")
+    cmd.add_option("--csm-lambda", s.cascades.lambda, "Cascade split: 0 uniform .. 1 logarithmic")
         ->check(finiteRange(0.0, 1.0));
-    cmd.add_option("--csm-blend", s.cascades.blend, "Blend band between cascades, fraction (default 0.1)")
+    cmd.add_option("--csm-blend", s.cascades.blend, "Blend band between cascades, fraction")
         ->check(finiteRange(0.0, 0.5));
-    cmd.add_option("--csm-distance", s.cascades.distance, "Shadowed view distance (default 0: the far plane)")
+    cmd.add_option("--csm-distance", s.cascades.distance, "Shadowed view distance (0: the far plane)")
         ->check(finiteRange(0.0, 1e9));
     addChoice<PointShadowMode>(cmd, "--point-shadow", s.pointMode,
                                {{"cube", PointShadowMode::Cube}, {"paraboloid", PointShadowMode::Paraboloid}},
