@@ -134,3 +134,19 @@ TEST(ExrFuzz, TruncatedAndMutatedInputsGiveOneErrorLine) {
     EXPECT_GT(refused, mutants / 4);
     std::printf("exr mutants: %d read, %d refused\n", read, refused);
 }
+
+// An opaque filter plus deep shadow maps is one valid setting; two opaque filters are the error.
+TEST(OptionRules, OpaqueFilterWithDsmIsValidTwoFiltersAreNot) {
+    TempDir dir;
+    Cli cli("penumbra test");
+    const std::string out = dir.file("x.png");
+    std::vector<const char*> argv{"penumbra", "render", "cornell", "-o", out.c_str(), "--shadow", "pcf,dsm", "--dry-run"};
+    ASSERT_NO_THROW(cli.app.parse(int(argv.size()), argv.data()));
+    EXPECT_EQ(cli.run(), 0);
+    EXPECT_EQ(cli.renderSettings.shadow.filter, ShadowFilter::Pcf);
+    EXPECT_TRUE(cli.renderSettings.dsm.enabled);
+
+    std::string message;
+    EXPECT_EQ(runCli({"render", "cornell", "-o", out, "--shadow", "pcf,vsm"}, message), Result::ParseError);
+    EXPECT_NE(message.find("one filter for opaque casters"), std::string::npos) << message;
+}
