@@ -16,6 +16,7 @@
 #include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -230,6 +231,68 @@ TEST(Cli, HelpPrintsUsage) {
         EXPECT_NE(r.out.find(option), std::string::npos) << option << " missing from render --help";
 }
 
+// Outputs are checked before the work: eval would otherwise path-trace its reference first.
+TEST(Cli, UnwritableEvalOutputsFailBeforeTheWork) {
+    for (const std::vector<std::string>& args :
+         {std::vector<std::string>{"eval", "cornell", "--images", "/proc/penumbra-figure"},
+          {"eval", "cornell", "--json", "/proc/penumbra.json"}, {"bench", "cornell", "--json", "/proc/p.json"}}) {
+        SCOPED_TRACE(args[2]);
+        const auto start = std::chrono::steady_clock::now();
+        const ProcessResult r = runPenumbra(args);
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        EXPECT_NE(r.exitCode, 0) << describe(r);
+        EXPECT_EQ(r.err.rfind("penumbra: error: " + args[2] + " /proc/", 0), 0u) << describe(r);
+        EXPECT_LT(seconds, 5.0) << "the error came after the work";
+    }
+}
+
+// 200000 nodes (400000 triangles over two materials) rendered at 64^2: the draws are merged at load
+// time (GltfScale tests the structure). CPU time of the child (lavapipe's threads included), so that a
+// busy machine does not decide; the target is under 10 s.
+TEST(Cli, TwoHundredThousandNodesRenderFast) {
+    TempDir tmp;
+    const std::string file = tmp.file("many.gltf");
+    {
+        std::ofstream f(file);
+        f << R"({"asset":{"version":"2.0"},"scene":0,"materials":[{},{"doubleSided":true}],)"
+          << R"("meshes":[{"primitives":[{"attributes":{"POSITION":0},"material":0},)"
+          << R"({"attributes":{"POSITION":0},"material":1}]}],)"
+          << R"("accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3"}],)"
+          << R"("bufferViews":[{"buffer":0,"byteLength":36}],"buffers":[{"byteLength":36,"uri":)"
+          << R"("data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAgD8AAAAA"}],"nodes":[)";
+        for (int i = 0; i < 200000; ++i)
+            f << (i ? "," : "") << R"({"mesh":0,"translation":[)" << (i % 448) * 1.5 << ",0," << (i / 448) * 1.5 << "]}";
+        f << R"(],"scenes":[{"nodes":[)";
+        for (int i = 0; i < 200000; ++i) f << (i ? "," : "") << i;
+        f << "]}]}";
+    }
+    rusage before{}, after{};
+    getrusage(RUSAGE_CHILDREN, &before);
+    const ProcessResult r = runPenumbra({"render", file, "-o", tmp.file("many.png"), "--width", "64", "--height", "64"});
+    getrusage(RUSAGE_CHILDREN, &after);
+    expectCleanExit(r);
+    EXPECT_NE(r.out.find("400000 triangles"), std::string::npos) << r.out;
+    auto seconds = [](const timeval& t) { return double(t.tv_sec) + 1e-6 * double(t.tv_usec); };
+    const double cpu = seconds(after.ru_utime) + seconds(after.ru_stime) - seconds(before.ru_utime) -
+                       seconds(before.ru_stime);
+    std::printf("200000 nodes at 64x64: %.2f s CPU\n", cpu);
+#if !defined(__SANITIZE_ADDRESS__)
+    EXPECT_LT(cpu, 10.0);
+#endif
+}
+
+// More timed scopes than one query pool holds (LPV: one per propagation step).
+TEST(Cli, LpvWithManyIterationsRenders) {
+    TempDir tmp;
+    const ProcessResult r = runPenumbra({"render", "cornell", "-o", tmp.file("lpv.png"), "--gi", "lpv",
+                                         "--lpv-iterations", "256", "--width", "16", "--height", "16", "--validate"});
+    expectCleanExit(r);
+    size_t steps = 0;
+    for (size_t at = r.out.find("lpv.propagate"); at != std::string::npos; at = r.out.find("lpv.propagate", at + 1))
+        ++steps;
+    EXPECT_EQ(steps, 256u) << r.out;
+}
+
 TEST(Cli, InfoListsADevice) {
     const ProcessResult r = runPenumbra({"info"});
     expectCleanExit(r);
@@ -258,6 +321,10 @@ TEST_P(CliBadInput, OneErrorLineAndNonZeroExit) {
     {  // Inputs some cases refer to.
         std::ofstream garbage(tmp.file("garbage.gltf"), std::ios::binary);
         garbage << "\x89this is { not [ a glTF \x01\x02\x03 file at all";
+        std::ofstream truncated(tmp.file("truncated.exr"), std::ios::binary);
+        truncated << "v/1\x01\x02\x00\x00\x00channels\x00chlist\x00";  // an EXR header cut short
+        fs::create_directories(tmp.path / "subdir");
+        fs::create_directories(tmp.path / "image.png");
     }
     std::vector<std::string> args;
     for (std::string a : c.args) {
@@ -307,6 +374,42 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"BenchZeroFrames", {"bench", "cornell", "--frames", "0"}, "--frames"},
         BadInput{"BenchUnknownShadowMode", {"bench", "cornell", "--shadow", "blurry"}, "blurry"},
         BadInput{"BenchUnknownGiMode", {"bench", "cornell", "--gi", "magic"}, "magic"},
+        // Numbers that are not finite, for every kind of float option (CLI11's Range lets NaN through).
+        BadInput{"ExposureNaN", {"render", "cornell", "-o", "{out}", "--exposure", "nan"}, "--exposure"},
+        BadInput{"RsmRadiusInf", {"render", "cornell", "-o", "{out}", "--rsm-radius", "inf"}, "--rsm-radius"},
+        BadInput{"ShadowBiasNaN", {"render", "cornell", "-o", "{out}", "--shadow-bias-constant", "NaN"},
+                 "--shadow-bias-constant"},
+        BadInput{"NormalOffsetInf", {"render", "cornell", "-o", "{out}", "--shadow-normal-offset", "-inf"},
+                 "--shadow-normal-offset"},
+        BadInput{"DsmBiasNaN", {"render", "cornell", "-o", "{out}", "--dsm-bias", "nan"}, "--dsm-bias"},
+        BadInput{"ReferenceExposureNaN", {"reference", "cornell", "-o", "{dir}/r.exr", "--exposure", "nan"},
+                 "--exposure"},
+        BadInput{"EvalExposureInf", {"eval", "cornell", "--exposure", "inf"}, "--exposure"},
+        BadInput{"EvalIndirectExposureNaN", {"eval", "cornell", "--indirect-exposure", "nan"}, "--indirect-exposure"},
+        BadInput{"CameraAlongUp", {"render", "cornell", "-o", "{out}", "--camera", "0,5,0,0,0,0,0,1,0,40"}, "up"},
+        BadInput{"TwoOpaqueFilters", {"render", "cornell", "-o", "{out}", "--shadow", "pcf,vsm"}, "pcf,vsm"},
+        BadInput{"NegativeLightColour", {"render", "cornell", "-o", "{out}", "--light", "directional,0,-1,0,3,1,-1,1"},
+                 "colour"},
+        BadInput{"SpotInnerWiderThanOuter", {"render", "cornell", "-o", "{out}", "--light", "spot,0,1,0,0,-1,0,5,30,40"},
+                 "inner"},
+        BadInput{"IndirectWithoutGi", {"render", "cornell", "-o", "{out}", "--gi", "none", "--aov", "indirect"},
+                 "--gi"},
+        BadInput{"SceneIsDirectory", {"render", "{dir}/subdir", "-o", "{out}"}, "is a directory"},
+        BadInput{"OutputIsDirectory", {"render", "cornell", "-o", "{dir}/image.png"}, "is a directory"},
+        BadInput{"CompareTruncatedExr", {"compare", "{dir}/truncated.exr", "{dir}/truncated.exr"}, "truncated.exr"},
+        BadInput{"UnknownCommand", {"frobnicate", "cornell"}, "unknown command 'frobnicate'"},
+        BadInput{"NoCommand", {"--validate"}, "no command"},
+        // Sizes the device cannot hold: refused with the option, the limit and the largest value that fits.
+        BadInput{"LpvVplBeyondDispatchAndBuffer",
+                 {"render", "cornell", "-o", "{out}", "--gi", "lpv", "--lpv-rsm-res", "8192", "--lpv-vpl-res", "8192"},
+                 "the largest --lpv-vpl-res that fits"},
+        BadInput{"ImageBeyondAllocation", {"render", "cornell", "-o", "{out}", "--width", "16384", "--height", "16384"},
+                 "the largest --width that fits"},
+        BadInput{"VsmMapBeyondAllocation", {"render", "cornell", "-o", "{out}", "--shadow", "vsm", "--shadow-res", "16384"},
+                 "the largest --shadow-res that fits"},
+        BadInput{"StrandsBeyondStorageBuffer",
+                 {"render", "hair", "-o", "{out}", "--strands", "2000000", "--shadow", "dsm"},
+                 "the largest --strands that fits"},
         BadInput{"NoSuchDevice", {"render", "cornell", "-o", "{out}", "--device", "99", "--validate"}, "99"},
         BadInput{"DeviceMissingFeature",
                  {"render", "cornell", "-o", "{out}", "--width", "32", "--height", "24", "--validate"},

@@ -12,6 +12,9 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "app/device_budget.h"
+#include "app/option_checks.h"
+
 namespace penumbra {
 namespace {
 
@@ -79,8 +82,8 @@ std::string today() {
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o, RenderSettings& rs) {
     CLI::App* cmd = app.add_subcommand("bench", "Time every pass over many frames (GPU timestamps), write JSON");
     addFrameOptions(*cmd, o.frame, rs);
-    cmd->add_option("--frames", o.frames, "Measured frames (default 100)")->check(CLI::Range(1, 1000000));
-    cmd->add_option("--warmup", o.warmup, "Frames rendered first and not measured (default 10)")
+    cmd->add_option("--frames", o.frames, "Measured frames")->check(CLI::Range(1, 1000000));
+    cmd->add_option("--warmup", o.warmup, "Frames rendered first and not measured")
         ->check(CLI::Range(0, 1000000));
     cmd->add_option("--json", o.json, "Write the results as JSON to this file");
     cmd->add_option("--frames-in-flight", o.framesInFlight,
@@ -121,10 +124,14 @@ static BenchRun runFrames(Renderer& renderer, const FrameInputs& inputs, const B
     return run;
 }
 
-int runBench(const BenchOptions& o, const vk::ContextOptions& vkOptions, RenderSettings settings) {
-    PreparedFrame f = prepareFrame(o.frame, settings);
-    if (!o.json.empty() && !std::ofstream(o.json)) throw std::invalid_argument("--json: cannot write " + o.json);
+int runBench(const BenchOptions& o, const vk::ContextOptions& vkOptions, RenderSettings settings, bool dryRun) {
+    if (!o.json.empty()) checkWritable(o.json, "--json");
+    if (dryRun) return prepareFrame(o.frame, settings), 0;
+    checkFrameSettings(o.frame, settings);
     vk::Context ctx(vkOptions);
+    checkBuiltinSceneBudget(ctx.limits(), o.frame);
+    PreparedFrame f = prepareFrame(o.frame, settings);
+    checkDeviceBudget(ctx, settings, f.scene);
     const double copyGbps = copyBandwidth(ctx);
     GpuScene scene(ctx, f.scene);
     Renderer renderer(ctx, scene, settings, uint32_t(o.framesInFlight));

@@ -18,6 +18,7 @@ struct BenchOptions {
 };
 
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options, RenderSettings& settings);
-int runBench(const BenchOptions& options, const vk::ContextOptions& vkOptions, RenderSettings settings);
+int runBench(const BenchOptions& options, const vk::ContextOptions& vkOptions, RenderSettings settings,
+             bool dryRun = false);
 
 }  // namespace penumbra

@@ -22,6 +22,8 @@ std::vector<float> numbers(const std::string& text, const std::string& option) {
         }
         if (used != item.size() || item.empty() || !std::isfinite(v))
             throw std::invalid_argument(fmt::format("{}: '{}' is not a number", option, item));
+        // Larger magnitudes overflow lengths and matrices in single precision (NaN images).
+        if (std::abs(v) > 1e9f) throw std::invalid_argument(fmt::format("{}: {} is out of range (|x| <= 1e9)", option, item));
         out.push_back(v);
     }
     return out;
@@ -45,6 +47,9 @@ Camera parseCamera(const std::string& value) {
     c.target = {v[3], v[4], v[5]};
     c.up = unit({v[6], v[7], v[8]}, "--camera up");
     if (glm::length(c.target - c.eye) < 1e-6f) throw std::invalid_argument("--camera: eye and target coincide");
+    // Looking along the up vector leaves the image's roll undefined (lookAt degenerates: a black image).
+    if (glm::length(glm::cross(glm::normalize(c.target - c.eye), c.up)) < 1e-3f)
+        throw std::invalid_argument("--camera: the view direction (target - eye) is parallel to the up vector");
     if (v[9] <= 0.0f || v[9] >= 180.0f) throw std::invalid_argument("--camera: fovy must be in (0, 180) degrees");
     c.fovy = radians(v[9]);
     return c;
@@ -61,6 +66,8 @@ Light parseLight(const std::string& value) {
         l.direction = unit({v[0], v[1], v[2]}, "--light");
         l.intensity = v[3];
         if (v.size() == 7) l.color = {v[4], v[5], v[6]};
+        if (glm::any(glm::lessThan(l.color, glm::vec3(0.0f))))
+            throw std::invalid_argument("--light: colour components must not be negative");
     } else if (type == "spot" && (v.size() == 8 || v.size() == 9)) {
         l.type = LightType::Spot;
         l.position = {v[0], v[1], v[2]};
@@ -69,6 +76,8 @@ Light parseLight(const std::string& value) {
         l.outerConeAngle = radians(v[7]);
         l.innerConeAngle = v.size() == 9 ? radians(v[8]) : 0.0f;
         if (v[7] <= 0.0f || v[7] >= 90.0f) throw std::invalid_argument("--light spot: outer angle must be in (0, 90)");
+        if (v.size() == 9 && (v[8] < 0.0f || v[8] >= v[7]))
+            throw std::invalid_argument("--light spot: inner angle must be in [0, outer angle)");
     } else if (type == "point" && v.size() == 4) {
         l.type = LightType::Point;
         l.position = {v[0], v[1], v[2]};

@@ -2,10 +2,12 @@
 
 #include <fmt/format.h>
 
+#include "app/option_checks.h"
+
 namespace penumbra {
 
 void addDsmOptions(CLI::App& cmd, DsmSettings& dsm, BuiltinOptions& scene) {
-    cmd.add_option("--strands", scene.hairStrands, "Hair strands of the built-in `hair` scene (default 25000)")
+    cmd.add_option("--strands", scene.hairStrands, "Hair strands of the built-in `hair` scene")
         ->check(CLI::Range(1, 2'000'000));
     cmd.add_option("--dsm-lights", dsm.lights, "Lights that get a deep shadow map, e.g. 0,2 (default: all shadowed)")
         ->delimiter(',')
@@ -14,12 +16,12 @@ void addDsmOptions(CLI::App& cmd, DsmSettings& dsm, BuiltinOptions& scene) {
         ->check(CLI::Range(16, 16384));
     cmd.add_option("--dsm-nodes", dsm.poolNodes, "Node pool capacity (default: 4 nodes per DSM texel)")
         ->check(CLI::Range(uint64_t(1), DsmSettings::kMaxPoolNodes - 1));
-    cmd.add_option("--dsm-max-list", dsm.maxList, "Nodes kept per texel, nearest first (default 50)")
+    cmd.add_option("--dsm-max-list", dsm.maxList, "Nodes kept per texel, nearest first")
         ->check(CLI::Range(1, DSM_MAX_LIST_CAP));
     cmd.add_option("--dsm-filter", dsm.filterWidth, "DSM PCF box width in texels (default 1; 0 = bilinear)")
-        ->check(CLI::Range(0.0, 8.0));
-    cmd.add_option("--dsm-bias", dsm.depthBias, "DSM receiver depth bias in texels (default 2)")
-        ->check(CLI::Range(0.0, 64.0));
+        ->check(finiteRange(0.0, 8.0));
+    cmd.add_option("--dsm-bias", dsm.depthBias, "DSM receiver depth bias in texels")
+        ->check(finiteRange(0.0, 64.0));
 }
 
 void finishDsmSettings(RenderSettings& s) {

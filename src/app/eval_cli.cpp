@@ -1,5 +1,7 @@
 // `penumbra eval` (ground_truth_cli.h): the reference (rendered, or read from its cache directory),
 // every technique in one Vulkan context, the table, the JSON and the side-by-side figure.
+#include <unistd.h>
+
 #include <filesystem>
 #include <fstream>
 
@@ -7,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/ground_truth_cli.h"
+#include "app/option_checks.h"
 #include "eval/eval.h"
 #include "io/image_io.h"
 
@@ -75,12 +78,6 @@ GroundTruth groundTruth(const EvalCliOptions& o, const PreparedFrame& f) {
                       {w, h, img.rgba(ReferenceAov::Mask)}, noise);
 }
 
-void checkWritable(const std::string& path, const std::string& option) {
-    if (path.empty()) return;
-    if (!std::ofstream(path, std::ios::app))
-        throw std::invalid_argument(fmt::format("{} {}: cannot write", option, path));
-}
-
 }  // namespace
 
 CLI::App* addEvalCommand(CLI::App& app, EvalCliOptions& o) {
@@ -93,21 +90,26 @@ CLI::App* addEvalCommand(CLI::App& app, EvalCliOptions& o) {
     cmd->add_option("--reference", o.referenceDir, "Reference cache directory: reused when scene and settings match");
     cmd->add_option("--json", o.json, "Write the table and every metric as JSON to this file");
     cmd->add_option("--images", o.images, "Directory for figure.png: reference, RSM, LPV, their error maps");
-    cmd->add_option("--frames", o.frames, "Frames per technique; GPU ms is the median after the first (default 5)")
+    cmd->add_option("--frames", o.frames, "Frames per technique; GPU ms is the median after the first")
         ->check(CLI::Range(1, 10000));
     cmd->add_option("--exposure", o.reference.exposure, "Figure: exposure of the final images")
-        ->check(CLI::Range(1e-6, 1e6));
-    cmd->add_option("--indirect-exposure", o.indirectExposure, "Figure: exposure of the indirect images (default 4)")
-        ->check(CLI::Range(1e-6, 1e6));
-    cmd->add_option("--figure-width", o.figureCellWidth, "Figure: largest cell width, pixels (default 320)")
+        ->check(finiteRange(1e-6, 1e6));
+    cmd->add_option("--indirect-exposure", o.indirectExposure, "Figure: exposure of the indirect images")
+        ->check(finiteRange(1e-6, 1e6));
+    cmd->add_option("--figure-width", o.figureCellWidth, "Figure: largest cell width, pixels")
         ->check(CLI::Range(16, 16384));
     return cmd;
 }
 
-int runEvalCommand(const EvalCliOptions& o, const vk::ContextOptions& vkOptions) {
+int runEvalCommand(const EvalCliOptions& o, const vk::ContextOptions& vkOptions, bool dryRun) {
     const bool verbose = o.reference.settings.progress;
-    checkWritable(o.json, "--json");
+    const bool progressLine = verbose && isatty(STDERR_FILENO);  // \r redraws only on a terminal, not in logs
+    // Every output is checked before the reference (minutes) and the techniques run.
+    if (!o.json.empty()) checkWritable(o.json, "--json");
+    if (!o.images.empty()) checkWritable(o.images, "--images", true);
+    if (!o.referenceDir.empty()) checkWritable(o.referenceDir, "--reference", true);
     PreparedFrame f = prepareReferenceFrame(o.reference);
+    if (dryRun) return 0;
     const GroundTruth truth = groundTruth(o, f);
 
     vk::Context ctx(vkOptions);
@@ -119,9 +121,9 @@ int runEvalCommand(const EvalCliOptions& o, const vk::ContextOptions& vkOptions)
     const std::vector<EvalVariant> variants = evalVariants(base, sun);
     const std::vector<EvalRow> rows =
         runEval(ctx, f.scene, f.camera, variants, truth, o.frames, [&](size_t i, size_t n, const std::string& name) {
-            if (verbose) fmt::print(stderr, "\reval: {}/{} {:<60}", i + 1, n, name), std::fflush(stderr);
+            if (progressLine) fmt::print(stderr, "\reval: {}/{} {:<60}", i + 1, n, name), std::fflush(stderr);
         });
-    if (verbose) fmt::print(stderr, "\r{:80}\r", "");
+    if (progressLine) fmt::print(stderr, "\r{:80}\r", "");
     const bool gpu = ctx.info().type != "cpu";
     size_t covered = 0;
     for (uint8_t m : truth.mask) covered += m;

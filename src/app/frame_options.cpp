@@ -1,72 +1,99 @@
 #include "app/frame_options.h"
 
-#include <map>
+#include <cmath>
+#include <cstdio>
 
 #include <fmt/format.h>
 
 #include "app/cli_parse.h"
+#include "app/option_checks.h"
 #include "app/shadow_cli.h"
 
 namespace penumbra {
 namespace {
 
 void addLpvOptions(CLI::App& cmd, LpvSettings& lpv) {
-    cmd.add_option("--lpv-res", lpv.resolution, "LPV cells per side (default 32)")->check(CLI::Range(4, 256));
-    cmd.add_option("--lpv-iterations", lpv.iterations, "LPV propagation steps (default 8)")->check(CLI::Range(1, 256));
-    cmd.add_option("--lpv-cascades", lpv.cascades, "LPV cascades 1-4 (default: 1 for small scenes, 3 for large)")
-        ->check(CLI::Range(1, 4));
-    cmd.add_option("--lpv-rsm-res", lpv.rsmResolution, "RSM resolution for LPV injection (default 2048)")
+    cmd.add_option("--lpv-res", lpv.resolution, "LPV cells per side")->check(CLI::Range(4, 256));
+    cmd.add_option("--lpv-iterations", lpv.iterations, "LPV propagation steps")->check(CLI::Range(1, 256));
+    cmd.add_option("--lpv-cascades", lpv.cascades, "LPV cascades 1-4 (0: 1 for small scenes, 3 for large)")
+        ->check(CLI::Range(0, 4));
+    cmd.add_option("--lpv-rsm-res", lpv.rsmResolution, "RSM resolution for LPV injection")
         ->check(CLI::Range(16, 8192));
-    cmd.add_option("--lpv-vpl-res", lpv.vplResolution, "Down-sampled VPLs per side (default 512)")
+    cmd.add_option("--lpv-vpl-res", lpv.vplResolution, "Down-sampled VPLs per side (divides --lpv-rsm-res)")
         ->check(CLI::Range(1, 8192));
-    cmd.add_option("--lpv-occlusion", lpv.occlusion, "Geometry-volume occlusion on/off (default on)");
-    cmd.add_option("--lpv-camera-geometry", lpv.cameraGeometry, "Inject camera G-buffer occluders (default on)");
+    cmd.add_option("--lpv-occlusion", lpv.occlusion, "Geometry-volume occlusion on/off");
+    cmd.add_option("--lpv-camera-geometry", lpv.cameraGeometry, "Inject camera G-buffer occluders on/off");
     cmd.add_option("--lpv-slice-axis", lpv.sliceAxis, "Axis of the lpv-slice/gv-slice AOV: 0=x 1=y 2=z")
         ->check(CLI::Range(0, 2));
-    cmd.add_option("--lpv-slice", lpv.sliceIndex, "Cell index of the lpv-slice/gv-slice AOV (default 16)");
+    cmd.add_option("--lpv-slice", lpv.sliceIndex, "Cell index of the lpv-slice/gv-slice AOV (< --lpv-res)")
+        ->check(CLI::Range(0, 255));
 }
 
 void addGiOptions(CLI::App& cmd, RenderSettings& rs) {
-    const std::map<std::string, GiMode> gi{{"none", GiMode::None}, {"rsm", GiMode::Rsm}, {"lpv", GiMode::Lpv}};
-    const std::map<std::string, RsmMode> modes{
-        {"interpolated", RsmMode::Interpolated}, {"full", RsmMode::Full}, {"all-texels", RsmMode::AllTexels}};
-    const std::map<std::string, RsmWeights> weights{{"unbiased", RsmWeights::Unbiased}, {"paper", RsmWeights::Paper}};
-    cmd.add_option("--gi", rs.gi, "Indirect light: none, rsm, lpv")->transform(CLI::CheckedTransformer(gi));
-    cmd.add_option("--rsm-res", rs.rsm.resolution, "RSM resolution per light (default 512)")
-        ->check(CLI::Range(8, 8192));
-    cmd.add_option("--rsm-samples", rs.rsm.samples, "RSM gather samples per pixel (default 400)")
-        ->check(CLI::Range(1, 16384));
-    cmd.add_option("--rsm-radius", rs.rsm.radius, "RSM sampling radius r_max in RSM uv units (default 0.25)")
-        ->check(CLI::Range(1e-4, 2.0));
+    addChoice<GiMode>(cmd, "--gi", rs.gi, {{"none", GiMode::None}, {"rsm", GiMode::Rsm}, {"lpv", GiMode::Lpv}},
+                      "Indirect light (one diffuse bounce)");
+    cmd.add_option("--rsm-res", rs.rsm.resolution, "RSM resolution per light")->check(CLI::Range(8, 8192));
+    cmd.add_option("--rsm-samples", rs.rsm.samples, "RSM gather samples per pixel")->check(CLI::Range(1, 16384));
+    cmd.add_option("--rsm-radius", rs.rsm.radius, "RSM sampling radius r_max in RSM uv units")
+        ->check(finiteRange(1e-4, 2.0));
     cmd.add_option("--rsm-seed", rs.rsm.seed, "Seed of the RSM sample pattern");
-    cmd.add_option("--rsm-mode", rs.rsm.mode, "interpolated (default), full, all-texels (exact; --rsm-res <= 64)")
-        ->transform(CLI::CheckedTransformer(modes));
-    cmd.add_option("--rsm-weights", rs.rsm.weights, "Sample weights: unbiased (default) or paper (xi1^2)")
-        ->transform(CLI::CheckedTransformer(weights));
-    cmd.add_option("--rsm-lowres", rs.rsm.lowResFactor, "Low-resolution gather factor (default 4)")
-        ->check(CLI::Range(1, 32));
+    addChoice<RsmMode>(cmd, "--rsm-mode", rs.rsm.mode,
+                       {{"interpolated", RsmMode::Interpolated}, {"full", RsmMode::Full},
+                        {"all-texels", RsmMode::AllTexels}},
+                       "RSM gather: interpolated low-resolution, full, or all-texels (exact; --rsm-res <= 64)");
+    addChoice<RsmWeights>(cmd, "--rsm-weights", rs.rsm.weights,
+                          {{"unbiased", RsmWeights::Unbiased}, {"paper", RsmWeights::Paper}},
+                          "RSM sample weights: unbiased, or the paper's xi1^2");
+    cmd.add_option("--rsm-lowres", rs.rsm.lowResFactor, "Low-resolution gather factor")->check(CLI::Range(1, 32));
     cmd.add_flag("--rsm-per-cascade", rs.rsm.perCascade,
                  "A sun's RSM per cascade (the seed's way) instead of from its widest cascade only");
     addLpvOptions(cmd, rs.lpv);
 }
 
+// Consistency of the options with each other (each one alone is checked by its validator).
+void checkCombinations(const RenderSettings& s) {
+    if (s.gi == GiMode::Lpv && s.lpv.rsmResolution % s.lpv.vplResolution)
+        throw std::invalid_argument(fmt::format("--lpv-rsm-res {} must be a multiple of --lpv-vpl-res {}",
+                                                s.lpv.rsmResolution, s.lpv.vplResolution));
+    if ((s.aov == Aov::LpvSlice || s.aov == Aov::GvSlice) && s.gi != GiMode::Lpv)
+        throw std::invalid_argument("--aov lpv-slice/gv-slice need --gi lpv");
+    if ((s.aov == Aov::LpvSlice || s.aov == Aov::GvSlice) && s.lpv.sliceIndex >= s.lpv.resolution)
+        throw std::invalid_argument(fmt::format("--lpv-slice {} is outside the {} cells of --lpv-res",
+                                                s.lpv.sliceIndex, s.lpv.resolution));
+    // Indirect light without GI is black everywhere: an error rather than a silent black image.
+    if (s.aov == Aov::Indirect && s.gi == GiMode::None)
+        throw std::invalid_argument("--aov indirect shows indirect light only: it needs --gi rsm or --gi lpv");
+    const bool rsmView = s.aov == Aov::RsmDepth || s.aov == Aov::RsmNormal || s.aov == Aov::RsmFlux;
+    if (rsmView && s.gi == GiMode::None)
+        throw std::invalid_argument("--aov rsm-depth/rsm-normal/rsm-flux need --gi rsm or --gi lpv");
+    if (s.gi == GiMode::Rsm && s.rsm.mode == RsmMode::AllTexels && s.rsm.resolution > 64)
+        throw std::invalid_argument("--rsm-mode all-texels gathers every texel at every pixel: use --rsm-res <= 64");
+    if (!std::isfinite(s.exposure) || s.exposure <= 0.0f)
+        throw std::invalid_argument("--exposure must be a positive finite number");
+    validate(s.shadow);
+}
+
 }  // namespace
 
 void addFrameOptions(CLI::App& cmd, FrameOptions& o, RenderSettings& rs) {
+    // The defaults show what penumbra is for: one bounce of indirect light (RSM, interpolated) and
+    // soft shadows (PCF); README "CLI" gives the reasons and the cost.
+    rs.gi = GiMode::Rsm;
+    rs.shadow.filter = ShadowFilter::Pcf;
     cmd.add_option("scene", o.scene, "glTF file (.gltf/.glb) or built-in scene: " +
                                               fmt::format("{}", fmt::join(builtinSceneNames(), ", ")));
     cmd.add_option("--width", rs.width, "Image width")->check(CLI::Range(1, 16384));
     cmd.add_option("--height", rs.height, "Image height")->check(CLI::Range(1, 16384));
     cmd.add_option("--camera", o.camera, "Camera override: ex,ey,ez,tx,ty,tz,ux,uy,uz,fovy_deg");
-    cmd.add_option("--camera-index", o.cameraIndex, "Which of the scene's cameras to use");
+    cmd.add_option("--camera-index", o.cameraIndex, "Which of the scene's (perspective) cameras to use")
+        ->check(CLI::NonNegativeNumber);
     cmd.add_option("--light", o.lights, "Replace the scene's lights (repeatable): see README");
-    cmd.add_option("--aov", o.aov,
-                       "Output: final (default), direct, indirect, albedo, normal, depth, shadow, cascade, ...");
-    cmd.add_option("--aov-layer", rs.aovLayer, "Layer shown by the rsm-depth/normal/flux and shadow-map AOVs (default 0)")
+    cmd.add_option("--aov", o.aov, "Output: " + fmt::format("{}", fmt::join(aovNames(), ", ")));
+    cmd.add_option("--aov-layer", rs.aovLayer, "Layer shown by the rsm-depth/normal/flux and shadow-map AOVs")
         ->check(CLI::Range(0, 4096));
     addGiOptions(cmd, rs);
     cmd.add_option("--exposure", rs.exposure, "Linear exposure multiplier before tone mapping")
-        ->check(CLI::Range(1e-6, 1e6));
+        ->check(finiteRange(1e-6, 1e6));
     addShadowOptions(cmd, rs.shadow, o.lightFilters, rs.dsm.enabled);
     addDsmOptions(cmd, rs.dsm, o.builtin);
 }
@@ -74,15 +101,7 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o, RenderSettings& rs) {
 void checkFrameSettings(const FrameOptions& o, RenderSettings& settings) {
     settings.aov = parseAov(o.aov);
     finishDsmSettings(settings);
-    if (settings.gi == GiMode::Lpv && settings.lpv.rsmResolution % settings.lpv.vplResolution)
-        throw std::invalid_argument("--lpv-rsm-res must be a multiple of --lpv-vpl-res");
-    if ((settings.aov == Aov::LpvSlice || settings.aov == Aov::GvSlice) && settings.gi != GiMode::Lpv)
-        throw std::invalid_argument("--aov lpv-slice/gv-slice need --gi lpv");
-    const bool rsmView = settings.aov == Aov::RsmDepth || settings.aov == Aov::RsmNormal || settings.aov == Aov::RsmFlux;
-    if (rsmView && settings.gi == GiMode::None)
-        throw std::invalid_argument("--aov rsm-depth/rsm-normal/rsm-flux need --gi rsm or --gi lpv");
-    if (settings.gi == GiMode::Rsm && settings.rsm.mode == RsmMode::AllTexels && settings.rsm.resolution > 64)
-        throw std::invalid_argument("--rsm-mode all-texels gathers every texel at every pixel: use --rsm-res <= 64");
+    checkCombinations(settings);
 }
 
 std::vector<Light> frameLights(const FrameOptions& o, const Scene& loaded) {
@@ -96,8 +115,8 @@ std::vector<Light> frameLights(const FrameOptions& o, const Scene& loaded) {
 Camera frameCamera(const FrameOptions& o, const Scene& scene) {
     if (!o.camera.empty()) return parseCamera(o.camera);
     if (o.cameraIndex < 0 || o.cameraIndex >= int(scene.cameras.size()))
-        throw std::invalid_argument(
-            fmt::format("--camera-index {}: the scene has {} camera(s)", o.cameraIndex, scene.cameras.size()));
+        throw std::invalid_argument(fmt::format("--camera-index {}: the scene has {}", o.cameraIndex,
+                                                plural(scene.cameras.size(), "camera")));
     return scene.cameras[o.cameraIndex];
 }
 
@@ -108,6 +127,7 @@ PreparedFrame prepareFrame(const FrameOptions& o, RenderSettings& settings) {
     if (!o.camera.empty()) parseCamera(o.camera);
     PreparedFrame f;
     f.scene = loadScene(o.scene, o.builtin);
+    for (const std::string& w : f.scene.warnings) fmt::print(stderr, "penumbra: warning: {}\n", w);
     f.scene.lights = frameLights(o, f.scene);
     f.camera = frameCamera(o, f.scene);
     return f;

@@ -22,7 +22,7 @@ struct ReferenceCliOptions {
 // Scene, camera, lights, size and sampling options (shared by `reference` and `eval`).
 void addReferenceSceneOptions(CLI::App& cmd, ReferenceCliOptions& options);
 CLI::App* addReferenceCommand(CLI::App& app, ReferenceCliOptions& options);
-int runReferenceCommand(const ReferenceCliOptions& options);
+int runReferenceCommand(const ReferenceCliOptions& options, bool dryRun = false);
 
 struct CompareCliOptions {
     std::string a, b;     // test image, reference
@@ -32,7 +32,7 @@ struct CompareCliOptions {
     bool json = false;
 };
 CLI::App* addCompareCommand(CLI::App& app, CompareCliOptions& options);
-int runCompareCommand(const CompareCliOptions& options);
+int runCompareCommand(const CompareCliOptions& options, bool dryRun = false);
 
 struct EvalCliOptions {
     ReferenceCliOptions reference;  // scene, camera, lights, size, spp, bounces, seed
@@ -45,7 +45,7 @@ struct EvalCliOptions {
     std::string command;            // recorded in the JSON
 };
 CLI::App* addEvalCommand(CLI::App& app, EvalCliOptions& options);
-int runEvalCommand(const EvalCliOptions& options, const vk::ContextOptions& vkOptions);
+int runEvalCommand(const EvalCliOptions& options, const vk::ContextOptions& vkOptions, bool dryRun = false);
 
 // Loads the scene and camera the way `render` does (shared by reference and eval).
 PreparedFrame prepareReferenceFrame(const ReferenceCliOptions& options);

@@ -8,6 +8,7 @@
 #include "app/ground_truth_cli.h"
 #include "eval/compare.h"
 #include "io/image_io.h"
+#include "app/option_checks.h"
 
 namespace penumbra {
 namespace {
@@ -27,7 +28,7 @@ void addReferenceSceneOptions(CLI::App& cmd, ReferenceCliOptions& o) {
     cmd.add_option("--camera", o.frame.camera, "Camera override: ex,ey,ez,tx,ty,tz,ux,uy,uz,fovy_deg");
     cmd.add_option("--camera-index", o.frame.cameraIndex, "Which of the scene's cameras to use");
     cmd.add_option("--light", o.frame.lights, "Replace the scene's lights (repeatable): see README");
-    cmd.add_option("--spp", o.settings.spp, "Paths per pixel (default 64)")->check(CLI::Range(1, 1 << 20));
+    cmd.add_option("--spp", o.settings.spp, "Paths per pixel")->check(CLI::Range(1, 1 << 20));
     cmd.add_option("--bounces", o.settings.bounces, "Diffuse bounces, 0..16 (default 1, what RSM and LPV approximate)")
         ->check(CLI::Range(0u, kMaxReferenceBounces));
     cmd.add_option("--seed", o.settings.seed, "Random seed (the image is a function of it)");
@@ -51,26 +52,28 @@ CLI::App* addReferenceCommand(CLI::App& app, ReferenceCliOptions& o) {
     CLI::App* cmd = app.add_subcommand("reference", "Path-trace the ground truth on the CPU (Embree): EXR radiance");
     addReferenceSceneOptions(*cmd, o);
     cmd->add_option("-o,--output", o.output, "Output image: .exr (linear) or .png (tone-mapped)");
-    cmd->add_option("--aov", o.aov, "final (default: direct + indirect), direct, indirect, mask (1 on geometry)");
+    cmd->add_option("--aov", o.aov, "final (direct + indirect), direct, indirect, mask (1 on geometry)");
     cmd->add_option("--exposure", o.exposure, "PNG only: linear multiplier before tone mapping")
-        ->check(CLI::Range(1e-6, 1e6));
+        ->check(finiteRange(1e-6, 1e6));
     return cmd;
 }
 
-int runReferenceCommand(const ReferenceCliOptions& o) {
+int runReferenceCommand(const ReferenceCliOptions& o, bool dryRun) {
     const std::string ext = fileExtension(o.output);
     if (ext != ".exr" && ext != ".png")
         throw std::invalid_argument(fmt::format("-o {}: the output must end in .exr or .png", o.output));
+    checkWritable(o.output, "-o");
     const ReferenceAov aov = parseReferenceAov(o.aov);
     PreparedFrame f = prepareReferenceFrame(o);
+    if (dryRun) return 0;
     const ReferenceImage img = renderReference(f.scene, f.camera, o.settings);
     const ImageF out{img.width, img.height, img.rgba(aov)};
     if (ext == ".exr") writeExr(o.output, out.width, out.height, out.rgba);
     else writePng(o.output, out.width, out.height, toneMap(out, o.exposure));
     if (o.settings.progress)
-        fmt::print("penumbra: reference '{}' ({} triangles, {} lights) {}x{}, {} paths/pixel, {} bounce(s): "
+        fmt::print("penumbra: reference '{}' ({} triangles, {}) {}x{}, {} paths/pixel, {} bounce(s): "
                    "{:.1f} s, {:.1f} M rays/s -> {}\n",
-                   f.scene.name, f.scene.triangleCount(), f.scene.lights.size(), img.width, img.height, img.spp,
+                   f.scene.name, f.scene.triangleCount(), plural(f.scene.lights.size(), "light"), img.width, img.height, img.spp,
                    o.settings.bounces, img.seconds, double(img.rays) / img.seconds * 1e-6, o.output);
     return 0;
 }
@@ -83,20 +86,22 @@ CLI::App* addCompareCommand(CLI::App& app, CompareCliOptions& o) {
     cmd->add_option("--mask", o.mask, "EXR or PNG of the same size: only its non-zero pixels are compared");
     cmd->add_option("-o,--output", o.heatMap, "Heat map of |luminance(A) - luminance(B)| (PNG)");
     cmd->add_option("--heat-max", o.heatMax, "Error at the top of the heat map (default: 99th percentile)")
-        ->check(CLI::Range(0.0, 1e30));
+        ->check(finiteRange(0.0, 1e30));
     cmd->add_flag("--json", o.json, "Print the metrics as JSON");
     return cmd;
 }
 
-int runCompareCommand(const CompareCliOptions& o) {
+int runCompareCommand(const CompareCliOptions& o, bool dryRun) {
     if (!o.heatMap.empty() && fileExtension(o.heatMap) != ".png")
         throw std::invalid_argument(fmt::format("-o {}: the heat map must end in .png", o.heatMap));
+    if (!o.heatMap.empty()) checkWritable(o.heatMap, "-o");
     const ImageF a = readExrChecked(o.a, "A");
     const ImageF b = readExrChecked(o.b, "B");
     if (a.width != b.width || a.height != b.height)
         throw std::invalid_argument(
             fmt::format("A is {}x{}, B is {}x{}: the sizes must match", a.width, a.height, b.width, b.height));
     const std::vector<uint8_t> mask = o.mask.empty() ? std::vector<uint8_t>{} : loadMask(o.mask, a.width, a.height);
+    if (dryRun) return 0;
     const ImageMetrics m = compareImages(a, b, mask);
     double scale = o.heatMax;
     if (!o.heatMap.empty()) writePng(o.heatMap, a.width, a.height, errorHeatMap(a, b, mask, scale));

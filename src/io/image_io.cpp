@@ -7,6 +7,8 @@
 #include <stb_image_write.h>
 #include <tinyexr.h>
 
+#include "io/one_line.h"
+
 namespace penumbra {
 
 std::string fileExtension(const std::string& path) {
@@ -30,7 +32,7 @@ void writeExr(const std::string& path, uint32_t width, uint32_t height, const st
         for (int c = 0; c < 3; ++c) rgb[i * 3 + c] = rgba32f[i * 4 + c];
     const char* err = nullptr;
     if (SaveEXR(rgb.data(), int(width), int(height), 3, 0, path.c_str(), &err) != TINYEXR_SUCCESS) {
-        std::string msg = "cannot write EXR file: " + path + (err ? std::string(" (") + err + ")" : "");
+        std::string msg = "cannot write EXR file: " + path + (err ? " (" + oneLine(err) + ")" : "");
         if (err) FreeEXRErrorMessage(err);
         throw std::runtime_error(msg);
     }
@@ -41,7 +43,7 @@ ImageF readExr(const std::string& path) {
     int w = 0, h = 0;
     const char* err = nullptr;
     if (LoadEXR(&data, &w, &h, path.c_str(), &err) != TINYEXR_SUCCESS) {
-        std::string msg = "cannot read EXR file: " + path + (err ? std::string(" (") + err + ")" : "");
+        std::string msg = "cannot read EXR file: " + path + (err ? " (" + oneLine(err) + ")" : "");
         if (err) FreeEXRErrorMessage(err);
         throw std::runtime_error(msg);
     }

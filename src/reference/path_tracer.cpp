@@ -1,5 +1,7 @@
 #include "reference/path_tracer.h"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -251,12 +253,13 @@ ReferenceImage renderReference(const Scene& scene, const Camera& camera, const R
     std::vector<std::thread> pool;
     for (uint32_t i = 0; i < threadCount; ++i) pool.emplace_back(worker);
     auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
-    while (s.progress && doneTiles.load() < tiles) {
+    const bool bar = s.progress && isatty(STDERR_FILENO);  // \r redraws only on a terminal, not in logs
+    while (bar && doneTiles.load() < tiles) {
         drawProgress(double(doneTiles.load()) / tiles, elapsed());
         std::this_thread::sleep_for(std::chrono::milliseconds(200));
     }
     for (std::thread& t : pool) t.join();
-    if (s.progress) {
+    if (bar) {
         drawProgress(1.0, elapsed());
         fmt::print(stderr, "\n");
     }

@@ -5,8 +5,6 @@
 #include <cmath>
 #include <stdexcept>
 
-#include <stb_image_resize.h>
-
 namespace penumbra::reference {
 namespace {
 
@@ -47,12 +45,37 @@ glm::vec4 sampleTexture(const Texture& t, glm::vec2 uv) {
 
 namespace {
 
-// Resamples `src` to w x h in linear light (sRGB colour, linear alpha in channel 3).
+uint8_t encodeSrgb(float linear) {
+    const float c = std::clamp(linear, 0.0f, 1.0f);
+    const float e = c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+    return uint8_t(e * 255.0f + 0.5f);
+}
+
+// Resamples `src` to w x h as the renderer's vkCmdBlitImage with VK_FILTER_LINEAR does
+// (render/texture_upload.cpp): each target texel centre mapped onto the source, bilinear with
+// clamped edges, in linear light (sRGB colour, linear alpha), so that both see the same texels.
 Texture resample(const Texture& src, uint32_t w, uint32_t h) {
     Texture t{w, h, std::vector<uint8_t>(size_t(w) * h * 4)};
-    if (!stbir_resize_uint8_srgb(src.rgba8.data(), int(src.width), int(src.height), 0, t.rgba8.data(), int(w), int(h),
-                                 0, 4, 3, 0))
-        throw std::runtime_error("cannot resample a texture");
+    const std::array<float, 256>& lut = srgbTable();
+    const float sx = float(src.width) / float(w), sy = float(src.height) / float(h);
+    auto texel = [&](int x, int y, int c) {
+        x = std::clamp(x, 0, int(src.width) - 1), y = std::clamp(y, 0, int(src.height) - 1);
+        const uint8_t v = src.rgba8[(size_t(y) * src.width + size_t(x)) * 4 + size_t(c)];
+        return c == 3 ? v * (1.0f / 255.0f) : lut[v];
+    };
+    for (uint32_t y = 0; y < h; ++y)
+        for (uint32_t x = 0; x < w; ++x) {
+            const float u = (float(x) + 0.5f) * sx - 0.5f, v = (float(y) + 0.5f) * sy - 0.5f;
+            const int x0 = int(std::floor(u)), y0 = int(std::floor(v));
+            const float ax = u - float(x0), ay = v - float(y0);
+            for (int c = 0; c < 4; ++c) {
+                const float top = texel(x0, y0, c) * (1 - ax) + texel(x0 + 1, y0, c) * ax;
+                const float bottom = texel(x0, y0 + 1, c) * (1 - ax) + texel(x0 + 1, y0 + 1, c) * ax;
+                const float value = top * (1 - ay) + bottom * ay;
+                t.rgba8[(size_t(y) * w + x) * 4 + size_t(c)] =
+                    c == 3 ? uint8_t(std::clamp(value, 0.0f, 1.0f) * 255.0f + 0.5f) : encodeSrgb(value);
+            }
+        }
     return t;
 }
 
@@ -66,8 +89,8 @@ MipChain::MipChain(const Texture& original, uint32_t squareSize) : original_(&or
     uint32_t w = base.width, h = base.height;
     while (w > 1 || h > 1) {
         w = std::max(1u, w / 2), h = std::max(1u, h / 2);
-        // Every level from the original, filtered in linear light.
-        smaller_.push_back(resample(original, w, h));
+        // Each level from the one above, as the renderer's blit chain builds them.
+        smaller_.push_back(resample(smaller_.empty() ? level(0) : smaller_.back(), w, h));
     }
 }
 

@@ -33,14 +33,14 @@ public:
     // Vulkan defines it for isotropic filtering: lambda = log2(max(|dUVdx * size|, |dUVdy * size|)).
     glm::vec4 sample(glm::vec2 uv, glm::vec2 dUVdx, glm::vec2 dUVdy) const;
     size_t levels() const { return 1 + smaller_.size(); }
+    const Texture& level(size_t i) const {
+        return i > 0 ? smaller_[i - 1] : resampled_.width > 0 ? resampled_ : *original_;
+    }
 
 private:
     const Texture* original_;
     Texture resampled_;             // level 0 when squareSize > 0 (else the original is)
     std::vector<Texture> smaller_;  // levels 1.. : halved (rounded down, at least 1) per level
-    const Texture& level(size_t i) const {
-        return i > 0 ? smaller_[i - 1] : resampled_.width > 0 ? resampled_ : *original_;
-    }
 };
 
 }  // namespace penumbra::reference

@@ -2,18 +2,9 @@
 
 #include <algorithm>
 
-#include <stb_image_resize.h>
+#include "render/texture_upload.h"
 
 namespace penumbra {
-namespace {
-
-uint32_t mipCount(uint32_t size) {
-    uint32_t n = 1;
-    while (size > 1) size /= 2, ++n;
-    return n;
-}
-
-}  // namespace
 
 SceneGpu::SceneGpu(vk::CommandContext& cmd, const Scene& scene)
     : scene_(scene), ctx_(cmd.allocator().context()) {
@@ -69,36 +60,10 @@ void SceneGpu::declareDrawSet(PassBuilder& pass, BufferHandle views) {
 }
 
 void SceneGpu::uploadTextures(vk::CommandContext& cmd) {
-    // Every texture is resampled (in linear light) to a square layer with a full CPU-built mip chain.
+    // Each texture at its own size is blitted into its square layer and the mips are blitted on the GPU
+    // (render/texture_upload.h); the layer size is the largest texture's side (textureLayerSize).
     const std::vector<Texture>& src = scene_.textures;
-    const uint32_t size = src.empty() ? 1 : textureLayerSize(src);
-    const uint32_t levels = mipCount(size);
-    const uint32_t layers = std::max<uint32_t>(1, uint32_t(src.size()));
-    textures_ = vk::Image(cmd.allocator(), {VK_FORMAT_R8G8B8A8_SRGB, size, size, layers,
-                                            VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
-                                            "material-textures", levels, true});
-    std::vector<uint8_t> data;
-    std::vector<VkBufferImageCopy> regions;
-    for (uint32_t layer = 0; layer < layers; ++layer) {
-        for (uint32_t level = 0, s = size; level < levels; ++level, s = std::max(1u, s / 2)) {
-            const size_t offset = data.size();
-            data.resize(offset + size_t(s) * s * 4, 0xFF);  // no texture: white
-            if (layer < src.size()) {
-                const Texture& t = src[layer];
-                if (t.width == 0 || t.rgba8.size() != size_t(t.width) * t.height * 4)
-                    throw vk::VulkanError("texture " + std::to_string(layer) + " has no or inconsistent texels");
-                if (!stbir_resize_uint8_srgb(t.rgba8.data(), int(t.width), int(t.height), 0, data.data() + offset,
-                                             int(s), int(s), 0, 4, 3, 0))
-                    throw vk::VulkanError("cannot resample texture " + std::to_string(layer));
-            }
-            VkBufferImageCopy r{};
-            r.bufferOffset = offset;
-            r.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, layer, 1};
-            r.imageExtent = {s, s, 1};
-            regions.push_back(r);
-        }
-    }
-    cmd.uploadImage(textures_, data.data(), data.size(), regions);
+    textures_ = uploadTextureArray(cmd, src, src.empty() ? 1 : textureLayerSize(src));
     sampler_ = vk::Sampler(ctx_, {VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT, false, true});
 }
 

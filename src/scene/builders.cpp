@@ -1,5 +1,6 @@
 #include "scene/builders.h"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -36,6 +37,23 @@ void addTriangles(Scene& scene, std::span<const Vertex> vertices, std::span<cons
         }
     }
     scene.draws.push_back(Draw{first, count, material});
+}
+
+void mergeDrawsByMaterial(Scene& scene) {
+    std::vector<Draw> draws = scene.draws;
+    std::stable_sort(draws.begin(), draws.end(), [](const Draw& a, const Draw& b) { return a.material < b.material; });
+    std::vector<uint32_t> indices;
+    indices.reserve(scene.indices.size());
+    std::vector<Draw> merged;
+    for (const Draw& d : draws) {
+        if (merged.empty() || merged.back().material != d.material)
+            merged.push_back(Draw{uint32_t(indices.size()), 0, d.material});
+        indices.insert(indices.end(), scene.indices.begin() + d.firstIndex,
+                       scene.indices.begin() + d.firstIndex + d.indexCount);
+        merged.back().indexCount += d.indexCount;
+    }
+    scene.indices = std::move(indices);
+    scene.draws = std::move(merged);
 }
 
 void addQuad(Scene& scene, const glm::vec3& corner, const glm::vec3& edgeU, const glm::vec3& edgeV,

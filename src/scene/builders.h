@@ -22,6 +22,11 @@ uint32_t addMaterial(Scene& scene, const glm::vec3& rgb);
 void addTriangles(Scene& scene, std::span<const Vertex> vertices, std::span<const uint32_t> indices,
                   uint32_t material);
 
+// Reorders the triangles so that each material's are contiguous, in material order (which also
+// groups the cull modes, a material property): one draw per material. The glTF loader calls it, so
+// a file of 200000 nodes over a few materials costs a few draw calls per pass, not 200000.
+void mergeDrawsByMaterial(Scene& scene);
+
 // Two triangles spanning corner, corner+edgeU, corner+edgeU+edgeV, corner+edgeV, counter-clockwise
 // seen from the side normalize(cross(edgeU, edgeV)) points to. uv (0,0) at corner, (1,1) opposite.
 void addQuad(Scene& scene, const glm::vec3& corner, const glm::vec3& edgeU, const glm::vec3& edgeV,

@@ -35,7 +35,7 @@ size_t componentSize(int componentType) {
 // Validates that `count` elements of `elemSize` bytes, `stride` apart (0 = the view's byteStride or
 // tightly packed), starting at `offset` inside buffer view `viewIndex`, lie inside its buffer.
 Range checkedRange(const tinygltf::Model& m, int viewIndex, size_t offset, size_t count, size_t elemSize,
-                   bool useViewStride, const std::string& what) {
+                   size_t compSize, bool useViewStride, const std::string& what) {
     if (viewIndex < 0 || size_t(viewIndex) >= m.bufferViews.size())
         throw SceneError(fmt::format("{}: bufferView {} does not exist", what, viewIndex));
     const tinygltf::BufferView& view = m.bufferViews[size_t(viewIndex)];
@@ -48,6 +48,10 @@ Range checkedRange(const tinygltf::Model& m, int viewIndex, size_t offset, size_
     const size_t stride = (useViewStride && view.byteStride != 0) ? view.byteStride : elemSize;
     if (stride < elemSize)
         throw SceneError(fmt::format("{}: byteStride {} is smaller than the element size {}", what, stride, elemSize));
+    // glTF 2.0 3.6.2.4: offsets and strides are multiples of the component size.
+    if ((view.byteOffset + offset) % compSize != 0 || stride % compSize != 0)
+        throw SceneError(fmt::format("{}: data at byte {} of the buffer (stride {}) is not aligned to its {}-byte "
+                                     "components", what, view.byteOffset + offset, stride, compSize));
     // Written to avoid overflow: offset + (count-1)*stride + elemSize <= byteLength.
     if (count > 0 && (offset > view.byteLength || elemSize > view.byteLength - offset ||
                       count - 1 > (view.byteLength - offset - elemSize) / stride))
@@ -113,7 +117,7 @@ std::vector<T> gather(const tinygltf::Model& m, const tinygltf::Accessor& a, int
     const size_t elemSize = compSize * size_t(comps);
     std::vector<T> out(a.count * size_t(comps), T{});  // no bufferView means zeros (glTF spec)
     if (a.bufferView >= 0) {
-        const Range r = checkedRange(m, a.bufferView, a.byteOffset, a.count, elemSize, true, what);
+        const Range r = checkedRange(m, a.bufferView, a.byteOffset, a.count, elemSize, compSize, true, what);
         for (size_t i = 0; i < a.count; ++i)
             for (int c = 0; c < comps; ++c) out[i * comps + c] = conv(r.data + i * r.stride + c * compSize);
     }
@@ -124,8 +128,10 @@ std::vector<T> gather(const tinygltf::Model& m, const tinygltf::Accessor& a, int
         throw SceneError(fmt::format("{}: invalid sparse accessor", what));
     const size_t n = size_t(sp.count);
     const size_t idxSize = componentSize(sp.indices.componentType);
-    const Range idx = checkedRange(m, sp.indices.bufferView, size_t(sp.indices.byteOffset), n, idxSize, false, what);
-    const Range val = checkedRange(m, sp.values.bufferView, size_t(sp.values.byteOffset), n, elemSize, false, what);
+    const Range idx =
+        checkedRange(m, sp.indices.bufferView, size_t(sp.indices.byteOffset), n, idxSize, idxSize, false, what);
+    const Range val =
+        checkedRange(m, sp.values.bufferView, size_t(sp.values.byteOffset), n, elemSize, compSize, false, what);
     for (size_t k = 0; k < n; ++k) {
         const uint32_t j = toIndex(idx.data + k * idxSize, sp.indices.componentType);
         if (j >= a.count) throw SceneError(fmt::format("{}: sparse index {} out of range", what, j));
@@ -143,6 +149,26 @@ std::vector<float> readFloats(const tinygltf::Model& model, int index, int compo
                                      tinygltf::GetNumComponentsInType(uint32_t(a.type)), components));
     return gather<float>(model, a, components, what,
                          [&](const uint8_t* p) { return toFloat(p, a.componentType, a.normalized); });
+}
+
+void checkAttributeType(const tinygltf::Model& model, int index, const std::string& attribute, bool quantized,
+                        const std::string& what) {
+    const tinygltf::Accessor& a = accessorAt(model, index, what + " " + attribute);
+    const int t = a.componentType;
+    const bool isFloat = t == TINYGLTF_COMPONENT_TYPE_FLOAT;
+    const bool unsignedNorm = a.normalized && (t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                                               t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT);
+    const bool smallInt = t == TINYGLTF_COMPONENT_TYPE_BYTE || t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE ||
+                          t == TINYGLTF_COMPONENT_TYPE_SHORT || t == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
+    const bool signedNorm = a.normalized && (t == TINYGLTF_COMPONENT_TYPE_BYTE || t == TINYGLTF_COMPONENT_TYPE_SHORT);
+    bool ok = isFloat;
+    if (attribute == "POSITION") ok = isFloat || (quantized && smallInt);
+    else if (attribute == "NORMAL") ok = isFloat || (quantized && signedNorm);
+    else if (attribute.rfind("TEXCOORD_", 0) == 0) ok = isFloat || unsignedNorm || (quantized && smallInt);
+    if (!ok)
+        throw SceneError(fmt::format("{} {}: accessor {} has componentType {}{}, which glTF does not allow for {}{}",
+                                     what, attribute, index, t, a.normalized ? " (normalized)" : "", attribute,
+                                     quantized ? "" : " without KHR_mesh_quantization"));
 }
 
 std::vector<uint32_t> readIndices(const tinygltf::Model& model, int index) {

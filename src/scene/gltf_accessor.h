@@ -16,6 +16,12 @@ namespace penumbra::gltf {
 // (all zeros) are supported.
 std::vector<float> readFloats(const tinygltf::Model& model, int index, int components, const std::string& what);
 
+// The component types glTF 2.0 allows for a vertex attribute (POSITION and NORMAL: FLOAT; TEXCOORD_n:
+// FLOAT or normalized UNSIGNED_BYTE/SHORT; with KHR_mesh_quantization (`quantized`) also the integer
+// forms that extension lists). Throws SceneError naming the attribute and the type.
+void checkAttributeType(const tinygltf::Model& model, int accessor, const std::string& attribute, bool quantized,
+                        const std::string& what);
+
 // Reads a SCALAR accessor of UNSIGNED_BYTE/SHORT/INT as indices.
 std::vector<uint32_t> readIndices(const tinygltf::Model& model, int index);
 

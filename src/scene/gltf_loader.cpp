@@ -9,6 +9,7 @@
 #include <fstream>
 #include <numeric>
 #include <optional>
+#include <unordered_set>
 
 #include <fmt/format.h>
 #include <glm/gtc/constants.hpp>
@@ -17,8 +18,11 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <tiny_gltf.h>
 
+#include "io/one_line.h"
 #include "scene/builders.h"
 #include "scene/gltf_accessor.h"
+#include "scene/gltf_checks.h"
+#include "scene/gltf_images.h"
 #include "scene/scene.h"
 
 namespace penumbra {
@@ -35,47 +39,61 @@ bool isTolerableRequiredExtension(const std::string& name) {
     return std::find(ok.begin(), ok.end(), name) != ok.end();
 }
 
-// tinygltf messages span several lines and may quote raw bytes of a corrupt file; the CLI prints
-// errors as one printable line.
-std::string oneLine(const std::string& text) {
-    std::string out;
-    for (char c : text) {
-        if (c == '\n' || c == '\r') {
-            if (!out.empty() && out.back() != ' ') out += "; ";
-        } else {
-            out += (c >= 0x20 && c < 0x7f) ? c : '?';
-        }
+// tinygltf's file reader for buffers and images, refusing directories (reading one as a buffer
+// gave std::bad_alloc).
+bool readRegularFile(std::vector<unsigned char>* out, std::string* err, const std::string& path, void* user) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) {
+        if (err) *err += "'" + path + "' is a directory, not a file\n";
+        return false;
     }
-    while (!out.empty() && (out.back() == ' ' || out.back() == ';')) out.pop_back();
-    return out.empty() ? "unknown error" : out;
+    return tinygltf::ReadWholeFile(out, err, path, user);
 }
 
-bool hasGlbMagic(const std::string& path) {
+std::vector<uint8_t> readFile(const std::string& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec))
+        throw SceneError(fmt::format("{}: is a directory, not a scene file (.gltf or .glb)", path));
+    if (!std::filesystem::is_regular_file(path, ec)) throw SceneError(fmt::format("scene file not found: {}", path));
+    const uintmax_t size = std::filesystem::file_size(path, ec);
+    if (ec || size >= (uintmax_t(1) << 32))
+        throw SceneError(fmt::format("{}: cannot read it (glTF files are at most 4 GiB)", path));
+    std::vector<uint8_t> bytes(size);
     std::ifstream f(path, std::ios::binary);
-    char magic[4] = {};
-    f.read(magic, 4);
-    return f.gcount() == 4 && std::equal(magic, magic + 4, "glTF");
+    if (!f.read(reinterpret_cast<char*>(bytes.data()), std::streamsize(size)))
+        throw SceneError(fmt::format("{}: cannot read it", path));
+    return bytes;
 }
 
 tinygltf::Model parseFile(const std::string& path) {
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) throw SceneError(fmt::format("scene file not found: {}", path));
-    tinygltf::TinyGLTF loader;
-    tinygltf::Model model;
-    std::string err, warn;
-    bool ok = false;
+    const std::vector<uint8_t> bytes = readFile(path);
     // Sniff the content rather than trusting the extension (GLB bytes load whatever the name), but a
     // .glb without the magic gets a clear message instead of a JSON parse error about binary junk.
-    const bool glb = hasGlbMagic(path);
+    const bool glb = bytes.size() >= 4 && std::equal(bytes.begin(), bytes.begin() + 4, "glTF");
     if (!glb && std::filesystem::path(path).extension() == ".glb")
         throw SceneError(fmt::format("{}: invalid glTF: not a binary glTF file (no 'glTF' magic)", path));
     try {
-        ok = glb ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
-                   : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+        gltf::checkJson(gltf::jsonText(bytes, glb));  // before tinygltf's recursive parser sees it
+    } catch (const SceneError& e) {
+        throw SceneError(fmt::format("{}: {}", path, e.what()));
+    }
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(gltf::keepEncodedImage, nullptr);  // decoded later, in parallel, if used
+    loader.SetFsCallbacks({&tinygltf::FileExists, &tinygltf::ExpandFilePath, &readRegularFile,
+                           &tinygltf::WriteWholeFile, nullptr});
+    tinygltf::Model model;
+    std::string err, warn;
+    bool ok = false;
+    const std::string baseDir = std::filesystem::path(path).parent_path().string();
+    try {
+        ok = glb ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(), unsigned(bytes.size()), baseDir)
+                 : loader.LoadASCIIFromString(&model, &err, &warn, reinterpret_cast<const char*>(bytes.data()),
+                                              unsigned(bytes.size()), baseDir);
     } catch (const std::exception& e) {
         throw SceneError(fmt::format("{}: invalid glTF: {}", path, oneLine(e.what())));
     }
-    // Warnings (e.g. an image file that could not be read) are not fatal; that texture is dropped.
+    // Warnings (e.g. an image file that could not be read) are not fatal; decodeImages names the
+    // textures that are dropped.
     if (!ok) throw SceneError(fmt::format("{}: invalid glTF: {}", path, oneLine(err.empty() ? warn : err)));
     for (const std::string& ext : model.extensionsRequired)
         if (!isTolerableRequiredExtension(ext))
@@ -151,40 +169,17 @@ void generateNormals(std::vector<Vertex>& verts, const std::vector<uint32_t>& tr
     }
 }
 
-std::optional<Texture> toRgba8(const tinygltf::Image& img) {
-    const bool sixteen = img.bits == 16;
-    if (img.width <= 0 || img.height <= 0 || img.component < 1 || img.component > 4 || (img.bits != 8 && !sixteen))
-        return std::nullopt;  // not decoded (missing file, unsupported format): render untextured
-    const size_t pixels = size_t(img.width) * size_t(img.height);
-    const size_t bytesPerChannel = sixteen ? 2 : 1;
-    if (img.image.size() != pixels * size_t(img.component) * bytesPerChannel) return std::nullopt;
-    Texture tex;
-    tex.width = uint32_t(img.width);
-    tex.height = uint32_t(img.height);
-    tex.rgba8.resize(pixels * 4);
-    const int nc = img.component;
-    for (size_t p = 0; p < pixels; ++p) {
-        // High byte of little-endian 16-bit channels.
-        auto channel = [&](int c) { return img.image[(p * nc + size_t(c)) * bytesPerChannel + (sixteen ? 1 : 0)]; };
-        const bool grey = nc <= 2;
-        uint8_t* dst = &tex.rgba8[p * 4];
-        dst[0] = channel(0);
-        dst[1] = grey ? channel(0) : channel(1);
-        dst[2] = grey ? channel(0) : channel(2);
-        dst[3] = nc == 2 ? channel(1) : nc == 4 ? channel(3) : 255;
-    }
-    return tex;
-}
-
 // Walks the node hierarchy once, appending world-space geometry, lights and cameras to the scene.
 class Loader {
 public:
-    Loader(const tinygltf::Model& model, Scene& scene)
-        : m_(model), s_(scene), imageTexture_(model.images.size(), kNotConverted), onPath_(model.nodes.size()) {}
+    Loader(const tinygltf::Model& model, Scene& scene, std::vector<std::optional<Texture>> images)
+        : m_(model), s_(scene), images_(std::move(images)), imageTexture_(model.images.size(), kNotConverted),
+          onPath_(model.nodes.size()),
+          quantized_(std::count(model.extensionsUsed.begin(), model.extensionsUsed.end(), "KHR_mesh_quantization")) {}
 
     void run() {
         loadMaterials();
-        for (int root : rootNodes()) visit(root, glm::mat4(1.0f), 0);
+        for (int root : withoutRepeats(rootNodes(), "the scene")) visitTree(root);
     }
 
 private:
@@ -231,8 +226,8 @@ private:
         if (size_t(source) >= m_.images.size()) throw SceneError(fmt::format("image {} does not exist", source));
         int32_t& slot = imageTexture_[size_t(source)];
         if (slot == kNotConverted) {
-            std::optional<Texture> tex = toRgba8(m_.images[size_t(source)]);
-            slot = -1;
+            std::optional<Texture>& tex = images_[size_t(source)];
+            slot = -1;  // not decoded (decodeImages warned): render untextured
             if (tex) {
                 slot = int32_t(s_.textures.size());
                 s_.textures.push_back(std::move(*tex));
@@ -241,18 +236,40 @@ private:
         return slot;
     }
 
-    void visit(int index, const glm::mat4& parent, int depth) {
-        if (index < 0 || size_t(index) >= m_.nodes.size()) throw SceneError(fmt::format("node {} does not exist", index));
-        if (onPath_[size_t(index)] || depth > kMaxNodeDepth)
-            throw SceneError(fmt::format("node hierarchy is cyclic or too deep at node {}", index));
-        onPath_[size_t(index)] = true;
-        const tinygltf::Node& node = m_.nodes[size_t(index)];
-        const glm::mat4 world = parent * localTransform(node);
-        if (node.mesh >= 0) addMesh(node.mesh, world);
-        if (node.camera >= 0) addCamera(node.camera, world);
-        addLight(node, world);
-        for (int child : node.children) visit(child, world, depth + 1);
-        onPath_[size_t(index)] = false;
+    // Depth-first over the tree under `root` with an explicit stack (a file cannot deepen the call
+    // stack); each node is entered (its content added, its children pushed) and later left (taken off
+    // the root-to-node path that detects cycles).
+    void visitTree(int root) {
+        struct Step {
+            int node;
+            glm::mat4 parent;
+            int depth;
+            bool leave;
+        };
+        std::vector<Step> stack{{root, glm::mat4(1.0f), 0, false}};
+        while (!stack.empty()) {
+            const Step step = stack.back();
+            stack.pop_back();
+            if (step.leave) {
+                onPath_[size_t(step.node)] = false;
+                continue;
+            }
+            const int index = step.node;
+            if (index < 0 || size_t(index) >= m_.nodes.size())
+                throw SceneError(fmt::format("node {} does not exist", index));
+            if (onPath_[size_t(index)] || step.depth > kMaxNodeDepth)
+                throw SceneError(fmt::format("node hierarchy is cyclic or too deep at node {}", index));
+            onPath_[size_t(index)] = true;
+            const tinygltf::Node& node = m_.nodes[size_t(index)];
+            const glm::mat4 world = step.parent * localTransform(node);
+            if (node.mesh >= 0) addMesh(node.mesh, world);
+            if (node.camera >= 0) addCamera(node.camera, world);
+            addLight(node, world);
+            stack.push_back({index, world, step.depth, true});
+            const std::vector<int> children = withoutRepeats(node.children, fmt::format("node {}", index));
+            for (auto child = children.rbegin(); child != children.rend(); ++child)
+                stack.push_back({*child, world, step.depth + 1, false});  // reversed: visited in file order
+        }
     }
 
     void addMesh(int index, const glm::mat4& world) {
@@ -266,6 +283,7 @@ private:
                                          const std::string& what) {
         const auto it = p.attributes.find(name);
         if (it == p.attributes.end()) return {};
+        gltf::checkAttributeType(m_, it->second, name, quantized_, what);
         std::vector<float> data = gltf::readFloats(m_, it->second, comps, what + " " + name);
         if (data.size() != count * size_t(comps))
             throw SceneError(fmt::format("{}: {} count differs from POSITION count", what, name));
@@ -304,6 +322,7 @@ private:
         if (mode == TINYGLTF_MODE_POINTS) return;  // points are not drawn
         const auto posIt = p.attributes.find("POSITION");
         if (posIt == p.attributes.end()) return;  // nothing to draw
+        gltf::checkAttributeType(m_, posIt->second, "POSITION", quantized_, what);
         const std::vector<float> pos = gltf::readFloats(m_, posIt->second, 3, what + " POSITION");
         const size_t n = pos.size() / 3;
         if (p.material < -1 || p.material >= int(m_.materials.size()))
@@ -346,8 +365,20 @@ private:
         else if (gl.type == "spot") l.type = LightType::Spot;
         else if (gl.type == "point") l.type = LightType::Point;
         else return;  // unknown light type: ignore, like an unknown extension
+        l.name = gl.name.empty() ? node.name : gl.name;
         if (gl.color.size() == 3) l.color = glm::vec3(gl.color[0], gl.color[1], gl.color[2]);
-        l.intensity = std::max(0.0f, float(gl.intensity));
+        if (glm::any(glm::lessThan(l.color, glm::vec3(0.0f))) || !std::isfinite(l.color.x + l.color.y + l.color.z)) {
+            warn(fmt::format("light {} '{}': colour ({}, {}, {}) clamped to [0, inf)", index, l.name, l.color.x,
+                             l.color.y, l.color.z));
+            l.color = glm::vec3(std::isfinite(l.color.x) ? std::max(l.color.x, 0.0f) : 0.0f,
+                                std::isfinite(l.color.y) ? std::max(l.color.y, 0.0f) : 0.0f,
+                                std::isfinite(l.color.z) ? std::max(l.color.z, 0.0f) : 0.0f);
+        }
+        l.intensity = float(gl.intensity);
+        if (!(l.intensity >= 0.0f) || !std::isfinite(l.intensity)) {
+            warn(fmt::format("light {} '{}': intensity {} clamped to 0", index, l.name, gl.intensity));
+            l.intensity = 0.0f;
+        }
         l.range = gl.range > 0.0 ? float(gl.range) : 0.0f;
         // Keep cones valid for the shader: 0 <= inner < outer <= pi/2.
         l.outerConeAngle = std::clamp(float(gl.spot.outerConeAngle), 1e-4f, glm::half_pi<float>());
@@ -355,14 +386,18 @@ private:
         // Lights shine down their node's -Z; position is the node origin.
         l.position = glm::vec3(world[3]);
         l.direction = safeNormalize(glm::mat3(world) * glm::vec3(0, 0, -1), glm::vec3(0, -1, 0));
-        l.name = gl.name.empty() ? node.name : gl.name;
         s_.lights.push_back(l);
     }
 
     void addCamera(int index, const glm::mat4& world) {
         if (size_t(index) >= m_.cameras.size()) throw SceneError(fmt::format("camera {} does not exist", index));
         const tinygltf::Camera& gc = m_.cameras[size_t(index)];
-        if (gc.type != "perspective") return;  // orthographic cameras are not supported by Camera
+        if (gc.type != "perspective") {  // Camera is perspective only; --camera-index counts the ones kept
+            warn(fmt::format("camera {}{} is {}: skipped (only perspective cameras are supported; --camera-index "
+                             "counts the perspective ones)",
+                             index, gc.name.empty() ? "" : " '" + gc.name + "'", gc.type));
+            return;
+        }
         Camera cam;
         cam.eye = glm::vec3(world[3]);
         const glm::vec3 forward = safeNormalize(glm::mat3(world) * glm::vec3(0, 0, -1), glm::vec3(0, 0, -1));
@@ -375,11 +410,44 @@ private:
         s_.cameras.push_back(cam);
     }
 
+    // glTF lists each node once (scene.nodes and node.children are uniqueItems): a repeat would draw the
+    // same triangles again on top of themselves (a file listing one node 200000 times rendered for
+    // minutes), so repeats are skipped with one warning.
+    std::vector<int> withoutRepeats(const std::vector<int>& nodes, const std::string& where) {
+        std::vector<int> out;
+        std::unordered_set<int> seen;
+        for (int n : nodes)
+            if (seen.insert(n).second) out.push_back(n);
+        if (out.size() < nodes.size())
+            warn(fmt::format("{} lists a node more than once: {} repeat(s) skipped (glTF lists each node once)", where,
+                             nodes.size() - out.size()));
+        return out;
+    }
+
+    // One line per dropped or changed thing, once even when many nodes refer to it.
+    void warn(const std::string& line) {
+        if (std::find(s_.warnings.begin(), s_.warnings.end(), line) == s_.warnings.end()) s_.warnings.push_back(line);
+    }
+
     const tinygltf::Model& m_;
     Scene& s_;
-    std::vector<int32_t> imageTexture_;  // glTF image -> Scene::textures index
-    std::vector<bool> onPath_;           // nodes on the current root-to-node path (cycle detection)
+    std::vector<std::optional<Texture>> images_;  // decoded glTF images (those materials use)
+    std::vector<int32_t> imageTexture_;           // glTF image -> Scene::textures index
+    std::vector<bool> onPath_;                    // nodes on the current root-to-node path (cycle detection)
+    bool quantized_;                              // KHR_mesh_quantization: integer positions, normals, uvs
 };
+
+// The glTF images that materials use as base colour: the only ones decoded.
+std::vector<bool> usedImages(const tinygltf::Model& m) {
+    std::vector<bool> used(m.images.size());
+    for (const tinygltf::Material& mat : m.materials) {
+        const int t = mat.pbrMetallicRoughness.baseColorTexture.index;
+        if (t < 0 || size_t(t) >= m.textures.size()) continue;
+        const int source = m.textures[size_t(t)].source;
+        if (source >= 0 && size_t(source) < used.size()) used[size_t(source)] = true;
+    }
+    return used;
+}
 
 // glTF cameras have no target; put it at the distance of the scene centre so orbiting feels natural.
 void placeCameraTargets(Scene& scene) {
@@ -398,12 +466,13 @@ Scene loadGltf(const std::string& path) {
     Scene scene;
     scene.name = std::filesystem::path(path).stem().string();
     try {
-        Loader(model, scene).run();
+        Loader(model, scene, gltf::decodeImages(model, usedImages(model), scene.warnings)).run();
     } catch (const SceneError& e) {
         throw SceneError(fmt::format("{}: {}", path, e.what()));
     }
     if (scene.indices.empty() && scene.strands.empty())
         throw SceneError(fmt::format("{}: no triangles or lines in the default scene", path));
+    mergeDrawsByMaterial(scene);
     scene.computeBounds();
     placeCameraTargets(scene);
     return scene;

@@ -137,7 +137,7 @@ std::optional<glm::vec3> pushOut(glm::vec3& p, const glm::vec3& c, float shell) 
 // and hangs down with a slight wave.
 std::vector<glm::vec3> growStrand(const glm::vec3& c, float radius, const glm::vec3& d, std::mt19937& rng) {
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
-    constexpr int kSegments = 24;
+    constexpr int kSegments = int(BuiltinOptions::kHairPointsPerStrand) - 1;
     const float length = 0.22f + 0.12f * u(rng);
     const float shell = radius * (1.04f + 0.22f * u(rng) * u(rng));  // denser near the scalp
     const float step = length / kSegments;

@@ -77,6 +77,8 @@ Scene loadScene(const std::string& pathOrName, const BuiltinOptions& options) {
         scene = loadGltf(pathOrName);
     } else if (!pathOrName.empty() && !looksLikePath(pathOrName)) {
         scene = makeBuiltinScene(pathOrName, options);
+    } else if (std::filesystem::is_directory(pathOrName, ec)) {
+        throw SceneError(fmt::format("{}: is a directory, not a scene file (.gltf or .glb)", pathOrName));
     } else {
         throw SceneError(fmt::format("scene file not found: {}", pathOrName));
     }

@@ -104,6 +104,9 @@ struct Scene {
     Bounds bounds;                    // world-space bounds of all vertices and strand points
     std::vector<glm::vec3> strandPoints;  // hair: the points of every strand, strand after strand
     std::vector<Strand> strands;
+    // One line per thing the loader dropped or changed (a missing texture, an orthographic camera, a
+    // clamped value); the CLI prints each as a warning.
+    std::vector<std::string> warnings;
 
     void computeBounds();
     size_t triangleCount() const { return indices.size() / 3; }
@@ -122,6 +125,7 @@ Scene loadGltf(const std::string& path);
 // Parameters of the built-in scenes (CLI: --strands).
 struct BuiltinOptions {
     uint32_t hairStrands = 25000;  // strands grown on the `hair` scene's head
+    static constexpr uint32_t kHairPointsPerStrand = 25;  // points of each grown strand
 };
 
 // Built-in procedural scenes: "cornell" (the default), "plane" (unit test scene), "hair" (a head

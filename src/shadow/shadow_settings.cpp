@@ -27,10 +27,13 @@ void validate(const ShadowSettings& s) {
         if (!ok) throw std::invalid_argument(what);
     };
     check(s.resolution >= 16 && s.resolution <= 16384, fmt::format("shadow resolution {} is out of range (16..16384)", s.resolution));
+    check(s.depthBiasConstant >= 0.0f && s.depthBiasConstant <= 1e6f, "constant depth bias must be in [0, 1e6]");
+    check(s.depthBiasSlope >= 0.0f && s.depthBiasSlope <= 100.0f, "slope depth bias must be in [0, 100]");
+    check(s.normalOffset >= 0.0f && s.normalOffset <= 100.0f, "normal offset must be in [0, 100] texels");
     check(s.cascades.count >= 1 && s.cascades.count <= 8, fmt::format("cascade count {} is out of range (1..8)", s.cascades.count));
     check(s.cascades.lambda >= 0.0f && s.cascades.lambda <= 1.0f, "cascade lambda must be in [0, 1]");
     check(s.cascades.blend >= 0.0f && s.cascades.blend <= 0.5f, "cascade blend band must be in [0, 0.5]");
-    check(s.cascades.distance >= 0.0f, "cascade distance must not be negative");
+    check(s.cascades.distance >= 0.0f && s.cascades.distance <= 1e9f, "cascade distance must not be negative");
     check(s.blurRadius <= 32, fmt::format("moment blur radius {} is out of range (0..32)", s.blurRadius));
     check(s.bleedReduction >= 0.0f && s.bleedReduction < 1.0f, "light-bleeding reduction must be in [0, 1)");
     check(s.pcfRadius >= 0.0f && s.pcfRadius <= 64.0f, "PCF radius must be in [0, 64] texels");

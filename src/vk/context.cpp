@@ -72,6 +72,25 @@ std::vector<VkPhysicalDevice> physicalDevices(VkInstance instance) {
     return devices;
 }
 
+DeviceLimits deviceLimits(VkPhysicalDevice physical) {
+    VkPhysicalDeviceMaintenance3Properties m3{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES};
+    VkPhysicalDeviceProperties2 p{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &m3};
+    vkGetPhysicalDeviceProperties2(physical, &p);
+    VkPhysicalDeviceMemoryProperties mem;
+    vkGetPhysicalDeviceMemoryProperties(physical, &mem);
+    DeviceLimits d;
+    for (uint32_t i = 0; i < mem.memoryHeapCount; ++i)
+        if (mem.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT)
+            d.deviceMemory = std::max<uint64_t>(d.deviceMemory, mem.memoryHeaps[i].size);
+    const VkPhysicalDeviceLimits& l = p.properties.limits;
+    d.storageBufferRange = l.maxStorageBufferRange;
+    d.allocationSize = m3.maxMemoryAllocationSize;
+    d.imageDimension2D = l.maxImageDimension2D;
+    d.imageArrayLayers = l.maxImageArrayLayers;
+    for (int i = 0; i < 3; ++i) d.workGroupCount[i] = l.maxComputeWorkGroupCount[i];
+    return d;
+}
+
 DeviceInfo describe(VkPhysicalDevice device, uint32_t index) {
     VkPhysicalDeviceDriverProperties driver{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES};
     VkPhysicalDeviceProperties2 props{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &driver};
@@ -80,6 +99,7 @@ DeviceInfo describe(VkPhysicalDevice device, uint32_t index) {
                     fmt::format("{} {}", driver.driverName, driver.driverInfo), props.properties.apiVersion, {}};
     for (const FeatureCheck& f : checkRequiredFeatures(device))
         if (!f.present) info.missing.push_back(f.name);
+    info.limits = deviceLimits(device);
     return info;
 }
 
@@ -313,5 +333,7 @@ void Context::createDevice() {
 }
 
 void Context::waitIdle() const { VK_CHECK(vkDeviceWaitIdle(device_)); }
+
+DeviceLimits Context::limits() const { return deviceLimits(physical_); }
 
 }  // namespace penumbra::vk

@@ -30,6 +30,16 @@ struct ContextOptions {
     std::function<bool(VkInstance, VkPhysicalDevice, uint32_t queueFamily)> presentSupport;
 };
 
+// The limits that resource sizes are checked against before anything is allocated.
+struct DeviceLimits {
+    uint64_t storageBufferRange = 0;  // maxStorageBufferRange
+    uint64_t allocationSize = 0;      // maxMemoryAllocationSize (Maintenance3)
+    uint64_t deviceMemory = 0;        // the largest device-local heap
+    uint32_t imageDimension2D = 0;    // maxImageDimension2D
+    uint32_t imageArrayLayers = 0;    // maxImageArrayLayers
+    uint32_t workGroupCount[3] = {};  // maxComputeWorkGroupCount
+};
+
 struct DeviceInfo {
     uint32_t index;
     std::string name;
@@ -37,6 +47,7 @@ struct DeviceInfo {
     std::string driver;        // driver name and info
     uint32_t apiVersion;
     std::vector<std::string> missing;  // required features this device lacks (empty = usable)
+    DeviceLimits limits;
 };
 
 // One required capability and whether a device has it; the CLI's `info` prints these.
@@ -63,6 +74,7 @@ public:
     const VkPhysicalDeviceProperties& properties() const { return properties_; }
     const DeviceInfo& info() const { return info_; }
     float timestampPeriodNs() const { return properties_.limits.timestampPeriod; }
+    DeviceLimits limits() const;
 
     // Validation messages (warnings and errors) seen so far; tests fail when this is non-zero.
     uint32_t validationMessages() const { return validationMessages_.load(); }

@@ -1,4 +1,5 @@
-// GPU timestamp queries, two per timed scope; results in milliseconds.
+// GPU timestamp queries, two per timed scope; results in milliseconds. The query pools grow as a frame
+// opens more scopes (e.g. one per LPV propagation step), so there is no limit on the pass count.
 #pragma once
 #include <string>
 #include <vector>
@@ -14,7 +15,7 @@ struct ScopeTiming {
 
 class GpuTimer {
 public:
-    explicit GpuTimer(Context& ctx, uint32_t maxScopes = 128);
+    explicit GpuTimer(Context& ctx, uint32_t scopesPerPool = 128);
     ~GpuTimer();
     GpuTimer(const GpuTimer&) = delete;
     GpuTimer& operator=(const GpuTimer&) = delete;
@@ -25,9 +26,10 @@ public:
     std::vector<ScopeTiming> results();  // after the frame's submission completed
 
 private:
+    void addPool();
     Context& ctx_;
-    VkQueryPool pool_ = VK_NULL_HANDLE;
-    uint32_t max_;
+    std::vector<VkQueryPool> pools_;  // scope i: pool i / perPool_, queries 2 (i % perPool_) and +1
+    uint32_t perPool_;
     std::vector<std::string> names_;
 };
 

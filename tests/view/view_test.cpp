@@ -95,7 +95,7 @@ TEST(ViewScript, EveryScreenshotEqualsTheHeadlessRender) {
         {{{"gi", "rsm"}, {"rsm-res", "128"}, {"rsm-samples", "64"}}},
         {{{"aov", "indirect"}, {"rsm-mode", "full"}, {"rsm-res", "64"}}},
         {{{"gi", "lpv"}, {"lpv-vpl-res", "64"}, {"lpv-rsm-res", "256"}, {"lpv-res", "16"}}},
-        {{{"aov", "lpv-slice"}, {"lpv-slice", "8"}}},
+        {{{"lpv-slice", "8"}, {"aov", "lpv-slice"}}},
         {{{"aov", "gv-slice"}, {"lpv-slice-axis", "2"}}},
         {{{"aov", "normal"}, {"width", "80"}, {"height", "48"}}},
         {{{"aov", "depth"}, {"gi", "none"}}},

@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# Builds penumbra and its test suite with AddressSanitizer + UndefinedBehaviorSanitizer in their own
+# build directory and runs the whole suite (README "Tests"). Any report fails a test: the GPU and
+# loader tests abort in-process, the CLI tests see the child's report on stderr and its exit status.
+#   scripts/sanitize.sh [ctest arguments, e.g. -R Gltf]
+# Environment: BUILD (default build-asan), JOBS (default nproc).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build=${BUILD:-build-asan}
+jobs=${JOBS:-$(nproc)}
+flags="-fsanitize=address,undefined -fno-omit-frame-pointer -fno-sanitize-recover=undefined"
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS="$flags" -DCMAKE_C_FLAGS="$flags" \
+  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" >/dev/null
+cmake --build "$build" -j"$jobs"
+supp="$PWD/scripts/sanitize"
+# lavapipe, LLVM, the Vulkan loader and the validation layer keep allocations for the process's
+# lifetime (lsan.supp); ubsan.supp names the one third-party report with its upstream bug.
+export ASAN_OPTIONS="halt_on_error=1:detect_leaks=1:strict_string_checks=1:check_initialization_order=1"
+export LSAN_OPTIONS="suppressions=$supp/lsan.supp:print_suppressions=0"
+export UBSAN_OPTIONS="suppressions=$supp/ubsan.supp:print_stacktrace=1:halt_on_error=1"
+ctest --test-dir "$build" --output-on-failure -j"$jobs" --timeout 600 "$@"

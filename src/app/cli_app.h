@@ -1,0 +1,53 @@
+// The whole command line as one object: every subcommand and option registered on one CLI11 App
+// (main.cpp parses and runs it; the option fuzzer in tests/option_fuzz_test.cpp walks its options).
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "app/bench.h"
+#include "app/frame_options.h"
+#include "app/ground_truth_cli.h"
+#include "vk/context.h"
+
+namespace penumbra {
+
+struct RenderCliOptions {
+    FrameOptions frame;
+    std::string output = "penumbra.png";
+    bool printPasses = false;
+    int frames = 1;
+    bool quiet = false;
+};
+
+struct Cli {
+    CLI::App app{"penumbra: real-time shadows and diffuse global illumination (Vulkan 1.3)"};
+    vk::ContextOptions vk;
+    // Hidden `--dry-run` (also PENUMBRA_DRY_RUN=1): check every option and output path and load the
+    // scene, then stop before any GPU or path-tracing work (exit 0). Tests and scripts use it.
+    bool dryRun = false;
+    RenderCliOptions render;
+    RenderSettings renderSettings;
+    BenchOptions bench;
+    RenderSettings benchSettings;
+    ReferenceCliOptions reference;
+    CompareCliOptions compare;
+    EvalCliOptions eval;
+    CLI::App *renderCmd = nullptr, *benchCmd = nullptr, *infoCmd = nullptr, *referenceCmd = nullptr,
+             *compareCmd = nullptr, *evalCmd = nullptr;
+
+    // Registers every subcommand and option; `commandLine` is recorded in bench and eval JSON.
+    explicit Cli(const std::string& commandLine = "");
+    Cli(const Cli&) = delete;
+    Cli& operator=(const Cli&) = delete;
+
+    // "unknown command 'x' (one of: render, ...)" when the first word that is neither an option nor the
+    // value of a global option is not a subcommand; "" when the line names one (or asks for help).
+    std::string unknownCommand(const std::vector<std::string>& args) const;
+    // Runs the parsed subcommand; throws std::exception with one line for bad input.
+    int run();
+};
+
+}  // namespace penumbra

@@ -1,0 +1,32 @@
+// Resource sizes against the device, before anything is allocated: every large image and buffer the
+// frame will create is estimated from the settings and the scene and checked against the device's
+// limits (largest 2D image, array layers, storage-buffer range, allocation size, dispatch size) and
+// its memory. A size that does not fit is one error line naming the option, the limit and the
+// largest value of that option that fits, instead of a crash, a raw VK_ERROR_OUT_OF_DEVICE_MEMORY or
+// silently wrong dispatches.
+#pragma once
+#include <cstdint>
+
+#include "app/frame_options.h"
+#include "render/renderer.h"
+#include "vk/context.h"
+
+namespace penumbra {
+
+// Throws std::invalid_argument. The memory check allows 90% of the largest device-local heap.
+void checkDeviceBudget(const vk::DeviceLimits& limits, const RenderSettings& settings, const Scene& scene);
+inline void checkDeviceBudget(const vk::Context& ctx, const RenderSettings& settings, const Scene& scene) {
+    checkDeviceBudget(ctx.limits(), settings, scene);
+}
+
+// The built-in hair scene's `--strands`, checked before the strands are grown: their ribbon points
+// must fit one storage buffer and the device's memory.
+void checkStrandBudget(const vk::DeviceLimits& limits, uint32_t strands);
+
+// The built-in scene's size options (`--strands` of `hair`) before the scene is built.
+void checkBuiltinSceneBudget(const vk::DeviceLimits& limits, const FrameOptions& frame);
+
+// GPU bytes of one strand of the built-in hair scene (ribbon points and the strand record).
+uint64_t hairBytesPerStrand();
+
+}  // namespace penumbra

@@ -1,0 +1,53 @@
+// Checks attached to the CLI's options when they are registered, so that every way of setting an
+// option (the command line, the viewer's future `set OPTION VALUE`, which reuses the same CLI11
+// definitions) is held to the same rules, and the consistency checks over the settings structs.
+#pragma once
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+namespace penumbra {
+
+// A number in [min, max] that is finite: CLI11's Range lets NaN through (every comparison with NaN
+// is false) and takes "inf" as a float, which renders black images or vanished shadows.
+CLI::Validator finiteRange(double min, double max);
+
+// Adds a finite-number check to every numeric option of `app` and its subcommands (CLI11 type names
+// FLOAT, INT, UINT), so that an option registered without a range still refuses NaN, infinity and an
+// empty value (which CLI11 takes as "keep the default"). Call it after every option has been added.
+void requireFiniteNumbers(CLI::App& app);
+
+// An option whose value is one of `choices` (name -> value): the help lists the names ("none|rsm|lpv")
+// and the default's name, an unknown name is one error line that lists them.
+template <class T>
+CLI::Option* addChoice(CLI::App& cmd, const std::string& name, T& value,
+                       const std::vector<std::pair<std::string, T>>& choices, const std::string& description) {
+    std::string names, current;
+    for (const auto& [n, v] : choices) {
+        names += (names.empty() ? "" : "|") + n;
+        if (v == value) current = n;
+    }
+    CLI::Option* opt = cmd.add_option_function<std::string>(
+        name,
+        [&value, choices, name, names](const std::string& text) {
+            for (const auto& [n, v] : choices)
+                if (n == text) return void(value = v);
+            throw CLI::ValidationError(name, "'" + text + "' is not one of " + names);
+        },
+        description);
+    opt->type_name(names);
+    if (!current.empty()) opt->default_str(current);
+    return opt;
+}
+
+// Throws std::invalid_argument naming `option` unless `path` can be created or overwritten as a file
+// (`directory` false) or used as a directory (true: an existing writable directory, or one that can
+// be created under the nearest existing ancestor). Nothing is created.
+void checkWritable(const std::string& path, const std::string& option, bool directory = false);
+
+// "1 light", "3 lights".
+std::string plural(size_t count, const std::string& noun);
+
+}  // namespace penumbra

@@ -1,0 +1,70 @@
+#include "scene/gltf_images.h"
+
+#include <algorithm>
+#include <atomic>
+#include <thread>
+
+#include <fmt/format.h>
+#include <stb_image.h>
+
+namespace penumbra::gltf {
+namespace {
+
+std::string describeImage(const tinygltf::Image& img, size_t index) {
+    if (!img.uri.empty() && img.uri.rfind("data:", 0) != 0) return fmt::format("image {} ('{}')", index, img.uri);
+    return fmt::format("image {}{}", index, img.name.empty() ? "" : " '" + img.name + "'");
+}
+
+// RGBA8 texels of one encoded image, or an error text.
+std::optional<Texture> decode(const tinygltf::Image& img, std::string& error) {
+    if (!img.as_is || img.image.empty()) {
+        error = "its file is missing or unreadable";
+        return std::nullopt;
+    }
+    int w = 0, h = 0, channels = 0;
+    stbi_uc* texels = stbi_load_from_memory(img.image.data(), int(img.image.size()), &w, &h, &channels, 4);
+    if (!texels) {
+        error = fmt::format("it cannot be decoded ({})", stbi_failure_reason());
+        return std::nullopt;
+    }
+    Texture t;
+    t.width = uint32_t(w);
+    t.height = uint32_t(h);
+    t.rgba8.assign(texels, texels + size_t(w) * size_t(h) * 4);
+    stbi_image_free(texels);
+    return t;
+}
+
+}  // namespace
+
+bool keepEncodedImage(tinygltf::Image* image, int, std::string*, std::string*, int, int, const unsigned char* bytes,
+                      int size, void*) {
+    image->image.assign(bytes, bytes + std::max(size, 0));
+    image->as_is = true;
+    return true;
+}
+
+std::vector<std::optional<Texture>> decodeImages(const tinygltf::Model& model, const std::vector<bool>& used,
+                                                 std::vector<std::string>& warnings) {
+    const size_t n = model.images.size();
+    std::vector<std::optional<Texture>> out(n);
+    std::vector<std::string> errors(n);
+    std::atomic<size_t> next{0};
+    auto worker = [&] {
+        for (size_t i = next++; i < n; i = next++)
+            if (i < used.size() && used[i]) out[i] = decode(model.images[i], errors[i]);
+    };
+    const size_t wanted = size_t(std::count(used.begin(), used.end(), true));
+    const size_t threads = std::min<size_t>(std::max(1u, std::thread::hardware_concurrency()), wanted);
+    std::vector<std::thread> pool;
+    for (size_t t = 1; t < threads; ++t) pool.emplace_back(worker);
+    worker();
+    for (std::thread& t : pool) t.join();
+    for (size_t i = 0; i < n; ++i)
+        if (!errors[i].empty())
+            warnings.push_back(fmt::format("{} is dropped: {}; its materials render untextured",
+                                           describeImage(model.images[i], i), errors[i]));
+    return out;
+}
+
+}  // namespace penumbra::gltf
