@@ -60,7 +60,9 @@ TEST_F(TextureUpload, Large4096TextureLoadsInUnderTwoSecondsWithTheReferencesTex
     const double cpu = cpuSeconds() - cpuStart;
     std::printf("4096^2 texture: decode + upload + GPU mips %.2f s wall, %.2f s CPU\n", wall, cpu);
     ASSERT_EQ(scene.textures.size(), 1u);
+#if !defined(__SANITIZE_ADDRESS__)  // the target is for the real build, not the instrumented one
     EXPECT_LT(cpu, 2.0);  // CPU time: a busy machine must not decide
+#endif
 
     // The layer (capped at 2048) holds the reference's texels: the same linear-light blit.
     const uint32_t layer = textureLayerSize(scene.textures);
