@@ -15,11 +15,11 @@ cmake --build "$build" -j"$jobs"
 supp="$PWD/scripts/sanitize"
 # lavapipe, LLVM, the Vulkan loader and the validation layer keep allocations for the process's
 # lifetime (lsan.supp). The loader dlclose()s the driver and the layer before LeakSanitizer runs, which
-# would leave their allocations in "<unknown module>" where no suppression can name them: preloading
-# both (after the ASan runtime, which must come first) keeps them mapped. Child processes (the CLI
-# tests) inherit all of it.
-lib=/usr/lib/x86_64-linux-gnu
-export LD_PRELOAD="$(gcc -print-file-name=libasan.so):$lib/libvulkan_lvp.so:$lib/libVkLayer_khronos_validation.so"
+# would leave their allocations in "<unknown module>" where no suppression can name them:
+# keep_loaded.c, preloaded after the ASan runtime (which must come first), keeps them mapped. Child
+# processes (the CLI tests) inherit all of it.
+cc -shared -fPIC -O1 -o "$build/keep_loaded.so" scripts/sanitize/keep_loaded.c -ldl
+export LD_PRELOAD="$(gcc -print-file-name=libasan.so):$PWD/$build/keep_loaded.so"
 export ASAN_OPTIONS="halt_on_error=1:detect_leaks=1:strict_string_checks=1:check_initialization_order=1"
 export LSAN_OPTIONS="suppressions=$supp/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="suppressions=$supp/ubsan.supp:print_stacktrace=1:halt_on_error=1"
