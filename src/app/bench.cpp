@@ -127,11 +127,9 @@ static BenchRun runFrames(Renderer& renderer, const FrameInputs& inputs, const B
 int runBench(const BenchOptions& o, const vk::ContextOptions& vkOptions, RenderSettings settings, bool dryRun) {
     if (!o.json.empty()) checkWritable(o.json, "--json");
     if (dryRun) return prepareFrame(o.frame, settings), 0;
-    checkFrameSettings(o.frame, settings);
-    vk::Context ctx(vkOptions);
-    checkBuiltinSceneBudget(ctx.limits(), o.frame);
-    PreparedFrame f = prepareFrame(o.frame, settings);
-    checkDeviceBudget(ctx, settings, f.scene);
+    DeviceFrame device(o.frame, settings, vkOptions);
+    vk::Context& ctx = device.ctx;
+    const PreparedFrame& f = device.frame;
     const double copyGbps = copyBandwidth(ctx);
     GpuScene scene(ctx, f.scene);
     Renderer renderer(ctx, scene, settings, uint32_t(o.framesInFlight));
@@ -199,8 +197,7 @@ int runBench(const BenchOptions& o, const vk::ContextOptions& vkOptions, RenderS
                            {"passes", passes}};
         std::ofstream(o.json) << out.dump(2) << "\n";
     }
-    if (ctx.validationMessages() > 0)
-        throw std::runtime_error(fmt::format("{} validation message(s) reported", ctx.validationMessages()));
+    device.checkValidation();
     return 0;
 }
 

@@ -60,12 +60,9 @@ int runRender(const RenderCliOptions& o, const vk::ContextOptions& vkOptions, Re
         throw std::invalid_argument(fmt::format("-o {}: the output must end in .png or .exr", o.output));
     checkWritable(o.output, "-o");
     if (dryRun) return prepareFrame(o.frame, settings), 0;
-    checkFrameSettings(o.frame, settings);
-    vk::Context ctx(vkOptions);
-    checkBuiltinSceneBudget(ctx.limits(), o.frame);
-    PreparedFrame f = prepareFrame(o.frame, settings);
-    checkDeviceBudget(ctx, settings, f.scene);
-    Renderer renderer(ctx, f.scene, settings);
+    DeviceFrame device(o.frame, settings, vkOptions);
+    const PreparedFrame& f = device.frame;
+    Renderer renderer(device.ctx, f.scene, settings);
     for (const std::string& w : renderer.warnings()) fmt::print(stderr, "penumbra: warning: {}\n", w);
     std::vector<std::vector<vk::ScopeTiming>> timings;
     for (int frame = 0; frame < o.frames; ++frame) {
@@ -74,10 +71,9 @@ int runRender(const RenderCliOptions& o, const vk::ContextOptions& vkOptions, Re
     }
     if (ext == ".png") writePng(o.output, settings.width, settings.height, renderer.readLdr());
     else writeExr(o.output, settings.width, settings.height, renderer.readHdr());
-    if (!o.quiet) printSummary(o, settings, f, ctx, renderer, timings);
+    if (!o.quiet) printSummary(o, settings, f, device.ctx, renderer, timings);
     else reportDsm(renderer, true);  // the overflow warning only
-    if (ctx.validationMessages() > 0)
-        throw std::runtime_error(fmt::format("{} validation message(s) reported", ctx.validationMessages()));
+    device.checkValidation();
     return 0;
 }
 

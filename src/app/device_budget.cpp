@@ -210,4 +210,27 @@ void checkStrandBudget(const vk::DeviceLimits& limits, uint32_t strands) {
                               [=](uint64_t n) { return n * pointBytes; }, true}});
 }
 
+namespace {
+
+// The settings' own rules come before the device is opened.
+const vk::ContextOptions& afterSettingsCheck(const FrameOptions& o, RenderSettings& settings,
+                                             const vk::ContextOptions& vkOptions) {
+    checkFrameSettings(o, settings);
+    return vkOptions;
+}
+
+}  // namespace
+
+DeviceFrame::DeviceFrame(const FrameOptions& o, RenderSettings& settings, const vk::ContextOptions& vkOptions)
+    : ctx(afterSettingsCheck(o, settings, vkOptions)) {
+    checkBuiltinSceneBudget(ctx.limits(), o);
+    frame = prepareFrame(o, settings);
+    checkDeviceBudget(ctx, settings, frame.scene);
+}
+
+void DeviceFrame::checkValidation() const {
+    if (ctx.validationMessages() > 0)
+        throw std::runtime_error(fmt::format("{} validation message(s) reported", ctx.validationMessages()));
+}
+
 }  // namespace penumbra

@@ -29,4 +29,14 @@ void checkBuiltinSceneBudget(const vk::DeviceLimits& limits, const FrameOptions&
 // GPU bytes of one strand of the built-in hair scene (ribbon points and the strand record).
 uint64_t hairBytesPerStrand();
 
+// What `render` and `bench` do before their work, in this order: the settings' combinations, the
+// device, the built-in scene's budget (before it is grown), the scene, every resource against the device.
+struct DeviceFrame {
+    vk::Context ctx;
+    PreparedFrame frame;
+    DeviceFrame(const FrameOptions& o, RenderSettings& settings, const vk::ContextOptions& vkOptions);
+    // Throws when the validation layer reported anything (`--validate`).
+    void checkValidation() const;
+};
+
 }  // namespace penumbra

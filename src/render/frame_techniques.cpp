@@ -84,11 +84,9 @@ std::vector<HairShadowLayer> ShadowTechnique::hairLayers(const std::vector<Light
 }
 
 void ShadowTechnique::addPasses(const FrameContext& f) {
-    if (hair_) {
-        std::vector<HairShadowLayer> layers = hairLayers(f.lights);
-        pass_.setExtraCasters([this, layers](FrameGraph& g) { hair_->addTo(g, layers); });
-    }
-    pass_.addTo(f.graph, 1);
+    std::function<void(FrameGraph&)> hairCasters;
+    if (hair_) hairCasters = [&](FrameGraph& g) { hair_->addTo(g, hairLayers(f.lights)); };
+    pass_.addTo(f.graph, 1, hairCasters);
     pass_.addFilterTo(f.graph);
 }
 

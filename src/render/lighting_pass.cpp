@@ -2,7 +2,7 @@
 
 namespace penumbra {
 
-LightingPass::LightingPass(vk::Allocator& alloc, uint32_t width, uint32_t height) : alloc_(alloc) {
+LightingPass::LightingPass(vk::Allocator& alloc, uint32_t width, uint32_t height) {
     vk::Context& ctx = alloc.context();
     hdr = vk::Image(alloc, {VK_FORMAT_R32G32B32A32_SFLOAT, width, height, 1,
                             VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, "hdr"});
@@ -72,7 +72,7 @@ void DebugViewPass::addTo(FrameGraph& graph, Aov aov, uint32_t layer) {
         });
 }
 
-TonemapPass::TonemapPass(vk::Allocator& alloc, uint32_t width, uint32_t height) : alloc_(alloc) {
+TonemapPass::TonemapPass(vk::Allocator& alloc, uint32_t width, uint32_t height) {
     vk::Context& ctx = alloc.context();
     ldr = vk::Image(alloc, {VK_FORMAT_R8G8B8A8_UNORM, width, height, 1,
                             VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, "ldr"});

@@ -20,7 +20,6 @@ public:
     vk::Image hdr;  // RGBA32F radiance (or AOV values)
 
 private:
-    vk::Allocator& alloc_;
     vk::DescriptorLayout layout_;
     vk::Pipeline pipeline_;
     vk::Sampler pointSampler_;
@@ -48,7 +47,6 @@ public:
     vk::Image ldr;  // RGBA8, sRGB-encoded values in a UNORM image (storage images cannot be sRGB)
 
 private:
-    vk::Allocator& alloc_;
     vk::DescriptorLayout layout_;
     vk::Pipeline pipeline_;
 };

@@ -119,7 +119,7 @@ void Renderer::build(uint32_t parts) {
             [this](uint32_t light) { return dsm_ && dsm_->maps().covers(light); }, warnings_);
         const size_t layers = shadow_->pass().layers().size();
         views_ = vk::BufferRing(alloc_, sizeof(glm::mat4) * (1 + layers), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "views");
-        lights_buffer_ = vk::BufferRing(alloc_, sizeof(gpu::GpuLight) * std::max<size_t>(lights_.size(), 1),
+        lightBuffer_ = vk::BufferRing(alloc_, sizeof(gpu::GpuLight) * std::max<size_t>(lights_.size(), 1),
                                         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "lights");
     }
     if (parts & kPartCamera) {
@@ -203,8 +203,7 @@ std::vector<FrameTimings> Renderer::takeCompletedTimings() {
     return out;
 }
 
-void Renderer::writeFrameData(FrameSlot& slot, const FrameInputs& in) {
-    (void)slot;
+void Renderer::writeFrameData(const FrameInputs& in) {
     const Camera& camera = in.camera;
     const float aspect = float(settings_.width) / float(settings_.height);
     gpu::FrameUniforms f{};
@@ -226,22 +225,22 @@ void Renderer::writeFrameData(FrameSlot& slot, const FrameInputs& in) {
         lights.push_back(toGpu(in.lights[i]));
         shadow_->pass().fillGpuLight(i, lights.back());
     }
-    if (!lights.empty()) lights_buffer_.write(lights.data(), lights.size() * sizeof(gpu::GpuLight));
+    if (!lights.empty()) lightBuffer_.write(lights.data(), lights.size() * sizeof(gpu::GpuLight));
 }
 
 void Renderer::recordFrame(FrameSlot& slot, const FrameInputs& in, const FrameHooks& hooks) {
     const uint32_t index = uint32_t(frameIndex_ % slots_.size());
-    for (vk::BufferRing* r : {&frame_, &views_, &lights_buffer_}) r->select(index);
+    for (vk::BufferRing* r : {&frame_, &views_, &lightBuffer_}) r->select(index);
     zfar_ = sceneFar(in.camera, scene_.scene().bounds);
     graph_.clear();
     const float aspect = float(settings_.width) / float(settings_.height);
     FrameContext context{graph_, index, in.camera, in.lights, settings_, aspect, zfar_, frameConstants_};
     const std::vector<Technique*> list = techniques();
     for (Technique* t : list) t->update(context);
-    writeFrameData(slot, in);
+    writeFrameData(in);
     graph_.publish("frame", graph_.import(frame_.current()));
     graph_.publish("views", graph_.import(views_.current()));
-    graph_.publish("lights", graph_.import(lights_buffer_.current()));
+    graph_.publish("lights", graph_.import(lightBuffer_.current()));
     for (Technique* t : list) t->addPasses(context);
 
     VK_CHECK(vkResetCommandPool(ctx_.device(), slot.pool, VK_COMMAND_POOL_RESET_RELEASE_RESOURCES_BIT));

@@ -101,7 +101,7 @@ private:
     void build(uint32_t parts);
     bool layoutChanged(const std::vector<Light>& lights) const;
     FrameSlot& acquireSlot();
-    void writeFrameData(FrameSlot& slot, const FrameInputs& in);
+    void writeFrameData(const FrameInputs& in);
     void recordFrame(FrameSlot& slot, const FrameInputs& in, const FrameHooks& hooks);
     void collect(FrameSlot& slot);
     std::vector<Technique*> techniques() const;
@@ -117,7 +117,7 @@ private:
     uint64_t frameIndex_ = 0;
     std::vector<Light> lights_;  // the lights the shadow layout was built for
     vk::DescriptorLayout drawLayout_;
-    vk::BufferRing frame_, views_, lights_buffer_;
+    vk::BufferRing frame_, views_, lightBuffer_;
     std::unique_ptr<DsmTechnique> dsm_;
     std::unique_ptr<ShadowTechnique> shadow_;
     std::unique_ptr<CameraTechnique> camera_;

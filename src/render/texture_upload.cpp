@@ -18,20 +18,8 @@ uint32_t mipCount(uint32_t size) {
 // A barrier on levels [first, first + count) of every layer.
 void levelBarrier(VkCommandBuffer cmd, const vk::Image& image, uint32_t first, uint32_t count, VkImageLayout from,
                   VkImageLayout to, VkAccessFlags2 srcAccess, VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess) {
-    VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
-    b.srcStageMask = kTransfer;
-    b.srcAccessMask = srcAccess;
-    b.dstStageMask = dstStage;
-    b.dstAccessMask = dstAccess;
-    b.oldLayout = from;
-    b.newLayout = to;
-    b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    b.image = image.handle();
-    b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, first, count, 0, image.layers()};
-    VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
-    dep.imageMemoryBarrierCount = 1;
-    dep.pImageMemoryBarriers = &b;
-    vkCmdPipelineBarrier2(cmd, &dep);
+    vk::imageBarrier(cmd, image.handle(), {VK_IMAGE_ASPECT_COLOR_BIT, first, count, 0, image.layers()}, from, to,
+                     kTransfer, srcAccess, dstStage, dstAccess);
 }
 
 VkImageBlit blitRegion(uint32_t srcW, uint32_t srcH, uint32_t srcLevel, uint32_t srcLayer, uint32_t dstSize,

@@ -86,7 +86,8 @@ void ShadowMapPass::fillGpuLight(uint32_t light, gpu::GpuLight& g) const {
     g.shadowViewProj = p.viewProj;
 }
 
-void ShadowMapPass::addTo(FrameGraph& graph, uint32_t firstView) {
+void ShadowMapPass::addTo(FrameGraph& graph, uint32_t firstView,
+                          const std::function<void(FrameGraph&)>& extraCasters) {
     const ImageHandle map = graph.import(map_);
     graph.publish("shadow.map", map);
     graph.publish("shadow.layers", graph.import(layerTable_.current()));
@@ -108,7 +109,7 @@ void ShadowMapPass::addTo(FrameGraph& graph, uint32_t firstView) {
             compute_->addTo(graph, "shadow.raster", map, graph.buffer("views"),
                             {settings_.depthBiasConstant, settings_.depthBiasSlope});
         }
-        if (extraCasters_) extraCasters_(graph);
+        if (extraCasters) extraCasters(graph);
     }
     moments_.addTo(graph);
 }

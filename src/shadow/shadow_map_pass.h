@@ -48,11 +48,9 @@ public:
 
     // shadow.map (layer k drawn with row firstView + k of "views"), then shadow.moments + shadow.blur
     // when a light uses a moment filter. Publishes "shadow.map", "shadow.moments", "shadow.layers",
-    // "shadow.lights", "shadow.params".
-    void addTo(FrameGraph& graph, uint32_t firstView);
-    // Casters drawn by other modules (hair, src/dsm): `passes` adds their passes into "shadow.map"
-    // after shadow.map, before the moments are taken from it.
-    void setExtraCasters(std::function<void(FrameGraph&)> passes) { extraCasters_ = std::move(passes); }
+    // "shadow.lights", "shadow.params". `extraCasters` adds other modules' passes (hair, src/dsm) into
+    // "shadow.map" after shadow.map, before the moments are taken from it.
+    void addTo(FrameGraph& graph, uint32_t firstView, const std::function<void(FrameGraph&)>& extraCasters = {});
     // Lights with a deep shadow map: their alphaMode BLEND casters stay out of the shadow map.
     void setDeepShadowLights(std::vector<uint32_t> lights) { raster_.setDeepShadowLights(std::move(lights)); }
     // shadow.filter: reads the G-buffer, publishes "shadow.mask".
@@ -80,7 +78,6 @@ private:
     ShadowFilterPass filter_;
     vk::Image map_;
     vk::BufferRing layerTable_, lightTable_, params_;
-    std::function<void(FrameGraph&)> extraCasters_;
 
     std::vector<RasterViews> computeViews(uint32_t firstView) const;
     bool hasParaboloid() const;

@@ -12,23 +12,30 @@ const EmbeddedShader& findShader(const std::string& key) {
     throw VulkanError("no embedded shader named " + key);
 }
 
-void transitionImage(VkCommandBuffer cmd, Image& image, VkImageLayout layout, VkPipelineStageFlags2 stage,
-                     VkAccessFlags2 access) {
-    ImageState& s = image.state();
+void imageBarrier(VkCommandBuffer cmd, VkImage image, const VkImageSubresourceRange& range, VkImageLayout from,
+                  VkImageLayout to, VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess,
+                  VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess) {
     VkImageMemoryBarrier2 b{VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2};
-    b.srcStageMask = s.stage ? s.stage : VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT;
-    b.srcAccessMask = s.access;
-    b.dstStageMask = stage;
-    b.dstAccessMask = access;
-    b.oldLayout = s.layout;
-    b.newLayout = layout;
+    b.srcStageMask = srcStage;
+    b.srcAccessMask = srcAccess;
+    b.dstStageMask = dstStage;
+    b.dstAccessMask = dstAccess;
+    b.oldLayout = from;
+    b.newLayout = to;
     b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
-    b.image = image.handle();
-    b.subresourceRange = image.fullRange();
+    b.image = image;
+    b.subresourceRange = range;
     VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
     dep.imageMemoryBarrierCount = 1;
     dep.pImageMemoryBarriers = &b;
     vkCmdPipelineBarrier2(cmd, &dep);
+}
+
+void transitionImage(VkCommandBuffer cmd, Image& image, VkImageLayout layout, VkPipelineStageFlags2 stage,
+                     VkAccessFlags2 access) {
+    ImageState& s = image.state();
+    imageBarrier(cmd, image.handle(), image.fullRange(), s.layout, layout,
+                 s.stage ? s.stage : VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT, s.access, stage, access);
     s = {layout, stage, access};
 }
 

@@ -7,6 +7,12 @@
 
 namespace penumbra::vk {
 
+// One layout transition of `range` of a raw image handle (swapchain images, mip ranges) with the given
+// scopes; the layer that tracks no state for it.
+void imageBarrier(VkCommandBuffer cmd, VkImage image, const VkImageSubresourceRange& range, VkImageLayout from,
+                  VkImageLayout to, VkPipelineStageFlags2 srcStage, VkAccessFlags2 srcAccess,
+                  VkPipelineStageFlags2 dstStage, VkAccessFlags2 dstAccess);
+
 // Records a barrier from the image's last use (its ImageState) to the given use, and updates it.
 void transitionImage(VkCommandBuffer cmd, Image& image, VkImageLayout layout, VkPipelineStageFlags2 stage,
                      VkAccessFlags2 access);
