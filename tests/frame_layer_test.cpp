@@ -226,7 +226,11 @@ TEST(SettingsTable, CoversEveryRenderOption) {
     addFrameOptions(app, fo, rs);
     std::set<std::string> table;
     for (const SettingsOption& o : settingsOptionTable()) table.insert(o.flag);
-    const std::set<std::string> inputs{"--help", "--camera", "--camera-index", "--light", "--light-shadow", "--strands"};
+    // Frame inputs (camera, lights, what moves and when), not settings.
+    const std::set<std::string> inputs{"--help",      "--camera",      "--camera-index", "--light",
+                                       "--light-shadow", "--strands",  "--time",         "--animation",
+                                       "--clamp",     "--sun-path",    "--light-path",   "--camera-path",
+                                       "--no-motion"};
     for (const CLI::Option* o : app.get_options()) {
         if (o->get_lnames().empty()) continue;  // the positional scene
         const std::string name = "--" + o->get_lnames().front();

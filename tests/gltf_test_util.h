@@ -14,6 +14,7 @@
 #include <stb_image_write.h>
 #include <unistd.h>
 
+#include "scene/animation.h"
 #include "scene/scene.h"
 
 namespace penumbra::test {
@@ -198,11 +199,18 @@ inline void expectConsistent(const Scene& s) {
         ASSERT_NEAR(glm::length(v.normal), 1.0f, 1e-3f);
     }
     ASSERT_FALSE(s.bounds.empty());
-    for (const Vertex& v : s.vertices) {
+    // Meshes drawn per instance are in their own space: the bounds hold their world-space copies.
+    const Scene world = worldSpaceScene(s, instanceTransforms(s, nodeWorldTransforms(s, 0.0, {})));
+    for (const Vertex& v : world.vertices) {
         EXPECT_TRUE(glm::all(glm::greaterThanEqual(v.position, s.bounds.min)));
         EXPECT_TRUE(glm::all(glm::lessThanEqual(v.position, s.bounds.max)));
     }
     for (const Light& l : s.lights) EXPECT_NEAR(glm::length(l.direction), 1.0f, 1e-3f);
+}
+
+// The scene's world-space geometry at rest (what loading baked before meshes were instanced).
+inline Scene restWorld(const Scene& s) {
+    return worldSpaceScene(s, instanceTransforms(s, nodeWorldTransforms(s, 0.0, {})));
 }
 
 // Counter-clockwise winding must agree with the vertex normals (true for flat test geometry).

@@ -24,8 +24,15 @@ using namespace penumbra::test;
 
 namespace {
 
-void expectTestScene(const Scene& s) {
-    expectConsistent(s);
+void expectTestScene(const Scene& loaded) {
+    expectConsistent(loaded);
+    // The mesh is drawn by two nodes: stored once, drawn by two instances (after the empty static batch).
+    EXPECT_EQ(loaded.vertices.size(), 3u);
+    ASSERT_EQ(loaded.instances.size(), 3u);
+    EXPECT_EQ(loaded.nodes.size(), 4u);
+    EXPECT_EQ(loaded.nodes[1].parent, 0);
+    // Its world-space copy at rest is what loading baked before.
+    const Scene s = restWorld(loaded);
     ASSERT_EQ(s.vertices.size(), 6u);
     ASSERT_EQ(s.triangleCount(), 2u);
     ASSERT_EQ(s.draws.size(), 1u);  // same material, contiguous: merged

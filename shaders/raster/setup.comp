@@ -10,6 +10,7 @@
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
 #include "raster/raster.glsl"
+#include "render/instances.glsl"
 
 layout(local_size_x = RASTER_SETUP_GROUP) in;
 
@@ -17,6 +18,7 @@ layout(set = 0, binding = 7, std430) readonly buffer Vertices { float vertexData
 layout(set = 0, binding = 8, std430) readonly buffer Indices { uint indices[]; };
 layout(set = 0, binding = 9, std430) readonly buffer TriangleMaterials { uint triangleMaterials[]; };
 layout(set = 0, binding = 10, std430) readonly buffer Layers { RasterLayer rasterLayers[]; };
+layout(set = 0, binding = 11, std430) readonly buffer DrawnTriangles { uvec2 drawnTriangles[]; };  // (instance, triangle)
 layout(push_constant) uniform Push { RasterPush push; };
 
 const int kVertexFloats = 8;  // position xyz, normal xyz, uv
@@ -174,13 +176,16 @@ void clipAndEmit(ClipVertex v[3], uint planes, uint layer, uint material, bool s
     for (int i = 1; i + 1 < n; ++i) emitTriangle(poly[0], poly[i], poly[i + 1], layer, material, singleSided, alphaTested);
 }
 
-void setupTriangle(uint triangle, RasterLayer target) {
+void setupTriangle(uint drawn, RasterLayer target) {
+    const uvec2 ref = drawnTriangles[drawn];
+    const uint triangle = ref.y;
     const uint material = triangleMaterials[triangle];
     const GpuMaterial m = materials[material];
     if (m.info.y == ALPHA_BLEND && target.info.z != 0u) return;  // a deep shadow map takes it
-    const mat4 viewProj = views.viewProj[target.info.x];
+    const mat4 viewProj = views.viewProj[target.info.x] * instances[ref.x].model;
+    const bool mirrored = instances[ref.x].info.x != 0.0;  // keeps the fronts' winding, as the hardware's cull flip does
     ClipVertex v[3];
-    for (int i = 0; i < 3; ++i) v[i] = fetch(indices[triangle * 3 + i], viewProj);
+    for (int i = 0; i < 3; ++i) v[i] = fetch(indices[triangle * 3 + (mirrored ? (3 - i) % 3 : i)], viewProj);
     const uint c0 = outcode(v[0].position), c1 = outcode(v[1].position), c2 = outcode(v[2].position);
     if ((c0 & c1 & c2) != 0u) return;  // entirely outside one plane
     const uint layer = target.info.y;

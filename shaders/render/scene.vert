@@ -1,7 +1,9 @@
 #version 460
-// Shared by the G-buffer and shadow passes: world-space vertices, one view matrix per pass.
+// Shared by the G-buffer, RSM and DSM passes: mesh vertices moved to the world by their instance
+// (gl_InstanceIndex), one view matrix per pass.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
+#include "render/instances.glsl"
 
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
@@ -15,8 +17,9 @@ layout(location = 1) out vec2 outUv;
 layout(location = 2) out vec3 outWorld;
 
 void main() {
-    gl_Position = views.viewProj[draw.viewIndex] * vec4(inPosition, 1.0);
-    outNormal = inNormal;
+    const vec3 world = instanceWorld(gl_InstanceIndex, inPosition);
+    gl_Position = views.viewProj[draw.viewIndex] * vec4(world, 1.0);
+    outNormal = instanceNormal(gl_InstanceIndex, inNormal);
     outUv = inUv;
-    outWorld = inPosition;
+    outWorld = world;
 }

@@ -3,6 +3,7 @@
 // paraboloid mapping is not linear, so it is applied after tessellation (paraboloid.tese).
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
+#include "render/instances.glsl"
 
 layout(location = 0) in vec3 inPosition;
 layout(location = 2) in vec2 inUv;
@@ -12,7 +13,7 @@ layout(location = 1) out vec2 outUv;
 layout(location = 2) flat out int outInstance;
 
 void main() {
-    outWorld = inPosition;
+    outWorld = instanceWorld(sceneInstance(2), inPosition);
     outUv = inUv;
-    outInstance = gl_InstanceIndex;
+    outInstance = instanceLayer(2);  // the hemisphere
 }

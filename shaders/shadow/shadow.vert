@@ -1,11 +1,13 @@
 #version 460
 // Layered depth pass: one instance per layer of a light (cascades, cube faces, a spot's single
-// layer), so that every layer of a light is drawn by one draw call. Instance i uses view row
+// layer), so that every layer of a light is drawn by one draw call (per run of scene instances:
+// render/instances.glsl). Layer i uses view row
 // viewIndex + i and writes array layer firstLayer + i (gl_Layer from the vertex stage: Vulkan 1.2
 // shaderOutputLayer).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_ARB_shader_viewport_layer_array : require
 #include "shared/types.h"
+#include "render/instances.glsl"
 
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
@@ -18,8 +20,9 @@ layout(location = 0) out vec3 outNormal;
 layout(location = 1) out vec2 outUv;
 
 void main() {
-    gl_Position = views.viewProj[draw.viewIndex + gl_InstanceIndex] * vec4(inPosition, 1.0);
-    gl_Layer = int(draw.firstLayer) + gl_InstanceIndex;
-    outNormal = inNormal;
+    const int layers = int(draw.layerCount), instance = sceneInstance(layers), layer = instanceLayer(layers);
+    gl_Position = views.viewProj[draw.viewIndex + layer] * vec4(instanceWorld(instance, inPosition), 1.0);
+    gl_Layer = int(draw.firstLayer) + layer;
+    outNormal = instanceNormal(instance, inNormal);
     outUv = inUv;
 }

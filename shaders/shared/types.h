@@ -73,6 +73,16 @@ struct GpuMaterial {
     vec4 params;     // x = alpha cutoff
 };
 
+// One drawn instance of a mesh (Scene::instances): the one place its transform lives. A draw covers a
+// run of instances of one mesh: gl_InstanceIndex is the instance (layered passes: gl_BaseInstance +
+// (gl_InstanceIndex - gl_BaseInstance) / layers); compute passes index it per triangle.
+#define SCENE_INSTANCES_BINDING 15  // binding of the instance table in the scene's draw set (set 0)
+struct GpuInstance {
+    mat4 model;   // object -> world
+    mat4 normal;  // inverse transpose of model's upper 3x3 (columns 0-2)
+    vec4 info;    // x = 1 when model mirrors (negative determinant: fronts flip), yzw unused
+};
+
 // Push constants of the raster passes that draw the scene.
 struct DrawPush {
     uint viewIndex;  // row of the views buffer (0 = camera, 1.. = shadow layers)
@@ -198,7 +208,7 @@ struct ShadowDrawPush {
     uint viewIndex;
     uint material;
     uint firstLayer;
-    uint pad;
+    uint layerCount;  // instances of a draw = scene instances x layers (layer fastest)
     vec4 paraboloid;  // x = near, y = far, z = disc scale, w = max angle per tessellated edge (radians)
 };
 

@@ -2,12 +2,15 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
+#include <unistd.h>
 
 #include <fmt/format.h>
 
 #include "app/device_budget.h"
 #include "app/dsm_cli.h"
 #include "app/option_checks.h"
+#include "app/sequence.h"
 #include "io/image_io.h"
 #include "render/renderer.h"
 
@@ -36,8 +39,11 @@ void printTimings(const std::vector<std::vector<vk::ScopeTiming>>& frames) {
 void printSummary(const RenderCliOptions& o, const RenderSettings& settings, const PreparedFrame& f,
                   const vk::Context& ctx, Renderer& renderer, const std::vector<std::vector<vk::ScopeTiming>>& timings) {
     const Scene& scene = f.scene;
-    fmt::print("penumbra: rendered '{}' ({} triangles, {}{}) on {} at {}x{} -> {}\n", scene.name,
-               scene.triangleCount(),
+    fmt::print("penumbra: rendered '{}' ({} triangles{}, {}{}) on {} at {}x{} -> {}\n", scene.name,
+               scene.drawnTriangleCount(),
+               scene.instances.size() > 1 ? fmt::format(" in {} instances of {} meshes", scene.instances.size(),
+                                                         scene.meshes.size())
+                                          : "",
                scene.strands.empty() ? "" : fmt::format("{} hair strands, ", scene.strands.size()),
                plural(scene.lights.size(), "light"), ctx.info().name, settings.width, settings.height, o.output);
     fmt::print("GPU time per pass{}:\n",
@@ -54,23 +60,91 @@ void printSummary(const RenderCliOptions& o, const RenderSettings& settings, con
                b.min.x, b.min.y, b.min.z, b.max.x, b.max.y, b.max.z, c.eye.x, c.eye.y, c.eye.z);
 }
 
+// The output of `render`: one image, a numbered sequence, or an mp4 through ffmpeg. Checked before any work.
+struct RenderOutput {
+    std::string ext;           // of each image written
+    std::string pattern;       // image file name, with a %d field for a sequence
+    std::string mp4;           // "" unless -o ends in .mp4
+    std::string ffmpeg;
+    std::filesystem::path tmp;  // the mp4's frames
+
+    explicit RenderOutput(const RenderCliOptions& o) : ext(fileExtension(o.output)), pattern(o.output) {
+        if (ext == ".mp4") {
+            if (o.sequence < 1) throw std::invalid_argument(fmt::format("-o {}: an mp4 needs --sequence N", o.output));
+            ffmpeg = findFfmpeg();
+            if (ffmpeg.empty())
+                throw std::invalid_argument(fmt::format(
+                    "-o {}: encoding an mp4 needs the ffmpeg program, which is not on PATH (apt-get install ffmpeg, "
+                    "or write PNG frames with -o out_%04d.png)", o.output));
+            checkWritable(o.output, "-o");
+            mp4 = o.output, ext = ".png";
+            return;
+        }
+        if (ext != ".png" && ext != ".exr")
+            throw std::invalid_argument(fmt::format("-o {}: the output must end in .png, .exr or .mp4", o.output));
+        if (o.sequence > 0) checkSequencePattern(o.output);
+        checkWritable(o.sequence > 0 ? sequenceFrameName(o.output, 0) : o.output, "-o");
+    }
+    std::string frameName(int index) {
+        if (mp4.empty()) return sequenceFrameName(pattern, index);
+        if (tmp.empty()) {
+            tmp = std::filesystem::temp_directory_path() / fmt::format("penumbra-mp4-{}", ::getpid());
+            std::filesystem::create_directories(tmp);
+            pattern = (tmp / "frame_%05d.png").string();
+        }
+        return sequenceFrameName(pattern, index);
+    }
+    ~RenderOutput() {
+        std::error_code ec;
+        if (!tmp.empty()) std::filesystem::remove_all(tmp, ec);
+    }
+};
+
+void writeImage(Renderer& renderer, const RenderSettings& settings, const std::string& ext, const std::string& path) {
+    if (ext == ".png") writePng(path, settings.width, settings.height, renderer.readLdr());
+    else writeExr(path, settings.width, settings.height, renderer.readHdr());
+}
+
+// `--sequence N`: frame i at time --time + i / --fps, with a progress bar on a terminal.
+void renderSequence(const RenderCliOptions& o, const RenderSettings& settings, Renderer& renderer,
+                    const SceneMotion& motion, RenderOutput& out) {
+    const bool progress = !o.quiet && isatty(fileno(stderr));
+    for (int i = 0; i < o.sequence; ++i) {
+        renderer.render(frameInputs(motion, o.frame.time + i / o.fps));
+        writeImage(renderer, settings, out.ext, out.frameName(i));
+        if (progress) {
+            const int filled = (i + 1) * 30 / o.sequence;
+            fmt::print(stderr, "\rrender: [{:<30}] {}/{}", std::string(size_t(filled), '#'), i + 1, o.sequence);
+            std::fflush(stderr);
+        }
+    }
+    if (progress) fmt::print(stderr, "\n");
+    if (!out.mp4.empty()) encodeMp4(out.ffmpeg, out.pattern, o.fps, out.mp4);
+    if (!o.quiet)
+        fmt::print("penumbra: {} frames of '{}' from t = {} s at {} fps -> {}\n", o.sequence, renderer.scene().name,
+                   o.frame.time, o.fps, out.mp4.empty() ? o.output : out.mp4);
+}
+
 int runRender(const RenderCliOptions& o, const vk::ContextOptions& vkOptions, RenderSettings settings, bool dryRun) {
-    const std::string ext = fileExtension(o.output);
-    if (ext != ".png" && ext != ".exr")
-        throw std::invalid_argument(fmt::format("-o {}: the output must end in .png or .exr", o.output));
-    checkWritable(o.output, "-o");
+    RenderOutput out(o);
     if (dryRun) return prepareFrame(o.frame, settings), 0;
     DeviceFrame device(o.frame, settings, vkOptions);
     const PreparedFrame& f = device.frame;
+    const SceneMotion motion = frameMotion(o.frame, f);
     Renderer renderer(device.ctx, f.scene, settings);
     for (const std::string& w : renderer.warnings()) fmt::print(stderr, "penumbra: warning: {}\n", w);
+    if (o.sequence > 0) {
+        renderSequence(o, settings, renderer, motion, out);
+        device.checkValidation();
+        return 0;
+    }
+    const FrameInputs inputs = frameInputs(motion, o.frame.time);
     std::vector<std::vector<vk::ScopeTiming>> timings;
     for (int frame = 0; frame < o.frames; ++frame) {
-        renderer.render(f.camera);
+        renderer.render(inputs);
         timings.push_back(renderer.timings());
     }
-    if (ext == ".png") writePng(o.output, settings.width, settings.height, renderer.readLdr());
-    else writeExr(o.output, settings.width, settings.height, renderer.readHdr());
+    writeImage(renderer, settings, out.ext, o.output);
     if (!o.quiet) printSummary(o, settings, f, device.ctx, renderer, timings);
     else reportDsm(renderer, true);  // the overflow warning only
     device.checkValidation();
@@ -119,6 +193,10 @@ Cli::Cli(const std::string& commandLine) {
         ->check(CLI::Range(1, 100000));
     renderCmd->add_flag("--print-passes", render.printPasses, "Print the frame's passes with their inputs and outputs");
     renderCmd->add_flag("-q,--quiet", render.quiet, "Print nothing but warnings and errors");
+    renderCmd->add_option("--sequence", render.sequence,
+                          "Render N frames from --time at --fps to -o out_%04d.png|exr or out.mp4 (ffmpeg)")
+        ->check(CLI::Range(1, 1000000));
+    renderCmd->add_option("--fps", render.fps, "Frames per second of --sequence")->check(finiteRange(1e-3, 1e4));
     benchCmd = addBenchCommand(app, bench, benchSettings);
     bench.command = commandLine;
     infoCmd = app.add_subcommand("info", "List Vulkan devices and the features penumbra needs");
@@ -126,6 +204,8 @@ Cli::Cli(const std::string& commandLine) {
     compareCmd = addCompareCommand(app, compare);
     evalCmd = addEvalCommand(app, eval);
     eval.command = commandLine;
+    stabilityCmd = addStabilityCommand(app, stability, stabilitySettings);
+    stability.command = commandLine;
     for (CLI::App* sub : app.get_subcommands({})) addGlobalOptions(*sub, vk, dryRun);
     requireFiniteNumbers(app);
 }
@@ -155,6 +235,7 @@ int Cli::run() {
     if (*referenceCmd) return runReferenceCommand(reference, dryRun);
     if (*compareCmd) return runCompareCommand(compare, dryRun);
     if (*evalCmd) return runEvalCommand(eval, vk, dryRun);
+    if (*stabilityCmd) return runStability(stability, vk, stabilitySettings, dryRun);
     return runRender(render, vk, renderSettings, dryRun);
 }
 

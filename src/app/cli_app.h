@@ -10,6 +10,7 @@
 #include "app/bench.h"
 #include "app/frame_options.h"
 #include "app/ground_truth_cli.h"
+#include "app/stability.h"
 #include "vk/context.h"
 
 namespace penumbra {
@@ -20,6 +21,8 @@ struct RenderCliOptions {
     bool printPasses = false;
     int frames = 1;
     bool quiet = false;
+    int sequence = 0;   // --sequence N: N frames from --time at --fps (0: one image)
+    double fps = 30.0;
 };
 
 struct Cli {
@@ -35,8 +38,10 @@ struct Cli {
     ReferenceCliOptions reference;
     CompareCliOptions compare;
     EvalCliOptions eval;
+    StabilityOptions stability;
+    RenderSettings stabilitySettings;
     CLI::App *renderCmd = nullptr, *benchCmd = nullptr, *infoCmd = nullptr, *referenceCmd = nullptr,
-             *compareCmd = nullptr, *evalCmd = nullptr;
+             *compareCmd = nullptr, *evalCmd = nullptr, *stabilityCmd = nullptr;
 
     // Registers every subcommand and option; `commandLine` is recorded in bench and eval JSON.
     explicit Cli(const std::string& commandLine = "");

@@ -96,6 +96,32 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o, RenderSettings& rs) {
         ->check(finiteRange(1e-6, 1e6));
     addShadowOptions(cmd, rs.shadow, o.lightFilters, rs.dsm.enabled);
     addDsmOptions(cmd, rs.dsm, o.builtin);
+    addMotionOptions(cmd, o);
+}
+
+void addMotionOptions(CLI::App& cmd, FrameOptions& o) {
+    cmd.add_option("--time", o.time, "Scene time in seconds (animation, motion paths)")->check(finiteRange(-1e6, 1e6));
+    cmd.add_option("--animation", o.animation.animation, "Play only glTF animation N (default: all)")
+        ->check(CLI::Range(0, 1 << 20));
+    cmd.add_flag("--clamp", o.animation.clamp, "Hold the last key of animations instead of looping");
+    cmd.add_option("--sun-path", o.motion.sun, "Sun motion: AZ0,EL0,AZ1,EL1,SECONDS (degrees; every directional light)");
+    cmd.add_option("--light-path", o.motion.lights, "Light N's position keys: N:T,X,Y,Z;T,X,Y,Z;... (repeatable)");
+    cmd.add_option("--camera-path", o.motion.camera, "Camera keys: T,EX,EY,EZ,TX,TY,TZ;... (eye and target)");
+    cmd.add_flag_function("--no-motion", [&o](int64_t) { o.motion.builtinDefault = false; },
+                          "No default motion of the built-in scenes");
+}
+
+SceneMotion frameMotion(const FrameOptions& o, const PreparedFrame& f) {
+    SceneMotion motion(f.scene, f.camera, f.scene.lights, o.motion, o.animation);
+    if (o.time != 0.0 && !motion.moves())
+        fmt::print(stderr, "penumbra: warning: --time {}: nothing in '{}' moves (no animation or motion path)\n",
+                   o.time, f.scene.name);
+    return motion;
+}
+
+FrameInputs frameInputs(const SceneMotion& motion, double t) {
+    ScenePose pose = motion.at(t);
+    return {std::move(pose.camera), std::move(pose.lights), std::move(pose.instances)};
 }
 
 void checkFrameSettings(const FrameOptions& o, RenderSettings& settings) {
@@ -125,11 +151,13 @@ PreparedFrame prepareFrame(const FrameOptions& o, RenderSettings& settings) {
     // Malformed --light / --camera values fail before a slow scene load.
     for (const std::string& l : o.lights) parseLight(l);
     if (!o.camera.empty()) parseCamera(o.camera);
+    checkMotionPaths(o.motion);
     PreparedFrame f;
     f.scene = loadScene(o.scene, o.builtin);
     for (const std::string& w : f.scene.warnings) fmt::print(stderr, "penumbra: warning: {}\n", w);
     f.scene.lights = frameLights(o, f.scene);
     f.camera = frameCamera(o, f.scene);
+    SceneMotion(f.scene, f.camera, f.scene.lights, o.motion, o.animation);  // --animation N exists, paths fit
     return f;
 }
 

@@ -8,6 +8,7 @@
 
 #include "app/dsm_cli.h"
 #include "render/renderer.h"
+#include "scene/motion.h"
 
 namespace penumbra {
 
@@ -19,9 +20,16 @@ struct FrameOptions {
     std::vector<std::string> lightFilters;  // --light-shadow N=MODE
     std::string aov = "final";
     BuiltinOptions builtin;  // --strands
+    // Time and motion (README "Motion"): --time, --animation, --clamp, --sun-path, --light-path,
+    // --camera-path, --no-motion.
+    double time = 0.0;
+    AnimationOptions animation;
+    MotionPaths motion;
 };
 
 void addFrameOptions(CLI::App& cmd, FrameOptions& o, RenderSettings& rs);
+// The time and motion options alone (also on `reference` and `eval`).
+void addMotionOptions(CLI::App& cmd, FrameOptions& o);
 
 struct PreparedFrame {
     Scene scene;
@@ -39,5 +47,11 @@ void checkFrameSettings(const FrameOptions& o, RenderSettings& settings);
 std::vector<Light> frameLights(const FrameOptions& o, const Scene& loaded);
 // the camera: --camera, else the scene's camera --camera-index.
 Camera frameCamera(const FrameOptions& o, const Scene& scene);
+
+// What moves in the prepared frame (animation, paths, the built-in default motion); warns once when
+// --time is given for a scene where nothing moves.
+SceneMotion frameMotion(const FrameOptions& o, const PreparedFrame& f);
+// The frame's inputs at time t.
+FrameInputs frameInputs(const SceneMotion& motion, double t);
 
 }  // namespace penumbra

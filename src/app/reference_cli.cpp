@@ -37,11 +37,21 @@ void addReferenceSceneOptions(CLI::App& cmd, ReferenceCliOptions& o) {
     cmd.add_flag("--aa", o.settings.antialias, "Spread paths over the pixel (default: its centre, as the rasterizer)");
     cmd.add_flag_function("-q,--quiet", [&o](int64_t) { o.settings.progress = false; },
                           "No progress bar and no summary");
+    addMotionOptions(cmd, o.frame);
 }
 
 PreparedFrame prepareReferenceFrame(const ReferenceCliOptions& o) {
     RenderSettings unused;
     PreparedFrame f = prepareFrame(o.frame, unused);
+    // The scene at --time: the path tracer traces its world-space geometry at that time.
+    const SceneMotion motion = frameMotion(o.frame, f);
+    if (motion.moves()) {
+        ScenePose pose = motion.at(o.frame.time);
+        Scene world = worldSpaceScene(f.scene, pose.instances);
+        world.lights = std::move(pose.lights);
+        f.scene = std::move(world);
+        f.camera = pose.camera;
+    }
     if (!f.scene.strands.empty())
         fmt::print(stderr, "penumbra: warning: the reference does not trace hair strands ({} ignored)\n",
                    f.scene.strands.size());

@@ -6,7 +6,6 @@ namespace penumbra {
 namespace {
 
 constexpr VkDescriptorType kBuffer = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-constexpr VkDescriptorType kSampler = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
 constexpr uint32_t kMaxGroups = 65535;  // the smallest maxComputeWorkGroupCount Vulkan allows
 
 // Bin capacities: a quarter of the (triangle, layer) pairs may be large, each in 8 tiles on average;
@@ -22,15 +21,17 @@ ComputeRaster::ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, uint32_t res
       resolution_(resolution),
       layers_(std::max(layers, 1u)),
       subpixelBits_(alloc.context().properties().limits.subPixelPrecisionBits),
-      recordCapacity_(recordCapacityFor(scene.scene().indices.size() / 3, layers_)),
+      recordCapacity_(recordCapacityFor(scene.drawnTriangleCount(), layers_)),
       entryCapacity_(recordCapacity_ * 8) {
     vk::Context& ctx = alloc.context();
     const uint32_t pushBytes = sizeof(gpu::RasterPush);
-    // Bindings 0-2: the scene's draw set; 3-6: depth, records, tile entries, counters (raster.glsl).
-    std::vector<VkDescriptorType> tiles{kBuffer, kBuffer, kSampler, kBuffer, kBuffer, kBuffer, kBuffer};
+    // The scene's draw set (bindings 0-2 and the instance table); 3-6: depth, records, tile entries,
+    // counters (raster.glsl).
+    std::vector<vk::Binding> tiles = SceneGpu::drawSetBindings();
+    for (uint32_t b = 3; b <= 6; ++b) tiles.push_back({b, kBuffer});
     tiles_ = vk::ComputeKernel(ctx, "raster/tiles.comp", tiles, pushBytes);
-    std::vector<VkDescriptorType> setup = tiles;
-    setup.insert(setup.end(), {kBuffer, kBuffer, kBuffer, kBuffer});  // vertices, indices, materials, layers
+    std::vector<vk::Binding> setup = tiles;
+    for (uint32_t b = 7; b <= 11; ++b) setup.push_back({b, kBuffer});  // vertices, indices, materials, layers, drawn triangles
     setup_ = vk::ComputeKernel(ctx, "raster/setup.comp", setup, pushBytes);
     args_ = vk::ComputeKernel(ctx, "raster/args.comp", {kBuffer, kBuffer}, pushBytes);
 
@@ -60,7 +61,7 @@ void ComputeRaster::setViews(const std::vector<RasterViews>& views, uint32_t slo
 }
 
 gpu::RasterPush ComputeRaster::push(RasterBias bias) const {
-    const uint32_t triangles = uint32_t(scene_.scene().indices.size() / 3);
+    const uint32_t triangles = scene_.drawnTriangleCount();
     return {{resolution_, subpixelBits_, triangles, layerRows_},
             {recordCapacity_, entryCapacity_, 0u, 0u},
             {bias.constant, bias.slope, 0.0f, 0.0f}};
@@ -80,6 +81,7 @@ void ComputeRaster::addSetup(FrameGraph& graph, const std::string& name, BufferH
         .storageBuffer(8, graph.import(scene_.indices()))
         .storageBuffer(9, graph.import(scene_.triangleMaterials()))
         .storageBuffer(10, graph.import(layerTable_.current()))
+        .storageBuffer(11, graph.import(scene_.drawnTriangles()))
         .record([this, p](PassContext& c) {
             setup_.pipeline.push(c.cmd, p);
             const uint32_t groups = std::min(vk::divUp(p.target.z, RASTER_SETUP_GROUP), kMaxGroups);

@@ -13,6 +13,8 @@
 
 #include <fmt/format.h>
 
+#include "scene/animation.h"
+
 #include "reference/ray_scene.h"
 #include "reference/sampling.h"
 
@@ -224,6 +226,11 @@ ReferenceImage renderReference(const Scene& scene, const Camera& camera, const R
     if (s.bounces > kMaxReferenceBounces)
         throw std::invalid_argument(fmt::format("--bounces {}: expected 0..{}", s.bounces, kMaxReferenceBounces));
     if (scene.indices.empty()) throw std::invalid_argument("the scene has no triangles to trace");
+    // Instanced meshes are traced as world-space copies (at rest; a caller with a time passes the
+    // scene's worldSpaceScene at that time).
+    if (scene.instances.size() > 1)
+        return renderReference(worldSpaceScene(scene, instanceTransforms(scene, nodeWorldTransforms(scene, 0.0, {}))),
+                               camera, s);
 
     const auto start = std::chrono::steady_clock::now();
     const RayScene rays(scene);

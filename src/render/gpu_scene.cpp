@@ -4,6 +4,7 @@ namespace penumbra {
 
 GpuScene::GpuScene(vk::Context& ctx, Scene scene)
     : ctx_(ctx), scene_(std::move(scene)), alloc_(ctx), cmd_(alloc_) {
+    ensureSceneGraph(scene_);
     meshes_ = std::make_unique<SceneGpu>(cmd_, scene_);
     if (!scene_.strands.empty()) hair_ = std::make_unique<HairGpu>(cmd_, scene_);
     ++geometryUploads_;

@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "scene/animation.h"
+
 namespace penumbra {
 namespace {
 
@@ -92,6 +94,10 @@ void Renderer::init() {
     for (uint32_t i = 0; i < framesInFlight_; ++i) slots_.push_back(std::make_unique<FrameSlot>(ctx_));
     drawLayout_ = vk::DescriptorLayout(ctx_, SceneGpu::drawSetBindings());
     frame_ = vk::BufferRing(alloc_, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, "frame");
+    const Scene& scene = scene_.scene();
+    restInstances_ = instanceTransforms(scene, nodeWorldTransforms(scene, 0.0, {}));
+    instances_ = vk::BufferRing(alloc_, sizeof(gpu::GpuInstance) * std::max<size_t>(restInstances_.size(), 1),
+                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "instances");
     lights_ = scene_.scene().lights;
     build(kPartShadow | kPartCamera | kPartGi | kPartDsm);
 }
@@ -226,11 +232,22 @@ void Renderer::writeFrameData(const FrameInputs& in) {
         shadow_->pass().fillGpuLight(i, lights.back());
     }
     if (!lights.empty()) lightBuffer_.write(lights.data(), lights.size() * sizeof(gpu::GpuLight));
+    writeInstances(frameInstances(in));
+}
+
+const std::vector<glm::mat4>& Renderer::frameInstances(const FrameInputs& in) const {
+    return in.instances.size() == restInstances_.size() ? in.instances : restInstances_;
+}
+
+void Renderer::writeInstances(const std::vector<glm::mat4>& transforms) {
+    const std::vector<gpu::GpuInstance> rows = instanceRows(transforms);
+    if (!rows.empty()) instances_.write(rows.data(), rows.size() * sizeof(gpu::GpuInstance));
 }
 
 void Renderer::recordFrame(FrameSlot& slot, const FrameInputs& in, const FrameHooks& hooks) {
     const uint32_t index = uint32_t(frameIndex_ % slots_.size());
-    for (vk::BufferRing* r : {&frame_, &views_, &lightBuffer_}) r->select(index);
+    for (vk::BufferRing* r : {&frame_, &views_, &lightBuffer_, &instances_}) r->select(index);
+    scene_.meshes().setFrameInstances(frameInstances(in));
     zfar_ = sceneFar(in.camera, scene_.scene().bounds);
     graph_.clear();
     const float aspect = float(settings_.width) / float(settings_.height);
@@ -241,6 +258,7 @@ void Renderer::recordFrame(FrameSlot& slot, const FrameInputs& in, const FrameHo
     graph_.publish("frame", graph_.import(frame_.current()));
     graph_.publish("views", graph_.import(views_.current()));
     graph_.publish("lights", graph_.import(lightBuffer_.current()));
+    graph_.publish("instances", graph_.import(instances_.current()));
     for (Technique* t : list) t->addPasses(context);
 
     VK_CHECK(vkResetCommandPool(ctx_.device(), slot.pool, VK_COMMAND_POOL_RESET_RELEASE_RESOURCES_BIT));

@@ -16,11 +16,14 @@
 
 namespace penumbra {
 
-// What one frame shows besides the settings: the camera and the lights (moved, added or removed
-// freely: a changed light count or shadow layout re-creates the shadow resources, nothing else).
+// What one frame shows besides the settings: the camera, the lights (moved, added or removed
+// freely: a changed light count or shadow layout re-creates the shadow resources, nothing else) and
+// the world transform of every Scene::instances entry (empty: the rest pose). Moving things touches
+// only these per-frame buffers: geometry is never uploaded again.
 struct FrameInputs {
     Camera camera;
     std::vector<Light> lights;
+    std::vector<glm::mat4> instances;
 };
 
 // Recorded into a frame's command buffer after its last pass (a viewer's present blit and UI), with
@@ -102,6 +105,8 @@ private:
     bool layoutChanged(const std::vector<Light>& lights) const;
     FrameSlot& acquireSlot();
     void writeFrameData(const FrameInputs& in);
+    const std::vector<glm::mat4>& frameInstances(const FrameInputs& in) const;
+    void writeInstances(const std::vector<glm::mat4>& transforms);
     void recordFrame(FrameSlot& slot, const FrameInputs& in, const FrameHooks& hooks);
     void collect(FrameSlot& slot);
     std::vector<Technique*> techniques() const;
@@ -117,7 +122,8 @@ private:
     uint64_t frameIndex_ = 0;
     std::vector<Light> lights_;  // the lights the shadow layout was built for
     vk::DescriptorLayout drawLayout_;
-    vk::BufferRing frame_, views_, lightBuffer_;
+    vk::BufferRing frame_, views_, lightBuffer_, instances_;
+    std::vector<glm::mat4> restInstances_;  // the instances' transforms at rest (FrameInputs without any)
     std::unique_ptr<DsmTechnique> dsm_;
     std::unique_ptr<ShadowTechnique> shadow_;
     std::unique_ptr<CameraTechnique> camera_;

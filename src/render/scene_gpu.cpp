@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "render/texture_upload.h"
+#include "scene/animation.h"
 
 namespace penumbra {
 
@@ -38,6 +39,22 @@ SceneGpu::SceneGpu(vk::CommandContext& cmd, const Scene& scene)
         std::fill_n(triangleMaterials.begin() + d.firstIndex / 3, d.indexCount / 3, d.material);
     triangleMaterials_ = cmd.createDeviceBuffer(triangleMaterials.data(), triangleMaterials.size() * sizeof(uint32_t),
                                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "triangle-materials");
+    std::vector<glm::uvec2> drawn;
+    for (uint32_t i = 0; i < scene.instances.size(); ++i) {
+        const Mesh& mesh = scene.meshes[scene.instances[i].mesh];
+        for (uint32_t k = mesh.firstDraw; k < mesh.firstDraw + mesh.drawCount; ++k)
+            for (uint32_t t = 0; t < scene.draws[k].indexCount / 3; ++t)
+                drawn.push_back({i, scene.draws[k].firstIndex / 3 + t});
+    }
+    drawnTriangleCount_ = uint32_t(drawn.size());
+    const std::vector<glm::mat4> rest = instanceTransforms(scene, nodeWorldTransforms(scene, 0.0, {}));
+    std::vector<gpu::GpuInstance> rows = instanceRows(rest);
+    restInstances_ = cmd.createDeviceBuffer(rows.data(), rows.size() * sizeof(rows[0]), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                            "rest-instances");
+    setFrameInstances(rest);
+    if (drawn.empty()) drawn.push_back({0u, 0u});
+    drawnTriangles_ = cmd.createDeviceBuffer(drawn.data(), drawn.size() * sizeof(glm::uvec2),
+                                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "drawn-triangles");
     uploadTextures(cmd);
 }
 
@@ -50,13 +67,43 @@ std::vector<VkVertexInputAttributeDescription> SceneGpu::vertexAttributes() {
 std::vector<vk::Binding> SceneGpu::drawSetBindings() {
     return {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
             {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-            {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER}};
+            {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
+            {SCENE_INSTANCES_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
 }
 
 void SceneGpu::declareDrawSet(PassBuilder& pass, BufferHandle views) {
     FrameGraph& g = pass.graph();
     pass.storageBuffer(0, views).storageBuffer(1, g.import(materials_)).sampled(2, g.import(textures_),
                                                                                 sampler_.handle());
+    pass.storageBuffer(SCENE_INSTANCES_BINDING, g.hasBuffer("instances") ? g.buffer("instances") : g.import(restInstances_));
+}
+
+void SceneGpu::setFrameInstances(const std::vector<glm::mat4>& transforms) {
+    runs_.clear();
+    for (uint32_t i = 0; i < scene_.instances.size() && i < transforms.size(); ++i) {
+        const uint32_t mesh = scene_.instances[i].mesh;
+        const bool mirrored = glm::determinant(glm::mat3(transforms[i])) < 0.0f;
+        if (!runs_.empty() && runs_.back().mesh == mesh && runs_.back().mirrored == mirrored &&
+            runs_.back().first + runs_.back().count == i)
+            ++runs_.back().count;
+        else
+            runs_.push_back({mesh, i, 1, mirrored});
+    }
+}
+
+std::vector<gpu::GpuInstance> instanceRows(const std::vector<glm::mat4>& transforms) {
+    std::vector<gpu::GpuInstance> rows;
+    rows.reserve(transforms.size());
+    for (const glm::mat4& m : transforms) {
+        const glm::mat3 linear(m);
+        const float det = glm::determinant(linear);
+        gpu::GpuInstance row{};
+        row.model = m;
+        row.normal = glm::mat4(std::abs(det) > 0.0f ? glm::transpose(glm::inverse(linear)) : linear);
+        row.info = {det < 0.0f ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f};
+        rows.push_back(row);
+    }
+    return rows;
 }
 
 void SceneGpu::uploadTextures(vk::CommandContext& cmd) {

@@ -1,5 +1,7 @@
-// The scene's GPU copy: world-space vertices and indices, the material table and its textures.
-// Shared, read-only, by every pass that draws the scene (G-buffer, shadow maps, later RSM/DSM).
+// The scene's GPU copy: every mesh's vertices and indices (uploaded once), the material table and its
+// textures. Shared, read-only, by every pass that draws the scene (G-buffer, shadow maps, RSM, DSM).
+// Meshes are drawn per instance (Scene::instances); the instances' transforms are per-frame data in
+// the frame graph's "instances" buffer (GpuInstance, written by the Renderer).
 #pragma once
 #include <vector>
 
@@ -10,6 +12,9 @@
 #include "vk/pipeline.h"
 
 namespace penumbra {
+
+// The rows of the instance table for these transforms (normal matrix, mirror flag).
+std::vector<gpu::GpuInstance> instanceRows(const std::vector<glm::mat4>& transforms);
 
 class SceneGpu {
 public:
@@ -23,12 +28,18 @@ public:
     const vk::Buffer& materials() const { return materials_; }
     // The material of every triangle (index / 3), for passes that fetch triangles themselves.
     const vk::Buffer& triangleMaterials() const { return triangleMaterials_; }
+    // Every drawn triangle as (instance, triangle): what a compute pass walks to draw the scene.
+    const vk::Buffer& drawnTriangles() const { return drawnTriangles_; }
+    uint32_t drawnTriangleCount() const { return drawnTriangleCount_; }
+    // The frame's instance transforms decide the cull mode of mirrored instances (set before recording).
+    void setFrameInstances(const std::vector<glm::mat4>& transforms);
     // All base-colour textures as layers of one mip-mapped sRGB 2D array (one descriptor, which
     // fits every device's per-stage sampler limit; lavapipe allows only 32 samplers per stage).
     vk::Image& textures() { return textures_; }
     VkSampler textureSampler() const { return sampler_.handle(); }
-    // Set 0 of the pipelines that draw the scene: views, materials, textures (bindings 0-2); a pass
-    // may declare more bindings of its own.
+    // Set 0 of the pipelines that draw the scene: views, materials, textures (bindings 0-2) and the
+    // frame's instance table (SCENE_INSTANCES_BINDING, the graph's "instances"); a pass may declare
+    // more bindings of its own.
     void declareDrawSet(PassBuilder& pass, BufferHandle views);
     static std::vector<vk::Binding> drawSetBindings();
 
@@ -39,37 +50,53 @@ public:
         return yFlippedProjection ? VK_FRONT_FACE_COUNTER_CLOCKWISE : VK_FRONT_FACE_CLOCKWISE;
     }
 
-    // Binds vertex/index buffers, then calls `perDraw` for every draw (to push constants), then draws.
+    // Binds vertex/index buffers, then, for every run of instances of one mesh (consecutive in
+    // Scene::instances, all mirrored or none) and every draw of that mesh, calls `perDraw` (to push
+    // constants) and draws the run with one instanced draw (firstInstance = the run's first instance).
     // `filter` selects draws by material (e.g. only alpha-masked ones). Single-sided materials are
     // drawn with back faces culled, in the camera and in the lights' views alike (glTF: a one-sided
     // surface is invisible from behind, so it neither shows nor casts from there — a sky dome seen
     // from outside casts no shadow); pipelines must use GraphicsDesc::dynamicCullMode.
     // Winding: glTF fronts are counter-clockwise; views with a y-flipped projection (the camera)
     // keep that, views without (shadow maps) see them clockwise: see sceneFrontFace().
-    // `instances` > 1: layered passes draw one instance per target layer (shadow maps).
+    // `layers` > 1: layered passes draw `layers` instances per scene instance, one per target layer
+    // (shadow maps; render/instances.glsl).
     template <class PerDraw, class Filter>
-    void draw(VkCommandBuffer cmd, PerDraw perDraw, Filter filter, uint32_t instances = 1) const;
+    void draw(VkCommandBuffer cmd, PerDraw perDraw, Filter filter, uint32_t layers = 1) const;
 
 private:
     void uploadTextures(vk::CommandContext& cmd);
     const Scene& scene_;
     vk::Context& ctx_;
-    vk::Buffer vertices_, indices_, materials_, triangleMaterials_;
+    vk::Buffer vertices_, indices_, materials_, triangleMaterials_, drawnTriangles_;
+    uint32_t drawnTriangleCount_ = 0;
+    struct Run {
+        uint32_t mesh, first, count;
+        bool mirrored;
+    };
+    std::vector<Run> runs_;  // this frame's
+    vk::Buffer restInstances_;  // the instance table at rest, for graphs without a frame's "instances"
     vk::Image textures_;
     vk::Sampler sampler_;
 };
 
 template <class PerDraw, class Filter>
-void SceneGpu::draw(VkCommandBuffer cmd, PerDraw perDraw, Filter filter, uint32_t instances) const {
+void SceneGpu::draw(VkCommandBuffer cmd, PerDraw perDraw, Filter filter, uint32_t layers) const {
     VkDeviceSize offset = 0;
     VkBuffer vb = vertices_.handle();
     vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &offset);
     vkCmdBindIndexBuffer(cmd, indices_.handle(), 0, VK_INDEX_TYPE_UINT32);
-    for (const Draw& d : scene_.draws) {
-        if (!filter(scene_.materials[d.material])) continue;
-        vkCmdSetCullMode(cmd, scene_.materials[d.material].doubleSided ? VK_CULL_MODE_NONE : VK_CULL_MODE_BACK_BIT);
-        perDraw(d);
-        vkCmdDrawIndexed(cmd, d.indexCount, instances, d.firstIndex, 0, 0);
+    for (const Run& run : runs_) {
+        const Mesh& mesh = scene_.meshes[run.mesh];
+        // A mirroring transform turns counter-clockwise fronts clockwise: cull the other side.
+        const VkCullModeFlags back = run.mirrored ? VK_CULL_MODE_FRONT_BIT : VK_CULL_MODE_BACK_BIT;
+        for (uint32_t k = mesh.firstDraw; k < mesh.firstDraw + mesh.drawCount; ++k) {
+            const Draw& d = scene_.draws[k];
+            if (!filter(scene_.materials[d.material])) continue;
+            vkCmdSetCullMode(cmd, scene_.materials[d.material].doubleSided ? VkCullModeFlags(VK_CULL_MODE_NONE) : back);
+            perDraw(d);
+            vkCmdDrawIndexed(cmd, d.indexCount, run.count * layers, d.firstIndex, 0, run.first);
+        }
     }
 }
 

@@ -20,7 +20,7 @@ uint32_t addMaterial(Scene& scene, const glm::vec3& rgb) {
 }
 
 void addTriangles(Scene& scene, std::span<const Vertex> vertices, std::span<const uint32_t> indices,
-                  uint32_t material) {
+                  uint32_t material, bool mergeWithPrevious) {
     if (scene.vertices.size() + vertices.size() > std::numeric_limits<uint32_t>::max())
         throw SceneError("scene has more than 2^32 vertices");
     const auto base = static_cast<uint32_t>(scene.vertices.size());
@@ -29,7 +29,7 @@ void addTriangles(Scene& scene, std::span<const Vertex> vertices, std::span<cons
     for (uint32_t i : indices) scene.indices.push_back(base + i);
     const auto count = static_cast<uint32_t>(indices.size());
     if (count == 0) return;
-    if (!scene.draws.empty()) {
+    if (!scene.draws.empty() && mergeWithPrevious) {
         Draw& last = scene.draws.back();
         if (last.material == material && last.firstIndex + last.indexCount == first) {
             last.indexCount += count;

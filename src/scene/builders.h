@@ -20,7 +20,7 @@ uint32_t addMaterial(Scene& scene, const glm::vec3& rgb);
 // Appends triangles (indices relative to `vertices`) as one draw; merges with the previous draw
 // when it has the same material and directly precedes it, to keep the draw count low.
 void addTriangles(Scene& scene, std::span<const Vertex> vertices, std::span<const uint32_t> indices,
-                  uint32_t material);
+                  uint32_t material, bool mergeWithPrevious = true);
 
 // Reorders the triangles so that each material's are contiguous, in material order (which also
 // groups the cull modes, a material property): one draw per material. The glTF loader calls it, so

@@ -101,19 +101,6 @@ tinygltf::Model parseFile(const std::string& path) {
     return model;
 }
 
-glm::mat4 localTransform(const tinygltf::Node& n) {
-    if (n.matrix.size() == 16) return glm::mat4(glm::make_mat4(n.matrix.data()));  // column-major, as glTF
-    glm::mat4 m(1.0f);
-    if (n.translation.size() == 3)
-        m = glm::translate(m, glm::vec3(n.translation[0], n.translation[1], n.translation[2]));
-    if (n.rotation.size() == 4) {
-        // glTF stores (x, y, z, w); glm's constructor takes w first.
-        glm::quat q(float(n.rotation[3]), float(n.rotation[0]), float(n.rotation[1]), float(n.rotation[2]));
-        if (glm::length(q) > 0.0f) m *= glm::mat4_cast(glm::normalize(q));
-    }
-    if (n.scale.size() == 3) m = glm::scale(m, glm::vec3(n.scale[0], n.scale[1], n.scale[2]));
-    return m;
-}
 
 // Unit vector or `fallback` when v is zero, tiny or not finite (degenerate input must not give NaNs).
 glm::vec3 safeNormalize(const glm::vec3& v, const glm::vec3& fallback) {
@@ -179,7 +166,10 @@ public:
 
     void run() {
         loadMaterials();
+        readAnimations();
         for (int root : withoutRepeats(rootNodes(), "the scene")) visitTree(root);
+        if (!m_.skins.empty()) warn("skins are not supported: skinned meshes are drawn in their bind pose");
+        placeGeometry();
     }
 
 private:
@@ -237,16 +227,16 @@ private:
     }
 
     // Depth-first over the tree under `root` with an explicit stack (a file cannot deepen the call
-    // stack); each node is entered (its content added, its children pushed) and later left (taken off
-    // the root-to-node path that detects cycles).
+    // stack); each node is entered (recorded as a Scene node, parents before children) and later left
+    // (taken off the root-to-node path that detects cycles).
     void visitTree(int root) {
         struct Step {
             int node;
-            glm::mat4 parent;
+            int32_t parent;  // Scene::nodes index of the parent, -1 for the root
             int depth;
             bool leave;
         };
-        std::vector<Step> stack{{root, glm::mat4(1.0f), 0, false}};
+        std::vector<Step> stack{{root, -1, 0, false}};
         while (!stack.empty()) {
             const Step step = stack.back();
             stack.pop_back();
@@ -261,22 +251,134 @@ private:
                 throw SceneError(fmt::format("node hierarchy is cyclic or too deep at node {}", index));
             onPath_[size_t(index)] = true;
             const tinygltf::Node& node = m_.nodes[size_t(index)];
-            const glm::mat4 world = step.parent * localTransform(node);
-            if (node.mesh >= 0) addMesh(node.mesh, world);
-            if (node.camera >= 0) addCamera(node.camera, world);
-            addLight(node, world);
-            stack.push_back({index, world, step.depth, true});
+            const int32_t self = addNode(node, index, step.parent);
+            const glm::mat4& world = restWorld_.back();
+            if (node.mesh >= 0) {
+                if (size_t(node.mesh) >= m_.meshes.size())
+                    throw SceneError(fmt::format("mesh {} does not exist", node.mesh));
+                ++meshUses_[size_t(node.mesh)];
+            }
+            if (node.camera >= 0) addCamera(node.camera, world, self);
+            addLight(node, world, self);
+            stack.push_back({index, self, step.depth, true});
             const std::vector<int> children = withoutRepeats(node.children, fmt::format("node {}", index));
             for (auto child = children.rbegin(); child != children.rend(); ++child)
-                stack.push_back({*child, world, step.depth + 1, false});  // reversed: visited in file order
+                stack.push_back({*child, self, step.depth + 1, false});  // reversed: visited in file order
         }
     }
 
-    void addMesh(int index, const glm::mat4& world) {
-        if (size_t(index) >= m_.meshes.size()) throw SceneError(fmt::format("mesh {} does not exist", index));
+    int32_t addNode(const tinygltf::Node& node, int index, int32_t parent) {
+        Node n;
+        n.parent = parent;
+        n.sourceNode = index;
+        n.mesh = node.mesh;
+        n.name = node.name;
+        if (node.matrix.size() == 16) n.matrix = glm::mat4(glm::make_mat4(node.matrix.data()));
+        if (node.translation.size() == 3) n.translation = glm::vec3(node.translation[0], node.translation[1], node.translation[2]);
+        if (node.rotation.size() == 4) {
+            // glTF stores (x, y, z, w); glm's constructor takes w first.
+            const glm::quat q(float(node.rotation[3]), float(node.rotation[0]), float(node.rotation[1]),
+                              float(node.rotation[2]));
+            if (glm::length(q) > 0.0f) n.rotation = glm::normalize(q);
+        }
+        if (node.scale.size() == 3) n.scale = glm::vec3(node.scale[0], node.scale[1], node.scale[2]);
+        const int32_t self = int32_t(s_.nodes.size());
+        restWorld_.push_back(parent >= 0 ? restWorld_[size_t(parent)] * n.local() : n.local());
+        moving_.push_back(animatedSource_[size_t(index)] || (parent >= 0 && moving_[size_t(parent)]));
+        s_.nodes.push_back(std::move(n));
+        return self;
+    }
+
+    // Static batching (scene.h): a mesh drawn by one node that no animation moves is baked into mesh 0
+    // in world space; every other mesh keeps one local-space copy drawn per instance. Lines (hair) are
+    // always baked at the rest pose.
+    void placeGeometry() {
+        auto instanced = [&](size_t n) { return moving_[n] || meshUses_[size_t(s_.nodes[n].mesh)] > 1; };
+        for (size_t n = 0; n < s_.nodes.size(); ++n)
+            if (s_.nodes[n].mesh >= 0) addMesh(s_.nodes[n].mesh, restWorld_[n], instanced(n) ? kLines : kEverything);
+        mergeDrawsByMaterial(s_);
+        s_.meshes = {Mesh{0, uint32_t(s_.draws.size()), {}}};
+        s_.instances = {Instance{0, -1}};
+        std::vector<int32_t> meshOf(m_.meshes.size(), -1);
+        for (size_t n = 0; n < s_.nodes.size(); ++n) {
+            if (s_.nodes[n].mesh < 0 || !instanced(n)) continue;
+            int32_t& mesh = meshOf[size_t(s_.nodes[n].mesh)];
+            if (mesh < 0) {
+                const uint32_t first = uint32_t(s_.draws.size());
+                newDraw_ = true;  // never merged into the previous mesh's last draw
+                addMesh(s_.nodes[n].mesh, glm::mat4(1.0f), kTriangles);
+                mesh = int32_t(s_.meshes.size());
+                s_.meshes.push_back(Mesh{first, uint32_t(s_.draws.size()) - first, {}});
+            }
+            s_.instances.push_back(Instance{uint32_t(mesh), int32_t(n)});
+        }
+        // Instances of one mesh side by side: each mesh is one instanced draw per pass (SceneGpu::draw).
+        std::stable_sort(s_.instances.begin(), s_.instances.end(),
+                         [](const Instance& a, const Instance& b) { return a.mesh < b.mesh; });
+    }
+
+    void readAnimations() {
+        animatedSource_.assign(m_.nodes.size(), false);
+        for (size_t a = 0; a < m_.animations.size(); ++a) {
+            const tinygltf::Animation& ga = m_.animations[a];
+            Animation anim;
+            anim.name = ga.name;
+            for (size_t c = 0; c < ga.channels.size(); ++c) {
+                const tinygltf::AnimationChannel& gc = ga.channels[c];
+                const std::string what = fmt::format("animation {} channel {}", a, c);
+                if (gc.target_path == "weights") {
+                    warn("morph-target weight animations are not supported: meshes keep their default weights");
+                    continue;
+                }
+                AnimationChannel ch;
+                if (gc.target_path == "translation") ch.path = AnimationPath::Translation;
+                else if (gc.target_path == "rotation") ch.path = AnimationPath::Rotation;
+                else if (gc.target_path == "scale") ch.path = AnimationPath::Scale;
+                else throw SceneError(fmt::format("{}: unknown target path '{}'", what, gc.target_path));
+                if (gc.target_node < 0 || size_t(gc.target_node) >= m_.nodes.size())
+                    continue;  // glTF allows a channel without a node (an extension may target something else)
+                if (gc.sampler < 0 || size_t(gc.sampler) >= ga.samplers.size())
+                    throw SceneError(fmt::format("{}: sampler {} does not exist", what, gc.sampler));
+                readSampler(ga.samplers[size_t(gc.sampler)], ch, what);
+                ch.sourceNode = gc.target_node;
+                anim.duration = std::max(anim.duration, ch.times.back());
+                animatedSource_[size_t(gc.target_node)] = true;
+                anim.channels.push_back(std::move(ch));
+            }
+            s_.animations.push_back(std::move(anim));
+        }
+    }
+
+    void readSampler(const tinygltf::AnimationSampler& gs, AnimationChannel& ch, const std::string& what) {
+        if (gs.interpolation == "STEP") ch.interpolation = Interpolation::Step;
+        else if (gs.interpolation == "CUBICSPLINE") ch.interpolation = Interpolation::CubicSpline;
+        else if (gs.interpolation.empty() || gs.interpolation == "LINEAR") ch.interpolation = Interpolation::Linear;
+        else throw SceneError(fmt::format("{}: unknown interpolation '{}'", what, gs.interpolation));
+        ch.times = gltf::readFloats(m_, gs.input, 1, what + " input");
+        if (ch.times.empty()) throw SceneError(fmt::format("{}: no keys", what));
+        for (size_t k = 0; k < ch.times.size(); ++k)
+            if (!std::isfinite(ch.times[k]) || ch.times[k] < 0.0f || (k > 0 && ch.times[k] < ch.times[k - 1]))
+                throw SceneError(fmt::format("{}: key times must be finite, >= 0 and increasing", what));
+        const int comps = ch.path == AnimationPath::Rotation ? 4 : 3;
+        const std::vector<float> v = gltf::readFloats(m_, gs.output, comps, what + " output");
+        const size_t perKey = ch.interpolation == Interpolation::CubicSpline ? 3 : 1;
+        if (v.size() != ch.times.size() * perKey * size_t(comps))
+            throw SceneError(fmt::format("{}: {} output values for {} keys", what, v.size() / size_t(comps),
+                                         ch.times.size()));
+        for (size_t i = 0; i < v.size(); i += size_t(comps)) {
+            glm::vec4 value(v[i], v[i + 1], v[i + 2], comps == 4 ? v[i + 3] : 0.0f);
+            if (!std::isfinite(value.x + value.y + value.z + value.w))
+                throw SceneError(fmt::format("{}: output values must be finite", what));
+            ch.values.push_back(value);
+        }
+    }
+
+    static constexpr uint32_t kTriangles = 1, kLines = 2, kEverything = 3;
+
+    void addMesh(int index, const glm::mat4& world, uint32_t kinds) {
         const auto& prims = m_.meshes[size_t(index)].primitives;
         for (size_t p = 0; p < prims.size(); ++p)
-            addPrimitive(prims[p], world, fmt::format("mesh {} primitive {}", index, p));
+            addPrimitive(prims[p], world, fmt::format("mesh {} primitive {}", index, p), kinds);
     }
 
     std::vector<float> optionalAttribute(const tinygltf::Primitive& p, const char* name, int comps, size_t count,
@@ -317,7 +419,7 @@ private:
         }
     }
 
-    void addPrimitive(const tinygltf::Primitive& p, const glm::mat4& world, const std::string& what) {
+    void addPrimitive(const tinygltf::Primitive& p, const glm::mat4& world, const std::string& what, uint32_t kinds) {
         const int mode = p.mode < 0 ? TINYGLTF_MODE_TRIANGLES : p.mode;
         if (mode == TINYGLTF_MODE_POINTS) return;  // points are not drawn
         const auto posIt = p.attributes.find("POSITION");
@@ -328,7 +430,8 @@ private:
         if (p.material < -1 || p.material >= int(m_.materials.size()))
             throw SceneError(fmt::format("{}: material {} does not exist", what, p.material));
         if (mode == TINYGLTF_MODE_LINE || mode == TINYGLTF_MODE_LINE_STRIP || mode == TINYGLTF_MODE_LINE_LOOP)
-            return addStrands(p, pos, world, mode, what);
+            return (kinds & kLines) ? addStrands(p, pos, world, mode, what) : void();
+        if (!(kinds & kTriangles)) return;
         if (mode != TINYGLTF_MODE_TRIANGLES && mode != TINYGLTF_MODE_TRIANGLE_STRIP &&
             mode != TINYGLTF_MODE_TRIANGLE_FAN)
             return;  // unknown mode
@@ -349,10 +452,11 @@ private:
         }
         if (nrm.empty()) generateNormals(verts, tris);
         for (Vertex& v : verts) v.normal = safeNormalize(v.normal, glm::vec3(0, 1, 0));
-        addTriangles(s_, verts, tris, uint32_t(p.material + 1));
+        addTriangles(s_, verts, tris, uint32_t(p.material + 1), !newDraw_);
+        newDraw_ = false;
     }
 
-    void addLight(const tinygltf::Node& node, const glm::mat4& world) {
+    void addLight(const tinygltf::Node& node, const glm::mat4& world, int32_t sceneNode) {
         const auto ext = node.extensions.find("KHR_lights_punctual");
         if (ext == node.extensions.end() || !ext->second.IsObject() || !ext->second.Has("light")) return;
         const tinygltf::Value& v = ext->second.Get("light");
@@ -386,10 +490,11 @@ private:
         // Lights shine down their node's -Z; position is the node origin.
         l.position = glm::vec3(world[3]);
         l.direction = safeNormalize(glm::mat3(world) * glm::vec3(0, 0, -1), glm::vec3(0, -1, 0));
+        l.node = sceneNode;
         s_.lights.push_back(l);
     }
 
-    void addCamera(int index, const glm::mat4& world) {
+    void addCamera(int index, const glm::mat4& world, int32_t sceneNode) {
         if (size_t(index) >= m_.cameras.size()) throw SceneError(fmt::format("camera {} does not exist", index));
         const tinygltf::Camera& gc = m_.cameras[size_t(index)];
         if (gc.type != "perspective") {  // Camera is perspective only; --camera-index counts the ones kept
@@ -399,6 +504,7 @@ private:
             return;
         }
         Camera cam;
+        cam.node = sceneNode;
         cam.eye = glm::vec3(world[3]);
         const glm::vec3 forward = safeNormalize(glm::mat3(world) * glm::vec3(0, 0, -1), glm::vec3(0, 0, -1));
         cam.target = cam.eye + forward;  // distance fixed up once the bounds are known
@@ -434,6 +540,11 @@ private:
     std::vector<std::optional<Texture>> images_;  // decoded glTF images (those materials use)
     std::vector<int32_t> imageTexture_;           // glTF image -> Scene::textures index
     std::vector<bool> onPath_;                    // nodes on the current root-to-node path (cycle detection)
+    std::vector<bool> animatedSource_;            // glTF nodes an animation channel targets
+    std::vector<uint32_t> meshUses_ = std::vector<uint32_t>(m_.meshes.size());  // nodes drawing each glTF mesh
+    std::vector<glm::mat4> restWorld_;            // per Scene node: world transform at rest
+    std::vector<bool> moving_;                    // per Scene node: it or an ancestor is animated
+    bool newDraw_ = false;                        // the next triangles start a draw of their own
     bool quantized_;                              // KHR_mesh_quantization: integer positions, normals, uvs
 };
 
@@ -472,7 +583,6 @@ Scene loadGltf(const std::string& path) {
     }
     if (scene.indices.empty() && scene.strands.empty())
         throw SceneError(fmt::format("{}: no triangles or lines in the default scene", path));
-    mergeDrawsByMaterial(scene);
     scene.computeBounds();
     placeCameraTargets(scene);
     return scene;

@@ -7,12 +7,36 @@
 
 #include <fmt/format.h>
 
+#include "scene/animation.h"
+
 namespace penumbra {
 
 void Scene::computeBounds() {
-    bounds = Bounds{};
-    for (const Vertex& v : vertices) bounds.extend(v.position);
-    for (const glm::vec3& p : strandPoints) bounds.extend(p);
+    ensureSceneGraph(*this);
+    for (Mesh& m : meshes) {
+        m.bounds = Bounds{};
+        for (uint32_t d = m.firstDraw; d < m.firstDraw + m.drawCount; ++d)
+            for (uint32_t k = 0; k < draws[d].indexCount; ++k)
+                m.bounds.extend(vertices[indices[draws[d].firstIndex + k]].position);
+    }
+    bounds = animatedBounds(*this);
+}
+
+size_t Scene::drawnTriangleCount() const {
+    if (instances.empty()) return triangleCount();
+    size_t n = 0;
+    for (const Instance& i : instances)
+        for (uint32_t d = meshes[i.mesh].firstDraw; d < meshes[i.mesh].firstDraw + meshes[i.mesh].drawCount; ++d)
+            n += draws[d].indexCount / 3;
+    return n;
+}
+
+void ensureSceneGraph(Scene& scene) {
+    if (!scene.nodes.empty() && !scene.meshes.empty()) return;  // the loader made them
+    if (scene.meshes.size() == 1 && scene.meshes[0].drawCount == scene.draws.size() && scene.instances.size() == 1)
+        return;
+    scene.meshes = {Mesh{0, uint32_t(scene.draws.size()), {}}};
+    scene.instances = {Instance{0, -1}};
 }
 
 namespace {

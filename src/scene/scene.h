@@ -1,6 +1,10 @@
-// Scene description shared by the renderer, the CLI and (later) the reference renderer.
-// Geometry is static and flattened to world space at load time: every glTF node transform is
-// baked into the vertices, so the GPU passes need no per-draw model matrix.
+// Scene description shared by the renderer, the CLI and the reference renderer.
+// The node hierarchy survives loading (Scene::nodes, parents before children). Geometry is stored
+// per mesh (Scene::meshes) and drawn per instance (Scene::instances) with the instance's world
+// transform. Static batching: a mesh that only one node draws and that no animation moves is baked
+// into world space at load into mesh 0 (drawn by the identity instance), so a file of 200000 static
+// nodes stays a few draws per pass; meshes drawn by several nodes, or moved by an animation, keep
+// their own local-space copy, uploaded once and drawn once per instance.
 #pragma once
 #include <cstdint>
 #include <optional>
@@ -9,12 +13,13 @@
 #include <vector>
 
 #include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
 
 namespace penumbra {
 
 struct Vertex {
-    glm::vec3 position;  // world space
-    glm::vec3 normal;    // world space, unit length
+    glm::vec3 position;  // the mesh's space (world space for mesh 0, the static batch)
+    glm::vec3 normal;    // the mesh's space, unit length
     glm::vec2 uv;
 };
 
@@ -51,6 +56,15 @@ struct Strand {
     glm::vec3 color{0.35f, 0.22f, 0.12f};  // linear base colour
 };
 
+struct Bounds {
+    glm::vec3 min{1e30f};
+    glm::vec3 max{-1e30f};
+    void extend(const glm::vec3& p) { min = glm::min(min, p); max = glm::max(max, p); }
+    bool empty() const { return min.x > max.x; }
+    glm::vec3 center() const { return 0.5f * (min + max); }
+    float radius() const { return 0.5f * glm::length(max - min); }
+};
+
 enum class LightType : uint32_t { Directional = 0, Spot = 1, Point = 2 };
 
 // Shadow-map filter of one light (values = SHADOW_FILTER_* in shaders/shared/types.h). Default:
@@ -72,6 +86,52 @@ struct Light {
     bool castsShadow = true;
     ShadowFilter shadowFilter = ShadowFilter::Default;
     std::string name;
+    int32_t node = -1;  // the Scene::nodes entry it hangs from (moves with it), -1 = none
+};
+
+// A node of the hierarchy: its rest transform (TRS, or a matrix, which glTF never animates).
+struct Node {
+    int32_t parent = -1;  // index into Scene::nodes, smaller than this node's (parents come first)
+    glm::vec3 translation{0.0f};
+    glm::quat rotation{1.0f, 0.0f, 0.0f, 0.0f};
+    glm::vec3 scale{1.0f};
+    std::optional<glm::mat4> matrix;  // replaces TRS when present
+    int32_t mesh = -1;        // glTF mesh drawn here (informative; Scene::instances draws it)
+    int32_t sourceNode = -1;  // the glTF node it came from (animation channels target these)
+    std::string name;
+    glm::mat4 local() const;
+};
+
+// A range of Scene::draws in one coordinate space.
+struct Mesh {
+    uint32_t firstDraw = 0;
+    uint32_t drawCount = 0;
+    Bounds bounds;  // of its vertices, in its own space
+};
+
+// One drawing of a mesh: with the world transform of `node`, or the identity (node -1: mesh 0,
+// the static batch already in world space).
+struct Instance {
+    uint32_t mesh = 0;
+    int32_t node = -1;
+};
+
+// glTF animation (translation, rotation, scale channels; STEP, LINEAR, CUBICSPLINE).
+enum class AnimationPath : uint32_t { Translation = 0, Rotation = 1, Scale = 2 };
+enum class Interpolation : uint32_t { Linear = 0, Step = 1, CubicSpline = 2 };
+
+struct AnimationChannel {
+    int32_t sourceNode = -1;  // glTF node index
+    AnimationPath path = AnimationPath::Translation;
+    Interpolation interpolation = Interpolation::Linear;
+    std::vector<float> times;       // increasing key times (s)
+    std::vector<glm::vec4> values;  // xyz(w): one per key, three (in-tangent, value, out-tangent) for CUBICSPLINE
+};
+
+struct Animation {
+    std::string name;
+    std::vector<AnimationChannel> channels;
+    float duration = 0.0f;  // last key time over all channels
 };
 
 struct Camera {
@@ -81,15 +141,7 @@ struct Camera {
     float fovy = 0.7853982f;  // radians, vertical
     float znear = 0.05f;
     float zfar = 0.0f;        // 0 = derived from the scene bounds
-};
-
-struct Bounds {
-    glm::vec3 min{1e30f};
-    glm::vec3 max{-1e30f};
-    void extend(const glm::vec3& p) { min = glm::min(min, p); max = glm::max(max, p); }
-    bool empty() const { return min.x > max.x; }
-    glm::vec3 center() const { return 0.5f * (min + max); }
-    float radius() const { return 0.5f * glm::length(max - min); }
+    int32_t node = -1;        // the Scene::nodes entry it hangs from (moves with it), -1 = none
 };
 
 struct Scene {
@@ -101,7 +153,11 @@ struct Scene {
     std::vector<Texture> textures;
     std::vector<Light> lights;
     std::vector<Camera> cameras;      // from the file; the first is the default view
-    Bounds bounds;                    // world-space bounds of all vertices and strand points
+    std::vector<Node> nodes;          // the hierarchy, parents first (empty: everything is in mesh 0)
+    std::vector<Mesh> meshes;         // mesh 0 is the static batch (world space); see ensureSceneGraph
+    std::vector<Instance> instances;  // what is drawn: instance 0 is mesh 0 with the identity
+    std::vector<Animation> animations;
+    Bounds bounds;                    // world-space bounds of all vertices and strand points, over every animation
     std::vector<glm::vec3> strandPoints;  // hair: the points of every strand, strand after strand
     std::vector<Strand> strands;
     // One line per thing the loader dropped or changed (a missing texture, an orthographic camera, a
@@ -109,7 +165,8 @@ struct Scene {
     std::vector<std::string> warnings;
 
     void computeBounds();
-    size_t triangleCount() const { return indices.size() / 3; }
+    size_t triangleCount() const { return indices.size() / 3; }  // stored (each mesh once)
+    size_t drawnTriangleCount() const;                            // drawn (each instance of each mesh)
 };
 
 // Thrown for every bad scene input (missing file, malformed glTF, unknown built-in name...).
@@ -143,5 +200,9 @@ uint32_t textureLayerSize(const std::vector<Texture>& textures);
 
 // Adds a default sun and camera where the scene has none, so that any glTF model renders.
 void addDefaultsIfMissing(Scene& scene);
+
+// A scene built by appending triangles (built-in scenes, tests) has no meshes or instances yet: all
+// its draws become mesh 0, drawn once by the identity instance. Idempotent.
+void ensureSceneGraph(Scene& scene);
 
 }  // namespace penumbra

@@ -46,6 +46,7 @@ void ShadowRaster::drawLight(VkCommandBuffer cmd, const Pipelines& pipelines, co
             [&](const Draw& d) {
                 gpu::ShadowDrawPush dp = push;
                 dp.material = d.material;
+                dp.layerCount = instances;
                 p->push(cmd, dp);
             },
             // Blended materials cast like masked ones, unless the light's deep shadow map takes them.

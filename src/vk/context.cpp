@@ -111,7 +111,8 @@ std::vector<FeatureCheck> checkRequiredFeatures(VkPhysicalDevice device) {
     VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES,
                                          hasAtomicFloat ? &af : nullptr};
     VkPhysicalDeviceVulkan12Features f12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &f13};
-    VkPhysicalDeviceFeatures2 f{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f12};
+    VkPhysicalDeviceVulkan11Features f11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES, &f12};
+    VkPhysicalDeviceFeatures2 f{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f11};
     VkPhysicalDeviceProperties props;
     vkGetPhysicalDeviceProperties(device, &props);
     const bool is13 = props.apiVersion >= VK_API_VERSION_1_3;
@@ -135,6 +136,8 @@ std::vector<FeatureCheck> checkRequiredFeatures(VkPhysicalDevice device) {
         // Shadow maps (src/shadow): all layers of a light in one instanced draw (gl_Layer written by
         // the vertex or tessellation stage); dual-paraboloid maps tessellate and clip at the rim.
         {"shaderOutputLayer", is13 && f12.shaderOutputLayer},
+        // Draws name their scene instance through firstInstance (gl_BaseInstance).
+        {"shaderDrawParameters", is13 && f11.shaderDrawParameters},
         {"tessellationShader", is13 && f.features.tessellationShader},
         {"shaderClipDistance", is13 && f.features.shaderClipDistance},
         // The compute rasterizer's edge functions are exact 64-bit integers (src/raster).
@@ -313,7 +316,9 @@ void Context::createDevice() {
     VkPhysicalDeviceVulkan12Features f12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &f13};
     f12.hostQueryReset = VK_TRUE;
     f12.shaderOutputLayer = VK_TRUE;
-    VkPhysicalDeviceFeatures2 f{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f12};
+    VkPhysicalDeviceVulkan11Features f11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES, &f12};
+    f11.shaderDrawParameters = VK_TRUE;
+    VkPhysicalDeviceFeatures2 f{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f11};
     f.features.fragmentStoresAndAtomics = VK_TRUE;
     f.features.tessellationShader = VK_TRUE;
     f.features.shaderClipDistance = VK_TRUE;

@@ -251,12 +251,17 @@ void Pipeline::pushConstants(VkCommandBuffer cmd, const void* data, uint32_t byt
     vkCmdPushConstants(cmd, layout_, VK_SHADER_STAGE_ALL, 0, bytes, data);
 }
 
+ComputeKernel::ComputeKernel(Context& ctx, const std::string& shader, const std::vector<Binding>& bindings,
+                             uint32_t pushBytes) {
+    layout = DescriptorLayout(ctx, bindings);
+    pipeline = Pipeline::compute(ctx, shader, {layout.handle()}, pushBytes);
+}
+
 ComputeKernel::ComputeKernel(Context& ctx, const std::string& shader, const std::vector<VkDescriptorType>& types,
                              uint32_t pushBytes) {
     std::vector<Binding> bindings;
     for (uint32_t i = 0; i < types.size(); ++i) bindings.push_back({i, types[i]});
-    layout = DescriptorLayout(ctx, bindings);
-    pipeline = Pipeline::compute(ctx, shader, {layout.handle()}, pushBytes);
+    *this = ComputeKernel(ctx, shader, bindings, pushBytes);
 }
 
 VkWriteDescriptorSet& DescriptorWrites::add(uint32_t binding, VkDescriptorType type) {

@@ -87,6 +87,9 @@ struct ComputeKernel {
     DescriptorLayout layout;
     Pipeline pipeline;
     ComputeKernel() = default;
+    // Bindings given by number (a kernel that reads the scene's draw set, whose instance table sits at
+    // SCENE_INSTANCES_BINDING).
+    ComputeKernel(Context& ctx, const std::string& shader, const std::vector<Binding>& bindings, uint32_t pushBytes);
     ComputeKernel(Context& ctx, const std::string& shader, const std::vector<VkDescriptorType>& types,
                   uint32_t pushBytes);
 };

@@ -1,0 +1,34 @@
+// `penumbra stability SCENE [render options] --frames N [--json F] [--all]`: temporal flicker of the
+// techniques over a slow motion, against the path tracer's own figure (README "Temporal stability").
+#pragma once
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "app/frame_options.h"
+#include "vk/context.h"
+
+namespace penumbra {
+
+struct StabilityOptions {
+    FrameOptions frame;
+    int frames = 6;
+    double fps = 30.0;
+    std::string json;
+    bool all = false;             // every shadow filter and GI mode
+    uint32_t referenceSpp = 16;   // the path tracer's first spp (doubled until the figure settles)
+    uint32_t referenceMaxSpp = 256;
+    bool reference = true;        // --no-reference: skip the path tracer's floor
+    std::string command;
+};
+
+CLI::App* addStabilityCommand(CLI::App& app, StabilityOptions& options, RenderSettings& settings);
+int runStability(const StabilityOptions& options, const vk::ContextOptions& vkOptions, RenderSettings settings,
+                 bool dryRun = false);
+
+// Flicker of a sequence of luminance images (each `pixels` values, NaN = not measured): the mean over
+// interior frames and measured pixels of |I_t - (I_{t-1} + I_{t+1}) / 2|, divided by the mean of I.
+double flicker(const std::vector<std::vector<float>>& luminance);
+
+}  // namespace penumbra

@@ -1,0 +1,168 @@
+#include "scene/motion.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include <fmt/format.h>
+#include <glm/gtc/constants.hpp>
+
+namespace penumbra {
+namespace {
+
+std::vector<std::string> split(const std::string& s, char sep) {
+    std::vector<std::string> out;
+    std::stringstream in(s);
+    std::string part;
+    while (std::getline(in, part, sep)) out.push_back(part);
+    return out;
+}
+
+std::vector<float> numbers(const std::string& s, const std::string& what) {
+    std::vector<float> out;
+    for (const std::string& p : split(s, ',')) {
+        size_t used = 0;
+        float v = 0.0f;
+        try {
+            v = std::stof(p, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (used == 0 || used != p.size() || !std::isfinite(v))
+            throw std::invalid_argument(fmt::format("{}: '{}' is not a finite number", what, p));
+        out.push_back(v);
+    }
+    return out;
+}
+
+// "T,X,Y,Z;T,X,Y,Z;..." (`extra` more numbers per key go to `second`).
+void parseKeys(const std::string& text, const std::string& what, Keyframes& first, Keyframes* second) {
+    const size_t per = second ? 7 : 4;
+    for (const std::string& key : split(text, ';')) {
+        const std::vector<float> v = numbers(key, what);
+        if (v.size() != per)
+            throw std::invalid_argument(fmt::format("{}: each key is {} numbers (T,{}), got '{}'", what, per,
+                                                    second ? "EX,EY,EZ,TX,TY,TZ" : "X,Y,Z", key));
+        if (!first.times.empty() && v[0] <= first.times.back())
+            throw std::invalid_argument(fmt::format("{}: key times must increase", what));
+        first.times.push_back(v[0]);
+        first.values.push_back({v[1], v[2], v[3]});
+        if (second) second->times.push_back(v[0]), second->values.push_back({v[4], v[5], v[6]});
+    }
+    if (first.times.empty()) throw std::invalid_argument(fmt::format("{}: no keys", what));
+}
+
+SunPath parseSun(const std::string& text) {
+    const std::vector<float> v = numbers(text, "--sun-path");
+    if (v.size() != 5 || v[4] <= 0.0f)
+        throw std::invalid_argument("--sun-path is AZ0,EL0,AZ1,EL1,SECONDS (degrees; SECONDS > 0)");
+    return {{v[0], v[1]}, {v[2], v[3]}, v[4]};
+}
+
+std::pair<size_t, Keyframes> parseLightPath(const std::string& text) {
+    const size_t colon = text.find(':');
+    if (colon == std::string::npos)
+        throw std::invalid_argument(fmt::format("--light-path '{}': expected N:T,X,Y,Z;T,X,Y,Z;...", text));
+    const std::vector<float> n = numbers(text.substr(0, colon), "--light-path light index");
+    if (n.size() != 1 || n[0] < 0.0f || n[0] != std::floor(n[0]))
+        throw std::invalid_argument(fmt::format("--light-path '{}': N must be a light index", text));
+    Keyframes k;
+    parseKeys(text.substr(colon + 1), "--light-path", k, nullptr);
+    return {size_t(n[0]), k};
+}
+
+glm::vec3 rotateY(const glm::vec3& v, float angle) {
+    const float c = std::cos(angle), s = std::sin(angle);
+    return {c * v.x + s * v.z, v.y, -s * v.x + c * v.z};
+}
+
+}  // namespace
+
+glm::vec3 Keyframes::at(double t) const {
+    if (times.empty()) return glm::vec3(0.0f);
+    if (t <= times.front()) return values.front();
+    if (t >= times.back()) return values.back();
+    const size_t k = size_t(std::upper_bound(times.begin(), times.end(), float(t)) - times.begin()) - 1;
+    const float u = float((t - times[k]) / (times[k + 1] - times[k]));
+    return glm::mix(values[k], values[k + 1], u);
+}
+
+glm::vec3 sunDirection(float azimuthDeg, float elevationDeg) {
+    const float az = glm::radians(azimuthDeg), el = glm::radians(elevationDeg);
+    return -glm::vec3(std::cos(el) * std::cos(az), std::sin(el), std::cos(el) * std::sin(az));
+}
+
+void checkMotionPaths(const MotionPaths& paths) {
+    if (!paths.sun.empty()) parseSun(paths.sun);
+    for (const std::string& l : paths.lights) parseLightPath(l);
+    Keyframes eye, target;
+    if (!paths.camera.empty()) parseKeys(paths.camera, "--camera-path", eye, &target);
+}
+
+SceneMotion::SceneMotion(const Scene& scene, const Camera& camera, const std::vector<Light>& lights,
+                         const MotionPaths& paths, const AnimationOptions& animation)
+    : scene_(scene), camera0_(camera), lights0_(lights), animation_(animation), animated_(isAnimated(scene)) {
+    if (animation.animation >= 0 && size_t(animation.animation) >= scene.animations.size())
+        throw std::invalid_argument(fmt::format("--animation {}: the scene has {} animation(s)", animation.animation,
+                                                scene.animations.size()));
+    if (!paths.sun.empty()) sun_.push_back(parseSun(paths.sun));
+    for (const std::string& l : paths.lights) {
+        auto path = parseLightPath(l);
+        if (path.first >= lights.size())
+            throw std::invalid_argument(fmt::format("--light-path {}: the frame has {} light(s)", path.first,
+                                                    lights.size()));
+        if (lights[path.first].type == LightType::Directional)
+            throw std::invalid_argument(fmt::format("--light-path {}: a directional light has no position (use --sun-path)",
+                                                    path.first));
+        lightPaths_.push_back(std::move(path));
+    }
+    if (!paths.camera.empty()) parseKeys(paths.camera, "--camera-path", camera_, &cameraTarget_);
+    const bool anyPath = !sun_.empty() || !lightPaths_.empty() || !camera_.times.empty();
+    // Built-in scenes move their own light by default (never lights given with --light).
+    if (paths.builtinDefault && !anyPath && !animated_ && !lights.empty() && lights[0].name == scene.lights[0].name &&
+        lights[0].position == scene.lights[0].position) {
+        if (scene.name == "cornell")  // the spot sweeps across the box, 0.5 m either way in 6 s
+            periodic_.push_back({0, 6.0f, {0.5f, 0.0f, 0.0f}, false, {}});
+        else if (scene.name == "hair")  // the key light orbits the head once in 8 s
+            periodic_.push_back({0, 8.0f, {}, true, scene.bounds.center()});
+    }
+}
+
+bool SceneMotion::moves() const {
+    return animated_ || !sun_.empty() || !lightPaths_.empty() || !camera_.times.empty() || !periodic_.empty();
+}
+
+ScenePose SceneMotion::at(double t) const {
+    ScenePose pose{camera0_, lights0_, {}};
+    const std::vector<glm::mat4> nodes = nodeWorldTransforms(scene_, animated_ ? t : 0.0, animation_);
+    pose.instances = instanceTransforms(scene_, nodes);
+    if (animated_) {
+        placeOnNodes(scene_, nodes, pose.lights);
+        placeOnNodes(scene_, nodes, pose.camera);
+    }
+    for (const SunPath& sun : sun_) {
+        const float u = float(std::clamp(t / sun.seconds, 0.0, 1.0));
+        const glm::vec2 ae = glm::mix(sun.from, sun.to, u);
+        for (Light& l : pose.lights)
+            if (l.type == LightType::Directional) l.direction = sunDirection(ae.x, ae.y);
+    }
+    for (const auto& [index, keys] : lightPaths_) pose.lights[index].position = keys.at(t);
+    for (const Periodic& p : periodic_) {
+        Light& l = pose.lights[p.light];
+        const float phase = float(2.0 * glm::pi<double>() * t / p.period);
+        if (p.orbit) {
+            l.position = p.center + rotateY(l.position - p.center, phase);
+            l.direction = rotateY(l.direction, phase);
+        } else {
+            l.position += p.sweep * std::sin(phase);
+        }
+    }
+    if (!camera_.times.empty()) {
+        pose.camera.eye = camera_.at(t);
+        pose.camera.target = cameraTarget_.at(t);
+    }
+    return pose;
+}
+
+}  // namespace penumbra
