@@ -152,6 +152,7 @@ void Panels::splitLabels(ViewSession& session) {
 void Panels::draw(ViewSession& session, CameraControl& control, const vk::Swapchain& swapchain) {
     sceneWindow(session, control);
     timingsWindow(session, swapchain);
+    probeWindow(session);
     splitLabels(session);
 }
 
@@ -294,6 +295,37 @@ void Panels::timingsWindow(ViewSession& session, const vk::Swapchain& swapchain)
         ImGui::TableNextColumn();
         ImGui::Text("%.3f", total);
         ImGui::EndTable();
+    }
+    ImGui::End();
+}
+
+// Every AOV at the probed pixel, as the newest completed frame computed it (the B renderer's on the
+// right half of a split view).
+void Panels::probeWindow(ViewSession& session) {
+    if (!session.probePixel) return;
+    const glm::uvec2 pixel = *session.probePixel;
+    Renderer* source = session.rendererB() && pixel.x >= session.settings().width / 2 ? session.rendererB()
+                                                                                     : &session.renderer();
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos({display.x - 308, display.y - 228}, ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize({300, 220}, ImGuiCond_FirstUseEver);
+    ImGui::Begin("Pixel probe");
+    ImGui::Text("pixel %u, %u%s", pixel.x, pixel.y, source == &session.renderer() ? "" : " (B)");
+    const std::optional<gpu::PixelProbe>& p = source->probe();
+    if (!p) ImGui::TextDisabled("(waiting for the frame)");
+    else if (p->finalRadiance.w == 0.0f) ImGui::Text("background (depth %.3f: the far plane)", p->position.w);
+    else {
+        const auto row = [](const char* name, glm::vec3 v) { ImGui::Text("%-10s %9.4f %9.4f %9.4f", name, v.x, v.y, v.z); };
+        row("final", p->finalRadiance);
+        row("direct", p->direct);
+        row("indirect", p->indirect);
+        row("irradiance", p->irradiance);
+        row("albedo", p->albedo);
+        row("normal", p->normal);
+        row("position", p->position);
+        ImGui::Text("%-10s %9.4f", "depth", p->position.w);
+        ImGui::Text("%-10s %9.4f (layer %.2f)", "shadow", p->shadow.x, p->shadow.y);
+        ImGui::Text("%-10s %9.4f", "dsm", p->shadow.z);
     }
     ImGui::End();
 }

@@ -31,6 +31,7 @@ private:
     void splitSection(ViewSession& session);
     void splitLabels(ViewSession& session);
     void timingsWindow(ViewSession& session, const vk::Swapchain& swapchain);
+    void probeWindow(ViewSession& session);
     void apply(ViewSession& session, const std::string& option, const std::string& value);
 
     std::deque<float> frameMs_;
