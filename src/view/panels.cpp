@@ -221,9 +221,25 @@ void Panels::lightsSection(ViewSession& session) {
     if (changed) session.setLights(std::move(lights));
 }
 
+// Sliders for the debug views that show one slice or layer: the LPV/GV slice and the light-space layer.
+void Panels::debugViewSliders(ViewSession& session) {
+    const RenderSettings& rs = session.settings();
+    if (rs.aov == Aov::LpvSlice || rs.aov == Aov::GvSlice) {
+        int slice = int(rs.lpv.sliceIndex);
+        if (ImGui::SliderInt("lpv-slice", &slice, 0, int(rs.lpv.resolution) - 1))
+            apply(session, "lpv-slice", std::to_string(slice));
+    } else if (rs.aov == Aov::RsmDepth || rs.aov == Aov::RsmNormal || rs.aov == Aov::RsmFlux ||
+               rs.aov == Aov::ShadowMap) {
+        int layer = int(rs.aovLayer);
+        const int last = std::max(int(session.renderer().shadow().layers().size()) - 1, 0);  // views clamp to theirs
+        if (ImGui::SliderInt("aov-layer", &layer, 0, last)) apply(session, "aov-layer", std::to_string(layer));
+    }
+}
+
 // Every option of `render` under its CLI name, grouped per technique: choices as combo boxes,
 // flags as check boxes, the rest as text fields applied on Enter through the CLI's own parser.
 void Panels::optionsSection(ViewSession& session) {
+    debugViewSliders(session);
     const std::vector<OptionInfo> options = session.options();
     std::vector<std::string> groups;
     for (const OptionInfo& o : options)

@@ -28,6 +28,7 @@ private:
     void sceneWindow(ViewSession& session, CameraControl& control);
     void lightsSection(ViewSession& session);
     void optionsSection(ViewSession& session);
+    void debugViewSliders(ViewSession& session);
     void splitSection(ViewSession& session);
     void splitLabels(ViewSession& session);
     void timingsWindow(ViewSession& session, const vk::Swapchain& swapchain);
