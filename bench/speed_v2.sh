@@ -6,7 +6,8 @@
 set -euo pipefail
 bin=$1 assets=$2 out=$3
 mkdir -p "$out"
-full="--shadow pcf --cascades 4 --shadow-res 2048 --gi lpv --lpv-res 32 --lpv-iterations 8 --width 1920 --height 1080"
+techniques="--shadow pcf --cascades 4 --shadow-res 2048 --gi lpv --lpv-res 32 --lpv-iterations 8"
+full="$techniques --width 1920 --height 1080"
 frames="--frames 60 --warmup 10"
 sponza="$assets/sponza/glTF/Sponza.gltf --camera -9,1.7,0.3,6,4.5,0,0,1,0,70 --light directional,0.1,-1,0.2,20"
 vc="$assets/VC/glTF/VC.gltf --camera 14,9,16,0,1.5,0,0,1,0,50"
@@ -24,3 +25,12 @@ done
 run cornell_1920x1080_gi-lpv-v2 cornell --width 1920 --height 1080 --gi lpv
 run cornell_1920x1080_gi-lpv-v2-gbuffer cornell --width 1920 --height 1080 --gi lpv --camera-path gbuffer
 run cornell_1920x1080_gi-none-v2 cornell --width 1920 --height 1080 --gi none
+# Images: the visibility path against the classic G-buffer on the textured scenes (final AOV, EXR).
+for scene in sponza vc; do
+  args=${!scene}
+  for path in visibility gbuffer; do
+    "$bin" render $args $techniques --width 960 --height 540 --camera-path $path -o "$out/${scene}_$path.exr" > /dev/null 2>&1
+  done
+  "$bin" compare "$out/${scene}_visibility.exr" "$out/${scene}_gbuffer.exr" --json > "$out/${scene}_visibility-vs-gbuffer.json" 2>&1 || true
+  rm -f "$out/${scene}_visibility.exr" "$out/${scene}_gbuffer.exr"
+done

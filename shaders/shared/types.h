@@ -284,7 +284,7 @@ struct RasterLayer {
 // Push constants of the compute rasterizer's passes.
 struct RasterPush {
     uvec4 target;    // x = resolution, y = subpixel precision bits, z = triangle count, w = layer count
-    uvec4 capacity;  // x = triangle records, y = tile entries, zw unused
+    uvec4 capacity;  // x = triangle records, y = tile entries, z = small-triangle extent (pixels), w unused
     vec4 bias;       // x = constant factor, y = slope factor, zw unused
 };
 
