@@ -93,7 +93,7 @@ struct DrawPush {
     uint viewIndex;  // row of the views buffer (0 = camera, 1.. = shadow layers)
     uint material;
     uint pad0;
-    uint pad1;
+    uint triangleBase;  // visibility ID of the draw's first triangle, minus 1 (render/visibility.glsl)
 };
 
 // Tone-map modes: radiance is exposed and tone-mapped, colour data only sRGB-encoded, other data
@@ -131,12 +131,14 @@ struct RsmPush {
     vec4 params;   // x = normal cos threshold, y = distance threshold in pixel footprints, zw unused
 };
 
-// Push constants of the RSM raster pass.
-struct RsmDrawPush {
-    uint viewIndex;
-    uint material;
-    uint light;   // index into the lights buffer
-    uint layer;   // index into the RSM layers buffer
+// Push constants of the RSM resolve (rsm/resolve.comp): RSM texels from the shadow pass's visibility IDs.
+struct RsmResolvePush {
+    uvec4 sizes;  // x = RSM resolution, y = resolution of the ID layers (the shadow map's), zw unused
+};
+
+// Push constants of the camera's visibility resolve (render/visibility_resolve.comp).
+struct VisibilityResolvePush {
+    uvec4 size;   // xy = image size, zw unused
 };
 
 // Light propagation volumes (src/lpv). Volumes are buffers: light volume c, channel ch (R, G, B) is
@@ -213,7 +215,7 @@ struct ShadowDrawPush {
     uint viewIndex;
     uint material;
     uint firstLayer;
-    uint pad;
+    uint triangleBase;  // as DrawPush's (same offset: render/visibility.frag reads either)
     vec4 paraboloid;  // x = near, y = far, z = disc scale, w = max angle per tessellated edge (radians)
 };
 
@@ -297,7 +299,7 @@ struct RasterLayer {
 // Push constants of the compute rasterizer's passes.
 struct RasterPush {
     uvec4 target;    // x = resolution, y = subpixel precision bits, z = triangle count, w = layer count
-    uvec4 capacity;  // x = triangle records, y = tile entries, zw unused
+    uvec4 capacity;  // x = triangle records, y = tile entries, z = small-triangle extent (pixels), w unused
     vec4 bias;       // x = constant factor, y = slope factor, zw unused
 };
 

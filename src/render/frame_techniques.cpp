@@ -34,7 +34,7 @@ std::vector<RsmLayerSource> rsmLayersOf(const ShadowMapPass& shadow, bool widest
 
 CameraTechnique::CameraTechnique(vk::Allocator& alloc, GpuScene& scene, const RenderSettings& s,
                                  VkDescriptorSetLayout drawLayout)
-    : gbuffer_(alloc, scene.meshes(), s.width, s.height, drawLayout) {
+    : gbuffer_(alloc, scene.meshes(), s.width, s.height, drawLayout, s.cameraPath) {
     if (scene.hair()) hair_ = std::make_unique<HairGBufferPass>(alloc, *scene.hair(), gbuffer_);
 }
 
@@ -104,12 +104,16 @@ RsmTechnique::RsmTechnique(vk::Allocator& alloc, vk::CommandContext& cmd, GpuSce
           RsmSettings r = s.rsm;
           if (!gather) r.resolution = s.lpv.rsmResolution;
           return r;
-      }()) {
+      }(), s.shadow.resolution) {
     if (gather) gather_ = std::make_unique<RsmGather>(alloc, cmd, s.width, s.height, s.rsm);
 }
 
 // The layers' projections change every frame (cascades follow the camera).
-void RsmTechnique::update(const FrameContext& f) { pass_.setLayers(rsmLayersOf(shadow_, widestCascadeOnly_), f.slot); }
+// The shadow pass draws these layers with visibility IDs, which the RSM is resolved from.
+void RsmTechnique::update(const FrameContext& f) {
+    pass_.setLayers(rsmLayersOf(shadow_, widestCascadeOnly_), f.slot);
+    shadow_.requestIds(pass_.shadowLayers());
+}
 
 void RsmTechnique::addPasses(const FrameContext& f) {
     pass_.addTo(f.graph);

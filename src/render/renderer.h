@@ -88,6 +88,11 @@ public:
     // Internals for tests and statistics: the G-buffer, read-backs, the last frame's constants.
     GBufferPass& gbuffer() { return camera_->gbuffer(); }
     ShadowMapPass& shadow() { return shadow_->pass(); }  // layers, shadow map, mask
+    // Drops what frames keep for the next (cached shadow layers): the next frame runs every pass.
+    // Call when casters move (until the scene tracks that itself) or to time cold frames.
+    void invalidateCaches() {
+        if (shadow_) shadow_->pass().invalidate();
+    }
     vk::CommandContext& commands() { return cmd_; }
     const gpu::FrameUniforms& frameUniforms() const { return frameConstants_; }
     // GI internals, for tests and statistics (null when that GI mode is off).
