@@ -176,6 +176,8 @@ int runSuite(const EvalCliOptions& o, const vk::ContextOptions& vkOptions, bool 
             throw std::invalid_argument(fmt::format("--assets {}: no {} (suite scene '{}')", o.assets, sc.scene, sc.name));
     if (dryRun) return 0;
     const bool progressLine = o.reference.settings.progress && isatty(STDERR_FILENO);
+    std::error_code ec;
+    if (!o.images.empty()) fs::create_directories(o.images, ec);
     vk::Context ctx(vkOptions);
     std::vector<SuiteResult> results;
     for (const SuiteScene& sc : scenes) results.push_back(runSuiteScene(o, sc, ctx, progressLine));
