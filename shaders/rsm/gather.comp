@@ -78,7 +78,8 @@ mat2 patternRotation(GpuRsmLayer L, vec3 x) {
     return mat2(c, s, -s, c);
 }
 
-// Visibility of a far VPL (texel t) from x, the cheap way: three points on the segment between them,
+// Visibility of a far VPL (texel t) from x, the cheap way: two points on the segment between them (0.3
+// and 0.6 of the way from the VPL; one nearer x finds x's own shadow, not an occluder),
 // each compared with the RSM's depth where it projects; a point behind the surface the light sees
 // there lies in that surface's shadow, so something stands between the VPL and x. Far VPLs are
 // where light would otherwise leak through walls (closed galleries, building interiors).
@@ -87,8 +88,8 @@ float farVisibility(GpuRsmLayer L, uint layer, ivec2 t, vec3 x) {
     if (depth >= 1.0) return 1.0;
     int res = int(pc.sizes.z);
     vec3 xp = unproject(L.invViewProj, (vec2(t) + 0.5) / float(res), depth);
-    for (int k = 1; k <= 3; ++k) {
-        vec4 c = L.viewProj * vec4(mix(xp, x, 0.25 * float(k)), 1.0);
+    for (int k = 1; k <= 2; ++k) {
+        vec4 c = L.viewProj * vec4(mix(xp, x, 0.3 * float(k)), 1.0);
         if (c.w <= 0.0) continue;
         vec3 ndc = c.xyz / c.w;
         vec2 uv = ndc.xy * 0.5 + 0.5;
