@@ -5,8 +5,8 @@
 namespace penumbra {
 
 GBufferPass::GBufferPass(vk::Allocator& alloc, SceneGpu& scene, uint32_t width, uint32_t height,
-                         VkDescriptorSetLayout drawLayout)
-    : alloc_(alloc), scene_(scene) {
+                         VkDescriptorSetLayout drawLayout, bool drawBlended)
+    : alloc_(alloc), scene_(scene), drawBlended_(drawBlended) {
     const VkImageUsageFlags target = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
                                      VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
     albedo = vk::Image(alloc, {VK_FORMAT_R8G8B8A8_SRGB, width, height, 1, target, "gbuffer-albedo"});
@@ -42,8 +42,8 @@ void GBufferPass::addTo(FrameGraph& graph) {
                             c.image(d).view()});
         scene_.draw(
             c.cmd, [&](const Draw& draw) { pipeline_.push(c.cmd, gpu::DrawPush{0, draw.material, 0, 0}); },
-            // Blended materials are drawn like masked ones until the deep-shadow-map issue.
-            [](const Material&) { return true; });
+            // Blended materials: drawn like masked ones, or left to the camera translucency passes.
+            [this](const Material& m) { return drawBlended_ || m.alphaMode != AlphaMode::Blend; });
         vkCmdEndRendering(c.cmd);
     });
 }

@@ -7,8 +7,9 @@ namespace penumbra {
 
 class GBufferPass {
 public:
+    // `drawBlended`: alphaMode BLEND materials are drawn opaque (no camera translucency).
     GBufferPass(vk::Allocator& alloc, SceneGpu& scene, uint32_t width, uint32_t height,
-                VkDescriptorSetLayout drawLayout);
+                VkDescriptorSetLayout drawLayout, bool drawBlended = true);
     // Reads "views"; publishes "gbuffer.albedo", "gbuffer.normal", "gbuffer.depth".
     void addTo(FrameGraph& graph);
 
@@ -17,6 +18,7 @@ public:
 private:
     vk::Allocator& alloc_;
     SceneGpu& scene_;
+    bool drawBlended_;
     vk::Pipeline pipeline_;
 };
 
