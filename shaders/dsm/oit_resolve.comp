@@ -5,7 +5,9 @@
 // Lambert or Kajiya-Kay, plus the indirect irradiance gathered at the pixel) and the fragments are
 // composited front to back over the lit opaque image ("hdr", read and written in place):
 //   C = sum_i T_i a_i L_i,  T_i = prod_{j<i} (1 - a_j),  out = C + T_n x opaque.
-// Only the radiance AOVs (final, direct, indirect) are composited; the others keep the opaque surface.
+// Fragments beyond OIT_MAX_LIST are merged into one layer behind the kept ones (their combined alpha,
+// the last kept fragment's radiance). Only the radiance AOVs (final, direct, indirect) are composited;
+// the others keep the opaque surface.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
 #include "shared/types.h"
@@ -81,7 +83,7 @@ void main() {
         if (radianceAov) {
             vec3 irradiance = frame.options.x != 0u ? texelFetch(indirectIrradiance, pixel, 0).rgb : vec3(0.0);
             float angle = kernelAngle(pixel);
-            vec3 sum = vec3(0.0);
+            vec3 sum = vec3(0.0), last = vec3(0.0);
             float t = 1.0;
             for (uint i = 0; i < count; ++i) {
                 uint node = floatBitsToUint(sorted[i].y);
@@ -99,6 +101,16 @@ void main() {
                 if (aov != AOV_DIRECT) l += albedo / PI * irradiance;
                 sum += t * a * l;
                 t *= 1.0 - a;
+                last = l;
+            }
+            // Fragments beyond the cap (all behind the last kept one) are not dropped: they are
+            // composited as one layer of their combined alpha with the last kept fragment's radiance.
+            if (length > count) {
+                float far = sorted[count - 1].x, tail = 1.0;
+                for (uint n = head, i = 0; n != DSM_NONE && i < pc.sizes.z; n = nodes[n].z, ++i)
+                    if (uintBitsToFloat(nodes[n].x) > far) tail *= 1.0 - abs(unpackHalf2x16(nodes[n].w).y);
+                sum += t * (1.0 - tail) * last;
+                t *= tail;
             }
             vec4 opaque = imageLoad(hdr, pixel);
             imageStore(hdr, pixel, vec4(sum + t * opaque.rgb, 1.0 - t * (1.0 - opaque.a)));
