@@ -219,9 +219,10 @@ TEST_F(DsmTest, DepthTestedBuildKeepsTransmittanceWithFewerNodes) {
     Scene s = stackedLayers(std::vector<float>(6, 0.3f), shuffled(6, 11));
     addQuad(s, {-2.0f, 0.8f, -2.0f}, {1.8f, 0, 0}, {0, 0, 4}, addMaterial(s, glm::vec3(0.5f)));  // faces down
     s.computeBounds();
-    DsmSettings off;
+    DsmSettings on, off;
+    on.depthTest = true;
     off.depthTest = false;
-    const DsmRun tested = renderDsm(s, topCamera(), kW, kH, Aov::Transmittance, {}, 256);
+    const DsmRun tested = renderDsm(s, topCamera(), kW, kH, Aov::Transmittance, on, 256);
     const DsmRun untested = renderDsm(s, topCamera(), kW, kH, Aov::Transmittance, off, 256);
     const auto lit = platePixels(kCeilingY, true);
     double diff = 0.0;

@@ -143,7 +143,8 @@ void emitTriangle(ClipVertex c0, ClipVertex c1, ClipVertex c2, uint layer, uint 
     t.invW = plane(iw, w0.xy, w1.xy, w2.xy, invDet);
     t.uOverW = plane(vec3(c0.uv.x, c1.uv.x, c2.uv.x) * iw, w0.xy, w1.xy, w2.xy, invDet);
     t.vOverW = plane(vec3(c0.uv.y, c1.uv.y, c2.uv.y) * iw, w0.xy, w1.xy, w2.xy, invDet);
-    const bool small = e.bbox.z - e.bbox.x < RASTER_SMALL_EXTENT && e.bbox.w - e.bbox.y < RASTER_SMALL_EXTENT;
+    const int smallExtent = int(push.capacity.z);
+    const bool small = e.bbox.z - e.bbox.x < smallExtent && e.bbox.w - e.bbox.y < smallExtent;
     if (small || !bin(t, e, bits)) {
         if (!small) atomicAdd(counters.counts.z, 1u);
         rasterizeRect(t, e, e.bbox, bits, res);

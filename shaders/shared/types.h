@@ -50,8 +50,23 @@ struct FrameUniforms {
     mat4 invViewProj;
     vec4 cameraPos;  // xyz = eye, w = far plane
     uvec4 size;      // x = width, y = height, z = light count, w = AOV
-    uvec4 options;   // x = indirect irradiance image valid (GI on), yzw unused
+    uvec4 options;   // x = indirect irradiance image valid (GI on), y unused, zw = probed pixel (PROBE_OFF: none)
     vec4 lens;       // x = world size of a pixel at unit distance (2 tan(fovy/2) / height), yzw unused
+};
+
+#define PROBE_OFF 0xFFFFFFFFu
+
+// Every AOV at one pixel (the viewer's pixel probe), written by render/lighting.comp for the pixel
+// FrameUniforms.options.zw names, as the AOV images would hold them.
+struct PixelProbe {
+    vec4 finalRadiance;  // rgb = direct + indirect, w = 1 on a surface, 0 on the background
+    vec4 direct;         // rgb = direct radiance
+    vec4 indirect;       // rgb = indirect radiance (albedo / pi * irradiance), w unused
+    vec4 irradiance;     // rgb = gathered indirect irradiance (0 with --gi none)
+    vec4 albedo;         // rgb = albedo
+    vec4 normal;         // xyz = shading normal (hair: tangent), w = shading model (G-buffer .w)
+    vec4 position;       // xyz = world position, w = distance to the eye (the depth AOV)
+    vec4 shadow;         // x = first shadowed light's visibility, y = its layer code (-1: none), z = DSM transmittance
 };
 
 // One light as the lighting pass sees it. Units as in scene.h: directional radiance.rgb is
@@ -78,7 +93,7 @@ struct DrawPush {
     uint viewIndex;  // row of the views buffer (0 = camera, 1.. = shadow layers)
     uint material;
     uint pad0;
-    uint pad1;
+    uint triangleBase;  // visibility ID of the draw's first triangle, minus 1 (render/visibility.glsl)
 };
 
 // Tone-map modes: radiance is exposed and tone-mapped, colour data only sRGB-encoded, other data
@@ -116,12 +131,14 @@ struct RsmPush {
     vec4 params;   // x = normal cos threshold, y = distance threshold in pixel footprints, zw unused
 };
 
-// Push constants of the RSM raster pass.
-struct RsmDrawPush {
-    uint viewIndex;
-    uint material;
-    uint light;   // index into the lights buffer
-    uint layer;   // index into the RSM layers buffer
+// Push constants of the RSM resolve (rsm/resolve.comp): RSM texels from the shadow pass's visibility IDs.
+struct RsmResolvePush {
+    uvec4 sizes;  // x = RSM resolution, y = resolution of the ID layers (the shadow map's), zw unused
+};
+
+// Push constants of the camera's visibility resolve (render/visibility_resolve.comp).
+struct VisibilityResolvePush {
+    uvec4 size;   // xy = image size, zw unused
 };
 
 // Light propagation volumes (src/lpv). Volumes are buffers: light volume c, channel ch (R, G, B) is
@@ -198,7 +215,7 @@ struct ShadowDrawPush {
     uint viewIndex;
     uint material;
     uint firstLayer;
-    uint pad;
+    uint triangleBase;  // as DrawPush's (same offset: render/visibility.frag reads either)
     vec4 paraboloid;  // x = near, y = far, z = disc scale, w = max angle per tessellated edge (radians)
 };
 
@@ -301,7 +318,7 @@ struct RasterLayer {
 // Push constants of the compute rasterizer's passes.
 struct RasterPush {
     uvec4 target;    // x = resolution, y = subpixel precision bits, z = triangle count, w = layer count
-    uvec4 capacity;  // x = triangle records, y = tile entries, zw unused
+    uvec4 capacity;  // x = triangle records, y = tile entries, z = small-triangle extent (pixels), w unused
     vec4 bias;       // x = constant factor, y = slope factor, zw unused
 };
 

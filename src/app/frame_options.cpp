@@ -91,6 +91,10 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o, RenderSettings& rs) {
     cmd.add_option("--aov", o.aov, "Output: " + fmt::format("{}", fmt::join(aovNames(), ", ")));
     cmd.add_option("--aov-layer", rs.aovLayer, "Layer shown by the rsm-depth/normal/flux and shadow-map AOVs")
         ->check(CLI::Range(0, 4096));
+    addChoice<CameraPath>(cmd, "--camera-path", rs.cameraPath,
+                          {{"visibility", CameraPath::Visibility}, {"gbuffer", CameraPath::Gbuffer}},
+                          "Camera G-buffer: visibility buffer (depth + triangle ID raster, albedo and normal "
+                          "resolved in compute) or the classic raster G-buffer");
     addGiOptions(cmd, rs);
     cmd.add_option("--exposure", rs.exposure, "Linear exposure multiplier before tone mapping")
         ->check(finiteRange(1e-6, 1e6));

@@ -166,7 +166,7 @@ OitFrameStats CameraTranslucency::readStats(vk::CommandContext& cmd) const {
 
 std::string describeTranslucency(const OitFrameStats& s) {
     return fmt::format("translucency: {} camera fragments in front of the opaque surface, {} composited (longest "
-                       "list {}, {} beyond the {}-fragment cap dropped); pool {:.1f} MiB for {} nodes",
+                       "list {}, {} beyond the {}-fragment cap merged into one layer); pool {:.1f} MiB for {} nodes",
                        s.fragments, s.kept, s.longest, s.beyondMaxList, OIT_MAX_LIST,
                        double(s.poolBytes) / (1024.0 * 1024.0), s.capacity);
 }

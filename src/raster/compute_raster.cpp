@@ -1,6 +1,7 @@
 #include "raster/compute_raster.h"
 
 #include <algorithm>
+#include <cstdlib>
 
 namespace penumbra {
 namespace {
@@ -15,6 +16,21 @@ uint32_t recordCapacityFor(uint64_t triangles, uint32_t layers) {
     return uint32_t(std::clamp<uint64_t>(triangles * layers / 4, 4096, 1u << 19));
 }
 
+// Tile entries: 8 per record, and at least 16 times every layer's tiles, so that a few triangles as
+// large as a layer (a ground plane under a cascade) do not fill the list: a triangle rasterized by its
+// setup thread instead costs a whole layer's texels in one thread. Capped at 64 MiB.
+uint32_t entryCapacityFor(uint32_t records, uint32_t resolution, uint32_t layers) {
+    const uint64_t tiles = uint64_t(vk::divUp(resolution, RASTER_TILE_SIZE)) * vk::divUp(resolution, RASTER_TILE_SIZE);
+    return uint32_t(std::min<uint64_t>(std::max<uint64_t>(uint64_t(records) * 8, tiles * layers * 16), 1u << 23));
+}
+
+// Triangles whose pixel box fits this extent are rasterized by their setup thread (Nanite's small-
+// triangle path); PENUMBRA_RASTER_SMALL_EXTENT overrides it for measurements (bench/speed_v2.sh).
+uint32_t smallExtent() {
+    const char* v = std::getenv("PENUMBRA_RASTER_SMALL_EXTENT");
+    return v ? uint32_t(std::clamp(std::atoi(v), 1, 64)) : RASTER_SMALL_EXTENT;
+}
+
 }  // namespace
 
 ComputeRaster::ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, uint32_t resolution, uint32_t layers)
@@ -23,7 +39,7 @@ ComputeRaster::ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, uint32_t res
       layers_(std::max(layers, 1u)),
       subpixelBits_(alloc.context().properties().limits.subPixelPrecisionBits),
       recordCapacity_(recordCapacityFor(scene.scene().indices.size() / 3, layers_)),
-      entryCapacity_(recordCapacity_ * 8) {
+      entryCapacity_(entryCapacityFor(recordCapacity_, resolution, layers_)) {
     vk::Context& ctx = alloc.context();
     const uint32_t pushBytes = sizeof(gpu::RasterPush);
     // Bindings 0-2: the scene's draw set; 3-6: depth, records, tile entries, counters (raster.glsl).
@@ -62,7 +78,7 @@ void ComputeRaster::setViews(const std::vector<RasterViews>& views, uint32_t slo
 gpu::RasterPush ComputeRaster::push(RasterBias bias) const {
     const uint32_t triangles = uint32_t(scene_.scene().indices.size() / 3);
     return {{resolution_, subpixelBits_, triangles, layerRows_},
-            {recordCapacity_, entryCapacity_, 0u, 0u},
+            {recordCapacity_, entryCapacity_, smallExtent(), 0u},
             {bias.constant, bias.slope, 0.0f, 0.0f}};
 }
 

@@ -34,7 +34,7 @@ std::vector<RsmLayerSource> rsmLayersOf(const ShadowMapPass& shadow, bool widest
 
 CameraTechnique::CameraTechnique(vk::Allocator& alloc, GpuScene& scene, const RenderSettings& s,
                                  VkDescriptorSetLayout drawLayout)
-    : gbuffer_(alloc, scene.meshes(), s.width, s.height, drawLayout, !s.translucency) {
+    : gbuffer_(alloc, scene.meshes(), s.width, s.height, drawLayout, s.cameraPath, !s.translucency) {
     if (s.translucency) {
         translucency_ = std::make_unique<CameraTranslucency>(alloc, scene.meshes(), scene.hair(), s.width, s.height);
         if (!translucency_->active()) translucency_.reset();
@@ -111,12 +111,16 @@ RsmTechnique::RsmTechnique(vk::Allocator& alloc, vk::CommandContext& cmd, GpuSce
           RsmSettings r = s.rsm;
           if (!gather) r.resolution = s.lpv.rsmResolution;
           return r;
-      }()) {
+      }(), s.shadow.resolution) {
     if (gather) gather_ = std::make_unique<RsmGather>(alloc, cmd, s.width, s.height, s.rsm);
 }
 
 // The layers' projections change every frame (cascades follow the camera).
-void RsmTechnique::update(const FrameContext& f) { pass_.setLayers(rsmLayersOf(shadow_, widestCascadeOnly_), f.slot); }
+// The shadow pass draws these layers with visibility IDs, which the RSM is resolved from.
+void RsmTechnique::update(const FrameContext& f) {
+    pass_.setLayers(rsmLayersOf(shadow_, widestCascadeOnly_), f.slot);
+    shadow_.requestIds(pass_.shadowLayers());
+}
 
 void RsmTechnique::addPasses(const FrameContext& f) {
     pass_.addTo(f.graph);
@@ -144,7 +148,7 @@ LightingTechnique::LightingTechnique(vk::Allocator& alloc, vk::CommandContext& c
     cmd.uploadImage(noIndirect_, &zero, sizeof(zero));
 }
 
-gpu::TonemapPush LightingTechnique::tonemapParams(const RenderSettings& s, float zfar) const {
+gpu::TonemapPush LightingTechnique::tonemapParams(const RenderSettings& s, float depthFar) const {
     switch (s.aov) {
         case Aov::Direct:
         case Aov::Final:
@@ -158,7 +162,7 @@ gpu::TonemapPush LightingTechnique::tonemapParams(const RenderSettings& s, float
         case Aov::Albedo:
         case Aov::Cascade: return {{1.0f, 0.0f, float(TONEMAP_SRGB), 0.0f}};
         case Aov::Normal: return {{0.5f, 0.5f, float(TONEMAP_LINEAR), 0.0f}};
-        case Aov::Depth: return {{1.0f / zfar, 0.0f, float(TONEMAP_LINEAR), 0.0f}};
+        case Aov::Depth: return {{1.0f / depthFar, 0.0f, float(TONEMAP_LINEAR), 0.0f}};
         case Aov::Shadow:
         case Aov::Transmittance: return {{1.0f, 0.0f, float(TONEMAP_LINEAR), 0.0f}};
         case Aov::DsmLists: return {{1.0f / float(s.dsm.maxList), 0.0f, float(TONEMAP_LINEAR), 0.0f}};
@@ -171,7 +175,7 @@ void LightingTechnique::addPasses(const FrameContext& f) {
     lighting_.addTo(f.graph);
     if (afterLighting_) afterLighting_(f.graph);
     debugView_.addTo(f.graph, f.settings.aov, f.settings.aovLayer);
-    tonemap_.addTo(f.graph, tonemapParams(f.settings, f.zfar));
+    tonemap_.addTo(f.graph, tonemapParams(f.settings, f.sceneFar));
 }
 
 }  // namespace penumbra

@@ -122,7 +122,7 @@ public:
     TonemapPass& tonemap() { return tonemap_; }
 
 private:
-    gpu::TonemapPush tonemapParams(const RenderSettings& s, float zfar) const;
+    gpu::TonemapPush tonemapParams(const RenderSettings& s, float depthFar) const;
     LightingPass lighting_;
     std::function<void(FrameGraph&)> afterLighting_;
     DebugViewPass debugView_;

@@ -6,6 +6,7 @@
 #pragma once
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,7 @@ namespace penumbra {
 struct FrameInputs {
     Camera camera;
     std::vector<Light> lights;
+    std::optional<glm::uvec2> probePixel;  // every AOV at this pixel, read back with the frame (probe())
 };
 
 // Recorded into a frame's command buffer after its last pass (a viewer's present blit and UI), with
@@ -68,6 +70,8 @@ public:
     // Every completed frame's timings since the last call (bench), oldest first.
     std::vector<FrameTimings> takeCompletedTimings();
     uint64_t framesSubmitted() const { return frameIndex_; }
+    // Every AOV at FrameInputs::probePixel of the newest completed frame that asked for one.
+    const std::optional<gpu::PixelProbe>& probe() const { return lastProbe_; }
 
     std::vector<float> readHdr();     // RGBA32F, row-major, top row first (after finish())
     std::vector<uint8_t> readLdr();   // RGBA8 (sRGB-encoded for radiance and colour AOVs)
@@ -84,6 +88,11 @@ public:
     // Internals for tests and statistics: the G-buffer, read-backs, the last frame's constants.
     GBufferPass& gbuffer() { return camera_->gbuffer(); }
     ShadowMapPass& shadow() { return shadow_->pass(); }  // layers, shadow map, mask
+    // Drops what frames keep for the next (cached shadow layers): the next frame runs every pass.
+    // Call when casters move (until the scene tracks that itself) or to time cold frames.
+    void invalidateCaches() {
+        if (shadow_) shadow_->pass().invalidate();
+    }
     vk::CommandContext& commands() { return cmd_; }
     const gpu::FrameUniforms& frameUniforms() const { return frameConstants_; }
     // GI internals, for tests and statistics (null when that GI mode is off).
@@ -119,7 +128,7 @@ private:
     uint64_t frameIndex_ = 0;
     std::vector<Light> lights_;  // the lights the shadow layout was built for
     vk::DescriptorLayout drawLayout_;
-    vk::BufferRing frame_, views_, lightBuffer_;
+    vk::BufferRing frame_, views_, lightBuffer_, probe_;
     std::unique_ptr<DsmTechnique> dsm_;
     std::unique_ptr<ShadowTechnique> shadow_;
     std::unique_ptr<CameraTechnique> camera_;
@@ -128,6 +137,7 @@ private:
     std::unique_ptr<LightingTechnique> lighting_;
     FrameGraph graph_;
     FrameTimings lastTimings_;
+    std::optional<gpu::PixelProbe> lastProbe_;
     std::vector<FrameTimings> completed_;
     std::vector<std::string> warnings_;
     float zfar_ = 1.0f;

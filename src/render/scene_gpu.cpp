@@ -9,6 +9,9 @@ namespace penumbra {
 SceneGpu::SceneGpu(vk::CommandContext& cmd, const Scene& scene)
     : scene_(scene), ctx_(cmd.allocator().context()) {
     if (scene.indices.empty() && scene.strands.empty()) throw vk::VulkanError("scene has no triangles");
+    // Visibility IDs are 32-bit: triangle + 1, 0 meaning nothing drawn (render/visibility.glsl).
+    if (scene.indices.size() / 3 >= 0xFFFFFFFFull)
+        throw vk::VulkanError("scene has more triangles than 32-bit visibility IDs can name");
     // A hair-only scene (glTF lines) still binds a vertex and an index buffer: one unused element each.
     const Vertex noVertex{};
     const uint32_t noIndex = 0;
@@ -57,6 +60,18 @@ void SceneGpu::declareDrawSet(PassBuilder& pass, BufferHandle views) {
     FrameGraph& g = pass.graph();
     pass.storageBuffer(0, views).storageBuffer(1, g.import(materials_)).sampled(2, g.import(textures_),
                                                                                 sampler_.handle());
+}
+
+std::vector<vk::Binding> SceneGpu::resolveSetBindings() {
+    std::vector<vk::Binding> b = drawSetBindings();
+    for (uint32_t k : {12u, 13u, 14u}) b.push_back({k, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
+    return b;
+}
+
+void SceneGpu::declareTriangles(PassBuilder& pass) {
+    FrameGraph& g = pass.graph();
+    pass.storageBuffer(12, g.import(vertices_)).storageBuffer(13, g.import(indices_)).storageBuffer(
+        14, g.import(triangleMaterials_));
 }
 
 void SceneGpu::uploadTextures(vk::CommandContext& cmd) {

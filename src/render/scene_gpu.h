@@ -31,6 +31,12 @@ public:
     // may declare more bindings of its own.
     void declareDrawSet(PassBuilder& pass, BufferHandle views);
     static std::vector<vk::Binding> drawSetBindings();
+    // The triangles as compute resolves of visibility IDs fetch them (render/visibility.glsl):
+    // vertices, indices, triangle materials at bindings 12-14 (with the draw set's 0-2).
+    void declareTriangles(PassBuilder& pass);
+    static std::vector<vk::Binding> resolveSetBindings();
+    // The visibility ID base of draw `d` (its first triangle; IDs are base + gl_PrimitiveID + 1).
+    static uint32_t triangleBase(const Draw& d) { return d.firstIndex / 3; }
 
     // Vertex input of penumbra::Vertex for GraphicsDesc.
     static uint32_t vertexStride() { return sizeof(Vertex); }

@@ -23,6 +23,7 @@ std::vector<SettingsOption> makeTable() {
         option("--aov", kFrame, kPartNone, [](S s) { return s.aov; }),
         option("--aov-layer", kFrame, kPartNone, [](S s) { return s.aovLayer; }),
         option("--exposure", kFrame, kPartNone, [](S s) { return s.exposure; }),
+        option("--camera-path", kStructure, kPartCamera, [](S s) { return s.cameraPath; }),
         // `--shadow` sets both the opaque filter and deep shadow maps on or off (`pcf,dsm`).
         option("--shadow", kStructure, kPartShadowFilters, [](S s) { return s.shadow.filter; }),
         option("--shadow", kStructure, kPartShadow | kPartGi | kPartDsm, [](S s) { return s.dsm.enabled; }),
