@@ -258,7 +258,8 @@ struct GpuDsmLight {
 
 // Counters of one frame (cleared before the build; read back for the report).
 struct DsmStats {
-    uvec4 build;  // x = light-space fragments (allocations tried: beyond the capacity = dropped), yzw unused
+    uvec4 build;  // x = light-space fragments (allocations tried: beyond the capacity = dropped),
+                  // y = fragments skipped by the depth test against opaque casters, zw unused
     uvec4 lists;  // x = nodes kept, y = nodes dropped beyond the max list length, z = longest list,
                   // w = texels with a list
 };
@@ -266,6 +267,24 @@ struct DsmStats {
 // Push constants of the resolve and link passes.
 struct DsmPush {
     uvec4 sizes;  // x = resolution, y = layer count, z = node capacity, w = max list length
+};
+
+// ---- Camera translucency: hair and alphaMode BLEND surfaces (src/dsm/translucency.*) ----
+// Per-pixel linked lists built like the DSM's (one atomic add, one atomic exchange per fragment,
+// behind-the-opaque-surface fragments rejected), then sorted, shaded and composited in compute.
+#define OIT_MAX_LIST 32  // fragments composited per pixel, nearest first (the rest are counted, dropped)
+// A node is a uvec4: x = window depth (float bits), y = albedo r, g (half x2), z = next, w = albedo b
+// and alpha (opacity x coverage; half x2; a negative alpha marks hair, shaded with Kajiya-Kay); its
+// unit normal (surface) or tangent (hair), octahedral snorm16 x2, is in a uint array beside them.
+
+struct OitStats {
+    uvec4 counts;  // x = fragments (allocations tried: beyond the capacity = dropped), y = kept,
+                   // z = dropped beyond OIT_MAX_LIST, w = longest list
+};
+
+// Push constants of the translucency resolve.
+struct OitPush {
+    uvec4 sizes;  // x = width, y = height, z = node capacity, w unused
 };
 
 // ---- Compute rasterizer for depth-only views (src/raster, shaders/raster) ----

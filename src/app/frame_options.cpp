@@ -100,6 +100,8 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o, RenderSettings& rs) {
         ->check(finiteRange(1e-6, 1e6));
     addShadowOptions(cmd, rs.shadow, o.lightFilters, rs.dsm.enabled);
     addDsmOptions(cmd, rs.dsm, o.builtin);
+    cmd.add_option("--translucency", rs.translucency,
+                   "Hair and BLEND surfaces composited in depth order on/off (off: drawn opaque)");
 }
 
 void checkFrameSettings(const FrameOptions& o, RenderSettings& settings) {

@@ -57,6 +57,7 @@ DsmResources::DsmResources(vk::Allocator& alloc, const DsmSettings& settings, ui
     const uint64_t automatic = std::min({texels * DsmSettings::kAutoNodesPerTexel, DsmSettings::kMaxPoolNodes - 1,
                                          maxNodes(alloc.context(), texels * 4)});
     capacity = layers.empty() ? 1 : settings.poolNodes ? settings.poolNodes : automatic;
+    deviceLimited = !layers.empty() && !settings.poolNodes && automatic < texels * DsmSettings::kAutoNodesPerTexel;
     if (!layers.empty()) checkFits(alloc.context(), capacity, texels * 4);  // an explicit --dsm-nodes may not fit
     heads = vk::Buffer(alloc, layers.empty() ? 4 : texels * 4, cleared, false, "dsm-heads");
     nodes = vk::Buffer(alloc, capacity * 16, cleared, false, "dsm-nodes");

@@ -34,13 +34,20 @@ std::vector<RsmLayerSource> rsmLayersOf(const ShadowMapPass& shadow, bool widest
 
 CameraTechnique::CameraTechnique(vk::Allocator& alloc, GpuScene& scene, const RenderSettings& s,
                                  VkDescriptorSetLayout drawLayout)
-    : gbuffer_(alloc, scene.meshes(), s.width, s.height, drawLayout, s.cameraPath) {
-    if (scene.hair()) hair_ = std::make_unique<HairGBufferPass>(alloc, *scene.hair(), gbuffer_);
+    : gbuffer_(alloc, scene.meshes(), s.width, s.height, drawLayout, s.cameraPath, !s.translucency) {
+    if (s.translucency) {
+        translucency_ = std::make_unique<CameraTranslucency>(alloc, scene.meshes(), scene.hair(), s.width, s.height);
+        if (!translucency_->active()) translucency_.reset();
+    } else if (scene.hair()) {
+        hair_ = std::make_unique<HairGBufferPass>(alloc, *scene.hair(), gbuffer_);
+    }
 }
 
 void CameraTechnique::addPasses(const FrameContext& f) {
     gbuffer_.addTo(f.graph);
-    if (hair_) hair_->addTo(f.graph, cameraRibbonView(f.camera.eye, f.uniforms.lens.x));
+    const RibbonView view = cameraRibbonView(f.camera.eye, f.uniforms.lens.x);
+    if (hair_) hair_->addTo(f.graph, view);
+    if (translucency_) translucency_->addBuildTo(f.graph, view);
 }
 
 // Hair (src/dsm) is an opaque caster in the ordinary shadow map of lights without a deep shadow
@@ -132,8 +139,9 @@ void LpvTechnique::addPasses(const FrameContext& f) {
     volume_.addTo(f.graph, rsm_.layerCount());
 }
 
-LightingTechnique::LightingTechnique(vk::Allocator& alloc, vk::CommandContext& cmd, const RenderSettings& s)
-    : lighting_(alloc, s.width, s.height), debugView_(alloc.context()), tonemap_(alloc, s.width, s.height) {
+LightingTechnique::LightingTechnique(vk::Allocator& alloc, vk::CommandContext& cmd, const RenderSettings& s,
+                                     std::function<void(FrameGraph&)> afterLighting)
+    : lighting_(alloc, s.width, s.height), afterLighting_(std::move(afterLighting)), debugView_(alloc.context()), tonemap_(alloc, s.width, s.height) {
     noIndirect_ = vk::Image(alloc, {VK_FORMAT_R16G16B16A16_SFLOAT, 1, 1, 1,
                                     VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, "no-indirect"});
     const uint64_t zero = 0;
@@ -165,6 +173,7 @@ gpu::TonemapPush LightingTechnique::tonemapParams(const RenderSettings& s, float
 void LightingTechnique::addPasses(const FrameContext& f) {
     if (!f.graph.hasImage("gi.irradiance")) f.graph.publish("gi.irradiance", f.graph.import(noIndirect_));
     lighting_.addTo(f.graph);
+    if (afterLighting_) afterLighting_(f.graph);
     debugView_.addTo(f.graph, f.settings.aov, f.settings.aovLayer);
     tonemap_.addTo(f.graph, tonemapParams(f.settings, f.sceneFar));
 }

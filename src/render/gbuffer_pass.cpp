@@ -5,8 +5,8 @@
 namespace penumbra {
 
 GBufferPass::GBufferPass(vk::Allocator& alloc, SceneGpu& scene, uint32_t width, uint32_t height,
-                         VkDescriptorSetLayout drawLayout, CameraPath path)
-    : alloc_(alloc), scene_(scene), path_(path) {
+                         VkDescriptorSetLayout drawLayout, CameraPath path, bool drawBlended)
+    : alloc_(alloc), scene_(scene), path_(path), drawBlended_(drawBlended) {
     vk::Context& ctx = alloc.context();
     const bool visibility = path == CameraPath::Visibility;
     // Hair ribbons are drawn into albedo and normal after either path (src/dsm): both stay attachments.
@@ -67,8 +67,8 @@ void GBufferPass::addTo(FrameGraph& graph) {
                             c.image(d).view()});
         scene_.draw(
             c.cmd, [&](const Draw& draw) { pipeline_.push(c.cmd, gpu::DrawPush{0, draw.material, 0, 0}); },
-            // Blended materials are drawn like masked ones until the deep-shadow-map issue.
-            [](const Material&) { return true; });
+            // Blended materials: drawn like masked ones, or left to the camera translucency passes.
+            [this](const Material& m) { return drawBlended_ || m.alphaMode != AlphaMode::Blend; });
         vkCmdEndRendering(c.cmd);
     });
 }
@@ -82,8 +82,8 @@ void GBufferPass::addVisibility(FrameGraph& graph, ImageHandle a, ImageHandle n,
     raster.record([this, id, d](PassContext& c) {
         beginRaster(c.cmd, {c.image(id).extent(), {{c.image(id).view(), {{0, 0, 0, 0}}}}, c.image(d).view()});
         // In the scene's order, as the classic path (equal depths keep the same triangle): opaque (and
-        // blended, drawn like opaque until the deep-shadow-map issue) without discard, so early depth
-        // testing stays on; alpha-masked ones test alpha in their own pipeline.
+        // blended ones without camera translucency) without discard, so early depth testing stays on;
+        // alpha-masked ones test alpha in their own pipeline.
         const vk::Pipeline* bound = &pipeline_;
         scene_.draw(
             c.cmd,
@@ -93,7 +93,7 @@ void GBufferPass::addVisibility(FrameGraph& graph, ImageHandle a, ImageHandle n,
                 if (p != bound) p->bind(c.cmd), bound = p;
                 p->push(c.cmd, gpu::DrawPush{0, draw.material, 0, SceneGpu::triangleBase(draw)});
             },
-            [](const Material&) { return true; });
+            [this](const Material& m) { return drawBlended_ || m.alphaMode != AlphaMode::Blend; });
         vkCmdEndRendering(c.cmd);
     });
     const uint32_t w = albedo.width(), h = albedo.height();

@@ -15,8 +15,9 @@ namespace penumbra {
 
 class GBufferPass {
 public:
+    // `drawBlended`: alphaMode BLEND materials are drawn opaque (no camera translucency).
     GBufferPass(vk::Allocator& alloc, SceneGpu& scene, uint32_t width, uint32_t height,
-                VkDescriptorSetLayout drawLayout, CameraPath path);
+                VkDescriptorSetLayout drawLayout, CameraPath path, bool drawBlended = true);
     // Reads "views" (and "frame"); publishes "gbuffer.albedo", "gbuffer.normal", "gbuffer.depth"
     // (and "gbuffer.ids" on the visibility path).
     void addTo(FrameGraph& graph);
@@ -29,6 +30,7 @@ private:
     vk::Allocator& alloc_;
     SceneGpu& scene_;
     CameraPath path_;
+    bool drawBlended_;
     vk::Pipeline pipeline_, masked_;  // gbuffer: pipeline_ only; visibility: opaque and masked ID pipelines
     vk::DescriptorLayout resolveLayout_;
     vk::Pipeline resolve_;

@@ -48,6 +48,9 @@ struct RenderSettings {
     RsmSettings rsm;
     LpvSettings lpv;
     DsmSettings dsm;
+    // `--translucency`: hair and alphaMode BLEND surfaces composited over the opaque image in depth
+    // order (src/dsm/translucency.h); off: both are drawn opaque into the G-buffer.
+    bool translucency = true;
 };
 
 }  // namespace penumbra

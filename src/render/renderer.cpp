@@ -132,7 +132,8 @@ void Renderer::build(uint32_t parts) {
     }
     if (parts & kPartCamera) {
         camera_ = std::make_unique<CameraTechnique>(alloc_, scene_, settings_, drawLayout_.handle());
-        lighting_ = std::make_unique<LightingTechnique>(alloc_, cmd_, settings_);
+        lighting_ = std::make_unique<LightingTechnique>(alloc_, cmd_, settings_,
+                                                        [this](FrameGraph& g) { camera_->addCompositeTo(g); });
     }
     if ((parts & kPartGi) && settings_.gi != GiMode::None) {
         const bool lpv = settings_.gi == GiMode::Lpv;

@@ -101,6 +101,8 @@ public:
     LightPropagationVolume* lpv() { return lpv_ ? &lpv_->volume() : nullptr; }
     // Deep shadow maps (always present; inactive unless --shadow dsm) and the hair (null without strands).
     DeepShadowMaps& deepShadows() { return dsm_->maps(); }
+    // Null when camera translucency is off or the scene has nothing translucent.
+    const CameraTranslucency* translucency() const { return camera_->translucency(); }
     const HairGpu* hair() const { return scene_.hair(); }
     vk::Image& ldr() { return lighting_->tonemap().ldr; }
 
