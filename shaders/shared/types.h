@@ -50,8 +50,23 @@ struct FrameUniforms {
     mat4 invViewProj;
     vec4 cameraPos;  // xyz = eye, w = far plane
     uvec4 size;      // x = width, y = height, z = light count, w = AOV
-    uvec4 options;   // x = indirect irradiance image valid (GI on), yzw unused
+    uvec4 options;   // x = indirect irradiance image valid (GI on), y unused, zw = probed pixel (PROBE_OFF: none)
     vec4 lens;       // x = world size of a pixel at unit distance (2 tan(fovy/2) / height), yzw unused
+};
+
+#define PROBE_OFF 0xFFFFFFFFu
+
+// Every AOV at one pixel (the viewer's pixel probe), written by render/lighting.comp for the pixel
+// FrameUniforms.options.zw names, as the AOV images would hold them.
+struct PixelProbe {
+    vec4 finalRadiance;  // rgb = direct + indirect, w = 1 on a surface, 0 on the background
+    vec4 direct;         // rgb = direct radiance
+    vec4 indirect;       // rgb = indirect radiance (albedo / pi * irradiance), w unused
+    vec4 irradiance;     // rgb = gathered indirect irradiance (0 with --gi none)
+    vec4 albedo;         // rgb = albedo
+    vec4 normal;         // xyz = shading normal (hair: tangent), w = shading model (G-buffer .w)
+    vec4 position;       // xyz = world position, w = distance to the eye (the depth AOV)
+    vec4 shadow;         // x = first shadowed light's visibility, y = its layer code (-1: none), z = DSM transmittance
 };
 
 // One light as the lighting pass sees it. Units as in scene.h: directional radiance.rgb is

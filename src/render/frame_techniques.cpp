@@ -140,7 +140,7 @@ LightingTechnique::LightingTechnique(vk::Allocator& alloc, vk::CommandContext& c
     cmd.uploadImage(noIndirect_, &zero, sizeof(zero));
 }
 
-gpu::TonemapPush LightingTechnique::tonemapParams(const RenderSettings& s, float zfar) const {
+gpu::TonemapPush LightingTechnique::tonemapParams(const RenderSettings& s, float depthFar) const {
     switch (s.aov) {
         case Aov::Direct:
         case Aov::Final:
@@ -154,7 +154,7 @@ gpu::TonemapPush LightingTechnique::tonemapParams(const RenderSettings& s, float
         case Aov::Albedo:
         case Aov::Cascade: return {{1.0f, 0.0f, float(TONEMAP_SRGB), 0.0f}};
         case Aov::Normal: return {{0.5f, 0.5f, float(TONEMAP_LINEAR), 0.0f}};
-        case Aov::Depth: return {{1.0f / zfar, 0.0f, float(TONEMAP_LINEAR), 0.0f}};
+        case Aov::Depth: return {{1.0f / depthFar, 0.0f, float(TONEMAP_LINEAR), 0.0f}};
         case Aov::Shadow:
         case Aov::Transmittance: return {{1.0f, 0.0f, float(TONEMAP_LINEAR), 0.0f}};
         case Aov::DsmLists: return {{1.0f / float(s.dsm.maxList), 0.0f, float(TONEMAP_LINEAR), 0.0f}};
@@ -166,7 +166,7 @@ void LightingTechnique::addPasses(const FrameContext& f) {
     if (!f.graph.hasImage("gi.irradiance")) f.graph.publish("gi.irradiance", f.graph.import(noIndirect_));
     lighting_.addTo(f.graph);
     debugView_.addTo(f.graph, f.settings.aov, f.settings.aovLayer);
-    tonemap_.addTo(f.graph, tonemapParams(f.settings, f.zfar));
+    tonemap_.addTo(f.graph, tonemapParams(f.settings, f.sceneFar));
 }
 
 }  // namespace penumbra

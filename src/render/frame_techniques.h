@@ -111,7 +111,7 @@ public:
     TonemapPass& tonemap() { return tonemap_; }
 
 private:
-    gpu::TonemapPush tonemapParams(const RenderSettings& s, float zfar) const;
+    gpu::TonemapPush tonemapParams(const RenderSettings& s, float depthFar) const;
     LightingPass lighting_;
     DebugViewPass debugView_;
     TonemapPass tonemap_;

@@ -21,15 +21,17 @@ gpu::GpuLight toGpu(const Light& l) {
 }
 
 // Far plane that encloses the whole scene from the eye.
-float sceneFar(const Camera& c, const Bounds& b) {
-    if (c.zfar > 0.0f) return c.zfar;
+// Distance from the eye to the farthest corner of the scene's bounds (at least 1).
+float boundsFar(const Camera& c, const Bounds& b) {
     float far = 1.0f;
     for (int i = 0; i < 8; ++i) {
         glm::vec3 corner{(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z};
         far = std::max(far, glm::length(corner - c.eye));
     }
-    return far * 1.05f;
+    return far;
 }
+
+float sceneFar(const Camera& c, const Bounds& b) { return c.zfar > 0.0f ? c.zfar : boundsFar(c, b) * 1.05f; }
 
 // What of a light sizes or structures the shadow resources (its position, direction, colour and
 // intensity are per-frame values).
@@ -50,7 +52,9 @@ struct Renderer::FrameSlot {
     VkCommandBuffer cmd = VK_NULL_HANDLE;
     VkFence fence = VK_NULL_HANDLE;
     vk::GpuTimer timer;
+    uint32_t index = 0;  // its copy in every BufferRing
     bool pending = false;
+    bool probed = false;  // the frame wrote the pixel probe
     FrameTimings timings;
 
     explicit FrameSlot(vk::Context& c) : ctx(c), timer(c, 512) {
@@ -89,9 +93,13 @@ void Renderer::init() {
     if (settings_.width == 0 || settings_.height == 0 || settings_.width > 16384 || settings_.height > 16384)
         throw vk::VulkanError(fmt::format("image size {}x{} is out of range (1..16384)", settings_.width,
                                           settings_.height));
-    for (uint32_t i = 0; i < framesInFlight_; ++i) slots_.push_back(std::make_unique<FrameSlot>(ctx_));
+    for (uint32_t i = 0; i < framesInFlight_; ++i) {
+        slots_.push_back(std::make_unique<FrameSlot>(ctx_));
+        slots_.back()->index = i;
+    }
     drawLayout_ = vk::DescriptorLayout(ctx_, SceneGpu::drawSetBindings());
     frame_ = vk::BufferRing(alloc_, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, "frame");
+    probe_ = vk::BufferRing(alloc_, sizeof(gpu::PixelProbe), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "probe");
     lights_ = scene_.scene().lights;
     build(kPartShadow | kPartCamera | kPartGi | kPartDsm);
 }
@@ -183,6 +191,7 @@ void Renderer::collect(FrameSlot& slot) {
         slot.timings.passes.assign(scopes.begin() + 1, scopes.end());
     }
     if (slot.timings.frame >= lastTimings_.frame) lastTimings_ = slot.timings;
+    if (slot.probed) lastProbe_ = *probe_.at(slot.index).as<gpu::PixelProbe>();
     completed_.push_back(slot.timings);
     if (completed_.size() > 4096) completed_.erase(completed_.begin(), completed_.begin() + 2048);
 }
@@ -211,7 +220,8 @@ void Renderer::writeFrameData(const FrameInputs& in) {
     f.invViewProj = glm::inverse(f.viewProj);
     f.cameraPos = glm::vec4(camera.eye, zfar_);
     f.size = {settings_.width, settings_.height, uint32_t(in.lights.size()), uint32_t(settings_.aov)};
-    f.options = {settings_.gi != GiMode::None ? 1u : 0u, 0u, 0u, 0u};
+    const glm::uvec2 probe = in.probePixel.value_or(glm::uvec2(PROBE_OFF));
+    f.options = {settings_.gi != GiMode::None ? 1u : 0u, 0u, probe.x, probe.y};
     f.lens = {2.0f * std::tan(0.5f * camera.fovy) / float(settings_.height), 0.0f, 0.0f, 0.0f};
     frame_.write(&f, sizeof(f));
     frameConstants_ = f;
@@ -230,17 +240,19 @@ void Renderer::writeFrameData(const FrameInputs& in) {
 
 void Renderer::recordFrame(FrameSlot& slot, const FrameInputs& in, const FrameHooks& hooks) {
     const uint32_t index = uint32_t(frameIndex_ % slots_.size());
-    for (vk::BufferRing* r : {&frame_, &views_, &lightBuffer_}) r->select(index);
+    for (vk::BufferRing* r : {&frame_, &views_, &lightBuffer_, &probe_}) r->select(index);
     zfar_ = sceneFar(in.camera, scene_.scene().bounds);
     graph_.clear();
     const float aspect = float(settings_.width) / float(settings_.height);
-    FrameContext context{graph_, index, in.camera, in.lights, settings_, aspect, zfar_, frameConstants_};
+    const float depthFar = std::min(zfar_, boundsFar(in.camera, scene_.scene().bounds));
+    FrameContext context{graph_, index, in.camera, in.lights, settings_, aspect, zfar_, depthFar, frameConstants_};
     const std::vector<Technique*> list = techniques();
     for (Technique* t : list) t->update(context);
     writeFrameData(in);
     graph_.publish("frame", graph_.import(frame_.current()));
     graph_.publish("views", graph_.import(views_.current()));
     graph_.publish("lights", graph_.import(lightBuffer_.current()));
+    graph_.publish("probe", graph_.import(probe_.current()));
     for (Technique* t : list) t->addPasses(context);
 
     VK_CHECK(vkResetCommandPool(ctx_.device(), slot.pool, VK_COMMAND_POOL_RESET_RELEASE_RESOURCES_BIT));
@@ -251,6 +263,10 @@ void Renderer::recordFrame(FrameSlot& slot, const FrameInputs& in, const FrameHo
     const uint32_t whole = slot.timer.begin(slot.cmd, "frame");
     graph_.execute(slot.cmd, &slot.timer);
     slot.timer.end(slot.cmd, whole);
+    slot.probed = in.probePixel && in.probePixel->x < settings_.width && in.probePixel->y < settings_.height;
+    if (slot.probed)  // the probe's shader write, made visible to the host read after the fence
+        vk::memoryBarrier(slot.cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_WRITE_BIT,
+                          VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
     if (hooks.record) hooks.record(slot.cmd, lighting_->tonemap().ldr);
     VK_CHECK(vkEndCommandBuffer(slot.cmd));
 }

@@ -6,6 +6,7 @@
 #pragma once
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,7 @@ namespace penumbra {
 struct FrameInputs {
     Camera camera;
     std::vector<Light> lights;
+    std::optional<glm::uvec2> probePixel;  // every AOV at this pixel, read back with the frame (probe())
 };
 
 // Recorded into a frame's command buffer after its last pass (a viewer's present blit and UI), with
@@ -68,6 +70,8 @@ public:
     // Every completed frame's timings since the last call (bench), oldest first.
     std::vector<FrameTimings> takeCompletedTimings();
     uint64_t framesSubmitted() const { return frameIndex_; }
+    // Every AOV at FrameInputs::probePixel of the newest completed frame that asked for one.
+    const std::optional<gpu::PixelProbe>& probe() const { return lastProbe_; }
 
     std::vector<float> readHdr();     // RGBA32F, row-major, top row first (after finish())
     std::vector<uint8_t> readLdr();   // RGBA8 (sRGB-encoded for radiance and colour AOVs)
@@ -122,7 +126,7 @@ private:
     uint64_t frameIndex_ = 0;
     std::vector<Light> lights_;  // the lights the shadow layout was built for
     vk::DescriptorLayout drawLayout_;
-    vk::BufferRing frame_, views_, lightBuffer_;
+    vk::BufferRing frame_, views_, lightBuffer_, probe_;
     std::unique_ptr<DsmTechnique> dsm_;
     std::unique_ptr<ShadowTechnique> shadow_;
     std::unique_ptr<CameraTechnique> camera_;
@@ -131,6 +135,7 @@ private:
     std::unique_ptr<LightingTechnique> lighting_;
     FrameGraph graph_;
     FrameTimings lastTimings_;
+    std::optional<gpu::PixelProbe> lastProbe_;
     std::vector<FrameTimings> completed_;
     std::vector<std::string> warnings_;
     float zfar_ = 1.0f;

@@ -28,9 +28,11 @@ private:
     void sceneWindow(ViewSession& session, CameraControl& control);
     void lightsSection(ViewSession& session);
     void optionsSection(ViewSession& session);
+    void debugViewSliders(ViewSession& session);
     void splitSection(ViewSession& session);
     void splitLabels(ViewSession& session);
     void timingsWindow(ViewSession& session, const vk::Swapchain& swapchain);
+    void probeWindow(ViewSession& session);
     void apply(ViewSession& session, const std::string& option, const std::string& value);
 
     std::deque<float> frameMs_;

@@ -208,8 +208,8 @@ Renderer& ViewSession::renderer() {
 }
 
 void ViewSession::submit(const FrameHooks& hooks) {
-    if (Renderer* b = rendererB()) b->submit({camera_, lights_});
-    renderer().submit({camera_, lights_}, hooks);
+    if (Renderer* b = rendererB()) b->submit({camera_, lights_, probePixel});
+    renderer().submit({camera_, lights_, probePixel}, hooks);
 }
 
 void ViewSession::renderAndWait() {

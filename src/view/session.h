@@ -3,6 +3,7 @@
 // the live camera and lights, and the renderer they drive. Usable headless (tests).
 #pragma once
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -49,6 +50,10 @@ public:
     void setLight(size_t index, const Light& light);  // index == count appends; throws out of range
     float time = 0.0f;  // scene time (animation: a later issue); `time T`, play/pause
     bool playing = false;
+    // Pixel probe: every AOV at this pixel of the rendered image, read back with its frame
+    // (Renderer::probe()); the cursor sets it unless a script pinned it (`probe X Y`).
+    std::optional<glm::uvec2> probePixel;
+    bool probePinned = false;
 
     const Scene& scene() const { return gpuScene_->scene(); }
     const RenderSettings& settings() const { return settings_; }

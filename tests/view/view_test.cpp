@@ -101,7 +101,7 @@ TEST(ViewScript, EveryScreenshotEqualsTheHeadlessRender) {
         {{{"aov", "depth"}, {"gi", "none"}}},
         {{{"aov", "shadow"}}},
         {{{"aov", "cascade"}}},
-        {{{"aov", "albedo"}}},
+        {{{"aov", "albedo"}}, "probe 40 30\n"},  // the pinned pixel probe leaves the image alone
         {{{"aov", "final"}, {"exposure", "1.7"}}, "camera " + camera + "\nlight 0 " + light + "\n",
          {"--camera", camera, "--light", light}},
         {{{"scene", "hair"}, {"strands", "200"}, {"shadow", "dsm"}, {"exposure", "1"}}},
@@ -151,6 +151,7 @@ TEST(ViewScript, BadLineIsOneErrorWithFileAndLine) {
         {"set lpv-res 3", "lpv-res"},
         {"warp 9", "unknown command 'warp'"},
         {"set rsm-per-cascade maybe", "on or off"},
+        {"probe 12", "probe X Y"},
     };
     for (const auto& [line, expected] : cases) {
         const fs::path script = dir / "bad.txt";
