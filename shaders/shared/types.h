@@ -294,6 +294,7 @@ struct OitPush {
 #define RASTER_TILE_SIZE 32
 #define RASTER_SETUP_GROUP 64
 #define RASTER_TILE_GROUP 256
+#define RASTER_BIN_GROUP 64
 #define RASTER_NO_RECORD 0xFFFFFFFFu   // a tile entry whose triangle went the inline path (lists full)
 
 // One triangle after setup (clipped, snapped, front-facing or double-sided, non-empty), in window
@@ -301,7 +302,8 @@ struct OitPush {
 struct RasterTriangle {
     uvec4 xy01;      // snapped vertices 0 and 1 (int bits, subpixel units): x0, y0, x1, y1
     uvec4 xy2;       // x2, y2 (int bits), z = target layer, w = material
-    vec4 origin;     // xy = float window position of vertex 0 (origin of the planes), z = 1: alpha-tested, w unused
+    vec4 origin;     // xy = float window position of vertex 0 (origin of the planes), z = 1: alpha-tested,
+                     // w = its first tile entry (-1: the lists were full)
     vec4 depth;      // plane of z: value at the origin, d/dx, d/dy; w = depth bias of the triangle
     vec4 uOverW;     // planes of u/w, v/w and 1/w (perspective-correct uv): value at origin, d/dx, d/dy
     vec4 vOverW;

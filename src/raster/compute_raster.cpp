@@ -1,7 +1,6 @@
 #include "raster/compute_raster.h"
 
 #include <algorithm>
-#include <cstdlib>
 
 namespace penumbra {
 namespace {
@@ -24,12 +23,7 @@ uint32_t entryCapacityFor(uint32_t records, uint32_t resolution, uint32_t layers
     return uint32_t(std::min<uint64_t>(std::max<uint64_t>(uint64_t(records) * 8, tiles * layers * 16), 1u << 23));
 }
 
-// Triangles whose pixel box fits this extent are rasterized by their setup thread (Nanite's small-
-// triangle path); PENUMBRA_RASTER_SMALL_EXTENT overrides it for measurements (bench/speed_v2.sh).
-uint32_t smallExtent() {
-    const char* v = std::getenv("PENUMBRA_RASTER_SMALL_EXTENT");
-    return v ? uint32_t(std::clamp(std::atoi(v), 1, 64)) : RASTER_SMALL_EXTENT;
-}
+
 
 }  // namespace
 
@@ -45,6 +39,7 @@ ComputeRaster::ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, uint32_t res
     // Bindings 0-2: the scene's draw set; 3-6: depth, records, tile entries, counters (raster.glsl).
     std::vector<VkDescriptorType> tiles{kBuffer, kBuffer, kSampler, kBuffer, kBuffer, kBuffer, kBuffer};
     tiles_ = vk::ComputeKernel(ctx, "raster/tiles.comp", tiles, pushBytes);
+    bin_ = vk::ComputeKernel(ctx, "raster/bin.comp", tiles, pushBytes);
     std::vector<VkDescriptorType> setup = tiles;
     setup.insert(setup.end(), {kBuffer, kBuffer, kBuffer, kBuffer});  // vertices, indices, materials, layers
     setup_ = vk::ComputeKernel(ctx, "raster/setup.comp", setup, pushBytes);
@@ -58,7 +53,7 @@ ComputeRaster::ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, uint32_t res
                           "raster-triangles");
     entries_ = vk::Buffer(alloc, VkDeviceSize(entryCapacity_) * 8, storage, false, "raster-tile-entries");
     counters_ = vk::Buffer(alloc, sizeof(gpu::RasterCounters), storage | transfer, false, "raster-counters");
-    dispatchArgs_ = vk::Buffer(alloc, sizeof(gpu::uvec4), storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, false,
+    dispatchArgs_ = vk::Buffer(alloc, 2 * sizeof(gpu::uvec4), storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, false,
                                "raster-dispatch");
     layerTable_ = vk::BufferRing(alloc, sizeof(gpu::RasterLayer) * layers_, storage, "raster-layers");
 }
@@ -78,7 +73,7 @@ void ComputeRaster::setViews(const std::vector<RasterViews>& views, uint32_t slo
 gpu::RasterPush ComputeRaster::push(RasterBias bias) const {
     const uint32_t triangles = uint32_t(scene_.scene().indices.size() / 3);
     return {{resolution_, subpixelBits_, triangles, layerRows_},
-            {recordCapacity_, entryCapacity_, smallExtent(), 0u},
+            {recordCapacity_, entryCapacity_, RASTER_SMALL_EXTENT, 0u},
             {bias.constant, bias.slope, 0.0f, 0.0f}};
 }
 
@@ -126,18 +121,22 @@ void ComputeRaster::addTo(FrameGraph& graph, const std::string& name, ImageHandl
             args_.pipeline.push(c.cmd, p);
             vkCmdDispatch(c.cmd, 1, 1, 1);
         });
-    PassBuilder tiles = graph.pass(name + ".tiles");
-    tiles.pipeline(tiles_.pipeline);
-    scene_.declareDrawSet(tiles, viewRows);
-    tiles.storageBuffer(3, depth, Use::StorageWrite)
-        .storageBuffer(4, records, Use::StorageRead)
-        .storageBuffer(5, entries, Use::StorageRead)
-        .storageBuffer(6, counters, Use::StorageRead)
-        .use(args, Use::IndirectArgs)
-        .record([this, p](PassContext& c) {
-            tiles_.pipeline.push(c.cmd, p);
-            vkCmdDispatchIndirect(c.cmd, dispatchArgs_.handle(), 0);
-        });
+    // Bin (one workgroup per large triangle), then fine rasterization (one per tile entry).
+    for (const vk::ComputeKernel* k : {&bin_, &tiles_}) {
+        const bool binning = k == &bin_;
+        PassBuilder pass = graph.pass(name + (binning ? ".bin" : ".tiles"));
+        pass.pipeline(k->pipeline);
+        scene_.declareDrawSet(pass, viewRows);
+        pass.storageBuffer(3, depth, binning ? Use::StorageRead : Use::StorageWrite)
+            .storageBuffer(4, records, Use::StorageRead)
+            .storageBuffer(5, entries, binning ? Use::StorageWrite : Use::StorageRead)
+            .storageBuffer(6, counters, Use::StorageRead)
+            .use(args, Use::IndirectArgs)
+            .record([this, k, p, binning](PassContext& c) {
+                k->pipeline.push(c.cmd, p);
+                vkCmdDispatchIndirect(c.cmd, dispatchArgs_.handle(), binning ? sizeof(gpu::uvec4) : 0);
+            });
+    }
     graph.pass(name + ".resolve", PassKind::Transfer)
         .use(depth, Use::TransferSrc)
         .use(target, Use::TransferDst)
