@@ -7,6 +7,7 @@
 #include <glm/gtc/packing.hpp>
 
 #include "gpu_fixture.h"
+#include "readback.h"
 #include "reference/ray_scene.h"
 
 using namespace penumbra;
@@ -14,18 +15,6 @@ using namespace penumbra::test;
 namespace fs = std::filesystem;
 
 namespace {
-
-float half(const std::vector<uint8_t>& bytes, size_t index) {
-    uint16_t h;
-    std::memcpy(&h, bytes.data() + index * 2, 2);
-    return glm::unpackHalf1x16(h);
-}
-
-float f32(const std::vector<uint8_t>& bytes, size_t index) {
-    float f;
-    std::memcpy(&f, bytes.data() + index * 4, 4);
-    return f;
-}
 
 int srgbByte(float linear) {
     const float c = std::clamp(linear, 0.0f, 1.0f);
