@@ -2,6 +2,7 @@
 // applied without allocation or pipeline creation, structure and size changes rebuilding only what
 // they own, frames in flight under synchronization validation, and a settings table that covers
 // every render option. Every image is checked against a renderer built afresh for the same settings.
+#include <cfloat>
 #include <fstream>
 #include <map>
 #include <set>
@@ -39,6 +40,22 @@ long residentKiB() {
     long pages = 0, resident = 0;
     statm >> pages >> resident;
     return resident * 4;
+}
+
+// Two renders of the same inputs are equal bit for bit, except with LPV: its injection sums SH
+// coefficients with float atomics, whose order varies between runs on a multi-threaded device
+// (lavapipe: 1 ulp on a few values; two one-shot renders differ alike), so LPV images are equal
+// within 4 ulps of each value.
+void expectSameImage(const std::vector<float>& got, const std::vector<float>& want, GiMode gi, const std::string& what) {
+    if (gi != GiMode::Lpv) {
+        EXPECT_EQ(got, want) << what;
+        return;
+    }
+    ASSERT_EQ(got.size(), want.size()) << what;
+    size_t outside = 0;
+    for (size_t i = 0; i < got.size(); ++i)
+        outside += std::abs(got[i] - want[i]) > 4.0f * FLT_EPSILON * std::abs(want[i]);
+    EXPECT_EQ(outside, 0u) << what << ": values beyond 4 ulps";
 }
 
 class FrameLayerTest : public GpuTest {
@@ -101,7 +118,7 @@ TEST_F(FrameLayerTest, EachChangeMatchesAFreshRendererAndPerFrameChangesAllocate
         std::printf("[ change   ] %-18s %-9s %3llu allocations %3llu pipelines\n", c.what, settingsChangeName(got),
                     (unsigned long long)(live.allocator().allocations() - allocations),
                     (unsigned long long)(ctx().pipelinesCreated() - pipelines));
-        EXPECT_EQ(live.readHdr(), fresh(scene, s, camera)) << "after " << c.what;
+        expectSameImage(live.readHdr(), fresh(scene, s, camera), s.gi, std::string("after ") + c.what);
     }
     EXPECT_EQ(scene.geometryUploads(), 1u);
 }
@@ -124,7 +141,7 @@ TEST_F(FrameLayerTest, FramesInFlightWithMovingCameraAndLight) {
     EXPECT_EQ(live.takeCompletedTimings().size(), 6u);
     Renderer once(ctx(), scene, s, 1);
     once.render(in);
-    EXPECT_EQ(last, once.readHdr());
+    expectSameImage(last, once.readHdr(), s.gi, "last frame against a one-shot render");
     EXPECT_GT(live.frameTimings().gpuMs, 0.0);
 }
 
