@@ -110,6 +110,42 @@ TEST(Cascades, CameraTranslationMovesCascadesByWholeTexels) {
     EXPECT_GT(std::abs(shift - std::round(shift)), 0.01f);
 }
 
+// GI reads the sun's map in blocks (an RSM texel is 4 shadow texels at 2048 / 512; a VPL more):
+// with snapTexels = 8 a camera move shifts the lattice by whole blocks, and the slice stays covered.
+TEST(Cascades, BlockSnappingMovesCascadesByWholeBlocksAndKeepsTheSliceCovered) {
+    const Bounds scene = box(50.0f);
+    const glm::vec3 sun = glm::normalize(glm::vec3(-0.4f, -1.0f, -0.3f));
+    const uint32_t res = 1024, block = 8;
+    CascadeSettings cs;
+    const float aspect = 1.5f;
+    Camera a = lookingAt({10, 6, 12}, {0, 1, 0});
+    const std::vector<Cascade> ca = fitCascades(sun, a, aspect, 80.0f, scene, res, cs, 4.0f, block);
+    int moved = 0;
+    for (float step = 0.05f; step < 3.0f; step *= 1.7f) {
+        Camera b = a;
+        b.eye += glm::vec3(step, 0.1f * step, -0.6f * step);
+        b.target += glm::vec3(step, 0.1f * step, -0.6f * step);
+        const std::vector<Cascade> cb = fitCascades(sun, b, aspect, 80.0f, scene, res, cs, 4.0f, block);
+        for (size_t i = 0; i < ca.size(); ++i) {
+            SCOPED_TRACE(i);
+            const glm::vec3 p{1.7f, 0.3f, -2.9f};
+            const glm::vec2 shift = (glm::vec2(ndcOf(ca[i].projection.viewProj, p)) -
+                                     glm::vec2(ndcOf(cb[i].projection.viewProj, p))) * (0.5f * float(res) / float(block));
+            EXPECT_NEAR(shift.x, std::round(shift.x), 2e-3f);
+            EXPECT_NEAR(shift.y, std::round(shift.y), 2e-3f);
+            moved += glm::length(shift) > 0.5f;
+            // The slice's bounding sphere and the 4 margin texels around it still lie inside the map.
+            const float start = i == 0 ? cb[i].splitNear : cb[i].splitNear - cs.blend * (cb[i].splitNear - cb[i - 1].splitNear);
+            const Sphere s = frustumSliceSphere(b, aspect, start, cb[i].splitFar);
+            if (s.radius >= scene.radius()) continue;  // the scene's sphere instead
+            const glm::vec3 c = ndcOf(cb[i].projection.viewProj, s.center);
+            const float r = s.radius / (0.5f * float(res) * cb[i].projection.texelSize);  // radius in NDC
+            EXPECT_LE(std::max(std::abs(c.x), std::abs(c.y)) + r + 4.0f * 2.0f / float(res), 1.0f + 1e-4f);
+        }
+    }
+    EXPECT_GT(moved, 0);  // the moves were large enough to shift some cascade
+}
+
 TEST(Cascades, CameraRotationKeepsTexelSize) {
     const Bounds scene = box(50.0f);
     const glm::vec3 sun = glm::normalize(glm::vec3(0.2f, -1.0f, 0.5f));

@@ -219,6 +219,7 @@ TEST_F(GpuTest, HairShadowsArePartialWithDsmAndBinaryWithout) {
         rs.aov = Aov::Shadow;
         rs.shadow.resolution = 256;
         rs.dsm.enabled = dsm;
+        rs.translucency = false;  // hair in the G-buffer, where the shadow AOV and SHADING_HAIR are per pixel
         Renderer r(ctx(), s, rs);
         r.render(s.cameras[0]);
         const std::vector<float> img = r.readHdr();

@@ -210,3 +210,32 @@ TEST_F(DsmTest, PoolOverflowIsReportedAndImageStaysFinite) {
         EXPECT_NE(run.warnings.back().find(std::to_string(run.stats.overflow) + " of"), std::string::npos);
     }
 }
+
+// An opaque plate under the left part of 6 layers (x < -0.2, between the light below and the
+// layers): with the depth test against the opaque casters' shadow map, the layer fragments above it
+// take no node, and every receiver the plate leaves lit (the ceiling plate, x > 0.2) gets the same
+// transmittance as without the test.
+TEST_F(DsmTest, DepthTestedBuildKeepsTransmittanceWithFewerNodes) {
+    Scene s = stackedLayers(std::vector<float>(6, 0.3f), shuffled(6, 11));
+    addQuad(s, {-2.0f, 0.8f, -2.0f}, {1.8f, 0, 0}, {0, 0, 4}, addMaterial(s, glm::vec3(0.5f)));  // faces down
+    s.computeBounds();
+    DsmSettings on, off;
+    on.depthTest = true;
+    off.depthTest = false;
+    const DsmRun tested = renderDsm(s, topCamera(), kW, kH, Aov::Transmittance, on, 256);
+    const DsmRun untested = renderDsm(s, topCamera(), kW, kH, Aov::Transmittance, off, 256);
+    const auto lit = platePixels(kCeilingY, true);
+    double diff = 0.0;
+    for (auto [x, y] : lit) diff = std::max(diff, double(std::abs(tested.image.at(x, y) - untested.image.at(x, y))));
+    const double err = maxError(tested.image, lit, std::pow(0.7, 6.0));
+    std::printf("[dsm depth test] nodes kept %llu with the test (%llu fragments skipped) vs %llu without; lit "
+                "receivers differ by at most %.2e, error against 0.7^6 %.2e\n",
+                (unsigned long long)tested.stats.kept, (unsigned long long)tested.stats.hidden,
+                (unsigned long long)untested.stats.kept, diff, err);
+    EXPECT_EQ(untested.stats.hidden, 0u);
+    EXPECT_GT(tested.stats.hidden, 0u);
+    EXPECT_LT(tested.stats.kept, untested.stats.kept * 3 / 4);  // the plate hides ~45% of the layers
+    EXPECT_EQ(tested.stats.kept + tested.stats.hidden, untested.stats.kept);
+    EXPECT_LT(diff, 1e-6);
+    EXPECT_LT(err, 1e-3);
+}

@@ -260,4 +260,27 @@ TEST_F(RasterSceneTest, DISABLED_VcDepthWithin1e6) {
 }
 
 }  // namespace
+// `--raster auto` decides by the device's kind alone: compute on H100/H200, hardware elsewhere.
+TEST(RasterMode, AutoPicksByDeviceKind) {
+    const auto device = [](uint32_t vendor, VkPhysicalDeviceType type, const char* name) {
+        VkPhysicalDeviceProperties p{};
+        p.vendorID = vendor;
+        p.deviceType = type;
+        std::snprintf(p.deviceName, sizeof(p.deviceName), "%s", name);
+        return p;
+    };
+    const VkPhysicalDeviceProperties h100 = device(0x10DE, VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU, "NVIDIA H100 80GB HBM3");
+    const VkPhysicalDeviceProperties h200 = device(0x10DE, VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU, "NVIDIA H200");
+    const VkPhysicalDeviceProperties desktop = device(0x10DE, VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU, "NVIDIA GeForce RTX 4090");
+    const VkPhysicalDeviceProperties lavapipe = device(0x10005, VK_PHYSICAL_DEVICE_TYPE_CPU, "llvmpipe (LLVM 15.0.6, 256 bits)");
+    EXPECT_TRUE(computeRasterFor(RasterMode::Auto, h100));
+    EXPECT_TRUE(computeRasterFor(RasterMode::Auto, h200));
+    EXPECT_FALSE(computeRasterFor(RasterMode::Auto, desktop));
+    EXPECT_FALSE(computeRasterFor(RasterMode::Auto, lavapipe));
+    for (const VkPhysicalDeviceProperties& p : {h100, lavapipe}) {
+        EXPECT_FALSE(computeRasterFor(RasterMode::Hardware, p));
+        EXPECT_TRUE(computeRasterFor(RasterMode::Compute, p));
+    }
+}
+
 }  // namespace penumbra::test

@@ -391,7 +391,7 @@ TEST_F(GpuTest, CornellEveryAovValidatesAndReportsTimings) {
             names.insert(t.name);
             EXPECT_TRUE(std::isfinite(t.ms) && t.ms >= 0.0) << t.name << ": " << t.ms << " ms";
         }
-        for (const char* pass : {"shadow.map", "gbuffer", "lighting", "tonemap"})
+        for (const char* pass : {"shadow.map", "visibility", "visibility.resolve", "lighting", "tonemap"})
             EXPECT_TRUE(names.count(pass)) << "no timing for pass " << pass;
     }
 }

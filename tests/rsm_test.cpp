@@ -5,6 +5,7 @@
 #include <glm/gtc/packing.hpp>
 
 #include "gpu_fixture.h"
+#include "readback.h"
 
 using namespace penumbra;
 using namespace penumbra::test;
@@ -12,18 +13,6 @@ using namespace penumbra::test;
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-float half(const std::vector<uint8_t>& bytes, size_t index) {
-    uint16_t h;
-    std::memcpy(&h, bytes.data() + index * 2, 2);
-    return glm::unpackHalf1x16(h);
-}
-
-float f32(const std::vector<uint8_t>& bytes, size_t index) {
-    float f;
-    std::memcpy(&f, bytes.data() + index * 4, 4);
-    return f;
-}
 
 dvec3 unproject(const glm::dmat4& inv, double u, double v, double depth) {
     glm::dvec4 p = inv * glm::dvec4(u * 2.0 - 1.0, v * 2.0 - 1.0, depth, 1.0);

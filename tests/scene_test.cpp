@@ -247,7 +247,21 @@ TEST(BuiltinScenes, Plane) {
     ASSERT_EQ(s.cameras.size(), 1u);
     EXPECT_GT(s.cameras[0].eye.y, 0.0f);
     EXPECT_LT(glm::normalize(s.cameras[0].target - s.cameras[0].eye).y, -0.99f);
-    EXPECT_EQ(builtinSceneNames(), (std::vector<std::string>{"cornell", "plane", "hair"}));
+    EXPECT_EQ(builtinSceneNames(), (std::vector<std::string>{"cornell", "plane", "hair", "street", "room"}));
+}
+
+// The GI suite's scenes (README, "GI evaluation suite"): consistent, faces wound as their normals say.
+TEST(BuiltinScenes, StreetAndRoom) {
+    for (const std::string name : {"street", "room"}) {
+        const Scene s = makeBuiltinScene(name);
+        expectConsistent(s);
+        expectWindingMatchesNormals(s);
+        ASSERT_EQ(s.lights.size(), 1u);
+        EXPECT_EQ(s.lights[0].type, name == "street" ? LightType::Directional : LightType::Point);
+    }
+    const Scene street = makeBuiltinScene("street");
+    EXPECT_NEAR(street.bounds.max.x - street.bounds.min.x, 22.0f, 1e-4f);  // 10 m street, 6 m blocks
+    EXPECT_NEAR(std::asin(-street.lights[0].direction.y), glm::radians(20.0f), glm::radians(1.0f)) << "low sun";
 }
 
 TEST(Builders, BoxHasOutwardFacesAndRotates) {

@@ -6,7 +6,8 @@
 layout(push_constant) uniform Push { HairDrawPush draw; };
 layout(location = 2) in float inAlpha;
 layout(location = 3) in float inDepth;
+layout(location = 4) in vec3 inWorld;
 
 #include "dsm/dsm_insert.glsl"
 
-void main() { dsmInsert(inDepth, inAlpha); }
+void main() { dsmInsert(inDepth, inAlpha, inWorld); }

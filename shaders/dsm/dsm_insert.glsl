@@ -1,17 +1,73 @@
 // The DSM build's one job per light-space fragment: allocate a node from the pool (one atomic add)
-// and push it onto the texel's list (one atomic exchange, one store). Needs `draw` (HairDrawPush).
+// and push it onto the texel's list (one atomic exchange, one store). Needs `draw` (HairDrawPush:
+// ids.x = DSM layer, ids.z = the scene light, or DSM_NONE for no depth test, ids.w = capacity).
 // A full pool drops the fragment; the counter keeps counting, so the overflow is known exactly and
 // no list ever points at a node that was not written.
+//
+// Depth test against the opaque casters: a fragment hidden behind the light's ordinary shadow map
+// everywhere a receiver could look it up from (its DSM texel and the lookup's filter around it,
+// two DSM texels in all, however the two maps' resolutions and projections differ) casts onto
+// nothing that the opaque casters leave lit: it takes no node. Conservative: it is dropped only
+// when every shadow-map texel of that neighbourhood holds a nearer opaque depth than the fragment
+// moved two DSM texels towards the light.
 layout(set = 0, binding = 5, std430) buffer Heads { uint heads[]; };
 layout(set = 0, binding = 6, std430) writeonly buffer Nodes { uvec4 nodes[]; };
 layout(set = 0, binding = 7, std430) buffer Stats { DsmStats stats; };
+layout(set = 0, binding = 8, std430) readonly buffer Lights { GpuLight lights[]; };
+layout(set = 0, binding = 9, std430) readonly buffer ShadowLights { GpuShadowLight shadowLights[]; };
+layout(set = 0, binding = 10, std430) readonly buffer ShadowLayers { GpuShadowLayer shadowLayers[]; };
+layout(set = 0, binding = 11) uniform sampler2DArray opaqueShadowMap;  // "shadow.map", nearest
 
-void dsmInsert(float depth, float alpha) {
+// Whether shadow layer `index` holds an opaque depth nearer than q over the whole neighbourhood of
+// `reach` world units around q (false where the layer does not cover it).
+bool hiddenInLayer(uint index, vec3 q, float reach) {
+    GpuShadowLayer layer = shadowLayers[index];
+    if (layer.info.x == SHADOW_PROJ_PARABOLOID) return false;
+    vec4 clip = layer.viewProj * vec4(q, 1.0);
+    if (clip.w <= 0.0) return false;
+    vec3 ndc = clip.xyz / clip.w;
+    ivec2 size = textureSize(opaqueShadowMap, 0).xy;
+    float texel = layer.params.x * (layer.info.x == SHADOW_PROJ_ORTHO ? 1.0 : clip.w);
+    int r = int(ceil(reach / texel));
+    if (r > 4) return false;  // a shadow map much finer than the DSM: not worth the taps (kept)
+    ivec2 c = ivec2(floor((ndc.xy * 0.5 + 0.5) * vec2(size)));
+    if (any(lessThan(c - r, ivec2(0))) || any(greaterThanEqual(c + r + 1, size))) return false;
+    // The fragment's own texel first (most visible fragments leave here), then the neighbourhood in
+    // 2x2 gathers (a (2r+2)^2 block: one row and column more than needed, still conservative).
+    if (texelFetch(opaqueShadowMap, ivec3(c, int(index)), 0).r >= ndc.z) return false;
+    vec2 inv = 1.0 / vec2(size);
+    for (int y = -r; y <= r; y += 2)
+        for (int x = -r; x <= r; x += 2) {
+            vec4 d = textureGather(opaqueShadowMap, vec3((vec2(c + ivec2(x, y)) + 1.0) * inv, float(index)), 0);
+            if (any(greaterThanEqual(d, vec4(ndc.z)))) return false;  // a lit receiver may see it
+        }
+    return true;
+}
+
+bool hiddenByOpaque(vec3 world) {
+    if (draw.ids.z == DSM_NONE) return false;
+    GpuLight light = lights[draw.ids.z];
+    if (light.radiance.w == NO_SHADOW) return false;
+    GpuShadowLight s = shadowLights[uint(light.radiance.w)];
+    if (s.info.z != SHADOW_KIND_SINGLE && s.info.z != SHADOW_KIND_CASCADES) return false;
+    float dsmTexel = draw.footprint.x * (draw.footprint.y > 0.5 ? distance(world, draw.viewer.xyz) : 1.0);
+    vec3 towardsLight = draw.viewer.w > 0.5 ? normalize(draw.viewer.xyz - world) : draw.viewer.xyz;
+    vec3 q = world + towardsLight * (2.0 * dsmTexel);
+    for (uint k = 0; k < s.info.y; ++k)
+        if (hiddenInLayer(s.info.x + k, q, 2.0 * dsmTexel)) return true;
+    return false;
+}
+
+void dsmInsert(float depth, float alpha, vec3 world) {
     if (alpha <= 0.0) return;  // nothing to cast
+    if (hiddenByOpaque(world)) {
+        atomicAdd(stats.build.y, 1u);
+        return;
+    }
     uint node = atomicAdd(stats.build.x, 1u);
     if (node >= draw.ids.w) return;
     uint res = uint(draw.footprint.z);
     uvec2 texel = uvec2(gl_FragCoord.xy);
-    uint previous = atomicExchange(heads[(draw.ids.z * res + texel.y) * res + texel.x], node);
+    uint previous = atomicExchange(heads[(draw.ids.x * res + texel.y) * res + texel.x], node);
     nodes[node] = uvec4(floatBitsToUint(depth), floatBitsToUint(min(alpha, 1.0)), previous, DSM_NONE);
 }

@@ -18,6 +18,7 @@ layout(location = 0) out vec3 outTangent;
 layout(location = 1) out vec3 outColor;
 layout(location = 2) out float outAlpha;  // opacity x coverage
 layout(location = 3) out float outDepth;  // dsmDepth from the viewer
+layout(location = 4) out vec3 outWorld;
 
 void main() {
     GpuHairPoint point = points[gl_VertexIndex >> 1];
@@ -38,4 +39,5 @@ void main() {
     outColor = strand.rgb;
     outAlpha = drawn > 0.0 ? strand.a * width / drawn : 0.0;
     outDepth = dsmDepth(draw.viewer, p);
+    outWorld = world;
 }

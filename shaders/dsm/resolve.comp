@@ -14,31 +14,15 @@ layout(push_constant) uniform Push { DsmPush pc; };
 
 shared uint groupKept, groupDropped, groupLongest, groupLists;
 
-vec2 sorted[DSM_MAX_LIST_CAP];  // (depth, alpha), ascending depth
-
-// Insertion into `sorted` while walking the list: O(length x maxList), the lists being short.
-// Returns the list's full length; `count` receives how many nodes were kept.
-uint sortNearest(uint head, out uint count) {
-    const uint maxList = pc.sizes.w;
-    count = 0;
-    uint length = 0;
-    // The guard only bounds a corrupt list; a list cannot hold more nodes than the pool.
-    for (uint n = head; n != DSM_NONE && length < pc.sizes.z; n = nodes[n].z, ++length) {
-        vec2 e = vec2(uintBitsToFloat(nodes[n].x), uintBitsToFloat(nodes[n].y));
-        if (count == maxList && e.x >= sorted[count - 1].x) continue;  // behind every kept node
-        uint i = min(count, maxList - 1);  // when full, the farthest kept node gives way
-        count = min(count + 1, maxList);
-        for (; i > 0 && sorted[i - 1].x > e.x; --i) sorted[i] = sorted[i - 1];
-        sorted[i] = e;
-    }
-    return length;
-}
+#define SORT_CAPACITY DSM_MAX_LIST_CAP
+vec2 sortEntry(uint n) { return vec2(uintBitsToFloat(nodes[n].x), uintBitsToFloat(nodes[n].y)); }  // (depth, alpha)
+#include "dsm/sort_nearest.glsl"
 
 void resolveTexel(uint texel) {
     uint head = heads[texel];
     if (head == DSM_NONE) return;
     uint count;
-    uint length = sortNearest(head, count);
+    uint length = sortNearest(head, pc.sizes.w, pc.sizes.z, count);  // the pool bounds a list
     float t = 1.0;
     uint n = head;
     for (uint i = 0; i < count; ++i) {

@@ -65,6 +65,26 @@ Edges edgesOf(RasterTriangle t, int subpixelBits, int resolution) {
     return makeEdges(xy01.xy, xy01.zw, ivec2(t.xy2.xy), subpixelBits, resolution);
 }
 
+// Tiles: all tiles of the triangle's box that no edge excludes (an edge excludes a tile when it is
+// negative at the centres of the tile's four corner pixels: the edge function is linear).
+bool tileMayCover(Edges e, ivec4 rect, int bits) {
+    const ivec2 corners[4] = ivec2[4](rect.xy, rect.zy, rect.xw, rect.zw);
+    for (int i = 0; i < 3; ++i) {
+        bool inside = false;
+        for (int c = 0; c < 4; ++c) {
+            const i64vec2 q = i64vec2((corners[c] << bits) + (1 << (bits - 1))) - e.a[i];
+            inside = inside || e.d[i].x * q.y - e.d[i].y * q.x + e.bias[i] >= 0l;
+        }
+        if (!inside) return false;
+    }
+    return true;
+}
+
+ivec4 tileRect(ivec2 tile, ivec4 bbox) {
+    const ivec2 lo = tile * RASTER_TILE_SIZE;
+    return ivec4(max(lo, bbox.xy), min(lo + RASTER_TILE_SIZE - 1, bbox.zw));
+}
+
 float planeAt(vec4 plane, vec2 offset) { return plane.x + plane.y * offset.x + plane.z * offset.y; }
 
 // Alpha test of a masked caster at window position w (perspective-correct uv; the LOD from the

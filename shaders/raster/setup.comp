@@ -5,8 +5,8 @@
 // view, clips the rest against the near and far planes and a guard band, culls back faces of
 // single-sided materials with the shadow pass's winding (clockwise fronts), and then either
 // rasterizes the triangle itself (bounding box within RASTER_SMALL_EXTENT pixels: the small-triangle
-// path, as Nanite's compute rasterizer does) or stores it and bins it into the tiles it may cover
-// (Laine & Karras 2011's coarse stage, simplified to one list of (triangle, tile) entries).
+// path, as Nanite's compute rasterizer does) or stores it and reserves an entry per tile of its box,
+// which the bin pass fills (Laine & Karras 2011's coarse stage, one list of (triangle, tile) entries).
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
 #include "raster/raster.glsl"
@@ -76,43 +76,18 @@ float depthBias(float maxZ, float slope) {
     return push.bias.x * r + push.bias.y * slope;
 }
 
-// Tiles: all tiles of the triangle's box that no edge excludes (an edge excludes a tile when it is
-// negative at the centres of the tile's four corner pixels: the edge function is linear).
-bool tileMayCover(Edges e, ivec4 rect, int bits) {
-    const ivec2 corners[4] = ivec2[4](rect.xy, rect.zy, rect.xw, rect.zw);
-    for (int i = 0; i < 3; ++i) {
-        bool inside = false;
-        for (int c = 0; c < 4; ++c) {
-            const i64vec2 q = i64vec2((corners[c] << bits) + (1 << (bits - 1))) - e.a[i];
-            inside = inside || e.d[i].x * q.y - e.d[i].y * q.x + e.bias[i] >= 0l;
-        }
-        if (!inside) return false;
-    }
-    return true;
-}
-
-ivec4 tileRect(ivec2 tile, ivec4 bbox) {
-    const ivec2 lo = tile * RASTER_TILE_SIZE;
-    return ivec4(max(lo, bbox.xy), min(lo + RASTER_TILE_SIZE - 1, bbox.zw));
-}
-
-// Stores a large triangle and its tile entries; false when a list is full (the caller rasterizes it).
-bool bin(RasterTriangle t, Edges e, int bits) {
+// Stores a large triangle and reserves one tile entry per tile of its box (the bin pass fills them
+// in parallel: binning a layer-sized triangle here took one thread through 4096 tiles); false when
+// a list is full (the caller rasterizes it). The record's origin.w holds its first entry (-1: none).
+bool bin(RasterTriangle t, Edges e) {
     const uint record = atomicAdd(counters.counts.x, 1u);
     if (record >= push.capacity.x) return false;
-    records[record] = t;
     const ivec4 tiles = ivec4(e.bbox.xy / RASTER_TILE_SIZE, e.bbox.zw / RASTER_TILE_SIZE);
-    uint n = 0u;
-    for (int ty = tiles.y; ty <= tiles.w; ++ty)
-        for (int tx = tiles.x; tx <= tiles.z; ++tx)
-            if (tileMayCover(e, tileRect(ivec2(tx, ty), e.bbox), bits)) ++n;
+    const uint n = uint((tiles.z - tiles.x + 1) * (tiles.w - tiles.y + 1));
     const uint first = atomicAdd(counters.counts.y, n);
     const bool fits = first + n <= push.capacity.y;
-    uint k = first;
-    for (int ty = tiles.y; ty <= tiles.w && k < push.capacity.y; ++ty)
-        for (int tx = tiles.x; tx <= tiles.z && k < push.capacity.y; ++tx)
-            if (tileMayCover(e, tileRect(ivec2(tx, ty), e.bbox), bits))
-                tileEntries[k++] = uvec2(fits ? record : RASTER_NO_RECORD, uint(tx) | (uint(ty) << 16));
+    t.origin.w = fits ? float(first) : -1.0;  // capacities stay below 2^24: exact in a float
+    records[record] = t;
     return fits;
 }
 
@@ -145,8 +120,9 @@ void emitTriangle(ClipVertex c0, ClipVertex c1, ClipVertex c2, uint layer, uint 
     t.invW = plane(iw, w0.xy, w1.xy, w2.xy, invDet);
     t.uOverW = plane(vec3(c0.uv.x, c1.uv.x, c2.uv.x) * iw, w0.xy, w1.xy, w2.xy, invDet);
     t.vOverW = plane(vec3(c0.uv.y, c1.uv.y, c2.uv.y) * iw, w0.xy, w1.xy, w2.xy, invDet);
-    const bool small = e.bbox.z - e.bbox.x < RASTER_SMALL_EXTENT && e.bbox.w - e.bbox.y < RASTER_SMALL_EXTENT;
-    if (small || !bin(t, e, bits)) {
+    const int smallExtent = int(push.capacity.z);
+    const bool small = e.bbox.z - e.bbox.x < smallExtent && e.bbox.w - e.bbox.y < smallExtent;
+    if (small || !bin(t, e)) {
         if (!small) atomicAdd(counters.counts.z, 1u);
         rasterizeRect(t, e, e.bbox, bits, res);
     }
@@ -183,7 +159,7 @@ void setupTriangle(uint drawn, RasterLayer target) {
     const GpuMaterial m = materials[material];
     if (m.info.y == ALPHA_BLEND && target.info.z != 0u) return;  // a deep shadow map takes it
     const mat4 viewProj = views.viewProj[target.info.x] * instances[ref.x].model;
-    const bool mirrored = instances[ref.x].info.x != 0.0;  // keeps the fronts' winding, as the hardware's cull flip does
+    const bool mirrored = instances[ref.x].info.x != 0u;  // keeps the fronts' winding, as the hardware's cull flip does
     ClipVertex v[3];
     for (int i = 0; i < 3; ++i) v[i] = fetch(indices[triangle * 3 + (mirrored ? (3 - i) % 3 : i)], viewProj);
     const uint c0 = outcode(v[0].position), c1 = outcode(v[1].position), c2 = outcode(v[2].position);

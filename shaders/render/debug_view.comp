@@ -20,7 +20,12 @@ void main() {
     if (all(greaterThanEqual(uv, vec2(0.0))) && all(lessThan(uv, vec2(1.0)))) {
         const vec4 texel = textureLod(source, vec3(uv, float(pc.mode.y)), 0.0);
         if (pc.mode.x == AOV_RSM_NORMAL) value = octDecode(texel.xy) * 0.5 + 0.5;
-        else if (pc.mode.x == AOV_RSM_FLUX) value = texel.rgb;
+        else if (pc.mode.x == AOV_RSM_FLUX) {
+            // A texel's flux shrinks with the texel count: shown as the intensity (W/sr) of a light that
+            // sent every texel's flux over the sphere, so that the view reads alike at every resolution.
+            const ivec3 texels = textureSize(source, 0);
+            value = texel.rgb * float(texels.x * texels.y) / (4.0 * 3.14159265);
+        }
         else value = vec3(texel.r);  // depth in [0, 1]
     }
     imageStore(outImage, pixel, vec4(value, 1.0));

@@ -16,66 +16,97 @@ layout(set = 0, binding = 4) uniform sampler2D gDepth;
 layout(set = 0, binding = 5) uniform sampler2DArray shadowMask;  // shadow.filter: visibility per shadowed light
 layout(set = 0, binding = 6, rgba32f) uniform writeonly image2D outImage;
 layout(set = 0, binding = 7) uniform sampler2D indirectIrradiance;  // GI (frame.options.x != 0)
+layout(set = 0, binding = 12, std430) writeonly buffer Probe { PixelProbe probe; };  // pixel options.zw
 
 #include "shadow/shadow_lookup.glsl"
 #include "dsm/dsm_lookup.glsl"  // bindings 8-11: translucent casters (hair, blended meshes)
 #include "dsm/kajiya_kay.glsl"
 
-void main() {
-    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(pixel, ivec2(frame.size.xy)))) return;
+// What the lighting computes at one pixel; every AOV is read from it.
+struct Shading {
+    bool surface;
+    vec3 albedo, n, p, direct, irradiance, indirect;
+    float shadingModel, eyeDistance, firstShadow;
+    bool hair;
+};
+
+Shading shade(ivec2 pixel) {
+    Shading s;
     float depth = texelFetch(gDepth, pixel, 0).r;
-    uint aov = frame.size.w;
-    if (aov == AOV_LPV_SLICE || aov == AOV_GV_SLICE) {  // debug views drawn by lpv/gather.comp
-        imageStore(outImage, pixel, vec4(texelFetch(indirectIrradiance, pixel, 0).rgb, 1.0));
-        return;
-    }
-    if (aov == AOV_DSM_LISTS) {  // a light-space debug view: independent of the G-buffer
-        imageStore(outImage, pixel, vec4(vec3(dsmListLengthAov(pixel, frame.size.xy, frame.size.z)), 1.0));
-        return;
-    }
-    if (depth >= 1.0) {  // background: nothing, except the depth AOV which reads the far plane
-        imageStore(outImage, pixel, vec4(vec3(aov == AOV_DEPTH ? frame.cameraPos.w : 0.0), 0.0));
-        return;
-    }
-    vec3 albedo = texelFetch(gAlbedo, pixel, 0).rgb;
-    vec3 p = pixelWorldPosition(frame, pixel, depth);
+    s.surface = depth < 1.0;
+    s.eyeDistance = frame.cameraPos.w;  // the background reads the far plane
+    s.albedo = s.n = s.p = s.direct = s.irradiance = s.indirect = vec3(0.0);
+    s.shadingModel = 0.0;
+    s.firstShadow = 1.0;
+    s.hair = false;
+    if (!s.surface) return s;
+    s.albedo = texelFetch(gAlbedo, pixel, 0).rgb;
+    s.p = pixelWorldPosition(frame, pixel, depth);
     vec4 gn = texelFetch(gNormal, pixel, 0);
-    vec3 n = normalize(gn.xyz);  // hair: its tangent
-    bool hair = gn.w > 1.5;      // SHADING_HAIR: Kajiya-Kay instead of Lambert
-    vec3 toEye = frame.cameraPos.xyz - p;
-    if (dot(n, toEye) < 0.0) n = -n;  // two-sided: shade the side the camera sees
+    s.n = normalize(gn.xyz);  // hair: its tangent
+    s.shadingModel = gn.w;
+    s.hair = gn.w > 1.5;      // SHADING_HAIR: Kajiya-Kay instead of Lambert
+    vec3 toEye = frame.cameraPos.xyz - s.p;
+    s.eyeDistance = length(toEye);
+    if (dot(s.n, toEye) < 0.0) s.n = -s.n;  // two-sided: shade the side the camera sees
 
     vec3 radiance = vec3(0.0), hairRadiance = vec3(0.0);
-    float firstShadow = 1.0;
     bool seenShadow = false;
     for (uint i = 0; i < frame.size.z; ++i) {
         GpuLight light = lights[i];
         vec3 l;
-        vec3 e = incidentIrradiance(light, p, l);
-        float ndotl = hair ? 1.0 : max(dot(n, l), 0.0);
+        vec3 e = incidentIrradiance(light, s.p, l);
+        float ndotl = s.hair ? 1.0 : max(dot(s.n, l), 0.0);
         if (ndotl <= 0.0 || all(equal(e, vec3(0.0)))) {
-            if (!seenShadow && light.radiance.w != NO_SHADOW) { firstShadow = 0.0; seenShadow = true; }
+            if (!seenShadow && light.radiance.w != NO_SHADOW) { s.firstShadow = 0.0; seenShadow = true; }
             continue;
         }
-        float v = shadowVisibility(light, pixel) * deepShadowTransmittance(i, p, n, hair);
-        if (!seenShadow && light.radiance.w != NO_SHADOW) { firstShadow = v; seenShadow = true; }
-        if (hair) hairRadiance += e * v * kajiyaKay(albedo, n, l, normalize(toEye));
+        float v = shadowVisibility(light, pixel) * deepShadowTransmittance(i, s.p, s.n, s.hair);
+        if (!seenShadow && light.radiance.w != NO_SHADOW) { s.firstShadow = v; seenShadow = true; }
+        if (s.hair) hairRadiance += e * v * kajiyaKay(s.albedo, s.n, l, normalize(toEye));
         else radiance += e * ndotl * v;
     }
-    radiance = radiance * albedo / PI + hairRadiance;
+    s.direct = radiance * s.albedo / PI + hairRadiance;
     // Indirect light of a diffuse receiver: albedo / pi times the gathered irradiance.
-    vec3 indirect = frame.options.x != 0u ? albedo / PI * texelFetch(indirectIrradiance, pixel, 0).rgb : vec3(0.0);
+    if (frame.options.x != 0u) s.irradiance = texelFetch(indirectIrradiance, pixel, 0).rgb;
+    s.indirect = s.albedo / PI * s.irradiance;
+    return s;
+}
 
-    vec4 outValue;
-    if (aov == AOV_FINAL) outValue = vec4(radiance + indirect, 1.0);
-    else if (aov == AOV_DIRECT) outValue = vec4(radiance, 1.0);
-    else if (aov == AOV_INDIRECT) outValue = vec4(indirect, 1.0);
-    else if (aov == AOV_ALBEDO) outValue = vec4(albedo, 1.0);
-    else if (aov == AOV_NORMAL) outValue = vec4(n, 1.0);
-    else if (aov == AOV_DEPTH) outValue = vec4(vec3(length(toEye)), 1.0);
-    else if (aov == AOV_CASCADE) outValue = vec4(shadowLayerColour(pixel), 1.0);
-    else if (aov == AOV_TRANSMITTANCE) outValue = vec4(vec3(firstDeepShadowTransmittance(p, n, hair)), 1.0);
-    else outValue = vec4(vec3(firstShadow), 1.0);
-    imageStore(outImage, pixel, outValue);
+vec4 aovValue(Shading s, uint aov, ivec2 pixel) {
+    if (aov == AOV_LPV_SLICE || aov == AOV_GV_SLICE)  // debug views drawn by lpv/gather.comp
+        return vec4(texelFetch(indirectIrradiance, pixel, 0).rgb, 1.0);
+    if (aov == AOV_DSM_LISTS)  // a light-space debug view: independent of the G-buffer
+        return vec4(vec3(dsmListLengthAov(pixel, frame.size.xy, frame.size.z)), 1.0);
+    if (!s.surface) return vec4(vec3(aov == AOV_DEPTH ? s.eyeDistance : 0.0), 0.0);
+    if (aov == AOV_FINAL) return vec4(s.direct + s.indirect, 1.0);
+    if (aov == AOV_DIRECT) return vec4(s.direct, 1.0);
+    if (aov == AOV_INDIRECT) return vec4(s.indirect, 1.0);
+    if (aov == AOV_ALBEDO) return vec4(s.albedo, 1.0);
+    if (aov == AOV_NORMAL) return vec4(s.n, 1.0);
+    if (aov == AOV_DEPTH) return vec4(vec3(s.eyeDistance), 1.0);
+    if (aov == AOV_CASCADE) return vec4(shadowLayerColour(pixel), 1.0);
+    if (aov == AOV_TRANSMITTANCE) return vec4(vec3(firstDeepShadowTransmittance(s.p, s.n, s.hair)), 1.0);
+    return vec4(vec3(s.firstShadow), 1.0);
+}
+
+void writeProbe(Shading s, ivec2 pixel) {
+    float on = s.surface ? 1.0 : 0.0;
+    probe.finalRadiance = vec4(s.direct + s.indirect, on);
+    probe.direct = vec4(s.direct, 0.0);
+    probe.indirect = vec4(s.indirect, 0.0);
+    probe.irradiance = vec4(s.irradiance, 0.0);
+    probe.albedo = vec4(s.albedo, 0.0);
+    probe.normal = vec4(s.n, s.shadingModel);
+    probe.position = vec4(s.p, s.eyeDistance);
+    float transmittance = s.surface ? firstDeepShadowTransmittance(s.p, s.n, s.hair) : 1.0;
+    probe.shadow = vec4(s.firstShadow, s.surface ? firstShadowLayer(pixel) : -1.0, transmittance, 0.0);
+}
+
+void main() {
+    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(pixel, ivec2(frame.size.xy)))) return;
+    Shading s = shade(pixel);
+    imageStore(outImage, pixel, aovValue(s, frame.size.w, pixel));
+    if (all(equal(uvec2(pixel), frame.options.zw))) writeProbe(s, pixel);
 }

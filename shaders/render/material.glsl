@@ -13,3 +13,11 @@ bool alphaDiscarded(uint index, float alpha) {
     GpuMaterial m = materials[index];
     return m.info.y == ALPHA_MASK && alpha < m.params.x;
 }
+
+// With explicit uv gradients (compute resolves of visibility IDs: render/visibility.glsl).
+vec4 baseColorGrad(uint index, vec2 uv, vec2 dx, vec2 dy) {
+    GpuMaterial m = materials[index];
+    vec4 c = m.baseColor;
+    if (m.info.x != NO_TEXTURE) c *= textureGrad(materialTextures, vec3(uv, float(m.info.x)), dx, dy);
+    return c;
+}

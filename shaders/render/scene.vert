@@ -15,6 +15,7 @@ layout(push_constant) uniform Push { DrawPush draw; };
 layout(location = 0) out vec3 outNormal;
 layout(location = 1) out vec2 outUv;
 layout(location = 2) out vec3 outWorld;
+layout(location = 3) flat out uint outIdBase;  // visibility ID base (render/visibility.glsl)
 
 void main() {
     const vec3 world = instanceWorld(gl_InstanceIndex, inPosition);
@@ -22,4 +23,5 @@ void main() {
     outNormal = instanceNormal(gl_InstanceIndex, inNormal);
     outUv = inUv;
     outWorld = world;
+    outIdBase = instances[gl_InstanceIndex].info.y + draw.triangleBase;
 }

@@ -58,6 +58,48 @@ float samplingDisc(GpuRsmLayer layer, vec3 x, out vec2 st) {
     return mix(rMax, whole, outside);
 }
 
+// Per-receiver rotation of the sample pattern, seeded by the receiver's world position (quantised to
+// RSM texels): neighbouring receivers see different VPLs, so the interpolation's filter averages
+// independent estimates, and the pattern of a surface point stays put when the camera moves.
+uint hash3(uvec3 v) {
+    uint h = v.x * 0x8da6b343u ^ v.y * 0xd8163841u ^ v.z * 0xcb1ab31fu;
+    h ^= h >> 16;
+    h *= 0x7feb352du;
+    h ^= h >> 15;
+    h *= 0x846ca68bu;
+    return h ^ (h >> 16);
+}
+
+mat2 patternRotation(GpuRsmLayer L, vec3 x) {
+    float texel = L.params.x;
+    if (L.params.y > 0.5) texel *= max(abs((L.viewProj * vec4(x, 1.0)).w), 1e-3);
+    float angle = float(hash3(uvec3(ivec3(floor(x / texel))))) * (6.28318531 / 4294967296.0);
+    float c = cos(angle), s = sin(angle);
+    return mat2(c, s, -s, c);
+}
+
+// Visibility of a far VPL (texel t) from x, the cheap way: two points on the segment between them (0.3
+// and 0.6 of the way from the VPL; one nearer x finds x's own shadow, not an occluder),
+// each compared with the RSM's depth where it projects; a point behind the surface the light sees
+// there lies in that surface's shadow, so something stands between the VPL and x. Far VPLs are
+// where light would otherwise leak through walls (closed galleries, building interiors).
+float farVisibility(GpuRsmLayer L, uint layer, ivec2 t, vec3 x) {
+    float depth = texelFetch(rsmDepth, ivec3(t, layer), 0).r;
+    if (depth >= 1.0) return 1.0;
+    int res = int(pc.sizes.z);
+    vec3 xp = unproject(L.invViewProj, (vec2(t) + 0.5) / float(res), depth);
+    for (int k = 1; k <= 2; ++k) {
+        vec4 c = L.viewProj * vec4(mix(xp, x, 0.3 * float(k)), 1.0);
+        if (c.w <= 0.0) continue;
+        vec3 ndc = c.xyz / c.w;
+        vec2 uv = ndc.xy * 0.5 + 0.5;
+        if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) continue;
+        float seen = texelFetch(rsmDepth, ivec3(ivec2(uv * float(res)), layer), 0).r;
+        if (ndc.z > seen + 0.01 * (1.0 - seen) + 1e-4) return 0.0;
+    }
+    return 1.0;
+}
+
 vec3 gather(vec3 x, vec3 n) {
     vec3 e = vec3(0.0);
     const int res = int(pc.sizes.z);
@@ -78,11 +120,15 @@ vec3 gather(vec3 x, vec3 n) {
         }
         vec2 st;
         float scale = samplingDisc(L, x, st) * L.cascade.z / pc.params.z;
+        mat2 rotation = patternRotation(L, x);
         for (uint i = 0; i < pc.mode.y; ++i) {
             vec4 s = samples[i];
-            vec2 uv = st + s.xy * scale;
+            vec2 uv = st + rotation * s.xy * scale;
             if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) continue;
-            e += (s.z * scale * scale) * vplIrradiance(ivec2(uv * float(res)), layer, x, n);
+            ivec2 t = ivec2(uv * float(res));
+            vec3 c = vplIrradiance(t, layer, x, n);
+            if (s.w > 0.5 && any(greaterThan(c, vec3(0.0)))) c *= farVisibility(L, layer, t, x);
+            e += (s.z * scale * scale) * c;
         }
     }
     return e;

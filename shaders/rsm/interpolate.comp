@@ -1,8 +1,8 @@
 #version 460
-// The paper's speed-up: each full-resolution pixel takes the irradiance of its four nearest
-// low-resolution gathers (bilinear weights) where those samples saw a surface like its own (normals
-// within a cone, positions within a few pixel footprints); with fewer than three such samples the
-// pixel is appended to a list that rsm/gather.comp (RSM_GATHER_LIST) evaluates in full.
+// The paper's speed-up: each full-resolution pixel takes the irradiance of the nearby low-resolution
+// gathers that saw a surface like its own (normals within a cone, positions within a few pixel
+// footprints), filtered; with fewer than three of its four nearest on its surface, the pixel is
+// appended to a list that rsm/gather.comp (RSM_GATHER_LIST) evaluates in full.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
 #include "render/reconstruct.glsl"
@@ -32,16 +32,21 @@ void main() {
     float footprint = length(x - frame.cameraPos.xyz) * frame.lens.x;
     float tolerance = pc.params.y * footprint * float(pc.mode.w);
 
+    // Joint bilateral filter over the 4 x 4 nearest low-resolution gathers: a Gaussian of one cell in
+    // screen space times a hard same-surface test (rotated patterns make neighbouring gathers
+    // independent, so the filter averages their noise). With fewer than three of the four nearest
+    // on the pixel's surface, the pixel is gathered in full instead.
     int f = int(pc.mode.w);
     ivec2 lowSize = ivec2(pc.sizes.xy);
     vec2 c = (vec2(pixel) + 0.5) / float(f) - 0.5;
     ivec2 base = ivec2(floor(c));
-    vec2 w = c - vec2(base);
     vec3 sum = vec3(0.0);
     float weight = 0.0;
     int valid = 0;
-    for (int k = 0; k < 4; ++k) {
-        ivec2 cell = clamp(base + ivec2(k & 1, k >> 1), ivec2(0), lowSize - 1);
+    for (int k = 0; k < 16; ++k) {
+        ivec2 o = ivec2(k & 3, k >> 2) - 1;
+        ivec2 cell = base + o;
+        if (any(lessThan(cell, ivec2(0))) || any(greaterThanEqual(cell, lowSize))) continue;
         ivec2 rep = min(cell * f + f / 2, ivec2(frame.size.xy) - 1);
         float d = texelFetch(gDepth, rep, 0).r;
         if (d >= 1.0) continue;
@@ -49,12 +54,13 @@ void main() {
         vec3 ni = normalize(texelFetch(gNormal, rep, 0).xyz);
         // Same surface: similar normal, on x's tangent plane (within one cell footprint), not far
         // along it (grazing views stretch a cell's footprint along the surface, hence the slack).
-        if (dot(ni, n) < pc.params.x || abs(dot(n, xi - x)) > tolerance || length(xi - x) > 8.0 * tolerance)
+        if (dot(ni, n) < pc.params.x || abs(dot(n, xi - x)) > tolerance || length(xi - x) > 12.0 * tolerance)
             continue;
-        float b = ((k & 1) != 0 ? w.x : 1.0 - w.x) * ((k >> 1) != 0 ? w.y : 1.0 - w.y);
+        vec2 r = vec2(cell) - c;
+        float b = exp(-0.5 * dot(r, r));
         sum += b * texelFetch(lowIrradiance, cell, 0).rgb;
         weight += b;
-        ++valid;
+        if (all(greaterThanEqual(o, ivec2(0))) && all(lessThanEqual(o, ivec2(1)))) ++valid;
     }
     if (valid >= 3 && weight > 1e-4) {
         imageStore(outIrradiance, pixel, vec4(sum / weight, 1.0));

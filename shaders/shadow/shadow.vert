@@ -18,6 +18,7 @@ layout(push_constant) uniform Push { ShadowDrawPush draw; };
 
 layout(location = 0) out vec3 outNormal;
 layout(location = 1) out vec2 outUv;
+layout(location = 3) flat out uint outIdBase;  // visibility ID base (render/visibility.glsl)
 
 void main() {
     const int layers = int(draw.layerCount), instance = sceneInstance(layers), layer = instanceLayer(layers);
@@ -25,4 +26,5 @@ void main() {
     gl_Layer = int(draw.firstLayer) + layer;
     outNormal = instanceNormal(instance, inNormal);
     outUv = inUv;
+    outIdBase = instances[instance].info.y + draw.ids.x;
 }

@@ -7,6 +7,14 @@ float shadowVisibility(GpuLight light, ivec2 pixel) {
     return texelFetch(shadowMask, ivec3(pixel, int(light.radiance.w)), 0).r;
 }
 
+// The first shadowed light's layer code at this pixel (layer + blend fraction; -1: no shadowed light).
+float firstShadowLayer(ivec2 pixel) {
+    for (uint i = 0u; i < frame.size.z; ++i)
+        if (lights[i].radiance.w != NO_SHADOW)
+            return texelFetch(shadowMask, ivec3(pixel, int(lights[i].radiance.w)), 0).g;
+    return -1.0;
+}
+
 // `cascade` AOV: the first shadowed light's layer at this pixel as a colour (cascade 0 red, 1 green,
 // 2 blue, 3 yellow, ...; blend bands mix neighbours; cube faces and hemispheres likewise), darkened
 // where shadowed so that cascade borders can be judged against the shadows they carry.

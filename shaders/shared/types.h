@@ -50,8 +50,23 @@ struct FrameUniforms {
     mat4 invViewProj;
     vec4 cameraPos;  // xyz = eye, w = far plane
     uvec4 size;      // x = width, y = height, z = light count, w = AOV
-    uvec4 options;   // x = indirect irradiance image valid (GI on), yzw unused
+    uvec4 options;   // x = indirect irradiance image valid (GI on), y unused, zw = probed pixel (PROBE_OFF: none)
     vec4 lens;       // x = world size of a pixel at unit distance (2 tan(fovy/2) / height), yzw unused
+};
+
+#define PROBE_OFF 0xFFFFFFFFu
+
+// Every AOV at one pixel (the viewer's pixel probe), written by render/lighting.comp for the pixel
+// FrameUniforms.options.zw names, as the AOV images would hold them.
+struct PixelProbe {
+    vec4 finalRadiance;  // rgb = direct + indirect, w = 1 on a surface, 0 on the background
+    vec4 direct;         // rgb = direct radiance
+    vec4 indirect;       // rgb = indirect radiance (albedo / pi * irradiance), w unused
+    vec4 irradiance;     // rgb = gathered indirect irradiance (0 with --gi none)
+    vec4 albedo;         // rgb = albedo
+    vec4 normal;         // xyz = shading normal (hair: tangent), w = shading model (G-buffer .w)
+    vec4 position;       // xyz = world position, w = distance to the eye (the depth AOV)
+    vec4 shadow;         // x = first shadowed light's visibility, y = its layer code (-1: none), z = DSM transmittance
 };
 
 // One light as the lighting pass sees it. Units as in scene.h: directional radiance.rgb is
@@ -80,7 +95,8 @@ struct GpuMaterial {
 struct GpuInstance {
     mat4 model;   // object -> world
     mat4 normal;  // inverse transpose of model's upper 3x3 (columns 0-2)
-    vec4 info;    // x = 1 when model mirrors (negative determinant: fronts flip), yzw unused
+    uvec4 info;   // x = 1 when model mirrors (negative determinant: fronts flip), y = the drawn-triangle
+                  // index of the mesh's first triangle (SceneGpu::drawnTriangles: visibility IDs), zw unused
 };
 
 // Push constants of the raster passes that draw the scene.
@@ -88,7 +104,8 @@ struct DrawPush {
     uint viewIndex;  // row of the views buffer (0 = camera, 1.. = shadow layers)
     uint material;
     uint pad0;
-    uint pad1;
+    uint triangleBase;  // the draw's first triangle within its mesh: visibility IDs are the instance's
+                        // drawn-triangle base + this + gl_PrimitiveID + 1 (render/visibility.glsl)
 };
 
 // Tone-map modes: radiance is exposed and tone-mapped, colour data only sRGB-encoded, other data
@@ -126,12 +143,14 @@ struct RsmPush {
     vec4 params;   // x = normal cos threshold, y = distance threshold in pixel footprints, zw unused
 };
 
-// Push constants of the RSM raster pass.
-struct RsmDrawPush {
-    uint viewIndex;
-    uint material;
-    uint light;   // index into the lights buffer
-    uint layer;   // index into the RSM layers buffer
+// Push constants of the RSM resolve (rsm/resolve.comp): RSM texels from the shadow pass's visibility IDs.
+struct RsmResolvePush {
+    uvec4 sizes;  // x = RSM resolution, y = resolution of the ID layers (the shadow map's), zw unused
+};
+
+// Push constants of the camera's visibility resolve (render/visibility_resolve.comp).
+struct VisibilityResolvePush {
+    uvec4 size;   // xy = image size, zw unused
 };
 
 // Light propagation volumes (src/lpv). Volumes are buffers: light volume c, channel ch (R, G, B) is
@@ -208,7 +227,8 @@ struct ShadowDrawPush {
     uint viewIndex;
     uint material;
     uint firstLayer;
-    uint layerCount;  // instances of a draw = scene instances x layers (layer fastest)
+    uint layerCount;    // instances of a draw = scene instances x layers (layer fastest)
+    uvec4 ids;          // x = the draw's first triangle within its mesh (DrawPush.triangleBase), yzw unused
     vec4 paraboloid;  // x = near, y = far, z = disc scale, w = max angle per tessellated edge (radians)
 };
 
@@ -251,7 +271,8 @@ struct GpuDsmLight {
 
 // Counters of one frame (cleared before the build; read back for the report).
 struct DsmStats {
-    uvec4 build;  // x = light-space fragments (allocations tried: beyond the capacity = dropped), yzw unused
+    uvec4 build;  // x = light-space fragments (allocations tried: beyond the capacity = dropped),
+                  // y = fragments skipped by the depth test against opaque casters, zw unused
     uvec4 lists;  // x = nodes kept, y = nodes dropped beyond the max list length, z = longest list,
                   // w = texels with a list
 };
@@ -261,6 +282,24 @@ struct DsmPush {
     uvec4 sizes;  // x = resolution, y = layer count, z = node capacity, w = max list length
 };
 
+// ---- Camera translucency: hair and alphaMode BLEND surfaces (src/dsm/translucency.*) ----
+// Per-pixel linked lists built like the DSM's (one atomic add, one atomic exchange per fragment,
+// behind-the-opaque-surface fragments rejected), then sorted, shaded and composited in compute.
+#define OIT_MAX_LIST 32  // fragments composited per pixel, nearest first (the rest are counted, dropped)
+// A node is a uvec4: x = window depth (float bits), y = albedo r, g (half x2), z = next, w = albedo b
+// and alpha (opacity x coverage; half x2; a negative alpha marks hair, shaded with Kajiya-Kay); its
+// unit normal (surface) or tangent (hair), octahedral snorm16 x2, is in a uint array beside them.
+
+struct OitStats {
+    uvec4 counts;  // x = fragments (allocations tried: beyond the capacity = dropped), y = kept,
+                   // z = dropped beyond OIT_MAX_LIST, w = longest list
+};
+
+// Push constants of the translucency resolve.
+struct OitPush {
+    uvec4 sizes;  // x = width, y = height, z = node capacity, w unused
+};
+
 // ---- Compute rasterizer for depth-only views (src/raster, shaders/raster) ----
 // Triangles whose pixel bounding box fits RASTER_SMALL_EXTENT on both sides are rasterized by the
 // thread that set them up; larger ones are binned into RASTER_TILE_SIZE tiles, one workgroup each.
@@ -268,6 +307,7 @@ struct DsmPush {
 #define RASTER_TILE_SIZE 32
 #define RASTER_SETUP_GROUP 64
 #define RASTER_TILE_GROUP 256
+#define RASTER_BIN_GROUP 64
 #define RASTER_NO_RECORD 0xFFFFFFFFu   // a tile entry whose triangle went the inline path (lists full)
 
 // One triangle after setup (clipped, snapped, front-facing or double-sided, non-empty), in window
@@ -275,7 +315,8 @@ struct DsmPush {
 struct RasterTriangle {
     uvec4 xy01;      // snapped vertices 0 and 1 (int bits, subpixel units): x0, y0, x1, y1
     uvec4 xy2;       // x2, y2 (int bits), z = target layer, w = material
-    vec4 origin;     // xy = float window position of vertex 0 (origin of the planes), z = 1: alpha-tested, w unused
+    vec4 origin;     // xy = float window position of vertex 0 (origin of the planes), z = 1: alpha-tested,
+                     // w = its first tile entry (-1: the lists were full)
     vec4 depth;      // plane of z: value at the origin, d/dx, d/dy; w = depth bias of the triangle
     vec4 uOverW;     // planes of u/w, v/w and 1/w (perspective-correct uv): value at origin, d/dx, d/dy
     vec4 vOverW;
@@ -292,7 +333,7 @@ struct RasterLayer {
 // Push constants of the compute rasterizer's passes.
 struct RasterPush {
     uvec4 target;    // x = resolution, y = subpixel precision bits, z = triangle count, w = layer count
-    uvec4 capacity;  // x = triangle records, y = tile entries, zw unused
+    uvec4 capacity;  // x = triangle records, y = tile entries, z = small-triangle extent (pixels), w unused
     vec4 bias;       // x = constant factor, y = slope factor, zw unused
 };
 

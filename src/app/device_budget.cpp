@@ -144,8 +144,9 @@ std::vector<Demand> frameDemands(const RenderSettings& s, const Scene& scene, co
     std::vector<Demand> d;
     const uint64_t w = s.width, h = s.height;
     // The HDR image (RGBA32F) is the largest single image; the rest: G-buffer (albedo 4, normal 8, depth
-    // 4), LDR 4, the HDR read-back 16, GI irradiance 16 (+ lists), shadow mask 4 per shadowed light.
-    const uint64_t perPixel = 48 + 4 * uint64_t(layers.shadowedLights);
+    // 4; the visibility path: albedo 8 and IDs 4), LDR 4, the HDR read-back 16, GI irradiance 16 (+ lists),
+    // shadow mask 4 per shadowed light.
+    const uint64_t perPixel = 48 + 4 * uint64_t(layers.shadowedLights) + (s.cameraPath == CameraPath::Visibility ? 8 : 0);
     d.push_back({"--width", w, 1, fmt::format("the {}x{} HDR image (RGBA32F)", w, h),
                  [=](uint64_t v) { return v * h * 16; }});
     d.push_back({"--width", w, 1, fmt::format("the {}x{} frame's other images ({} bytes per pixel)", w, h, perPixel),
@@ -154,6 +155,10 @@ std::vector<Demand> frameDemands(const RenderSettings& s, const Scene& scene, co
     d.push_back({"--shadow-res", s.shadow.resolution, 16,
                  fmt::format("the shadow-map array ({} layer(s) of D32)", shadowLayers),
                  [=](uint64_t r) { return r * r * 4 * shadowLayers; }});
+    if (s.gi != GiMode::None)  // the RSM's layers of the shadow pass carry visibility IDs (R32_UINT)
+        d.push_back({"--shadow-res", s.shadow.resolution, 16,
+                     fmt::format("the shadow pass's visibility IDs ({} layer(s) of R32_UINT)", std::max(layers.rsm, 1u)),
+                     [=, n = std::max(layers.rsm, 1u)](uint64_t r) { return r * r * 4 * n; }});
     if (momentLayers)
         d.push_back({"--shadow-res", s.shadow.resolution, 16,
                      fmt::format("the moment maps ({} layer(s) of RGBA32F)", momentLayers + 1),

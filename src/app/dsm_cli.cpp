@@ -14,12 +14,13 @@ void addDsmOptions(CLI::App& cmd, DsmSettings& dsm, BuiltinOptions& scene) {
         ->check(CLI::NonNegativeNumber);
     cmd.add_option("--dsm-res", dsm.resolution, "Deep shadow map resolution (default: --shadow-res)")
         ->check(CLI::Range(16, 16384));
-    cmd.add_option("--dsm-nodes", dsm.poolNodes, "Node pool capacity (default: 4 nodes per DSM texel)")
+    cmd.add_option("--dsm-nodes", dsm.poolNodes, "Node pool capacity (default: 16 nodes per DSM texel, at most what the device addresses)")
         ->check(CLI::Range(uint64_t(1), DsmSettings::kMaxPoolNodes - 1));
     cmd.add_option("--dsm-max-list", dsm.maxList, "Nodes kept per texel, nearest first")
         ->check(CLI::Range(1, DSM_MAX_LIST_CAP));
     cmd.add_option("--dsm-filter", dsm.filterWidth, "DSM PCF box width in texels (default 1; 0 = bilinear)")
         ->check(finiteRange(0.0, 8.0));
+    cmd.add_option("--dsm-depth-test", dsm.depthTest, "Skip DSM fragments hidden behind opaque casters on/off");
     cmd.add_option("--dsm-bias", dsm.depthBias, "DSM receiver depth bias in texels")
         ->check(finiteRange(0.0, 64.0));
 }
@@ -31,6 +32,11 @@ void finishDsmSettings(RenderSettings& s) {
 }
 
 void reportDsm(Renderer& renderer, bool quiet) {
+    if (const CameraTranslucency* t = renderer.translucency()) {
+        const OitFrameStats stats = t->readStats(renderer.commands());
+        if (!quiet) fmt::print("  {}\n", describeTranslucency(stats));
+        for (const std::string& w : translucencyWarnings(stats)) fmt::print(stderr, "penumbra: warning: {}\n", w);
+    }
     if (!renderer.deepShadows().active()) return;
     const DsmFrameStats stats = renderer.deepShadows().readStats(renderer.commands());
     if (!quiet) fmt::print("  {}\n", describeDsm(stats));

@@ -13,7 +13,8 @@ void addDsmOptions(CLI::App& cmd, DsmSettings& dsm, BuiltinOptions& scene);
 // the DSM AOVs without deep shadow maps are an error (std::invalid_argument).
 void finishDsmSettings(RenderSettings& settings);
 
-// After the last frame: the DSM statistics line (unless quiet) and the overflow warning, if any.
+// After the last frame: the DSM and camera translucency statistics lines (unless quiet) and the
+// overflow warnings, if any.
 void reportDsm(Renderer& renderer, bool quiet);
 
 }  // namespace penumbra

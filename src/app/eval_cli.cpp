@@ -11,6 +11,8 @@
 #include "app/ground_truth_cli.h"
 #include "app/option_checks.h"
 #include "eval/eval.h"
+#include "eval/suite.h"
+#include "render/gpu_scene.h"
 #include "io/image_io.h"
 
 namespace penumbra {
@@ -86,20 +88,119 @@ CLI::App* addEvalCommand(CLI::App& app, EvalCliOptions& o) {
     o.reference.settings.width = 320;
     o.reference.settings.height = 240;
     o.reference.settings.spp = 256;
+    o.reference.exposure = 0.0f;  // 0: auto (the figure's exposures come from the reference)
+    o.indirectExposure = 0.0f;
     addReferenceSceneOptions(*cmd, o.reference);
     cmd->add_option("--reference", o.referenceDir, "Reference cache directory: reused when scene and settings match");
     cmd->add_option("--json", o.json, "Write the table and every metric as JSON to this file");
     cmd->add_option("--images", o.images, "Directory for figure.png: reference, RSM, LPV, their error maps");
     cmd->add_option("--frames", o.frames, "Frames per technique; GPU ms is the median after the first")
         ->check(CLI::Range(1, 10000));
-    cmd->add_option("--exposure", o.reference.exposure, "Figure: exposure of the final images")
+    cmd->add_option("--exposure", o.reference.exposure, "Figure: exposure of the final images (default: auto)")
         ->check(finiteRange(1e-6, 1e6));
-    cmd->add_option("--indirect-exposure", o.indirectExposure, "Figure: exposure of the indirect images")
+    cmd->add_option("--indirect-exposure", o.indirectExposure, "Figure: exposure of the indirect images (default: auto)")
         ->check(finiteRange(1e-6, 1e6));
     cmd->add_option("--figure-width", o.figureCellWidth, "Figure: largest cell width, pixels")
         ->check(CLI::Range(16, 16384));
+    cmd->add_flag("--suite", o.suite, "The GI suite: cornell, street, room, Sponza, VC at fixed sizes; RSM and LPV "
+                                      "defaults against the reference (--reference: the cache folder)");
+    cmd->add_option("--assets", o.assets, "--suite: the folder holding sponza/ and VC/");
+    cmd->add_option("--scenes", o.suiteScenes, "--suite: only these scenes (cornell, street, room, sponza, vc)")
+        ->delimiter(',');
     return cmd;
 }
+
+namespace {
+
+// Pixels whose surface faces down (normal y < -0.9): cornell's ceiling, from the renderer's normal AOV.
+std::vector<uint8_t> downFacingPixels(vk::Context& ctx, const PreparedFrame& f, RenderSettings s) {
+    GpuScene gpuScene(ctx, f.scene);
+    s.aov = Aov::Normal;
+    s.gi = GiMode::None;
+    Renderer r(ctx, gpuScene, s, 1);
+    r.render(f.camera);
+    const std::vector<float> normal = r.readHdr();
+    std::vector<uint8_t> out(size_t(s.width) * s.height);
+    for (size_t i = 0; i < out.size(); ++i) out[i] = normal[i * 4 + 1] < -0.9f;
+    return out;
+}
+
+// One suite scene: its references (two seeds, cached under o.referenceDir/<name>-seed<N>), RSM and
+// LPV at their defaults, the figure.
+SuiteResult runSuiteScene(const EvalCliOptions& suite, const SuiteScene& sc, vk::Context& ctx, bool progressLine) {
+    EvalCliOptions o = suite;
+    o.reference.frame.scene = sc.scene;
+    o.reference.frame.camera = sc.camera;
+    o.reference.frame.lights = sc.lights;
+    o.reference.settings.width = sc.width;
+    o.reference.settings.height = sc.height;
+    o.reference.settings.spp = sc.spp;
+    const PreparedFrame f = prepareReferenceFrame(o.reference);
+    auto cached = [&](uint64_t seed) {
+        EvalCliOptions so = o;
+        so.reference.settings.seed = seed;
+        if (!o.referenceDir.empty())
+            so.referenceDir = (fs::path(o.referenceDir) / fmt::format("{}-seed{}", sc.name, seed)).string();
+        return groundTruth(so, f);
+    };
+    const uint64_t seed = o.reference.settings.seed;
+    const GroundTruth truth = cached(seed), second = cached(seed + 1);
+    SuiteResult r{sc.name, sc.width, sc.height, sc.spp, 0.0, {}, -1.0, -1.0};
+    r.noiseL1 = compareImages(second.indirect, truth.indirect, truth.mask).relL1;
+    RenderSettings base;
+    base.width = sc.width;
+    base.height = sc.height;
+    r.rows = runEval(ctx, f.scene, f.camera, suiteVariants(base), truth, 1, [&](size_t i, size_t n, const std::string& t) {
+        if (progressLine) fmt::print(stderr, "\reval --suite: {} {}/{} {:<40}", sc.name, i + 1, n, t), std::fflush(stderr);
+    });
+    if (sc.name == "cornell") {
+        const std::vector<uint8_t> ceiling = downFacingPixels(ctx, f, base);
+        r.ceilingRsm = regionRatio(r.rows[0].indirectImage, truth.indirect, ceiling);
+        r.ceilingLpv = regionRatio(r.rows[1].indirectImage, truth.indirect, ceiling);
+    }
+    if (!o.images.empty()) {
+        double heat = 0.0;
+        uint32_t w = 0, h = 0;
+        const std::vector<uint8_t> fig = evalFigure(r.rows, truth, autoExposure(truth.final, truth.mask),
+                                                    autoExposure(truth.indirect, truth.mask), o.figureCellWidth, heat,
+                                                    w, h);
+        writePng((fs::path(o.images) / (sc.name + ".png")).string(), w, h, fig);
+    }
+    return r;
+}
+
+int runSuite(const EvalCliOptions& o, const vk::ContextOptions& vkOptions, bool dryRun) {
+    const std::vector<SuiteScene> scenes = suiteScenes(o.assets, o.suiteScenes);
+    for (const SuiteScene& sc : scenes)  // every file is checked before any work
+        if (sc.scene.find('/') != std::string::npos && !fs::is_regular_file(sc.scene))
+            throw std::invalid_argument(fmt::format("--assets {}: no {} (suite scene '{}')", o.assets, sc.scene, sc.name));
+    if (dryRun) return 0;
+    const bool progressLine = o.reference.settings.progress && isatty(STDERR_FILENO);
+    std::error_code ec;
+    if (!o.images.empty()) fs::create_directories(o.images, ec);
+    vk::Context ctx(vkOptions);
+    std::vector<SuiteResult> results;
+    for (const SuiteScene& sc : scenes) results.push_back(runSuiteScene(o, sc, ctx, progressLine));
+    if (progressLine) fmt::print(stderr, "\r{:80}\r", "");
+    fmt::print("penumbra eval --suite on {}: indirect light against the one-bounce path tracer, over the pixels with "
+               "geometry; RSM and LPV at their defaults, hard shadows\n{}", ctx.info().name, formatSuiteTable(results));
+    for (const SuiteResult& r : results)
+        if (r.ceilingLpv >= 0.0)
+            fmt::print("{} ceiling, mean indirect / reference's: RSM {:.2f}, LPV {:.2f}\n", r.scene, r.ceilingRsm,
+                       r.ceilingLpv);
+    fmt::print("ref noise: indirect relative L1 between the references of two seeds. GPU cost: `penumbra bench` "
+               "(README, Benchmarks), not eval's timing.\n");
+    if (!o.images.empty()) fmt::print("figures {}/<scene>.png: columns reference, RSM, LPV; rows final, indirect, "
+                                      "indirect error (auto-exposed)\n", o.images);
+    if (!o.json.empty())
+        std::ofstream(o.json) << nlohmann::json{{"command", o.command}, {"device", ctx.info().name},
+                                                {"scenes", suiteJson(results)}}.dump(2) << "\n";
+    if (ctx.validationMessages() > 0)
+        throw std::runtime_error(fmt::format("{} validation message(s) reported", ctx.validationMessages()));
+    return 0;
+}
+
+}  // namespace
 
 int runEvalCommand(const EvalCliOptions& o, const vk::ContextOptions& vkOptions, bool dryRun) {
     const bool verbose = o.reference.settings.progress;
@@ -108,6 +209,7 @@ int runEvalCommand(const EvalCliOptions& o, const vk::ContextOptions& vkOptions,
     if (!o.json.empty()) checkWritable(o.json, "--json");
     if (!o.images.empty()) checkWritable(o.images, "--images", true);
     if (!o.referenceDir.empty()) checkWritable(o.referenceDir, "--reference", true);
+    if (o.suite) return runSuite(o, vkOptions, dryRun);
     PreparedFrame f = prepareReferenceFrame(o.reference);
     if (dryRun) return 0;
     const GroundTruth truth = groundTruth(o, f);
@@ -140,13 +242,16 @@ int runEvalCommand(const EvalCliOptions& o, const vk::ContextOptions& vkOptions,
         fs::create_directories(o.images, ec);
         double heat = 0.0;
         uint32_t w = 0, h = 0;
+        const float exposure = o.reference.exposure > 0.0f ? o.reference.exposure : autoExposure(truth.final, truth.mask);
+        const float indirectExposure =
+            o.indirectExposure > 0.0f ? o.indirectExposure : autoExposure(truth.indirect, truth.mask);
         const std::vector<uint8_t> fig =
-            evalFigure(rows, truth, o.reference.exposure, o.indirectExposure, o.figureCellWidth, heat, w, h);
+            evalFigure(rows, truth, exposure, indirectExposure, o.figureCellWidth, heat, w, h);
         const std::string path = (fs::path(o.images) / "figure.png").string();
         writePng(path, w, h, fig);
-        fmt::print("figure {}: columns reference, RSM interpolated, LPV 32^3; rows final, indirect (x{}), indirect "
-                   "error |dY| (black 0 .. pale yellow {:.4g}; the reference column shows the ramp)\n",
-                   path, o.indirectExposure, heat);
+        fmt::print("figure {}: columns reference, RSM interpolated, LPV 32^3; rows final (x{:.3g}), indirect (x{:.3g}), "
+                   "indirect error |dY| (black 0 .. pale yellow {:.4g}; the reference column shows the ramp)\n",
+                   path, exposure, indirectExposure, heat);
     }
     if (!o.json.empty()) {
         nlohmann::json j{{"command", o.command},  {"device", ctx.info().name}, {"device_type", ctx.info().type},

@@ -91,11 +91,17 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o, RenderSettings& rs) {
     cmd.add_option("--aov", o.aov, "Output: " + fmt::format("{}", fmt::join(aovNames(), ", ")));
     cmd.add_option("--aov-layer", rs.aovLayer, "Layer shown by the rsm-depth/normal/flux and shadow-map AOVs")
         ->check(CLI::Range(0, 4096));
+    addChoice<CameraPath>(cmd, "--camera-path", rs.cameraPath,
+                          {{"visibility", CameraPath::Visibility}, {"gbuffer", CameraPath::Gbuffer}},
+                          "Camera G-buffer: visibility buffer (depth + triangle ID raster, albedo and normal "
+                          "resolved in compute) or the classic raster G-buffer");
     addGiOptions(cmd, rs);
     cmd.add_option("--exposure", rs.exposure, "Linear exposure multiplier before tone mapping")
         ->check(finiteRange(1e-6, 1e6));
     addShadowOptions(cmd, rs.shadow, o.lightFilters, rs.dsm.enabled);
     addDsmOptions(cmd, rs.dsm, o.builtin);
+    cmd.add_option("--translucency", rs.translucency,
+                   "Hair and BLEND surfaces composited in depth order on/off (off: drawn opaque)");
     addMotionOptions(cmd, o);
 }
 
@@ -106,7 +112,7 @@ void addMotionOptions(CLI::App& cmd, FrameOptions& o) {
     cmd.add_flag("--clamp", o.animation.clamp, "Hold the last key of animations instead of looping");
     cmd.add_option("--sun-path", o.motion.sun, "Sun motion: AZ0,EL0,AZ1,EL1,SECONDS (degrees; every directional light)");
     cmd.add_option("--light-path", o.motion.lights, "Light N's position keys: N:T,X,Y,Z;T,X,Y,Z;... (repeatable)");
-    cmd.add_option("--camera-path", o.motion.camera, "Camera keys: T,EX,EY,EZ,TX,TY,TZ;... (eye and target)");
+    cmd.add_option("--camera-keys", o.motion.camera, "Camera motion keys: T,EX,EY,EZ,TX,TY,TZ;... (eye and target)");
     cmd.add_flag_function("--no-motion", [&o](int64_t) { o.motion.builtinDefault = false; },
                           "No default motion of the built-in scenes");
 }

@@ -21,7 +21,7 @@ struct FrameOptions {
     std::string aov = "final";
     BuiltinOptions builtin;  // --strands
     // Time and motion (README "Motion"): --time, --animation, --clamp, --sun-path, --light-path,
-    // --camera-path, --no-motion.
+    // --camera-keys, --no-motion.
     double time = 0.0;
     AnimationOptions animation;
     MotionPaths motion;

@@ -2,6 +2,7 @@
 // (error metrics and heat map of two EXR images) and `eval` (every technique against the reference).
 #pragma once
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -43,6 +44,9 @@ struct EvalCliOptions {
     float indirectExposure = 4.0f;
     uint32_t figureCellWidth = 320;  // the figure's cells are shrunk to at most this width
     std::string command;            // recorded in the JSON
+    bool suite = false;             // --suite: the GI evaluation suite instead of one scene
+    std::string assets = "../shared/assets";  // --suite: the folder holding sponza/ and VC/
+    std::vector<std::string> suiteScenes;     // --scenes: a subset of the suite (empty = all)
 };
 CLI::App* addEvalCommand(CLI::App& app, EvalCliOptions& options);
 int runEvalCommand(const EvalCliOptions& options, const vk::ContextOptions& vkOptions, bool dryRun = false);

@@ -168,7 +168,7 @@ int runStability(const StabilityOptions& o, const vk::ContextOptions& vkOptions,
     const PreparedFrame& f = device.frame;
     const SceneMotion motion = frameMotion(o.frame, f);
     if (!motion.moves())
-        fmt::print(stderr, "penumbra: warning: nothing in '{}' moves: give --sun-path, --light-path or --camera-path\n",
+        fmt::print(stderr, "penumbra: warning: nothing in '{}' moves: give --sun-path, --light-path or --camera-keys\n",
                    f.scene.name);
     GpuScene scene(device.ctx, f.scene);
     const bool atWorldPoints = motion.cameraMoves();

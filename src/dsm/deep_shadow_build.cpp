@@ -5,14 +5,17 @@
 namespace penumbra {
 
 DeepShadowBuildPass::DeepShadowBuildPass(vk::Allocator& alloc, SceneGpu& scene, const HairGpu* hair,
-                                         DsmResources& res)
-    : alloc_(alloc), scene_(scene), hair_(hair), res_(res) {
+                                         DsmResources& res, bool depthTest)
+    : alloc_(alloc), scene_(scene), hair_(hair), res_(res), depthTest_(depthTest) {
     for (const Material& m : scene.scene().materials) hasBlended_ |= m.alphaMode == AlphaMode::Blend;
     // Set 0: the scene's draw set (views = the DSM views, materials, textures), the hair buffers,
-    // then heads, nodes and counters.
     std::vector<vk::Binding> b = SceneGpu::drawSetBindings();
     for (const vk::Binding& h : HairGpu::bindings()) b.push_back(h);
-    for (uint32_t i = 5; i <= 7; ++i) b.push_back({i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
+    // then heads, nodes and counters, and for the depth test the lights, the shadow lights and layers
+    // and the opaque casters' shadow map.
+    for (uint32_t i = 5; i <= 10; ++i) b.push_back({i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
+    b.push_back({11, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
+    nearest_ = vk::Sampler(alloc.context(), {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
     vk::Context& ctx = alloc.context();
     layout_ = vk::DescriptorLayout(ctx, b);
     if (hair) {
@@ -35,7 +38,8 @@ void DeepShadowBuildPass::recordLayer(VkCommandBuffer cmd, uint32_t layer) const
     const DsmLayer& l = res_.layers[layer];
     RasterTarget target{{res_.resolution, res_.resolution}, {}, VK_NULL_HANDLE};  // no attachments
     beginRaster(cmd, target);
-    gpu::HairDrawPush push{{layer, 0, layer, uint32_t(res_.capacity)}, l.view.viewer, l.view.footprint};
+    const uint32_t depthTestLight = depthTest_ ? l.light : DSM_NONE;
+    gpu::HairDrawPush push{{layer, 0, depthTestLight, uint32_t(res_.capacity)}, l.view.viewer, l.view.footprint};
     push.footprint.z = float(res_.resolution);
     // Both pipelines share one set layout: the set the pass pushed stays bound across them.
     for (const vk::Pipeline* p : {&hairPipeline_, &meshPipeline_}) {
@@ -75,6 +79,10 @@ void DeepShadowBuildPass::addTo(FrameGraph& graph) {
     build.storageBuffer(5, heads, Use::StorageWrite)
         .storageBuffer(6, nodes, Use::StorageWrite)
         .storageBuffer(7, stats, Use::StorageWrite)
+        .storageBuffer(8, graph.buffer("lights"))
+        .storageBuffer(9, graph.buffer("shadow.lights"))
+        .storageBuffer(10, graph.buffer("shadow.layers"))
+        .sampled(11, graph.image("shadow.map"), nearest_.handle())
         .record([this](PassContext& c) {
             for (uint32_t layer = 0; layer < res_.layerCount(); ++layer) recordLayer(c.cmd, layer);
         });

@@ -1,7 +1,8 @@
 // DSM build: clears the head pointers and the node counter, then rasterizes every semi-transparent
 // caster (hair ribbons, alphaMode BLEND meshes) in each DSM light's view; every fragment pushes a
-// (depth, alpha) node onto its texel's list (dsm/dsm_insert.glsl). No depth test and no attachments:
-// all layers of translucency are kept, in drawing order (the resolve sorts them).
+// (depth, alpha) node onto its texel's list (dsm/dsm_insert.glsl). No attachments and no depth test
+// among translucent casters: all layers are kept, in drawing order (the resolve sorts them); only
+// fragments hidden behind the opaque casters' shadow map are skipped.
 #pragma once
 #include "dsm/dsm_resources.h"
 #include "render/frame_graph.h"
@@ -11,7 +12,10 @@ namespace penumbra {
 class DeepShadowBuildPass {
 public:
     // `hair` may be null (a scene without strands).
-    DeepShadowBuildPass(vk::Allocator& alloc, SceneGpu& scene, const HairGpu* hair, DsmResources& res);
+    // `depthTest`: fragments hidden behind the light's opaque casters (its ordinary shadow map,
+    // "shadow.map") everywhere a lit receiver could look them up take no node (dsm/dsm_insert.glsl).
+    DeepShadowBuildPass(vk::Allocator& alloc, SceneGpu& scene, const HairGpu* hair, DsmResources& res,
+                        bool depthTest);
     void addTo(FrameGraph& graph);
 
 private:
@@ -22,6 +26,8 @@ private:
     const HairGpu* hair_;
     DsmResources& res_;
     bool hasBlended_ = false;
+    bool depthTest_;
+    vk::Sampler nearest_;
     vk::DescriptorLayout layout_;
     vk::Pipeline hairPipeline_, meshPipeline_;
 };

@@ -56,7 +56,7 @@ DeepShadowMaps::DeepShadowMaps(vk::Allocator& alloc, SceneGpu& scene, const Hair
         warnings.push_back("--shadow dsm: no directional or spot light casts shadows; no deep shadow map");
     res_ = std::make_unique<DsmResources>(alloc, settings, res, std::move(layers), lights.size());
     if (!active()) return;
-    build_ = std::make_unique<DeepShadowBuildPass>(alloc, scene, hair, *res_);
+    build_ = std::make_unique<DeepShadowBuildPass>(alloc, scene, hair, *res_, settings.depthTest);
     resolve_ = std::make_unique<DeepShadowResolvePass>(alloc, *res_);
 }
 
@@ -90,6 +90,7 @@ DsmFrameStats DeepShadowMaps::readStats(vk::CommandContext& cmd) const {
     s.maps = res_->layerCount();
     s.resolution = res_->resolution;
     s.capacity = res_->capacity;
+    s.deviceLimited = res_->deviceLimited;
     s.maxList = res_->maxList;
     s.poolBytes = res_->poolBytes();
     s.headBytes = active() ? res_->headBytes() : 0;
@@ -98,6 +99,7 @@ DsmFrameStats DeepShadowMaps::readStats(vk::CommandContext& cmd) const {
     const std::vector<uint8_t> bytes = cmd.readBuffer(res_->stats, sizeof(g));
     std::memcpy(&g, bytes.data(), sizeof(g));
     s.fragments = g.build.x;
+    s.hidden = g.build.y;
     s.overflow = s.fragments > s.capacity ? s.fragments - s.capacity : 0;
     s.kept = g.lists.x;
     s.beyondMaxList = g.lists.y;
@@ -110,17 +112,18 @@ DsmFrameStats DeepShadowMaps::readStats(vk::CommandContext& cmd) const {
 std::string describeDsm(const DsmFrameStats& s) {
     if (s.maps == 0) return "dsm: no light has a deep shadow map";
     return fmt::format(
-        "dsm: {} map(s) of {}^2: {} light-space fragments, {} nodes kept in {} lists (longest {}, {} beyond the "
+        "dsm: {} map(s) of {}^2: {} light-space fragments ({} more hidden behind opaque casters skipped), {} nodes kept in {} lists (longest {}, {} beyond the "
         "{}-node cap dropped); node pool {:.1f} MiB for {} nodes ({:.1f} MiB used), heads {:.1f} MiB",
-        s.maps, s.resolution, count(s.fragments), count(s.kept), count(s.lists), s.longest, count(s.beyondMaxList),
+        s.maps, s.resolution, count(s.fragments), count(s.hidden), count(s.kept), count(s.lists), s.longest, count(s.beyondMaxList),
         s.maxList, mib(s.poolBytes), count(s.capacity), mib(s.usedBytes), mib(s.headBytes));
 }
 
 std::vector<std::string> dsmWarnings(const DsmFrameStats& s) {
     if (s.overflow == 0) return {};
-    return {fmt::format("deep shadow map node pool overflow: {} of {} light-space fragments dropped (pool of {} nodes; "
-                        "raise --dsm-nodes)",
-                        s.overflow, s.fragments, s.capacity)};
+    return {fmt::format("deep shadow map node pool overflow: {} of {} light-space fragments dropped (pool of {} nodes{})",
+                        s.overflow, s.fragments, s.capacity,
+                        s.deviceLimited ? ", the most one storage buffer of this device addresses; lower --dsm-res"
+                                        : "; raise --dsm-nodes")};
 }
 
 }  // namespace penumbra

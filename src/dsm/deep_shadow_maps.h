@@ -18,7 +18,9 @@ namespace penumbra {
 struct DsmFrameStats {
     uint32_t maps = 0, resolution = 0;
     uint64_t fragments = 0;        // light-space fragments of translucent casters (allocation attempts)
+    uint64_t hidden = 0;           // fragments the depth test skipped (behind the opaque casters)
     uint64_t capacity = 0;         // nodes in the pool
+    bool deviceLimited = false;    // the pool is the largest the device addresses
     uint64_t overflow = 0;         // fragments dropped because the pool was full
     uint64_t kept = 0;             // nodes in the resolved lists
     uint64_t beyondMaxList = 0;    // nodes dropped by the per-texel cap (the farthest of long lists)

@@ -9,35 +9,19 @@ namespace {
 
 constexpr double kMiB = 1024.0 * 1024.0;
 
-struct DeviceLimits {
-    VkDeviceSize storageRange, allocation, heap;
-};
-
-DeviceLimits deviceLimits(vk::Context& ctx) {
-    VkPhysicalDeviceMaintenance3Properties m3{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_MAINTENANCE_3_PROPERTIES};
-    VkPhysicalDeviceProperties2 p{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &m3};
-    vkGetPhysicalDeviceProperties2(ctx.physicalDevice(), &p);
-    VkPhysicalDeviceMemoryProperties mem;
-    vkGetPhysicalDeviceMemoryProperties(ctx.physicalDevice(), &mem);
-    VkDeviceSize heap = 0;
-    for (uint32_t i = 0; i < mem.memoryHeapCount; ++i)
-        if (mem.memoryHeaps[i].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT) heap = std::max(heap, mem.memoryHeaps[i].size);
-    return {p.properties.limits.maxStorageBufferRange, m3.maxMemoryAllocationSize, heap};
-}
-
 // The pool must be addressable by one storage-buffer descriptor, allocatable in one piece, and leave
 // the device most of its memory: refuse it with the numbers rather than fail inside the driver.
 void checkFits(vk::Context& ctx, uint64_t capacity, VkDeviceSize headBytes) {
-    const DeviceLimits lim = deviceLimits(ctx);
+    const vk::DeviceLimits& lim = ctx.limits();
     const VkDeviceSize nodeBytes = VkDeviceSize(capacity) * 16;
     const VkDeviceSize total = VkDeviceSize(capacity) * DsmResources::kNodeBytes + headBytes;
     struct Check {
         VkDeviceSize need, limit;
         const char* what;
     };
-    for (const Check& c : {Check{nodeBytes, lim.storageRange, "the device's storage-buffer range"},
-                           Check{nodeBytes, lim.allocation, "the device's largest allocation"},
-                           Check{total, lim.heap / 2, "half of the device's memory"}})
+    for (const Check& c : {Check{nodeBytes, lim.storageBufferRange, "the device's storage-buffer range"},
+                           Check{nodeBytes, lim.allocationSize, "the device's largest allocation"},
+                           Check{total, lim.deviceMemory / 2, "half of the device's memory"}})
         if (c.need > c.limit)
             throw vk::VulkanError(fmt::format("--dsm-nodes {}: the deep-shadow-map node pool needs {:.0f} MiB, more "
                                               "than {} ({:.0f} MiB)",
@@ -46,9 +30,10 @@ void checkFits(vk::Context& ctx, uint64_t capacity, VkDeviceSize headBytes) {
 
 // The largest pool the device takes (the automatic size is clamped to it).
 uint64_t maxNodes(vk::Context& ctx, VkDeviceSize headBytes) {
-    const DeviceLimits lim = deviceLimits(ctx);
-    const VkDeviceSize forHeap = lim.heap / 2 > headBytes ? (lim.heap / 2 - headBytes) / DsmResources::kNodeBytes : 0;
-    return std::max<uint64_t>(1, std::min({lim.storageRange / 16, lim.allocation / 16, forHeap}));
+    const vk::DeviceLimits& lim = ctx.limits();
+    const uint64_t half = lim.deviceMemory / 2;
+    const uint64_t forHeap = half > headBytes ? (half - headBytes) / DsmResources::kNodeBytes : 0;
+    return std::max<uint64_t>(1, std::min({lim.storageBufferRange / 16, lim.allocationSize / 16, forHeap}));
 }
 
 gpu::GpuDsmLight tableEntry(const DsmLayer& layer, int index, uint32_t resolution, const DsmSettings& s) {
@@ -72,6 +57,7 @@ DsmResources::DsmResources(vk::Allocator& alloc, const DsmSettings& settings, ui
     const uint64_t automatic = std::min({texels * DsmSettings::kAutoNodesPerTexel, DsmSettings::kMaxPoolNodes - 1,
                                          maxNodes(alloc.context(), texels * 4)});
     capacity = layers.empty() ? 1 : settings.poolNodes ? settings.poolNodes : automatic;
+    deviceLimited = !layers.empty() && !settings.poolNodes && automatic < texels * DsmSettings::kAutoNodesPerTexel;
     if (!layers.empty()) checkFits(alloc.context(), capacity, texels * 4);  // an explicit --dsm-nodes may not fit
     heads = vk::Buffer(alloc, layers.empty() ? 4 : texels * 4, cleared, false, "dsm-heads");
     nodes = vk::Buffer(alloc, capacity * 16, cleared, false, "dsm-nodes");

@@ -24,6 +24,7 @@ struct DsmLayer {
 struct DsmResources {
     uint32_t resolution = 1;
     uint64_t capacity = 1;  // nodes in the pool
+    bool deviceLimited = false;  // the automatic size was cut to what the device addresses
     uint32_t maxList = 50;
     std::vector<DsmLayer> layers;
     vk::BufferRing views;       // row k: layer k's viewProj (binding 0 of the build), per frame slot

@@ -14,6 +14,16 @@ uint32_t recordCapacityFor(uint64_t triangles, uint32_t layers) {
     return uint32_t(std::clamp<uint64_t>(triangles * layers / 4, 4096, 1u << 19));
 }
 
+// Tile entries: 8 per record, and at least 16 times every layer's tiles, so that a few triangles as
+// large as a layer (a ground plane under a cascade) do not fill the list: a triangle rasterized by its
+// setup thread instead costs a whole layer's texels in one thread. Capped at 64 MiB.
+uint32_t entryCapacityFor(uint32_t records, uint32_t resolution, uint32_t layers) {
+    const uint64_t tiles = uint64_t(vk::divUp(resolution, RASTER_TILE_SIZE)) * vk::divUp(resolution, RASTER_TILE_SIZE);
+    return uint32_t(std::min<uint64_t>(std::max<uint64_t>(uint64_t(records) * 8, tiles * layers * 16), 1u << 23));
+}
+
+
+
 }  // namespace
 
 ComputeRaster::ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, uint32_t resolution, uint32_t layers)
@@ -22,7 +32,7 @@ ComputeRaster::ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, uint32_t res
       layers_(std::max(layers, 1u)),
       subpixelBits_(alloc.context().properties().limits.subPixelPrecisionBits),
       recordCapacity_(recordCapacityFor(scene.drawnTriangleCount(), layers_)),
-      entryCapacity_(recordCapacity_ * 8) {
+      entryCapacity_(entryCapacityFor(recordCapacity_, resolution, layers_)) {
     vk::Context& ctx = alloc.context();
     const uint32_t pushBytes = sizeof(gpu::RasterPush);
     // The scene's draw set (bindings 0-2 and the instance table); 3-6: depth, records, tile entries,
@@ -30,6 +40,7 @@ ComputeRaster::ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, uint32_t res
     std::vector<vk::Binding> tiles = SceneGpu::drawSetBindings();
     for (uint32_t b = 3; b <= 6; ++b) tiles.push_back({b, kBuffer});
     tiles_ = vk::ComputeKernel(ctx, "raster/tiles.comp", tiles, pushBytes);
+    bin_ = vk::ComputeKernel(ctx, "raster/bin.comp", tiles, pushBytes);
     std::vector<vk::Binding> setup = tiles;
     for (uint32_t b = 7; b <= 11; ++b) setup.push_back({b, kBuffer});  // vertices, indices, materials, layers, drawn triangles
     setup_ = vk::ComputeKernel(ctx, "raster/setup.comp", setup, pushBytes);
@@ -43,7 +54,7 @@ ComputeRaster::ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, uint32_t res
                           "raster-triangles");
     entries_ = vk::Buffer(alloc, VkDeviceSize(entryCapacity_) * 8, storage, false, "raster-tile-entries");
     counters_ = vk::Buffer(alloc, sizeof(gpu::RasterCounters), storage | transfer, false, "raster-counters");
-    dispatchArgs_ = vk::Buffer(alloc, sizeof(gpu::uvec4), storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, false,
+    dispatchArgs_ = vk::Buffer(alloc, 2 * sizeof(gpu::uvec4), storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, false,
                                "raster-dispatch");
     layerTable_ = vk::BufferRing(alloc, sizeof(gpu::RasterLayer) * layers_, storage, "raster-layers");
 }
@@ -63,7 +74,7 @@ void ComputeRaster::setViews(const std::vector<RasterViews>& views, uint32_t slo
 gpu::RasterPush ComputeRaster::push(RasterBias bias) const {
     const uint32_t triangles = scene_.drawnTriangleCount();
     return {{resolution_, subpixelBits_, triangles, layerRows_},
-            {recordCapacity_, entryCapacity_, 0u, 0u},
+            {recordCapacity_, entryCapacity_, RASTER_SMALL_EXTENT, 0u},
             {bias.constant, bias.slope, 0.0f, 0.0f}};
 }
 
@@ -112,18 +123,22 @@ void ComputeRaster::addTo(FrameGraph& graph, const std::string& name, ImageHandl
             args_.pipeline.push(c.cmd, p);
             vkCmdDispatch(c.cmd, 1, 1, 1);
         });
-    PassBuilder tiles = graph.pass(name + ".tiles");
-    tiles.pipeline(tiles_.pipeline);
-    scene_.declareDrawSet(tiles, viewRows);
-    tiles.storageBuffer(3, depth, Use::StorageWrite)
-        .storageBuffer(4, records, Use::StorageRead)
-        .storageBuffer(5, entries, Use::StorageRead)
-        .storageBuffer(6, counters, Use::StorageRead)
-        .use(args, Use::IndirectArgs)
-        .record([this, p](PassContext& c) {
-            tiles_.pipeline.push(c.cmd, p);
-            vkCmdDispatchIndirect(c.cmd, dispatchArgs_.handle(), 0);
-        });
+    // Bin (one workgroup per large triangle), then fine rasterization (one per tile entry).
+    for (const vk::ComputeKernel* k : {&bin_, &tiles_}) {
+        const bool binning = k == &bin_;
+        PassBuilder pass = graph.pass(name + (binning ? ".bin" : ".tiles"));
+        pass.pipeline(k->pipeline);
+        scene_.declareDrawSet(pass, viewRows);
+        pass.storageBuffer(3, depth, binning ? Use::StorageRead : Use::StorageWrite)
+            .storageBuffer(4, records, Use::StorageRead)
+            .storageBuffer(5, entries, binning ? Use::StorageWrite : Use::StorageRead)
+            .storageBuffer(6, counters, Use::StorageRead)
+            .use(args, Use::IndirectArgs)
+            .record([this, k, p, binning](PassContext& c) {
+                k->pipeline.push(c.cmd, p);
+                vkCmdDispatchIndirect(c.cmd, dispatchArgs_.handle(), binning ? sizeof(gpu::uvec4) : 0);
+            });
+    }
     graph.pass(name + ".resolve", PassKind::Transfer)
         .use(depth, Use::TransferSrc)
         .use(target, Use::TransferDst)

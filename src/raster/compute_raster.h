@@ -4,7 +4,8 @@
 //   <name>.clear   fill the depth buffer with 1.0 and the bin counters with 0 (transfer)
 //   <name>.setup   one thread per (triangle, layer), all layers in one dispatch: transform, clip,
 //                  cull, snap; small triangles rasterized right there, large ones binned into tiles
-//   <name>.args    the tile pass's indirect dispatch size
+//   <name>.args    the bin and tile passes' indirect dispatch sizes
+//   <name>.bin     one workgroup per large triangle: which tiles of its box its edges may cover
 //   <name>.tiles   one workgroup per (large triangle, tile) entry
 //   <name>.resolve copy of the depth buffer into the D32 target's layers (the filters read it as is)
 // Depth is a 32-bit atomicMin on the float bits in a storage buffer (depths in [0, 1] order like
@@ -54,7 +55,7 @@ private:
     SceneGpu& scene_;
     uint32_t resolution_, layers_, subpixelBits_;
     uint32_t recordCapacity_, entryCapacity_;
-    vk::ComputeKernel setup_, tiles_, args_;
+    vk::ComputeKernel setup_, bin_, tiles_, args_;
     vk::Buffer depth_, records_, entries_, counters_, dispatchArgs_;
     vk::BufferRing layerTable_;
     std::vector<RasterViews> views_;

@@ -81,7 +81,11 @@ void FrameGraph::barriers(VkCommandBuffer cmd, const PassDesc& pass) {
         Sync s = syncFor(use, pass.kind, vk::isDepthFormat(image.format()));
         vk::ImageState& st = image.state();
         const bool hazard = s.writes || (st.access & kWriteAccess) || st.layout != s.layout;
-        if (!hazard) {  // read after read in the same layout: just widen the reader set
+        // A reader in a stage the last transition was not made visible to (a raster pass sampled the
+        // image first, a compute pass samples it next) needs an execution dependency on the readers
+        // before it, which chains it after that transition; the reader set only widens.
+        const bool newStage = (s.stage & ~st.stage) != 0;
+        if (!hazard && !newStage) {  // read after read in the same layout and stages: nothing to wait for
             st.stage |= s.stage;
             st.access |= s.access;
             continue;
@@ -97,6 +101,13 @@ void FrameGraph::barriers(VkCommandBuffer cmd, const PassDesc& pass) {
         b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
         b.image = image.handle();
         b.subresourceRange = image.fullRange();
+        if (!hazard) {  // execution dependency only: same layout, nothing written
+            b.srcAccessMask = VK_ACCESS_2_NONE;
+            imageBarriers.push_back(b);
+            st.stage |= s.stage;
+            st.access |= s.access;
+            continue;
+        }
         imageBarriers.push_back(b);
         st = {s.layout, s.stage, s.access};
     }

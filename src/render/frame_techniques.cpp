@@ -1,4 +1,5 @@
 #include "render/frame_techniques.h"
+#include <algorithm>
 
 namespace penumbra {
 namespace {
@@ -34,13 +35,20 @@ std::vector<RsmLayerSource> rsmLayersOf(const ShadowMapPass& shadow, bool widest
 
 CameraTechnique::CameraTechnique(vk::Allocator& alloc, GpuScene& scene, const RenderSettings& s,
                                  VkDescriptorSetLayout drawLayout)
-    : gbuffer_(alloc, scene.meshes(), s.width, s.height, drawLayout) {
-    if (scene.hair()) hair_ = std::make_unique<HairGBufferPass>(alloc, *scene.hair(), gbuffer_);
+    : gbuffer_(alloc, scene.meshes(), s.width, s.height, drawLayout, s.cameraPath, !s.translucency) {
+    if (s.translucency) {
+        translucency_ = std::make_unique<CameraTranslucency>(alloc, scene.meshes(), scene.hair(), s.width, s.height);
+        if (!translucency_->active()) translucency_.reset();
+    } else if (scene.hair()) {
+        hair_ = std::make_unique<HairGBufferPass>(alloc, *scene.hair(), gbuffer_);
+    }
 }
 
 void CameraTechnique::addPasses(const FrameContext& f) {
     gbuffer_.addTo(f.graph);
-    if (hair_) hair_->addTo(f.graph, cameraRibbonView(f.camera.eye, f.uniforms.lens.x));
+    const RibbonView view = cameraRibbonView(f.camera.eye, f.uniforms.lens.x);
+    if (hair_) hair_->addTo(f.graph, view);
+    if (translucency_) translucency_->addBuildTo(f.graph, view);
 }
 
 // Hair (src/dsm) is an opaque caster in the ordinary shadow map of lights without a deep shadow
@@ -69,7 +77,19 @@ void ShadowTechnique::applyPerFrame(const RenderSettings& s) {
     if (hair_) hair_->setBias(s.shadow.depthBiasConstant, s.shadow.depthBiasSlope);
 }
 
-void ShadowTechnique::update(const FrameContext& f) { pass_.update(f.lights, f.camera, f.aspect, f.zfar, f.slot); }
+// The sun's cascades move in whole blocks of the texels that GI reads as one (an RSM texel, or one of
+// LPV's down-sampled VPLs), so that those blocks stay on a world-fixed lattice as the camera moves:
+// otherwise the RSM's texel centres crawl by fractions of a texel and its light flickers.
+static uint32_t cascadeSnapTexels(const RenderSettings& s) {
+    uint32_t giTexels = 0;
+    if (s.gi == GiMode::Rsm) giTexels = s.rsm.resolution;
+    if (s.gi == GiMode::Lpv) giTexels = s.lpv.vplResolution;
+    return giTexels == 0 ? 1u : std::max(1u, s.shadow.resolution / giTexels);
+}
+
+void ShadowTechnique::update(const FrameContext& f) {
+    pass_.update(f.lights, f.camera, f.aspect, f.zfar, f.slot, cascadeSnapTexels(f.settings));
+}
 
 // The shadow layers hair is drawn into: those of lights without a DSM (paraboloid point-light maps
 // bend edges, which the ribbon vertex shader does not: hair casts no shadow there).
@@ -104,12 +124,16 @@ RsmTechnique::RsmTechnique(vk::Allocator& alloc, vk::CommandContext& cmd, GpuSce
           RsmSettings r = s.rsm;
           if (!gather) r.resolution = s.lpv.rsmResolution;
           return r;
-      }()) {
+      }(), s.shadow.resolution) {
     if (gather) gather_ = std::make_unique<RsmGather>(alloc, cmd, s.width, s.height, s.rsm);
 }
 
 // The layers' projections change every frame (cascades follow the camera).
-void RsmTechnique::update(const FrameContext& f) { pass_.setLayers(rsmLayersOf(shadow_, widestCascadeOnly_), f.slot); }
+// The shadow pass draws these layers with visibility IDs, which the RSM is resolved from.
+void RsmTechnique::update(const FrameContext& f) {
+    pass_.setLayers(rsmLayersOf(shadow_, widestCascadeOnly_), f.slot);
+    shadow_.requestIds(pass_.shadowLayers());
+}
 
 void RsmTechnique::addPasses(const FrameContext& f) {
     pass_.addTo(f.graph);
@@ -128,15 +152,16 @@ void LpvTechnique::addPasses(const FrameContext& f) {
     volume_.addTo(f.graph, rsm_.layerCount());
 }
 
-LightingTechnique::LightingTechnique(vk::Allocator& alloc, vk::CommandContext& cmd, const RenderSettings& s)
-    : lighting_(alloc, s.width, s.height), debugView_(alloc.context()), tonemap_(alloc, s.width, s.height) {
+LightingTechnique::LightingTechnique(vk::Allocator& alloc, vk::CommandContext& cmd, const RenderSettings& s,
+                                     std::function<void(FrameGraph&)> afterLighting)
+    : lighting_(alloc, s.width, s.height), afterLighting_(std::move(afterLighting)), debugView_(alloc.context()), tonemap_(alloc, s.width, s.height) {
     noIndirect_ = vk::Image(alloc, {VK_FORMAT_R16G16B16A16_SFLOAT, 1, 1, 1,
                                     VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, "no-indirect"});
     const uint64_t zero = 0;
     cmd.uploadImage(noIndirect_, &zero, sizeof(zero));
 }
 
-gpu::TonemapPush LightingTechnique::tonemapParams(const RenderSettings& s, float zfar) const {
+gpu::TonemapPush LightingTechnique::tonemapParams(const RenderSettings& s, float depthFar) const {
     switch (s.aov) {
         case Aov::Direct:
         case Aov::Final:
@@ -150,7 +175,7 @@ gpu::TonemapPush LightingTechnique::tonemapParams(const RenderSettings& s, float
         case Aov::Albedo:
         case Aov::Cascade: return {{1.0f, 0.0f, float(TONEMAP_SRGB), 0.0f}};
         case Aov::Normal: return {{0.5f, 0.5f, float(TONEMAP_LINEAR), 0.0f}};
-        case Aov::Depth: return {{1.0f / zfar, 0.0f, float(TONEMAP_LINEAR), 0.0f}};
+        case Aov::Depth: return {{1.0f / depthFar, 0.0f, float(TONEMAP_LINEAR), 0.0f}};
         case Aov::Shadow:
         case Aov::Transmittance: return {{1.0f, 0.0f, float(TONEMAP_LINEAR), 0.0f}};
         case Aov::DsmLists: return {{1.0f / float(s.dsm.maxList), 0.0f, float(TONEMAP_LINEAR), 0.0f}};
@@ -161,8 +186,9 @@ gpu::TonemapPush LightingTechnique::tonemapParams(const RenderSettings& s, float
 void LightingTechnique::addPasses(const FrameContext& f) {
     if (!f.graph.hasImage("gi.irradiance")) f.graph.publish("gi.irradiance", f.graph.import(noIndirect_));
     lighting_.addTo(f.graph);
+    if (afterLighting_) afterLighting_(f.graph);
     debugView_.addTo(f.graph, f.settings.aov, f.settings.aovLayer);
-    tonemap_.addTo(f.graph, tonemapParams(f.settings, f.zfar));
+    tonemap_.addTo(f.graph, tonemapParams(f.settings, f.sceneFar));
 }
 
 }  // namespace penumbra

@@ -10,6 +10,7 @@
 
 #include "dsm/deep_shadow_maps.h"
 #include "dsm/hair_passes.h"
+#include "dsm/translucency.h"
 #include "lpv/lpv.h"
 #include "render/gbuffer_pass.h"
 #include "render/gpu_scene.h"
@@ -20,17 +21,25 @@
 
 namespace penumbra {
 
-// G-buffer (scene.vert/gbuffer.frag) and hair ribbons drawn into it.
+// G-buffer (scene.vert/gbuffer.frag) of the opaque surfaces; hair and BLEND surfaces either into
+// per-pixel translucency lists (composited after lighting: addCompositeTo) or, with
+// `--translucency off`, opaque into the G-buffer.
 class CameraTechnique : public Technique {
 public:
     CameraTechnique(vk::Allocator& alloc, GpuScene& scene, const RenderSettings& s, VkDescriptorSetLayout drawLayout);
     const char* name() const override { return "camera"; }
     void addPasses(const FrameContext& f) override;
+    // The translucency composite over "hdr" (LightingTechnique calls it after the lighting pass).
+    void addCompositeTo(FrameGraph& graph) {
+        if (translucency_) translucency_->addCompositeTo(graph);
+    }
     GBufferPass& gbuffer() { return gbuffer_; }
+    const CameraTranslucency* translucency() const { return translucency_.get(); }
 
 private:
     GBufferPass gbuffer_;
     std::unique_ptr<HairGBufferPass> hair_;
+    std::unique_ptr<CameraTranslucency> translucency_;
 };
 
 class ShadowTechnique : public Technique {
@@ -104,15 +113,18 @@ private:
 // Deferred lighting and tone mapping; publishes a black "gi.irradiance" when no GI technique did.
 class LightingTechnique : public Technique {
 public:
-    LightingTechnique(vk::Allocator& alloc, vk::CommandContext& cmd, const RenderSettings& s);
+    // `afterLighting` adds passes that rewrite "hdr" before the debug views and the tone mapper.
+    LightingTechnique(vk::Allocator& alloc, vk::CommandContext& cmd, const RenderSettings& s,
+                      std::function<void(FrameGraph&)> afterLighting = {});
     const char* name() const override { return "lighting"; }
     void addPasses(const FrameContext& f) override;
     LightingPass& lighting() { return lighting_; }
     TonemapPass& tonemap() { return tonemap_; }
 
 private:
-    gpu::TonemapPush tonemapParams(const RenderSettings& s, float zfar) const;
+    gpu::TonemapPush tonemapParams(const RenderSettings& s, float depthFar) const;
     LightingPass lighting_;
+    std::function<void(FrameGraph&)> afterLighting_;
     DebugViewPass debugView_;
     TonemapPass tonemap_;
     vk::Image noIndirect_;  // bound in place of the indirect irradiance when GI is off

@@ -5,11 +5,16 @@
 namespace penumbra {
 
 GBufferPass::GBufferPass(vk::Allocator& alloc, SceneGpu& scene, uint32_t width, uint32_t height,
-                         VkDescriptorSetLayout drawLayout)
-    : alloc_(alloc), scene_(scene) {
+                         VkDescriptorSetLayout drawLayout, CameraPath path, bool drawBlended)
+    : alloc_(alloc), scene_(scene), path_(path), drawBlended_(drawBlended) {
+    vk::Context& ctx = alloc.context();
+    const bool visibility = path == CameraPath::Visibility;
+    // Hair ribbons are drawn into albedo and normal after either path (src/dsm): both stay attachments.
     const VkImageUsageFlags target = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
-                                     VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
-    albedo = vk::Image(alloc, {VK_FORMAT_R8G8B8A8_SRGB, width, height, 1, target, "gbuffer-albedo"});
+                                     VK_IMAGE_USAGE_TRANSFER_SRC_BIT | (visibility ? VK_IMAGE_USAGE_STORAGE_BIT : 0);
+    // sRGB formats cannot be storage images: the resolve writes linear half floats.
+    albedo = vk::Image(alloc, {visibility ? VK_FORMAT_R16G16B16A16_SFLOAT : VK_FORMAT_R8G8B8A8_SRGB, width, height,
+                               1, target, "gbuffer-albedo"});
     normal = vk::Image(alloc, {VK_FORMAT_R16G16B16A16_SFLOAT, width, height, 1, target, "gbuffer-normal"});
     depth = vk::Image(alloc, {VK_FORMAT_D32_SFLOAT, width, height, 1,
                               VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
@@ -17,15 +22,34 @@ GBufferPass::GBufferPass(vk::Allocator& alloc, SceneGpu& scene, uint32_t width, 
                               "gbuffer-depth"});
     vk::GraphicsDesc d;
     d.vertexShader = "render/scene.vert";
-    d.fragmentShader = "render/gbuffer.frag";
-    d.colorFormats = {albedo.format(), normal.format()};
+    d.fragmentShader = visibility ? "render/visibility.frag" : "render/gbuffer.frag";
     d.depthFormat = depth.format();
     d.vertexStride = SceneGpu::vertexStride();
     d.vertexAttributes = SceneGpu::vertexAttributes();
     d.dynamicCullMode = true;
     d.frontFace = SceneGpu::sceneFrontFace(true);
-    pipeline_ = vk::Pipeline::graphics(alloc.context(), d, {drawLayout},
-                                       sizeof(gpu::DrawPush));
+    if (!visibility) {
+        d.colorFormats = {albedo.format(), normal.format()};
+        pipeline_ = vk::Pipeline::graphics(ctx, d, {drawLayout}, sizeof(gpu::DrawPush));
+        return;
+    }
+    ids = vk::Image(alloc, {VK_FORMAT_R32_UINT, width, height, 1,
+                            VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                                VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                            "gbuffer-ids"});
+    d.colorFormats = {ids.format()};
+    pipeline_ = vk::Pipeline::graphics(ctx, d, {drawLayout}, sizeof(gpu::DrawPush));
+    d.fragmentShader = "render/visibility_masked.frag";
+    masked_ = vk::Pipeline::graphics(ctx, d, {drawLayout}, sizeof(gpu::DrawPush));
+    std::vector<vk::Binding> bindings = SceneGpu::resolveSetBindings();
+    bindings.push_back({3, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER});
+    bindings.push_back({5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
+    bindings.push_back({6, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
+    bindings.push_back({7, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
+    resolveLayout_ = vk::DescriptorLayout(ctx, bindings);
+    resolve_ = vk::Pipeline::compute(ctx, "render/visibility_resolve.comp", {resolveLayout_.handle()},
+                                     sizeof(gpu::VisibilityResolvePush));
+    nearest_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
 }
 
 void GBufferPass::addTo(FrameGraph& graph) {
@@ -33,6 +57,7 @@ void GBufferPass::addTo(FrameGraph& graph) {
     graph.publish("gbuffer.albedo", a);
     graph.publish("gbuffer.normal", n);
     graph.publish("gbuffer.depth", d);
+    if (path_ == CameraPath::Visibility) return addVisibility(graph, a, n, d);
     PassBuilder pass = graph.pass("gbuffer", PassKind::Raster);
     pass.pipeline(pipeline_).use(a, Use::ColorAttachment).use(n, Use::ColorAttachment).use(d, Use::DepthAttachment);
     scene_.declareDrawSet(pass, graph.buffer("views"));
@@ -42,10 +67,49 @@ void GBufferPass::addTo(FrameGraph& graph) {
                             c.image(d).view()});
         scene_.draw(
             c.cmd, [&](const Draw& draw) { pipeline_.push(c.cmd, gpu::DrawPush{0, draw.material, 0, 0}); },
-            // Blended materials are drawn like masked ones until the deep-shadow-map issue.
-            [](const Material&) { return true; });
+            // Blended materials: drawn like masked ones, or left to the camera translucency passes.
+            [this](const Material& m) { return drawBlended_ || m.alphaMode != AlphaMode::Blend; });
         vkCmdEndRendering(c.cmd);
     });
+}
+
+void GBufferPass::addVisibility(FrameGraph& graph, ImageHandle a, ImageHandle n, ImageHandle d) {
+    const ImageHandle id = graph.import(ids);
+    graph.publish("gbuffer.ids", id);
+    PassBuilder raster = graph.pass("visibility", PassKind::Raster);
+    raster.pipeline(pipeline_).use(id, Use::ColorAttachment).use(d, Use::DepthAttachment);
+    scene_.declareDrawSet(raster, graph.buffer("views"));
+    raster.record([this, id, d](PassContext& c) {
+        beginRaster(c.cmd, {c.image(id).extent(), {{c.image(id).view(), {{0, 0, 0, 0}}}}, c.image(d).view()});
+        // In the scene's order, as the classic path (equal depths keep the same triangle): opaque (and
+        // blended ones without camera translucency) without discard, so early depth testing stays on;
+        // alpha-masked ones test alpha in their own pipeline.
+        const vk::Pipeline* bound = &pipeline_;
+        scene_.draw(
+            c.cmd,
+            [&](const Draw& draw) {
+                const vk::Pipeline* p =
+                    scene_.scene().materials[draw.material].alphaMode == AlphaMode::Mask ? &masked_ : &pipeline_;
+                if (p != bound) p->bind(c.cmd), bound = p;
+                p->push(c.cmd, gpu::DrawPush{0, draw.material, 0, scene_.triangleBase(draw)});
+            },
+            [this](const Material& m) { return drawBlended_ || m.alphaMode != AlphaMode::Blend; });
+        vkCmdEndRendering(c.cmd);
+    });
+    const uint32_t w = albedo.width(), h = albedo.height();
+    PassBuilder resolve = graph.pass("visibility.resolve");
+    resolve.pipeline(resolve_);
+    scene_.declareDrawSet(resolve, graph.buffer("views"));
+    scene_.declareTriangles(resolve);
+    resolve.uniform(3, graph.buffer("frame"))
+        .sampled(5, id, nearest_.handle())
+        .storageImage(6, a)
+        .storageImage(7, n)
+        .bytes(VkDeviceSize(w) * h * (4 + 8 + 8))
+        .record([this, w, h](PassContext& c) {
+            resolve_.push(c.cmd, gpu::VisibilityResolvePush{{w, h, 0, 0}});
+            vkCmdDispatch(c.cmd, vk::divUp(w, 8), vk::divUp(h, 8), 1);
+        });
 }
 
 }  // namespace penumbra

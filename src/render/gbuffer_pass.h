@@ -1,23 +1,40 @@
-// G-buffer: a thin raster pass writing albedo (sRGB), world normal and depth from the camera.
+// The camera's G-buffer: albedo, world normal and depth per pixel, by one of two paths.
+//   gbuffer:    one raster pass writes all three (scene.vert / gbuffer.frag; albedo sRGB 8-bit).
+//   visibility: the raster writes depth and a 32-bit visibility ID only (render/visibility.frag;
+//               alpha-masked materials still test alpha there), then a compute pass resolves albedo
+//               (RGBA16F) and normal from the ID (render/visibility_resolve.comp; texture level of
+//               detail from the neighbouring pixels' rays, as the raster's 2x2 quads take it).
+// Each colour target a raster pass writes costs fill rate on GPUs whose raster path is narrow
+// (issue 14); the visibility path writes one 32-bit target.
 #pragma once
 #include "render/frame_graph.h"
+#include "render/render_settings.h"
 #include "render/scene_gpu.h"
 
 namespace penumbra {
 
 class GBufferPass {
 public:
+    // `drawBlended`: alphaMode BLEND materials are drawn opaque (no camera translucency).
     GBufferPass(vk::Allocator& alloc, SceneGpu& scene, uint32_t width, uint32_t height,
-                VkDescriptorSetLayout drawLayout);
-    // Reads "views"; publishes "gbuffer.albedo", "gbuffer.normal", "gbuffer.depth".
+                VkDescriptorSetLayout drawLayout, CameraPath path, bool drawBlended = true);
+    // Reads "views" (and "frame"); publishes "gbuffer.albedo", "gbuffer.normal", "gbuffer.depth"
+    // (and "gbuffer.ids" on the visibility path).
     void addTo(FrameGraph& graph);
+    CameraPath path() const { return path_; }
 
-    vk::Image albedo, normal, depth;
+    vk::Image albedo, normal, depth, ids;
 
 private:
+    void addVisibility(FrameGraph& graph, ImageHandle a, ImageHandle n, ImageHandle d);
     vk::Allocator& alloc_;
     SceneGpu& scene_;
-    vk::Pipeline pipeline_;
+    CameraPath path_;
+    bool drawBlended_;
+    vk::Pipeline pipeline_, masked_;  // gbuffer: pipeline_ only; visibility: opaque and masked ID pipelines
+    vk::DescriptorLayout resolveLayout_;
+    vk::Pipeline resolve_;
+    vk::Sampler nearest_;
 };
 
 }  // namespace penumbra

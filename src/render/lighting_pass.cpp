@@ -17,7 +17,8 @@ LightingPass::LightingPass(vk::Allocator& alloc, uint32_t width, uint32_t height
                                          {8, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
                                          {9, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
                                          {10, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                                         {11, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}});
+                                         {11, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                                         {12, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}});
     pipeline_ = vk::Pipeline::compute(ctx, "render/lighting.comp", {layout_.handle()}, 0);
     pointSampler_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
 }
@@ -40,6 +41,7 @@ void LightingPass::addTo(FrameGraph& graph) {
         .storageBuffer(9, graph.buffer("dsm.heads"))
         .storageBuffer(10, graph.buffer("dsm.nodes"))
         .storageBuffer(11, graph.buffer("dsm.links"))
+        .storageBuffer(12, graph.buffer("probe"), Use::StorageWrite)
         .record([out](PassContext& c) {
             const vk::Image& image = c.image(out);
             vkCmdDispatch(c.cmd, vk::divUp(image.width(), 8), vk::divUp(image.height(), 8), 1);

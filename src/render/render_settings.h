@@ -33,17 +33,24 @@ enum class Aov {
 
 enum class GiMode { None, Rsm, Lpv };
 
+// The camera's G-buffer (render/gbuffer_pass.h): visibility buffer + compute resolve, or classic raster.
+enum class CameraPath { Visibility, Gbuffer };
+
 struct RenderSettings {
     uint32_t width = 1280;
     uint32_t height = 720;
     Aov aov = Aov::Final;
     uint32_t aovLayer = 0;  // the layer the rsm-* and shadow-map AOVs show (clamped to the layers there are)
     float exposure = 1.0f;  // linear multiplier before the tone mapper
+    CameraPath cameraPath = CameraPath::Visibility;  // how the camera's G-buffer is made (render/gbuffer_pass.h)
     ShadowSettings shadow;
     GiMode gi = GiMode::None;
     RsmSettings rsm;
     LpvSettings lpv;
     DsmSettings dsm;
+    // `--translucency`: hair and alphaMode BLEND surfaces composited over the opaque image in depth
+    // order (src/dsm/translucency.h); off: both are drawn opaque into the G-buffer.
+    bool translucency = true;
 };
 
 }  // namespace penumbra

@@ -23,15 +23,17 @@ gpu::GpuLight toGpu(const Light& l) {
 }
 
 // Far plane that encloses the whole scene from the eye.
-float sceneFar(const Camera& c, const Bounds& b) {
-    if (c.zfar > 0.0f) return c.zfar;
+// Distance from the eye to the farthest corner of the scene's bounds (at least 1).
+float boundsFar(const Camera& c, const Bounds& b) {
     float far = 1.0f;
     for (int i = 0; i < 8; ++i) {
         glm::vec3 corner{(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z};
         far = std::max(far, glm::length(corner - c.eye));
     }
-    return far * 1.05f;
+    return far;
 }
+
+float sceneFar(const Camera& c, const Bounds& b) { return c.zfar > 0.0f ? c.zfar : boundsFar(c, b) * 1.05f; }
 
 // What of a light sizes or structures the shadow resources (its position, direction, colour and
 // intensity are per-frame values).
@@ -52,7 +54,9 @@ struct Renderer::FrameSlot {
     VkCommandBuffer cmd = VK_NULL_HANDLE;
     VkFence fence = VK_NULL_HANDLE;
     vk::GpuTimer timer;
+    uint32_t index = 0;  // its copy in every BufferRing
     bool pending = false;
+    bool probed = false;  // the frame wrote the pixel probe
     FrameTimings timings;
 
     explicit FrameSlot(vk::Context& c) : ctx(c), timer(c, 512) {
@@ -91,13 +95,17 @@ void Renderer::init() {
     if (settings_.width == 0 || settings_.height == 0 || settings_.width > 16384 || settings_.height > 16384)
         throw vk::VulkanError(fmt::format("image size {}x{} is out of range (1..16384)", settings_.width,
                                           settings_.height));
-    for (uint32_t i = 0; i < framesInFlight_; ++i) slots_.push_back(std::make_unique<FrameSlot>(ctx_));
+    for (uint32_t i = 0; i < framesInFlight_; ++i) {
+        slots_.push_back(std::make_unique<FrameSlot>(ctx_));
+        slots_.back()->index = i;
+    }
     drawLayout_ = vk::DescriptorLayout(ctx_, SceneGpu::drawSetBindings());
     frame_ = vk::BufferRing(alloc_, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, "frame");
     const Scene& scene = scene_.scene();
     restInstances_ = instanceTransforms(scene, nodeWorldTransforms(scene, 0.0, {}));
     instances_ = vk::BufferRing(alloc_, sizeof(gpu::GpuInstance) * std::max<size_t>(restInstances_.size(), 1),
                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "instances");
+    probe_ = vk::BufferRing(alloc_, sizeof(gpu::PixelProbe), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "probe");
     lights_ = scene_.scene().lights;
     build(kPartShadow | kPartCamera | kPartGi | kPartDsm);
 }
@@ -130,7 +138,8 @@ void Renderer::build(uint32_t parts) {
     }
     if (parts & kPartCamera) {
         camera_ = std::make_unique<CameraTechnique>(alloc_, scene_, settings_, drawLayout_.handle());
-        lighting_ = std::make_unique<LightingTechnique>(alloc_, cmd_, settings_);
+        lighting_ = std::make_unique<LightingTechnique>(alloc_, cmd_, settings_,
+                                                        [this](FrameGraph& g) { camera_->addCompositeTo(g); });
     }
     if ((parts & kPartGi) && settings_.gi != GiMode::None) {
         const bool lpv = settings_.gi == GiMode::Lpv;
@@ -189,6 +198,7 @@ void Renderer::collect(FrameSlot& slot) {
         slot.timings.passes.assign(scopes.begin() + 1, scopes.end());
     }
     if (slot.timings.frame >= lastTimings_.frame) lastTimings_ = slot.timings;
+    if (slot.probed) lastProbe_ = *probe_.at(slot.index).as<gpu::PixelProbe>();
     completed_.push_back(slot.timings);
     if (completed_.size() > 4096) completed_.erase(completed_.begin(), completed_.begin() + 2048);
 }
@@ -217,7 +227,8 @@ void Renderer::writeFrameData(const FrameInputs& in) {
     f.invViewProj = glm::inverse(f.viewProj);
     f.cameraPos = glm::vec4(camera.eye, zfar_);
     f.size = {settings_.width, settings_.height, uint32_t(in.lights.size()), uint32_t(settings_.aov)};
-    f.options = {settings_.gi != GiMode::None ? 1u : 0u, 0u, 0u, 0u};
+    const glm::uvec2 probe = in.probePixel.value_or(glm::uvec2(PROBE_OFF));
+    f.options = {settings_.gi != GiMode::None ? 1u : 0u, 0u, probe.x, probe.y};
     f.lens = {2.0f * std::tan(0.5f * camera.fovy) / float(settings_.height), 0.0f, 0.0f, 0.0f};
     frame_.write(&f, sizeof(f));
     frameConstants_ = f;
@@ -240,18 +251,24 @@ const std::vector<glm::mat4>& Renderer::frameInstances(const FrameInputs& in) co
 }
 
 void Renderer::writeInstances(const std::vector<glm::mat4>& transforms) {
-    const std::vector<gpu::GpuInstance> rows = instanceRows(transforms);
+    const std::vector<gpu::GpuInstance> rows = scene_.meshes().instanceRows(transforms);
     if (!rows.empty()) instances_.write(rows.data(), rows.size() * sizeof(gpu::GpuInstance));
 }
 
 void Renderer::recordFrame(FrameSlot& slot, const FrameInputs& in, const FrameHooks& hooks) {
     const uint32_t index = uint32_t(frameIndex_ % slots_.size());
-    for (vk::BufferRing* r : {&frame_, &views_, &lightBuffer_, &instances_}) r->select(index);
-    scene_.meshes().setFrameInstances(frameInstances(in));
+    for (vk::BufferRing* r : {&frame_, &views_, &lightBuffer_, &instances_, &probe_}) r->select(index);
+    const std::vector<glm::mat4>& transforms = frameInstances(in);
+    scene_.meshes().setFrameInstances(transforms);
+    if (transforms != cachedInstances_) {  // casters moved: cached shadow layers show them where they were
+        invalidateCaches();
+        cachedInstances_ = transforms;
+    }
     zfar_ = sceneFar(in.camera, scene_.scene().bounds);
     graph_.clear();
     const float aspect = float(settings_.width) / float(settings_.height);
-    FrameContext context{graph_, index, in.camera, in.lights, settings_, aspect, zfar_, frameConstants_};
+    const float depthFar = std::min(zfar_, boundsFar(in.camera, scene_.scene().bounds));
+    FrameContext context{graph_, index, in.camera, in.lights, settings_, aspect, zfar_, depthFar, frameConstants_};
     const std::vector<Technique*> list = techniques();
     for (Technique* t : list) t->update(context);
     writeFrameData(in);
@@ -259,6 +276,7 @@ void Renderer::recordFrame(FrameSlot& slot, const FrameInputs& in, const FrameHo
     graph_.publish("views", graph_.import(views_.current()));
     graph_.publish("lights", graph_.import(lightBuffer_.current()));
     graph_.publish("instances", graph_.import(instances_.current()));
+    graph_.publish("probe", graph_.import(probe_.current()));
     for (Technique* t : list) t->addPasses(context);
 
     VK_CHECK(vkResetCommandPool(ctx_.device(), slot.pool, VK_COMMAND_POOL_RESET_RELEASE_RESOURCES_BIT));
@@ -269,6 +287,10 @@ void Renderer::recordFrame(FrameSlot& slot, const FrameInputs& in, const FrameHo
     const uint32_t whole = slot.timer.begin(slot.cmd, "frame");
     graph_.execute(slot.cmd, &slot.timer);
     slot.timer.end(slot.cmd, whole);
+    slot.probed = in.probePixel && in.probePixel->x < settings_.width && in.probePixel->y < settings_.height;
+    if (slot.probed)  // the probe's shader write, made visible to the host read after the fence
+        vk::memoryBarrier(slot.cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_WRITE_BIT,
+                          VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
     if (hooks.record) hooks.record(slot.cmd, lighting_->tonemap().ldr);
     VK_CHECK(vkEndCommandBuffer(slot.cmd));
 }

@@ -6,6 +6,7 @@
 #pragma once
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,7 @@ struct FrameInputs {
     Camera camera;
     std::vector<Light> lights;
     std::vector<glm::mat4> instances;
+    std::optional<glm::uvec2> probePixel;  // every AOV at this pixel, read back with the frame (probe())
 };
 
 // Recorded into a frame's command buffer after its last pass (a viewer's present blit and UI), with
@@ -71,6 +73,8 @@ public:
     // Every completed frame's timings since the last call (bench), oldest first.
     std::vector<FrameTimings> takeCompletedTimings();
     uint64_t framesSubmitted() const { return frameIndex_; }
+    // Every AOV at FrameInputs::probePixel of the newest completed frame that asked for one.
+    const std::optional<gpu::PixelProbe>& probe() const { return lastProbe_; }
 
     std::vector<float> readHdr();     // RGBA32F, row-major, top row first (after finish())
     std::vector<uint8_t> readLdr();   // RGBA8 (sRGB-encoded for radiance and colour AOVs)
@@ -87,6 +91,12 @@ public:
     // Internals for tests and statistics: the G-buffer, read-backs, the last frame's constants.
     GBufferPass& gbuffer() { return camera_->gbuffer(); }
     ShadowMapPass& shadow() { return shadow_->pass(); }  // layers, shadow map, mask
+    // Drops what frames keep for the next (cached shadow layers): the next frame runs every pass.
+    // Frames whose instance transforms differ from the last frame's call it themselves; call it when
+    // casters move otherwise (edited geometry) or to time cold frames.
+    void invalidateCaches() {
+        if (shadow_) shadow_->pass().invalidate();
+    }
     vk::CommandContext& commands() { return cmd_; }
     const gpu::FrameUniforms& frameUniforms() const { return frameConstants_; }
     // GI internals, for tests and statistics (null when that GI mode is off).
@@ -95,6 +105,8 @@ public:
     LightPropagationVolume* lpv() { return lpv_ ? &lpv_->volume() : nullptr; }
     // Deep shadow maps (always present; inactive unless --shadow dsm) and the hair (null without strands).
     DeepShadowMaps& deepShadows() { return dsm_->maps(); }
+    // Null when camera translucency is off or the scene has nothing translucent.
+    const CameraTranslucency* translucency() const { return camera_->translucency(); }
     const HairGpu* hair() const { return scene_.hair(); }
     vk::Image& ldr() { return lighting_->tonemap().ldr; }
 
@@ -122,8 +134,9 @@ private:
     uint64_t frameIndex_ = 0;
     std::vector<Light> lights_;  // the lights the shadow layout was built for
     vk::DescriptorLayout drawLayout_;
-    vk::BufferRing frame_, views_, lightBuffer_, instances_;
-    std::vector<glm::mat4> restInstances_;  // the instances' transforms at rest (FrameInputs without any)
+    vk::BufferRing frame_, views_, lightBuffer_, instances_, probe_;
+    std::vector<glm::mat4> restInstances_;    // the instances' transforms at rest (FrameInputs without any)
+    std::vector<glm::mat4> cachedInstances_;  // the transforms the cached shadow layers were drawn with
     std::unique_ptr<DsmTechnique> dsm_;
     std::unique_ptr<ShadowTechnique> shadow_;
     std::unique_ptr<CameraTechnique> camera_;
@@ -132,6 +145,7 @@ private:
     std::unique_ptr<LightingTechnique> lighting_;
     FrameGraph graph_;
     FrameTimings lastTimings_;
+    std::optional<gpu::PixelProbe> lastProbe_;
     std::vector<FrameTimings> completed_;
     std::vector<std::string> warnings_;
     float zfar_ = 1.0f;

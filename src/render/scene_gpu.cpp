@@ -1,6 +1,9 @@
 #include "render/scene_gpu.h"
 
 #include <algorithm>
+#include <stdexcept>
+
+#include <fmt/format.h>
 
 #include "render/texture_upload.h"
 #include "scene/animation.h"
@@ -10,6 +13,9 @@ namespace penumbra {
 SceneGpu::SceneGpu(vk::CommandContext& cmd, const Scene& scene)
     : scene_(scene), ctx_(cmd.allocator().context()) {
     if (scene.indices.empty() && scene.strands.empty()) throw vk::VulkanError("scene has no triangles");
+    // Visibility IDs are 32-bit: triangle + 1, 0 meaning nothing drawn (render/visibility.glsl).
+    if (scene.indices.size() / 3 >= 0xFFFFFFFFull)
+        throw vk::VulkanError("scene has more triangles than 32-bit visibility IDs can name");
     // A hair-only scene (glTF lines) still binds a vertex and an index buffer: one unused element each.
     const Vertex noVertex{};
     const uint32_t noIndex = 0;
@@ -39,13 +45,21 @@ SceneGpu::SceneGpu(vk::CommandContext& cmd, const Scene& scene)
         std::fill_n(triangleMaterials.begin() + d.firstIndex / 3, d.indexCount / 3, d.material);
     triangleMaterials_ = cmd.createDeviceBuffer(triangleMaterials.data(), triangleMaterials.size() * sizeof(uint32_t),
                                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "triangle-materials");
+    // Every instance's triangles in its mesh's draw order: (instance, triangle) per visibility ID.
+    drawTriangleInMesh_.assign(scene.draws.size(), 0u);
+    for (const Mesh& mesh : scene.meshes)
+        for (uint32_t k = mesh.firstDraw + 1; k < mesh.firstDraw + mesh.drawCount; ++k)
+            drawTriangleInMesh_[k] = drawTriangleInMesh_[k - 1] + scene.draws[k - 1].indexCount / 3;
     std::vector<glm::uvec2> drawn;
     for (uint32_t i = 0; i < scene.instances.size(); ++i) {
         const Mesh& mesh = scene.meshes[scene.instances[i].mesh];
+        instanceTriangleBase_.push_back(uint32_t(drawn.size()));
         for (uint32_t k = mesh.firstDraw; k < mesh.firstDraw + mesh.drawCount; ++k)
             for (uint32_t t = 0; t < scene.draws[k].indexCount / 3; ++t)
                 drawn.push_back({i, scene.draws[k].firstIndex / 3 + t});
     }
+    if (drawn.size() >= size_t(UINT32_MAX))
+        throw std::runtime_error(fmt::format("the scene draws {} triangles: visibility IDs hold 2^32 - 1", drawn.size()));
     drawnTriangleCount_ = uint32_t(drawn.size());
     const std::vector<glm::mat4> rest = instanceTransforms(scene, nodeWorldTransforms(scene, 0.0, {}));
     std::vector<gpu::GpuInstance> rows = instanceRows(rest);
@@ -91,19 +105,34 @@ void SceneGpu::setFrameInstances(const std::vector<glm::mat4>& transforms) {
     }
 }
 
-std::vector<gpu::GpuInstance> instanceRows(const std::vector<glm::mat4>& transforms) {
+std::vector<gpu::GpuInstance> SceneGpu::instanceRows(const std::vector<glm::mat4>& transforms) const {
     std::vector<gpu::GpuInstance> rows;
     rows.reserve(transforms.size());
-    for (const glm::mat4& m : transforms) {
+    for (size_t i = 0; i < transforms.size(); ++i) {
+        const glm::mat4& m = transforms[i];
         const glm::mat3 linear(m);
         const float det = glm::determinant(linear);
         gpu::GpuInstance row{};
         row.model = m;
         row.normal = glm::mat4(std::abs(det) > 0.0f ? glm::transpose(glm::inverse(linear)) : linear);
-        row.info = {det < 0.0f ? 1.0f : 0.0f, 0.0f, 0.0f, 0.0f};
+        row.info = {det < 0.0f ? 1u : 0u, i < instanceTriangleBase_.size() ? instanceTriangleBase_[i] : 0u, 0u, 0u};
         rows.push_back(row);
     }
     return rows;
+}
+
+std::vector<vk::Binding> SceneGpu::resolveSetBindings() {
+    std::vector<vk::Binding> b = drawSetBindings();
+    for (uint32_t k : {12u, 13u, 14u, 16u}) b.push_back({k, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
+    return b;
+}
+
+void SceneGpu::declareTriangles(PassBuilder& pass) {
+    FrameGraph& g = pass.graph();
+    pass.storageBuffer(12, g.import(vertices_))
+        .storageBuffer(13, g.import(indices_))
+        .storageBuffer(14, g.import(triangleMaterials_))
+        .storageBuffer(16, g.import(drawnTriangles_));
 }
 
 void SceneGpu::uploadTextures(vk::CommandContext& cmd) {

@@ -13,9 +13,6 @@
 
 namespace penumbra {
 
-// The rows of the instance table for these transforms (normal matrix, mirror flag).
-std::vector<gpu::GpuInstance> instanceRows(const std::vector<glm::mat4>& transforms);
-
 class SceneGpu {
 public:
     SceneGpu(vk::CommandContext& cmd, const Scene& scene);
@@ -42,6 +39,17 @@ public:
     // more bindings of its own.
     void declareDrawSet(PassBuilder& pass, BufferHandle views);
     static std::vector<vk::Binding> drawSetBindings();
+    // The triangles as compute resolves of visibility IDs fetch them (render/visibility.glsl):
+    // vertices, indices, triangle materials and the drawn (instance, triangle) list at bindings 12-14
+    // and 16 (with the draw set).
+    void declareTriangles(PassBuilder& pass);
+    static std::vector<vk::Binding> resolveSetBindings();
+    // The rows of the instance table for these transforms (Scene::instances' order): normal matrix,
+    // mirror flag and the instance's first drawn triangle (visibility IDs).
+    std::vector<gpu::GpuInstance> instanceRows(const std::vector<glm::mat4>& transforms) const;
+    // Draw `d`'s first triangle within its mesh. A visibility ID is the drawn-triangle index + 1:
+    // the instance's base (GpuInstance.info.y) + this + gl_PrimitiveID + 1 (render/visibility.glsl).
+    uint32_t triangleBase(const Draw& d) const { return drawTriangleInMesh_[size_t(&d - scene_.draws.data())]; }
 
     // Vertex input of penumbra::Vertex for GraphicsDesc.
     static uint32_t vertexStride() { return sizeof(Vertex); }
@@ -70,6 +78,8 @@ private:
     vk::Context& ctx_;
     vk::Buffer vertices_, indices_, materials_, triangleMaterials_, drawnTriangles_;
     uint32_t drawnTriangleCount_ = 0;
+    std::vector<uint32_t> instanceTriangleBase_;  // per instance: index of its first drawn triangle
+    std::vector<uint32_t> drawTriangleInMesh_;    // per draw: triangles of its mesh's earlier draws
     struct Run {
         uint32_t mesh, first, count;
         bool mirrored;

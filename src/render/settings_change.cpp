@@ -23,6 +23,7 @@ std::vector<SettingsOption> makeTable() {
         option("--aov", kFrame, kPartNone, [](S s) { return s.aov; }),
         option("--aov-layer", kFrame, kPartNone, [](S s) { return s.aovLayer; }),
         option("--exposure", kFrame, kPartNone, [](S s) { return s.exposure; }),
+        option("--camera-path", kStructure, kPartCamera, [](S s) { return s.cameraPath; }),
         // `--shadow` sets both the opaque filter and deep shadow maps on or off (`pcf,dsm`).
         option("--shadow", kStructure, kPartShadowFilters, [](S s) { return s.shadow.filter; }),
         option("--shadow", kStructure, kPartShadow | kPartGi | kPartDsm, [](S s) { return s.dsm.enabled; }),
@@ -61,6 +62,8 @@ std::vector<SettingsOption> makeTable() {
         option("--lpv-camera-geometry", kStructure, kPartNone, [](S s) { return s.lpv.cameraGeometry; }),
         option("--lpv-slice-axis", kFrame, kPartNone, [](S s) { return s.lpv.sliceAxis; }),
         option("--lpv-slice", kFrame, kPartNone, [](S s) { return s.lpv.sliceIndex; }),
+        option("--translucency", kStructure, kPartCamera, [](S s) { return s.translucency; }),
+        option("--dsm-depth-test", kStructure, kPartDsm, [](S s) { return s.dsm.depthTest; }),
         option("--dsm-lights", kStructure, kPartShadow | kPartDsm, [](S s) { return s.dsm.lights; }),
         option("--dsm-res", kSizes, kPartDsm, [](S s) { return s.dsm.resolution; }),
         option("--dsm-nodes", kSizes, kPartDsm, [](S s) { return s.dsm.poolNodes; }),

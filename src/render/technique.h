@@ -19,6 +19,7 @@ struct FrameContext {
     const std::vector<Light>& lights;
     const RenderSettings& settings;
     float aspect, zfar;
+    float sceneFar;  // distance to the scene bounds' farthest corner: the depth AOV's PNG scale
     const gpu::FrameUniforms& uniforms;  // valid in addPasses (written after every update)
 };
 

@@ -10,20 +10,37 @@ namespace {
 
 constexpr VkFormat kIrradianceFormat = VK_FORMAT_R32G32B32A32_SFLOAT;  // exact sums stay exact
 
+// The unbiased pattern is a mixture: half the samples on the r_max disc, half on a disc that reaches
+// every texel of the map from any receiver (the light's whole footprint, radius sqrt 2), each
+// weighted by the mixture's density. Near VPLs keep many samples, and far ones (the far walls of a
+// closed room) are no longer left out. --rsm-weights paper keeps the paper's single disc.
+constexpr double kWholeMapRadius = 1.41421356;
+
 }  // namespace
 
 std::vector<glm::vec4> rsmSamplePattern(const RsmSettings& s) {
     std::mt19937 rng(s.seed);
     std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
-    const double texelsInDisc = M_PI * double(s.radius) * s.radius * double(s.resolution) * s.resolution;
-    // E[xi1] = 1/2 and E[xi1^2] = 1/3: these factors make both weightings exact for a uniform field.
-    const double norm = texelsInDisc / s.samples * (s.weights == RsmWeights::Unbiased ? 2.0 : 3.0);
+    const double texels = double(s.resolution) * s.resolution;
     std::vector<glm::vec4> out(s.samples);
-    for (glm::vec4& p : out) {
-        const float xi1 = uniform(rng), xi2 = uniform(rng);
-        const float angle = 2.0f * float(M_PI) * xi2;
-        const float w = s.weights == RsmWeights::Unbiased ? xi1 : xi1 * xi1;
-        p = {s.radius * xi1 * std::sin(angle), s.radius * xi1 * std::cos(angle), float(norm * w), 0.0f};
+    if (s.weights == RsmWeights::Paper) {  // the paper's single disc, its xi1^2 weights (E[xi1^2] = 1/3)
+        const double norm = M_PI * double(s.radius) * s.radius * texels / s.samples * 3.0;
+        for (glm::vec4& p : out) {
+            const float xi1 = uniform(rng), angle = 2.0f * float(M_PI) * uniform(rng);
+            p = {s.radius * xi1 * std::sin(angle), s.radius * xi1 * std::cos(angle), float(norm * xi1 * xi1), 0.0f};
+        }
+        return out;
+    }
+    // Mixture of two polar discs (radius xi1 * R has area density 1 / (2 pi r R) on its disc): even
+    // samples on r_max, odd ones on the whole map; the weight is 1 / (N p_mix), in texels.
+    const double inner = s.radius, outer = std::max(double(s.radius), kWholeMapRadius);
+    for (size_t i = 0; i < out.size(); ++i) {
+        const double radius = i % 2 == 0 ? inner : outer;
+        const double xi1 = std::max(uniform(rng), 1e-6f), angle = 2.0 * M_PI * uniform(rng), r = xi1 * radius;
+        const double density = 0.5 / (2.0 * M_PI * r * outer) + (r < inner ? 0.5 / (2.0 * M_PI * r * inner) : 0.0);
+        // w = 1: a sample beyond r_max, whose VPL is tested for visibility (rsm/gather.comp).
+        out[i] = {float(r * std::sin(angle)), float(r * std::cos(angle)), float(texels / (s.samples * density)),
+                  r > inner ? 1.0f : 0.0f};
     }
     return out;
 }

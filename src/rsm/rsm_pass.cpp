@@ -2,27 +2,19 @@
 
 #include <glm/gtc/matrix_inverse.hpp>
 
-#include "render/raster.h"
-
 namespace penumbra {
 
-RsmPass::RsmPass(vk::Allocator& alloc, SceneGpu& scene, const RsmSettings& settings)
-    : alloc_(alloc), scene_(scene), settings_(settings) {
+RsmPass::RsmPass(vk::Allocator& alloc, SceneGpu& scene, const RsmSettings& settings, uint32_t idResolution)
+    : alloc_(alloc), scene_(scene), settings_(settings), idResolution_(idResolution) {
     vk::Context& ctx = alloc.context();
-    std::vector<vk::Binding> bindings = SceneGpu::drawSetBindings();
+    std::vector<vk::Binding> bindings = SceneGpu::resolveSetBindings();
     bindings.push_back({3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});  // lights
     bindings.push_back({4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});  // RSM layer table
+    bindings.push_back({5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});  // shadow.ids
+    for (uint32_t k : {6u, 7u, 8u}) bindings.push_back({k, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
     layout_ = vk::DescriptorLayout(ctx, bindings);
-    vk::GraphicsDesc d;
-    d.vertexShader = "render/scene.vert";
-    d.fragmentShader = "rsm/rsm.frag";
-    d.colorFormats = {VK_FORMAT_R16G16_SNORM, VK_FORMAT_R16G16B16A16_SFLOAT};
-    d.depthFormat = VK_FORMAT_D32_SFLOAT;
-    d.vertexStride = SceneGpu::vertexStride();
-    d.vertexAttributes = SceneGpu::vertexAttributes();
-    d.dynamicCullMode = true;
-    d.frontFace = SceneGpu::sceneFrontFace(false);
-    pipeline_ = vk::Pipeline::graphics(ctx, d, {layout_.handle()}, sizeof(gpu::RsmDrawPush));
+    pipeline_ = vk::Pipeline::compute(ctx, "rsm/resolve.comp", {layout_.handle()}, sizeof(gpu::RsmResolvePush));
+    nearest_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
     setLayers({}, 0);
 }
 
@@ -30,14 +22,12 @@ void RsmPass::setLayers(const std::vector<RsmLayerSource>& layers, uint32_t slot
     sources_ = layers;
     const uint32_t n = std::max<uint32_t>(1, uint32_t(layers.size()));
     const uint32_t r = settings_.resolution;
-    const VkImageUsageFlags target = VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT;
+    const VkImageUsageFlags target =
+        VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_STORAGE_BIT;
     if (!depth_ || depth_.layers() != n) {
-        depth_ = vk::Image(alloc_, {VK_FORMAT_D32_SFLOAT, r, r, n, target | VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT,
-                                    "rsm-depth", 1, true});
-        normal_ = vk::Image(alloc_, {VK_FORMAT_R16G16_SNORM, r, r, n, target | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT,
-                                     "rsm-normal", 1, true});
-        flux_ = vk::Image(alloc_, {VK_FORMAT_R16G16B16A16_SFLOAT, r, r, n,
-                                   target | VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT, "rsm-flux", 1, true});
+        depth_ = vk::Image(alloc_, {VK_FORMAT_R32_SFLOAT, r, r, n, target, "rsm-depth", 1, true});
+        normal_ = vk::Image(alloc_, {VK_FORMAT_R16G16_SNORM, r, r, n, target, "rsm-normal", 1, true});
+        flux_ = vk::Image(alloc_, {VK_FORMAT_R16G16B16A16_SFLOAT, r, r, n, target, "rsm-flux", 1, true});
         layerTable_ = vk::BufferRing(alloc_, sizeof(gpu::GpuRsmLayer) * n, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                      "rsm-layers");
     }
@@ -54,6 +44,12 @@ void RsmPass::setLayers(const std::vector<RsmLayerSource>& layers, uint32_t slot
     layerTable_.write(table.data(), table.size() * sizeof(gpu::GpuRsmLayer));
 }
 
+std::vector<uint32_t> RsmPass::shadowLayers() const {
+    std::vector<uint32_t> out;
+    for (const RsmLayerSource& s : sources_) out.push_back(s.viewIndex - 1);  // views row 0 is the camera
+    return out;
+}
+
 void RsmPass::addTo(FrameGraph& graph) {
     const ImageHandle depth = graph.import(depth_), normal = graph.import(normal_), flux = graph.import(flux_);
     const BufferHandle table = graph.import(layerTable_.current());
@@ -62,27 +58,21 @@ void RsmPass::addTo(FrameGraph& graph) {
     graph.publish("rsm.flux", flux);
     graph.publish("rsm.layers", table);
     if (sources_.empty()) return;
-    PassBuilder pass = graph.pass("rsm.render", PassKind::Raster);
-    pass.pipeline(pipeline_)
-        .use(depth, Use::DepthAttachment)
-        .use(normal, Use::ColorAttachment)
-        .use(flux, Use::ColorAttachment);
+    PassBuilder pass = graph.pass("rsm.resolve");
+    pass.pipeline(pipeline_);
     scene_.declareDrawSet(pass, graph.buffer("views"));
-    pass.storageBuffer(3, graph.buffer("lights")).storageBuffer(4, table);
-    pass.record([this](PassContext& c) {
-        const uint32_t r = settings_.resolution;
-        for (uint32_t layer = 0; layer < sources_.size(); ++layer) {
-            RasterTarget target{{r, r}};
-            target.colors = {{normal_.layerView(layer), {{0, 0, 0, 0}}}, {flux_.layerView(layer), {{0, 0, 0, 0}}}};
-            target.depth = depth_.layerView(layer);
-            beginRaster(c.cmd, target);
-            const RsmLayerSource& s = sources_[layer];
-            scene_.draw(
-                c.cmd,
-                [&](const Draw& d) { pipeline_.push(c.cmd, gpu::RsmDrawPush{s.viewIndex, d.material, s.light, layer}); },
-                [](const Material&) { return true; });
-            vkCmdEndRendering(c.cmd);
-        }
+    scene_.declareTriangles(pass);
+    pass.storageBuffer(3, graph.buffer("lights"))
+        .storageBuffer(4, table)
+        .sampled(5, graph.image("shadow.ids"), nearest_.handle())
+        .storageImage(6, depth)
+        .storageImage(7, normal)
+        .storageImage(8, flux);
+    const uint32_t r = settings_.resolution;
+    pass.bytes(VkDeviceSize(r) * r * sources_.size() * (4 + 4 + 4 + 8));
+    pass.record([this, r](PassContext& c) {
+        pipeline_.push(c.cmd, gpu::RsmResolvePush{{r, idResolution_, 0, 0}});
+        vkCmdDispatch(c.cmd, vk::divUp(r, 8), vk::divUp(r, 8), uint32_t(sources_.size()));
     });
 }
 

@@ -1,6 +1,8 @@
 // Reflective shadow maps: the light's view of the scene stored as virtual point lights (depth ->
 // position, octahedral normal, reflected flux), one array layer per shadow layer of a light.
-// Rendered with the shadow layer's own light-space matrix, at the RSM resolution.
+// Not rasterized: resolved in compute (rsm.resolve) from the visibility IDs that the shadow pass
+// writes for these layers ("shadow.ids"), at the RSM resolution: texel (i, j) takes the ID texel
+// nearest its centre and the attributes of that triangle at its centre (depth unbiased).
 #pragma once
 #include <vector>
 
@@ -26,11 +28,15 @@ struct RsmLayerSource {
 
 class RsmPass {
 public:
-    RsmPass(vk::Allocator& alloc, SceneGpu& scene, const RsmSettings& settings);
+    // `idResolution`: the shadow map's, which the ID layers have.
+    RsmPass(vk::Allocator& alloc, SceneGpu& scene, const RsmSettings& settings, uint32_t idResolution);
 
     // The layers of this frame (writes frame slot `slot`'s layer table; a new count re-sizes the images).
     void setLayers(const std::vector<RsmLayerSource>& layers, uint32_t slot);
-    // rsm.render: reads "views", "lights"; publishes "rsm.depth", "rsm.normal", "rsm.flux", "rsm.layers".
+    // The shadow layers the RSM layers are resolved from (ShadowMapPass::requestIds), in layer order.
+    std::vector<uint32_t> shadowLayers() const;
+    // rsm.resolve: reads "shadow.ids", "lights"; publishes "rsm.depth" (R32_SFLOAT: z/w of the layer's
+    // projection), "rsm.normal" (RG16_SNORM octahedral), "rsm.flux" (RGBA16F), "rsm.layers".
     void addTo(FrameGraph& graph);
 
     uint32_t layerCount() const { return uint32_t(sources_.size()); }
@@ -44,8 +50,10 @@ private:
     vk::Allocator& alloc_;
     SceneGpu& scene_;
     RsmSettings settings_;
+    uint32_t idResolution_;
     vk::DescriptorLayout layout_;
     vk::Pipeline pipeline_;
+    vk::Sampler nearest_;
     std::vector<RsmLayerSource> sources_;
     vk::Image depth_, normal_, flux_;
     vk::BufferRing layerTable_;

@@ -97,7 +97,7 @@ void checkMotionPaths(const MotionPaths& paths) {
     if (!paths.sun.empty()) parseSun(paths.sun);
     for (const std::string& l : paths.lights) parseLightPath(l);
     Keyframes eye, target;
-    if (!paths.camera.empty()) parseKeys(paths.camera, "--camera-path", eye, &target);
+    if (!paths.camera.empty()) parseKeys(paths.camera, "--camera-keys", eye, &target);
 }
 
 SceneMotion::SceneMotion(const Scene& scene, const Camera& camera, const std::vector<Light>& lights,
@@ -117,7 +117,7 @@ SceneMotion::SceneMotion(const Scene& scene, const Camera& camera, const std::ve
                                                     path.first));
         lightPaths_.push_back(std::move(path));
     }
-    if (!paths.camera.empty()) parseKeys(paths.camera, "--camera-path", camera_, &cameraTarget_);
+    if (!paths.camera.empty()) parseKeys(paths.camera, "--camera-keys", camera_, &cameraTarget_);
     const bool anyPath = !sun_.empty() || !lightPaths_.empty() || !camera_.times.empty();
     // Built-in scenes move their own light by default (never lights given with --light).
     if (paths.builtinDefault && !anyPath && !animated_ && !lights.empty() && lights[0].name == scene.lights[0].name &&

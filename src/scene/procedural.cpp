@@ -9,6 +9,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include "scene/builders.h"
+#include "scene/gi_scenes.h"
 #include "scene/scene.h"
 
 namespace penumbra {
@@ -206,7 +207,7 @@ Scene makeHair(const BuiltinOptions& options) {
 
 }  // namespace
 
-std::vector<std::string> builtinSceneNames() { return {"cornell", "plane", "hair"}; }
+std::vector<std::string> builtinSceneNames() { return {"cornell", "plane", "hair", "street", "room"}; }
 
 Scene makeBuiltinScene(const std::string& name, const BuiltinOptions& options) {
     Scene s;
@@ -216,6 +217,10 @@ Scene makeBuiltinScene(const std::string& name, const BuiltinOptions& options) {
         s = makePlane();
     } else if (name == "hair") {
         s = makeHair(options);
+    } else if (name == "street") {
+        s = makeStreet();
+    } else if (name == "room") {
+        s = makeRoom();
     } else {
         throw SceneError(fmt::format("unknown scene '{}': not a file and not a built-in scene ({})", name,
                                      fmt::join(builtinSceneNames(), ", ")));

@@ -37,14 +37,20 @@ Sphere frustumSliceSphere(const Camera& camera, float aspect, float n, float f) 
 }
 
 LightProjection sphereProjection(const glm::vec3& dir, const Sphere& s, const Bounds& scene, uint32_t resolution,
-                                 float marginTexels, bool snap) {
+                                 float marginTexels, uint32_t snapTexels) {
     const float res = float(resolution);
-    const float half = s.radius * res / std::max(res - 2.0f * marginTexels, 1.0f);
+    // Snapping moves the centre by up to half a step: blocks of several texels get that much more
+    // margin (a one-texel snap keeps the margin as it always was: half a texel of it may go).
+    const float margin = marginTexels + (snapTexels > 1 ? 0.5f * float(snapTexels) : 0.0f);
+    const float half = s.radius * res / std::max(res - 2.0f * margin, 1.0f);
     const float texel = 2.0f * half / res;
     // Fixed basis: the view matrix from the world origin, so texel lattices of all frames coincide.
     const glm::mat4 view = lookAlong(glm::vec3(0.0f), dir);
     glm::vec2 c = glm::vec2(view * glm::vec4(s.center, 1.0f));
-    if (snap) c = glm::round(c / texel) * texel;
+    if (snapTexels > 0) {
+        const float step = texel * float(snapTexels);
+        c = glm::round(c / step) * step;
+    }
     // Depth: every scene point, so that casters outside the sphere but towards the light still cast.
     float zmin = 1e30f, zmax = -1e30f;
     for (int i = 0; i < 8; ++i) {
@@ -63,7 +69,7 @@ LightProjection sphereProjection(const glm::vec3& dir, const Sphere& s, const Bo
 
 std::vector<Cascade> fitCascades(const glm::vec3& dir, const Camera& camera, float aspect, float cameraFar,
                                  const Bounds& scene, uint32_t resolution, const CascadeSettings& settings,
-                                 float marginTexels) {
+                                 float marginTexels, uint32_t snapTexels) {
     const float znear = std::max(camera.znear, 1e-3f);
     const float zfar = std::max(settings.distance > 0.0f ? settings.distance : cascadeFar(cameraFar), 2.0f * znear);
     const std::vector<float> splits = cascadeSplits(znear, zfar, settings.count, settings.lambda);
@@ -74,7 +80,7 @@ std::vector<Cascade> fitCascades(const glm::vec3& dir, const Camera& camera, flo
         const float bandStart = i == 0 ? splits[0] : splits[i] - settings.blend * (splits[i] - splits[i - 1]);
         Sphere s = frustumSliceSphere(camera, aspect, bandStart, splits[i + 1]);
         if (s.radius >= sceneSphere.radius) s = sceneSphere;
-        cascades.push_back({sphereProjection(dir, s, scene, resolution, marginTexels, settings.stabilize), splits[i],
+        cascades.push_back({sphereProjection(dir, s, scene, resolution, marginTexels, settings.stabilize ? snapTexels : 0u), splits[i],
                             splits[i + 1]});
     }
     return cascades;

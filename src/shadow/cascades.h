@@ -45,15 +45,18 @@ Sphere frustumSliceSphere(const Camera& camera, float aspect, float n, float f);
 
 // Square orthographic map of sphere `s` looking along `dir`, its half-size enlarged so that
 // `marginTexels` texels lie outside the sphere on every side (filter taps near the border), its
-// centre snapped to whole texels in the fixed light basis (when `snap`), its depth range the scene's.
+// centre snapped to multiples of `snapTexels` texels in the fixed light basis (0: not snapped; the
+// margin grows by half a step, so the sphere stays covered), its depth range the scene's.
 LightProjection sphereProjection(const glm::vec3& dir, const Sphere& s, const Bounds& scene, uint32_t resolution,
-                                 float marginTexels, bool snap);
+                                 float marginTexels, uint32_t snapTexels);
 
 // All cascades of a directional light for this camera. A slice's sphere larger than the scene's
 // bounding sphere is replaced by the latter (fixed, so just as stable, and never wasting texels).
-// Slices overlap by the blend band so that both cascades of a band cover it.
+// Slices overlap by the blend band so that both cascades of a band cover it. With `stabilize`, the
+// cascades move by multiples of `snapTexels` texels: a map whose texels are resolved or down-sampled
+// in blocks (the RSM, LPV's VPLs) keeps its blocks on a world-fixed lattice too.
 std::vector<Cascade> fitCascades(const glm::vec3& dir, const Camera& camera, float aspect, float cameraFar,
                                  const Bounds& scene, uint32_t resolution, const CascadeSettings& settings,
-                                 float marginTexels);
+                                 float marginTexels, uint32_t snapTexels = 1);
 
 }  // namespace penumbra

@@ -72,7 +72,8 @@ void ShadowLayout::assign(const std::vector<Light>& lights) {
     }
 }
 
-void ShadowLayout::update(const std::vector<Light>& lights, const Camera& camera, float aspect, float cameraFar) {
+void ShadowLayout::update(const std::vector<Light>& lights, const Camera& camera, float aspect, float cameraFar,
+                          uint32_t cascadeSnapTexels) {
     const uint32_t res = settings_.resolution;
     for (const ShadowedLight& s : shadowed_) {
         const Light& l = lights.at(s.light);
@@ -80,7 +81,8 @@ void ShadowLayout::update(const std::vector<Light>& lights, const Camera& camera
         ShadowLayer* layer = &layers_[s.firstLayer];
         if (s.kind == SHADOW_KIND_CASCADES) {
             const std::vector<Cascade> cascades =
-                fitCascades(l.direction, camera, aspect, cameraFar, bounds_, res, settings_.cascades, margin);
+                fitCascades(l.direction, camera, aspect, cameraFar, bounds_, res, settings_.cascades, margin,
+                            cascadeSnapTexels);
             for (uint32_t c = 0; c < s.layerCount; ++c) {
                 layer[c].projection = cascades[c].projection;
                 layer[c].splitNear = cascades[c].splitNear;

@@ -38,7 +38,9 @@ public:
     void assign(const std::vector<Light>& lights);
     // Recomputes every projection; the cascades follow the camera (aspect = width / height,
     // cameraFar = the view's far plane).
-    void update(const std::vector<Light>& lights, const Camera& camera, float aspect, float cameraFar);
+    // `cascadeSnapTexels`: cascades move in steps of that many texels (fitCascades).
+    void update(const std::vector<Light>& lights, const Camera& camera, float aspect, float cameraFar,
+                uint32_t cascadeSnapTexels = 1);
 
     // Per-frame values only (radii, splits); what assign() sized must stay as it was.
     void setSettings(const ShadowSettings& settings) { settings_ = settings; }

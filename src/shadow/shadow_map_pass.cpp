@@ -1,5 +1,7 @@
 #include "shadow/shadow_map_pass.h"
 
+#include <algorithm>
+
 namespace penumbra {
 namespace {
 
@@ -29,6 +31,7 @@ void ShadowMapPass::assign(const std::vector<Light>& lights) {
     layout_.assign(lights);
     const uint32_t layers = std::max<uint32_t>(uint32_t(layout_.layers().size()), 1u);
     const bool resized = !map_ || map_.layers() != layers;
+    invalidate();
     if (resized)
         map_ = vk::Image(alloc_, {VK_FORMAT_D32_SFLOAT, settings_.resolution, settings_.resolution, layers,
                                   VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
@@ -56,21 +59,30 @@ void ShadowMapPass::setFilters(const ShadowSettings& settings, const std::vector
 
 void ShadowMapPass::setSettings(const ShadowSettings& settings) {
     validate(settings);
+    if (settings.depthBiasConstant != settings_.depthBiasConstant || settings.depthBiasSlope != settings_.depthBiasSlope)
+        invalidate();
     settings_ = settings;
     layout_.setSettings(settings);
     raster_.setSettings(settings);
 }
 
 void ShadowMapPass::update(const std::vector<Light>& lights, const Camera& camera, float aspect, float cameraFar,
-                           uint32_t slot) {
+                           uint32_t slot, uint32_t cascadeSnapTexels) {
     lights_ = lights;
     slot_ = slot;
     for (vk::BufferRing* ring : {&layerTable_, &lightTable_, &params_}) ring->select(slot);
-    layout_.update(lights_, camera, aspect, cameraFar);
+    layout_.update(lights_, camera, aspect, cameraFar, cascadeSnapTexels);
     const std::vector<gpu::GpuShadowLayer> layers = layout_.gpuLayers();
     const std::vector<gpu::GpuShadowLight> shadowed = layout_.gpuLights();
     const gpu::GpuShadowParams params = layout_.gpuParams(filter_.linearCompare());
     if (!layers.empty()) layerTable_.write(layers.data(), layers.size() * sizeof(layers[0]));
+    // A layer's depth depends on its projection only (the split distances only pick layers).
+    const auto same = [](const gpu::GpuShadowLayer& a, const gpu::GpuShadowLayer& b) {
+        return a.viewProj == b.viewProj && a.params == b.params;
+    };
+    dirty_.assign(layers.size(), true);
+    for (size_t k = 0; k < layers.size() && k < held_.size() && !compute_; ++k) dirty_[k] = !same(layers[k], held_[k]);
+    held_ = layers;
     if (!shadowed.empty()) lightTable_.write(shadowed.data(), shadowed.size() * sizeof(shadowed[0]));
     params_.write(&params, sizeof(params));
 }
@@ -90,6 +102,8 @@ void ShadowMapPass::addTo(FrameGraph& graph, uint32_t firstView,
                           const std::function<void(FrameGraph&)>& extraCasters) {
     const ImageHandle map = graph.import(map_);
     graph.publish("shadow.map", map);
+    layersDrawn_ = 0;
+    if (dirty_.size() != layers().size()) dirty_.assign(layers().size(), true);  // no update() this frame
     graph.publish("shadow.layers", graph.import(layerTable_.current()));
     graph.publish("shadow.lights", graph.import(lightTable_.current()));
     graph.publish("shadow.params", graph.import(params_.current()));
@@ -100,8 +114,15 @@ void ShadowMapPass::addTo(FrameGraph& graph, uint32_t firstView,
             pass.pipeline(raster_.setLayoutPipeline()).use(map, Use::DepthAttachment);
             scene_.declareDrawSet(pass, graph.buffer("views"));
             const bool paraboloidOnly = compute_ != nullptr;
-            pass.record([this, map, firstView, paraboloidOnly](PassContext& c) {
-                raster_.record(c.cmd, c.image(map), firstView, layout_, paraboloidOnly);
+            std::vector<bool> draws = dirty_;
+            for (uint32_t l : idLayers_) draws[l] = false;  // drawn with their IDs below
+            for (size_t k = 0; k < draws.size(); ++k) {
+                if (paraboloidOnly && !layers()[k].projection.paraboloid) draws[k] = false;
+                layersDrawn_ += draws[k];
+            }
+            pass.record([this, map, firstView, paraboloidOnly, draws = std::move(draws)](PassContext& c) {
+                raster_.record(c.cmd, c.image(map), firstView, layout_, paraboloidOnly,
+                               [&](uint32_t layer) { return bool(draws[layer]); });
             });
         }
         if (compute_) {
@@ -109,9 +130,39 @@ void ShadowMapPass::addTo(FrameGraph& graph, uint32_t firstView,
             compute_->addTo(graph, "shadow.raster", map, graph.buffer("views"),
                             {settings_.depthBiasConstant, settings_.depthBiasSlope});
         }
+        addIdPass(graph, map, firstView);
         if (extraCasters) extraCasters(graph);
     }
+    idLayers_.clear();
     moments_.addTo(graph);
+}
+
+// The layers with an RSM, each drawn once with depth and visibility IDs (the hardware draws them
+// under --raster compute too, until the compute rasterizer writes IDs).
+void ShadowMapPass::addIdPass(FrameGraph& graph, ImageHandle map, uint32_t firstView) {
+    if (idLayers_.empty()) return;
+    const uint32_t n = uint32_t(idLayers_.size());
+    if (!ids_ || ids_.layers() != n) heldIds_.clear();
+    if (!ids_ || ids_.layers() != n)
+        ids_ = vk::Image(alloc_, {VK_FORMAT_R32_UINT, settings_.resolution, settings_.resolution, n,
+                                  VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                                      VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                                  "shadow-ids", 1, true});
+    const ImageHandle ids = graph.import(ids_);
+    graph.publish("shadow.ids", ids);
+    PassBuilder pass = graph.pass("shadow.map-ids", PassKind::Raster);
+    pass.pipeline(raster_.setLayoutPipeline()).use(map, Use::DepthAttachment).use(ids, Use::ColorAttachment);
+    scene_.declareDrawSet(pass, graph.buffer("views"));
+    std::vector<uint32_t> drawn;  // ID layers whose shadow layer changed, or that held another layer
+    for (uint32_t i = 0; i < n; ++i)
+        if (dirty_[idLayers_[i]] || heldIds_ != idLayers_) drawn.push_back(i);
+    layersDrawn_ += uint32_t(drawn.size());
+    heldIds_ = idLayers_;
+    pass.record([this, map, ids, firstView, layers = idLayers_, drawn = std::move(drawn)](PassContext& c) {
+        for (uint32_t i : drawn)
+            raster_.recordIds(c.cmd, c.image(map), c.image(ids), layers[i], i, firstView + layers[i],
+                              this->layers()[layers[i]].light);
+    });
 }
 
 bool ShadowMapPass::hasParaboloid() const {
@@ -121,11 +172,24 @@ bool ShadowMapPass::hasParaboloid() const {
 }
 
 // Every layer of every light but paraboloid ones (their edges bend: hardware tessellation).
+// Every layer of every light but paraboloid ones (their edges bend: hardware tessellation) and those
+// drawn with visibility IDs, in runs of consecutive layers.
 std::vector<RasterViews> ShadowMapPass::computeViews(uint32_t firstView) const {
     std::vector<RasterViews> views;
-    for (const ShadowedLight& s : layout_.shadowed())
-        if (s.kind != SHADOW_KIND_PARABOLOID)
-            views.push_back({firstView + s.firstLayer, s.firstLayer, s.layerCount, !raster_.drawsBlended(s.light)});
+    const auto withIds = [&](uint32_t l) { return std::find(idLayers_.begin(), idLayers_.end(), l) != idLayers_.end(); };
+    for (const ShadowedLight& s : layout_.shadowed()) {
+        if (s.kind == SHADOW_KIND_PARABOLOID) continue;
+        const bool skipBlended = !raster_.drawsBlended(s.light);
+        for (uint32_t k = 0; k < s.layerCount; ++k) {
+            const uint32_t l = s.firstLayer + k;
+            if (withIds(l)) continue;
+            if (!views.empty() && views.back().firstLayer + views.back().layerCount == l &&
+                views.back().skipBlended == skipBlended)
+                ++views.back().layerCount;
+            else
+                views.push_back({firstView + l, l, 1, skipBlended});
+        }
+    }
     return views;
 }
 

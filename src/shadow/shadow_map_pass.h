@@ -33,7 +33,8 @@ public:
     // intensities (the same lights as assign()'s, else call assign), refits the cascades to the camera
     // (aspect = width / height, cameraFar = the camera's far plane) and writes the shaders' tables
     // into the copies of frame slot `slot`.
-    void update(const std::vector<Light>& lights, const Camera& camera, float aspect, float cameraFar, uint32_t slot);
+    void update(const std::vector<Light>& lights, const Camera& camera, float aspect, float cameraFar, uint32_t slot,
+                uint32_t cascadeSnapTexels = 1);
     // Per-frame values (biases, filter radii, cascade splits); the sizes and filter kinds must not change.
     void setSettings(const ShadowSettings& settings);
     // New filter kinds (settings or the lights' own): the layout is assigned again in place; only the
@@ -51,8 +52,24 @@ public:
     // "shadow.lights", "shadow.params". `extraCasters` adds other modules' passes (hair, src/dsm) into
     // "shadow.map" after shadow.map, before the moments are taken from it.
     void addTo(FrameGraph& graph, uint32_t firstView, const std::function<void(FrameGraph&)>& extraCasters = {});
+    // This frame's layers that an RSM is resolved from (src/rsm), in the order of the ID image's layers:
+    // addTo draws them with depth and visibility IDs ("shadow.ids", R32_UINT, one layer each) and
+    // forgets the request; every other layer stays depth only.
+    void requestIds(std::vector<uint32_t> layers) { idLayers_ = std::move(layers); }
     // Lights with a deep shadow map: their alphaMode BLEND casters stay out of the shadow map.
-    void setDeepShadowLights(std::vector<uint32_t> lights) { raster_.setDeepShadowLights(std::move(lights)); }
+    void setDeepShadowLights(std::vector<uint32_t> lights) {
+        raster_.setDeepShadowLights(std::move(lights));
+        invalidate();
+    }
+    // Cached layers (hardware raster): a layer is drawn again only when its projection changed (a
+    // cascade's snapped origin, the light, the depth range), after invalidate() (casters moved, or a
+    // cold frame: bench) or a bias change; the compute rasterizer draws every layer every frame.
+    void invalidate() {
+        held_.clear();
+        heldIds_.clear();
+    }
+    // Layers drawn by the last addTo (tests, bench).
+    uint32_t layersDrawn() const { return layersDrawn_; }
     // shadow.filter: reads the G-buffer, publishes "shadow.mask".
     void addFilterTo(FrameGraph& graph);
 
@@ -76,10 +93,16 @@ private:
     uint32_t slot_ = 0;
     ShadowMoments moments_;
     ShadowFilterPass filter_;
-    vk::Image map_;
+    vk::Image map_, ids_;
+    std::vector<uint32_t> idLayers_;
+    std::vector<gpu::GpuShadowLayer> held_;  // the table rows the map's layers were drawn with
+    std::vector<uint32_t> heldIds_;          // the layers the ID image holds, in its layer order
+    std::vector<bool> dirty_;                // this frame: layer k must be drawn
+    uint32_t layersDrawn_ = 0;
     vk::BufferRing layerTable_, lightTable_, params_;
 
     std::vector<RasterViews> computeViews(uint32_t firstView) const;
+    void addIdPass(FrameGraph& graph, ImageHandle map, uint32_t firstView);
     bool hasParaboloid() const;
 };
 

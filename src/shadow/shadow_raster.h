@@ -4,6 +4,9 @@
 // pipeline (shadow/paraboloid.*) because the paraboloid mapping bends straight edges.
 // Depth only: opaque casters have no fragment shader, alpha-masked ones only discard.
 #pragma once
+#include <functional>
+#include <vector>
+
 #include "render/scene_gpu.h"
 #include "shadow/shadow_layout.h"
 
@@ -18,8 +21,15 @@ public:
     // Clears all layers of `map` and renders those of every light (paraboloidOnly: of paraboloid point
     // lights only, the others being the compute rasterizer's); layer k uses row firstView + k of the
     // views buffer bound in the pass's draw set.
+    // Only layers for which `draws(layer)` holds are cleared and drawn; the others keep their depth
+    // (cached, or drawn by recordIds or the compute rasterizer). Records nothing when none is drawn.
     void record(VkCommandBuffer cmd, vk::Image& map, uint32_t firstView, const ShadowLayout& layout,
-                bool paraboloidOnly = false) const;
+                bool paraboloidOnly, const std::function<bool(uint32_t)>& draws) const;
+    // Shadow layer `layer` of light `light` (not a paraboloid one) with its depth and, in layer
+    // `idLayer` of `ids` (R32_UINT), the visibility ID of every texel (render/visibility.glsl): the
+    // one raster of a light view that an RSM is resolved from (src/rsm).
+    void recordIds(VkCommandBuffer cmd, vk::Image& map, vk::Image& ids, uint32_t layer, uint32_t idLayer,
+                   uint32_t viewRow, uint32_t light) const;
     // Whether light `light`'s alphaMode BLEND casters are drawn (no deep shadow map takes them).
     bool drawsBlended(uint32_t light) const;
     // Per-frame values (biases, tessellation): the sizes must not change.
@@ -37,7 +47,8 @@ private:
 
     const SceneGpu& scene_;
     ShadowSettings settings_;
-    Pipelines layered_, paraboloid_;
+    void setRasterState(VkCommandBuffer cmd) const;
+    Pipelines layered_, paraboloid_, ids_;
     std::vector<uint32_t> deepShadowLights_;
 };
 

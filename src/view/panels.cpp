@@ -152,6 +152,7 @@ void Panels::splitLabels(ViewSession& session) {
 void Panels::draw(ViewSession& session, CameraControl& control, const vk::Swapchain& swapchain) {
     sceneWindow(session, control);
     timingsWindow(session, swapchain);
+    probeWindow(session);
     splitLabels(session);
 }
 
@@ -176,6 +177,7 @@ void Panels::sceneWindow(ViewSession& session, CameraControl& control) {
         ImGui::TextDisabled("eye %.3g %.3g %.3g  target %.3g %.3g %.3g", c.eye.x, c.eye.y, c.eye.z, c.target.x,
                             c.target.y, c.target.z);
     }
+    if (session.moves() && ImGui::CollapsingHeader("Time", ImGuiTreeNodeFlags_DefaultOpen)) timeSection(session);
     if (ImGui::CollapsingHeader("Lights", ImGuiTreeNodeFlags_DefaultOpen)) lightsSection(session);
     if (ImGui::CollapsingHeader("A/B split view")) splitSection(session);
     if (ImGui::CollapsingHeader("Overlays")) {
@@ -184,6 +186,16 @@ void Panels::sceneWindow(ViewSession& session, CameraControl& control) {
     }
     optionsSection(session);
     ImGui::End();
+}
+
+// Animation and motion paths: play/pause and a time slider (the slider's range grows with the time).
+void Panels::timeSection(ViewSession& session) {
+    if (ImGui::Button(session.playing ? "pause" : "play")) session.playing = !session.playing;
+    ImGui::SameLine();
+    if (ImGui::Button("|<")) session.time = 0.0f;
+    ImGui::SameLine();
+    const float range = std::max(10.0f, std::ceil(session.time / 10.0f) * 10.0f);
+    ImGui::SliderFloat("t (s)", &session.time, 0.0f, range, "%.2f");
 }
 
 void Panels::lightsSection(ViewSession& session) {
@@ -220,9 +232,25 @@ void Panels::lightsSection(ViewSession& session) {
     if (changed) session.setLights(std::move(lights));
 }
 
+// Sliders for the debug views that show one slice or layer: the LPV/GV slice and the light-space layer.
+void Panels::debugViewSliders(ViewSession& session) {
+    const RenderSettings& rs = session.settings();
+    if (rs.aov == Aov::LpvSlice || rs.aov == Aov::GvSlice) {
+        int slice = int(rs.lpv.sliceIndex);
+        if (ImGui::SliderInt("lpv-slice", &slice, 0, int(rs.lpv.resolution) - 1))
+            apply(session, "lpv-slice", std::to_string(slice));
+    } else if (rs.aov == Aov::RsmDepth || rs.aov == Aov::RsmNormal || rs.aov == Aov::RsmFlux ||
+               rs.aov == Aov::ShadowMap) {
+        int layer = int(rs.aovLayer);
+        const int last = std::max(int(session.renderer().shadow().layers().size()) - 1, 0);  // views clamp to theirs
+        if (ImGui::SliderInt("aov-layer", &layer, 0, last)) apply(session, "aov-layer", std::to_string(layer));
+    }
+}
+
 // Every option of `render` under its CLI name, grouped per technique: choices as combo boxes,
 // flags as check boxes, the rest as text fields applied on Enter through the CLI's own parser.
 void Panels::optionsSection(ViewSession& session) {
+    debugViewSliders(session);
     const std::vector<OptionInfo> options = session.options();
     std::vector<std::string> groups;
     for (const OptionInfo& o : options)
@@ -294,6 +322,37 @@ void Panels::timingsWindow(ViewSession& session, const vk::Swapchain& swapchain)
         ImGui::TableNextColumn();
         ImGui::Text("%.3f", total);
         ImGui::EndTable();
+    }
+    ImGui::End();
+}
+
+// Every AOV at the probed pixel, as the newest completed frame computed it (the B renderer's on the
+// right half of a split view).
+void Panels::probeWindow(ViewSession& session) {
+    if (!session.probePixel) return;
+    const glm::uvec2 pixel = *session.probePixel;
+    Renderer* source = session.rendererB() && pixel.x >= session.settings().width / 2 ? session.rendererB()
+                                                                                     : &session.renderer();
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowPos({display.x - 308, display.y - 228}, ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowSize({300, 220}, ImGuiCond_FirstUseEver);
+    ImGui::Begin("Pixel probe");
+    ImGui::Text("pixel %u, %u%s", pixel.x, pixel.y, source == &session.renderer() ? "" : " (B)");
+    const std::optional<gpu::PixelProbe>& p = source->probe();
+    if (!p) ImGui::TextDisabled("(waiting for the frame)");
+    else if (p->finalRadiance.w == 0.0f) ImGui::Text("background (depth %.3f: the far plane)", p->position.w);
+    else {
+        const auto row = [](const char* name, glm::vec3 v) { ImGui::Text("%-10s %9.4f %9.4f %9.4f", name, v.x, v.y, v.z); };
+        row("final", p->finalRadiance);
+        row("direct", p->direct);
+        row("indirect", p->indirect);
+        row("irradiance", p->irradiance);
+        row("albedo", p->albedo);
+        row("normal", p->normal);
+        row("position", p->position);
+        ImGui::Text("%-10s %9.4f", "depth", p->position.w);
+        ImGui::Text("%-10s %9.4f (layer %.2f)", "shadow", p->shadow.x, p->shadow.y);
+        ImGui::Text("%-10s %9.4f", "dsm", p->shadow.z);
     }
     ImGui::End();
 }

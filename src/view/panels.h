@@ -26,11 +26,14 @@ public:
 
 private:
     void sceneWindow(ViewSession& session, CameraControl& control);
+    void timeSection(ViewSession& session);
     void lightsSection(ViewSession& session);
     void optionsSection(ViewSession& session);
+    void debugViewSliders(ViewSession& session);
     void splitSection(ViewSession& session);
     void splitLabels(ViewSession& session);
     void timingsWindow(ViewSession& session, const vk::Swapchain& swapchain);
+    void probeWindow(ViewSession& session);
     void apply(ViewSession& session, const std::string& option, const std::string& value);
 
     std::deque<float> frameMs_;

@@ -85,6 +85,16 @@ ScriptStep Script::execute(const std::string& command, const std::string& args, 
     } else if (command == "play" || command == "pause") {
         expectWords(words, 0, command.c_str());
         session.playing = command == "play";
+    } else if (command == "probe") {
+        if (words.size() == 1 && words[0] == "off") {
+            session.probePixel.reset();
+            session.probePinned = false;
+        } else {
+            expectWords(words, 2, "probe X Y | probe off");
+            session.probePixel = glm::uvec2(number<uint32_t>(words[0], "a pixel column"),
+                                            number<uint32_t>(words[1], "a pixel row"));
+            session.probePinned = true;
+        }
     } else if (command == "frames") {
         expectWords(words, 1, "frames N");
         step.frames = number<int>(words[0], "a frame count");
@@ -97,7 +107,7 @@ ScriptStep Script::execute(const std::string& command, const std::string& args, 
         return {};
     } else {
         throw std::invalid_argument(fmt::format(
-            "unknown command '{}' (set, camera, light, time, play, pause, frames, screenshot, screenshot-ui, quit)",
+            "unknown command '{}' (set, camera, light, time, play, pause, probe, frames, screenshot, screenshot-ui, quit)",
             command));
     }
     return step;

@@ -103,12 +103,32 @@ void ViewSession::adopt(std::vector<CliArg> args, Parsed p) {
         rendererB_.reset();
         gpuScene_ = std::move(uploaded);
     }
+    if (newScene || p.options.time != options_.time) time = float(p.options.time);
     args_ = std::move(args);
     options_ = std::move(p.options);
     settings_ = p.settings;
     lights_ = std::move(lights);
     camera_ = camera;
     settingsChanged_ = true;
+    rebuildMotion();
+}
+
+void ViewSession::rebuildMotion() {
+    try {
+        motion_ = std::make_unique<SceneMotion>(scene(), camera_, lights_, options_.motion, options_.animation);
+    } catch (const std::invalid_argument&) {
+        motion_.reset();  // a light path names a light that was removed: the lights stay where they are
+    }
+}
+
+FrameInputs ViewSession::frameInputs() const {
+    FrameInputs in{camera_, lights_, {}, probePixel};
+    if (!moves()) return in;
+    ScenePose pose = motion_->at(time);
+    in.lights = std::move(pose.lights);
+    in.instances = std::move(pose.instances);
+    if (motion_->cameraMoves()) in.camera = pose.camera;
+    return in;
 }
 
 void ViewSession::set(const std::string& option, const std::string& value) {
@@ -165,13 +185,17 @@ void ViewSession::resize(uint32_t width, uint32_t height) {
     set("height", std::to_string(height));
 }
 
-void ViewSession::setLights(std::vector<Light> lights) { lights_ = std::move(lights); }
+void ViewSession::setLights(std::vector<Light> lights) {
+    lights_ = std::move(lights);
+    rebuildMotion();
+}
 
 void ViewSession::setLight(size_t index, const Light& light) {
     if (index > lights_.size())
         throw std::invalid_argument(fmt::format("light {}: the scene has {} light(s)", index, lights_.size()));
     if (index == lights_.size()) lights_.push_back(light);
     else lights_[index] = light;
+    rebuildMotion();
 }
 
 void ViewSession::loadScene(const std::string& path) { set("scene", path); }
@@ -208,8 +232,9 @@ Renderer& ViewSession::renderer() {
 }
 
 void ViewSession::submit(const FrameHooks& hooks) {
-    if (Renderer* b = rendererB()) b->submit({camera_, lights_});
-    renderer().submit({camera_, lights_}, hooks);
+    const FrameInputs in = frameInputs();
+    if (Renderer* b = rendererB()) b->submit(in);
+    renderer().submit(in, hooks);
 }
 
 void ViewSession::renderAndWait() {

@@ -3,12 +3,14 @@
 // the live camera and lights, and the renderer they drive. Usable headless (tests).
 #pragma once
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "app/frame_options.h"
 #include "render/renderer.h"
+#include "scene/motion.h"
 
 namespace penumbra::view {
 
@@ -47,8 +49,19 @@ public:
     const std::vector<Light>& lights() const { return lights_; }
     void setLights(std::vector<Light> lights);
     void setLight(size_t index, const Light& light);  // index == count appends; throws out of range
-    float time = 0.0f;  // scene time (animation: a later issue); `time T`, play/pause
+    // Scene time (seconds): animation and motion paths (README "Motion") at this time; `time T`,
+    // play/pause. Starts at --time.
+    float time = 0.0f;
     bool playing = false;
+    // Anything moves (animation, a motion path, the built-in scene's default motion).
+    bool moves() const { return motion_ && motion_->moves(); }
+    // What the next frame shows: the live camera and lights, moved by the motion at `time` (the
+    // camera only when camera keys are given, so that it can be flown otherwise).
+    FrameInputs frameInputs() const;
+    // Pixel probe: every AOV at this pixel of the rendered image, read back with its frame
+    // (Renderer::probe()); the cursor sets it unless a script pinned it (`probe X Y`).
+    std::optional<glm::uvec2> probePixel;
+    bool probePinned = false;
 
     const Scene& scene() const { return gpuScene_->scene(); }
     const RenderSettings& settings() const { return settings_; }
@@ -83,6 +96,7 @@ private:
     void adopt(std::vector<CliArg> args, Parsed parsed);
     static std::vector<CliArg> withArg(std::vector<CliArg> args, const std::string& option, const std::string& value);
     void updateSplit();
+    void rebuildMotion();
 
     vk::Context& ctx_;
     std::vector<CliArg> args_;
@@ -91,6 +105,7 @@ private:
     std::unique_ptr<GpuScene> gpuScene_;  // the scene as loaded (its own lights and cameras), uploaded once
     Camera camera_;
     std::vector<Light> lights_;
+    std::unique_ptr<SceneMotion> motion_;  // over the live camera and lights (rebuilt when they change)
     std::unique_ptr<Renderer> renderer_;
     std::string splitOption_, splitValue_, splitLabel_;
     RenderSettings settingsB_;

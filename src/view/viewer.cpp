@@ -135,6 +135,7 @@ void Viewer::handleInput(double dt) {
     if (ctrl && mouse && glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS)
         panels_.dragSun(session_, float(x - cursor_.x), float(y - cursor_.y));
     cursor_ = {x, y};
+    if (!session_.probePinned) session_.probePixel = mouse ? imagePixel(x, y) : std::nullopt;
     Camera camera = session_.camera();
     if (control_.update(w, dt, window_.takeScroll(), mouse && !ctrl, keys, camera)) session_.setCamera(camera);
     if (session_.playing) session_.time += float(dt);
@@ -142,6 +143,15 @@ void Viewer::handleInput(double dt) {
     const bool f12 = glfwGetKey(window_.handle(), GLFW_KEY_F12) == GLFW_PRESS;
     if (f12 && !f12Down_) f12Screenshot();
     f12Down_ = f12;
+}
+
+// The rendered image's pixel under a window position (the image fills the window), or none outside.
+std::optional<glm::uvec2> Viewer::imagePixel(double x, double y) const {
+    int w = 0, h = 0;
+    glfwGetWindowSize(window_.handle(), &w, &h);
+    const RenderSettings& s = session_.settings();
+    if (w <= 0 || h <= 0 || x < 0.0 || y < 0.0 || x >= w || y >= h) return std::nullopt;
+    return glm::uvec2(std::min(uint32_t(x / w * s.width), s.width - 1), std::min(uint32_t(y / h * s.height), s.height - 1));
 }
 
 bool Viewer::drawFrame() {

@@ -62,6 +62,7 @@ private:
     vk::Buffer uiShot_;             // `screenshot-ui`: the swapchain image read back
     bool uiShotPending_ = false;
     VkExtent2D uiShotExtent_{0, 0};
+    std::optional<glm::uvec2> imagePixel(double x, double y) const;
     glm::dvec2 cursor_{0.0, 0.0};  // ctrl + left-drag turns the sun
     bool f12Down_ = false;
     int f12Count_ = 0;

@@ -142,6 +142,10 @@ std::vector<FeatureCheck> checkRequiredFeatures(VkPhysicalDevice device) {
         {"shaderClipDistance", is13 && f.features.shaderClipDistance},
         // The compute rasterizer's edge functions are exact 64-bit integers (src/raster).
         {"shaderInt64", is13 && f.features.shaderInt64},
+        // Visibility IDs (render/visibility.glsl): gl_PrimitiveID in fragment shaders needs the Geometry
+        // capability; the RSM resolve writes its RG16_SNORM normals as a storage image.
+        {"geometryShader", is13 && f.features.geometryShader},
+        {"shaderStorageImageExtendedFormats", is13 && f.features.shaderStorageImageExtendedFormats},
         // LPV injection accumulates SH coefficients with float atomics (src/lpv).
         {"shaderBufferFloat32AtomicAdd (VK_EXT_shader_atomic_float)", is13 && af.shaderBufferFloat32AtomicAdd},
     };
@@ -323,6 +327,8 @@ void Context::createDevice() {
     f.features.tessellationShader = VK_TRUE;
     f.features.shaderClipDistance = VK_TRUE;
     f.features.shaderInt64 = VK_TRUE;
+    f.features.geometryShader = VK_TRUE;
+    f.features.shaderStorageImageExtendedFormats = VK_TRUE;
     std::vector<const char*> exts = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME, VK_EXT_SHADER_ATOMIC_FLOAT_EXTENSION_NAME};
     if (options_.presentSupport) exts.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
     VkDeviceCreateInfo ci{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &f};

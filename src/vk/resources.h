@@ -45,6 +45,7 @@ public:
     BufferRing(Allocator& alloc, VkDeviceSize size, VkBufferUsageFlags usage, const char* name = "");
     void select(uint32_t slot) { slot_ = slot; }
     Buffer& current() { return copies_[slot_]; }
+    const Buffer& at(uint32_t slot) const { return copies_[slot]; }
     const Buffer& current() const { return copies_[slot_]; }
     void write(const void* data, VkDeviceSize bytes) { current().write(data, bytes); }
     explicit operator bool() const { return bool(copies_[0]); }

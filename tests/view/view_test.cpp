@@ -101,8 +101,10 @@ TEST(ViewScript, EveryScreenshotEqualsTheHeadlessRender) {
         {{{"aov", "depth"}, {"gi", "none"}}},
         {{{"aov", "shadow"}}},
         {{{"aov", "cascade"}}},
-        {{{"aov", "albedo"}}},
-        {{{"aov", "final"}, {"exposure", "1.7"}}, "camera " + camera + "\nlight 0 " + light + "\n",
+        {{{"aov", "albedo"}}, "probe 40 30\n"},  // the pinned pixel probe leaves the image alone
+        // cornell's default motion (the spot light sweeps) at t = 0.4 s, as `render --time 0.4`
+        {{{"aov", "final"}}, "time 0.4\n", {"--time", "0.4"}},
+        {{{"aov", "final"}, {"exposure", "1.7"}}, "time 0\ncamera " + camera + "\nlight 0 " + light + "\n",
          {"--camera", camera, "--light", light}},
         {{{"scene", "hair"}, {"strands", "200"}, {"shadow", "dsm"}, {"exposure", "1"}}},
         {{{"aov", "dsm-lists"}, {"dsm-res", "256"}}},
@@ -151,6 +153,7 @@ TEST(ViewScript, BadLineIsOneErrorWithFileAndLine) {
         {"set lpv-res 3", "lpv-res"},
         {"warp 9", "unknown command 'warp'"},
         {"set rsm-per-cascade maybe", "on or off"},
+        {"probe 12", "probe X Y"},
     };
     for (const auto& [line, expected] : cases) {
         const fs::path script = dir / "bad.txt";

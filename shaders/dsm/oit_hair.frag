@@ -1,0 +1,14 @@
+#version 460
+// Camera translucency build for hair ribbons (dsm/hair.vert in the camera's view): a strand thinner
+// than a pixel is drawn one pixel wide and passes its coverage on as alpha (opacity x width / drawn).
+#extension GL_GOOGLE_include_directive : require
+#include "shared/types.h"
+
+layout(push_constant) uniform Push { HairDrawPush draw; };
+layout(location = 0) in vec3 inTangent;
+layout(location = 1) in vec3 inColor;
+layout(location = 2) in float inAlpha;
+
+#include "dsm/oit_insert.glsl"
+
+void main() { oitInsert(inColor, inAlpha, normalize(inTangent), true); }

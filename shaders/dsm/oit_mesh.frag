@@ -1,0 +1,17 @@
+#version 460
+// Camera translucency build for alphaMode BLEND meshes (render/scene.vert): base colour and alpha
+// (factor x texture), the interpolated normal.
+#extension GL_GOOGLE_include_directive : require
+#include "shared/types.h"
+#include "render/material.glsl"
+
+layout(push_constant) uniform Push { HairDrawPush draw; };
+layout(location = 0) in vec3 inNormal;
+layout(location = 1) in vec2 inUv;
+
+#include "dsm/oit_insert.glsl"
+
+void main() {
+    vec4 c = baseColor(draw.ids.y, inUv);
+    oitInsert(c.rgb, c.a, normalize(inNormal), false);
+}

@@ -1,0 +1,57 @@
+#version 460
+// Reflective shadow map (Dachsbacher & Stamminger 2005) resolved from the shadow pass's visibility
+// IDs: per RSM texel, the depth, normal and flux of the surface the light sees there. No second
+// raster of the light's view: the texel's ID comes from the ID layer (the shadow map's resolution;
+// nearest ID texel to the RSM texel's centre), its attributes from the triangle at the texel's centre.
+// The texel's footprint perpendicular to the light is A = t^2 for an orthographic map (t = texel
+// world size) and A = t^2 z^2 cos(a) for a perspective one (t per unit depth, z the depth along the
+// axis, a the angle off the axis: the texel's solid angle t^2 cos^3(a) times d^2). The flux through
+// it is E_perp * A, and the surface reflects albedo times that (Lambertian).
+#extension GL_GOOGLE_include_directive : require
+#include "shared/types.h"
+#include "render/material.glsl"
+#include "render/lights.glsl"
+#include "render/visibility.glsl"
+#include "shared/octahedral.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(set = 0, binding = 3, std430) readonly buffer Lights { GpuLight lights[]; };
+layout(set = 0, binding = 4, std430) readonly buffer Layers { GpuRsmLayer rsmLayers[]; };
+layout(set = 0, binding = 5) uniform usampler2DArray ids;
+layout(set = 0, binding = 6, r32f) uniform writeonly image2DArray outDepth;
+layout(set = 0, binding = 7, rg16_snorm) uniform writeonly image2DArray outNormal;
+layout(set = 0, binding = 8, rgba16f) uniform writeonly image2DArray outFlux;
+layout(push_constant) uniform Push { RsmResolvePush pc; };
+
+void main() {
+    const ivec3 texel = ivec3(gl_GlobalInvocationID);
+    const uint res = pc.sizes.x, idRes = pc.sizes.y;
+    if (texel.x >= int(res) || texel.y >= int(res)) return;
+    const ivec2 idTexel = min(ivec2((vec2(texel.xy) + 0.5) * float(idRes) / float(res)), ivec2(idRes - 1u));
+    const uint id = texelFetch(ids, ivec3(idTexel, texel.z), 0).r;
+    if (id == 0u) {
+        imageStore(outDepth, texel, vec4(1.0));
+        imageStore(outNormal, texel, vec4(0.0));
+        imageStore(outFlux, texel, vec4(0.0));
+        return;
+    }
+    const GpuRsmLayer layer = rsmLayers[texel.z];
+    VisRay centre, dx0, dx1, dy0, dy1;
+    quadRays(layer.invViewProj, texel.xy, vec2(float(res)), centre, dx0, dx1, dy0, dy1);
+    const VisSurface s = resolveSurface(fetchTriangle(id), centre, dx0, dx1, dy0, dy1);
+    const vec4 clip = layer.viewProj * vec4(s.position, 1.0);
+    const GpuLight light = lights[uint(layer.params.z)];
+    vec3 l;
+    const vec3 e = incidentIrradiance(light, s.position, l);
+    const float t = layer.params.x;
+    float area = t * t;
+    if (layer.params.y > 0.5) {  // the layer's own axis (spot cone, or a point light's cube face)
+        const float z = clip.w;
+        area *= z * z * clamp(z / max(length(s.position - light.position.xyz), 1e-6), 0.0, 1.0);
+    }
+    vec3 n = s.normal;
+    if (dot(n, l) < 0.0) n = -n;  // the side the light sees (two-sided surfaces)
+    imageStore(outDepth, texel, vec4(clip.z / clip.w));
+    imageStore(outNormal, texel, vec4(octEncode(n), 0.0, 0.0));
+    imageStore(outFlux, texel, vec4(surfaceBaseColor(s).rgb * e * area, 1.0));
+}

@@ -1,0 +1,181 @@
+#include "dsm/translucency.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include <fmt/format.h>
+
+#include "render/raster.h"
+
+namespace penumbra {
+namespace {
+
+// The pool must fit one storage-buffer descriptor (lavapipe: 128 MiB, 8.4M nodes).
+uint64_t devicePoolLimit(vk::Context& ctx) {
+    VkPhysicalDeviceProperties p;
+    vkGetPhysicalDeviceProperties(ctx.physicalDevice(), &p);
+    return std::max<uint64_t>(1, p.limits.maxStorageBufferRange / 16);
+}
+
+}  // namespace
+
+CameraTranslucency::CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, const HairGpu* hair, uint32_t width,
+                                       uint32_t height)
+    : alloc_(alloc), scene_(scene), hair_(hair), width_(width), height_(height) {
+    for (const Material& m : scene.scene().materials) hasBlended_ |= m.alphaMode == AlphaMode::Blend;
+    if (!active()) return;
+    vk::Context& ctx = alloc.context();
+    const uint64_t pixels = uint64_t(width) * height;
+    capacity_ = std::min(pixels * kNodesPerPixel, devicePoolLimit(ctx));
+    const VkBufferUsageFlags usage =
+        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+    heads_ = vk::Buffer(alloc, pixels * 4, usage, false, "oit-heads");
+    nodes_ = vk::Buffer(alloc, capacity_ * 16, usage, false, "oit-nodes");
+    normals_ = vk::Buffer(alloc, capacity_ * 4, usage, false, "oit-normals");
+    stats_ = vk::Buffer(alloc, sizeof(gpu::OitStats), usage, false, "oit-stats");
+
+    // Build set: the scene's draw set (0-2), the hair buffers (3, 4), heads, nodes, normals, counters
+    // and the opaque depth (5-9).
+    std::vector<vk::Binding> b = SceneGpu::drawSetBindings();
+    for (const vk::Binding& h : HairGpu::bindings()) b.push_back(h);
+    for (uint32_t i = 5; i <= 8; ++i) b.push_back({i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
+    b.push_back({9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
+    buildLayout_ = vk::DescriptorLayout(ctx, b);
+    if (hair_)
+        hairPipeline_ = vk::Pipeline::graphics(ctx, HairGpu::pipelineDesc("dsm/oit_hair.frag"),
+                                               {buildLayout_.handle()}, sizeof(gpu::HairDrawPush));
+    if (hasBlended_) {
+        vk::GraphicsDesc d;
+        d.vertexShader = "render/scene.vert";
+        d.fragmentShader = "dsm/oit_mesh.frag";
+        d.vertexStride = SceneGpu::vertexStride();
+        d.vertexAttributes = SceneGpu::vertexAttributes();
+        d.dynamicCullMode = true;  // single-sided blended surfaces are invisible from behind
+        d.frontFace = SceneGpu::sceneFrontFace(true);
+        meshPipeline_ = vk::Pipeline::graphics(ctx, d, {buildLayout_.handle()}, sizeof(gpu::HairDrawPush));
+    }
+
+    const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    composite_ = vk::ComputeKernel(
+        ctx, "dsm/oit_resolve.comp",
+        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, storage, storage, storage, storage, storage, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
+         sampled, storage, storage, storage, storage, sampled, sampled, sampled, storage, storage,
+         VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
+        sizeof(gpu::OitPush));
+    // The shadow map's samplers as shadow.filter makes them (GpuShadowParams says whether the depth
+    // format filters linearly; the border reads as lit).
+    VkFormatProperties depth;
+    vkGetPhysicalDeviceFormatProperties(ctx.physicalDevice(), VK_FORMAT_D32_SFLOAT, &depth);
+    const bool linear = (depth.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT) != 0;
+    nearest_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
+    compare_ = vk::Sampler(ctx, {linear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER,
+                                 true, false});
+    border_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER, false, false});
+    moments_ = vk::Sampler(ctx, {VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
+}
+
+void CameraTranslucency::recordBuild(VkCommandBuffer cmd, const RibbonView& camera) const {
+    beginRaster(cmd, {{width_, height_}, {}, VK_NULL_HANDLE});  // no attachments: the lists are the output
+    gpu::HairDrawPush push{{0, 0, width_, uint32_t(capacity_)}, camera.viewer, camera.footprint};
+    if (hair_) {
+        hairPipeline_.bind(cmd);
+        hair_->draw(cmd, hairPipeline_, push);
+    }
+    if (hasBlended_) {
+        meshPipeline_.bind(cmd);  // same set layout: the pushed set stays bound
+        scene_.draw(
+            cmd,
+            [&](const Draw& d) {
+                push.ids.y = d.material;
+                meshPipeline_.push(cmd, push);
+            },
+            [](const Material& m) { return m.alphaMode == AlphaMode::Blend; });
+    }
+    vkCmdEndRendering(cmd);
+}
+
+void CameraTranslucency::addBuildTo(FrameGraph& graph, const RibbonView& camera) {
+    if (!active()) return;
+    const BufferHandle heads = graph.import(heads_), nodes = graph.import(nodes_), normals = graph.import(normals_),
+                       stats = graph.import(stats_);
+    graph.pass("oit.clear", PassKind::Transfer)
+        .use(heads, Use::TransferDst)
+        .use(stats, Use::TransferDst)
+        .bytes(heads_.size())
+        .record([heads, stats](PassContext& c) {
+            vkCmdFillBuffer(c.cmd, c.buffer(heads).handle(), 0, VK_WHOLE_SIZE, DSM_NONE);
+            vkCmdFillBuffer(c.cmd, c.buffer(stats).handle(), 0, VK_WHOLE_SIZE, 0);
+        });
+    PassBuilder build = graph.pass("oit.build", PassKind::Raster);
+    build.pipeline(hair_ ? hairPipeline_ : meshPipeline_);
+    scene_.declareDrawSet(build, graph.buffer("views"));
+    if (hair_) hair_->declare(build);
+    build.storageBuffer(5, heads, Use::StorageWrite)
+        .storageBuffer(6, nodes, Use::StorageWrite)
+        .storageBuffer(7, normals, Use::StorageWrite)
+        .storageBuffer(8, stats, Use::StorageWrite)
+        .sampled(9, graph.image("gbuffer.depth"), nearest_.handle())
+        .record([this, camera](PassContext& c) { recordBuild(c.cmd, camera); });
+}
+
+void CameraTranslucency::addCompositeTo(FrameGraph& graph) {
+    if (!active()) return;
+    const ImageHandle hdr = graph.image("hdr"), map = graph.image("shadow.map");
+    const gpu::OitPush push{{width_, height_, uint32_t(capacity_), 0}};
+    graph.pass("oit.composite")
+        .pipeline(composite_.pipeline)
+        .uniform(0, graph.buffer("frame"))
+        .storageBuffer(1, graph.buffer("lights"))
+        .storageBuffer(2, graph.import(heads_), Use::StorageRead)
+        .storageBuffer(3, graph.import(nodes_), Use::StorageRead)
+        .storageBuffer(4, graph.import(normals_), Use::StorageRead)
+        .storageBuffer(5, graph.import(stats_), Use::StorageWrite)
+        .storageImage(6, hdr)
+        .sampled(7, graph.image("gi.irradiance"), nearest_.handle())
+        .storageBuffer(8, graph.buffer("dsm.lights"))
+        .storageBuffer(9, graph.buffer("dsm.heads"))
+        .storageBuffer(10, graph.buffer("dsm.nodes"))
+        .storageBuffer(11, graph.buffer("dsm.links"))
+        .sampled(12, map, compare_.handle())
+        .sampled(13, map, border_.handle())
+        .sampled(14, graph.image("shadow.moments"), moments_.handle())
+        .storageBuffer(15, graph.buffer("shadow.layers"))
+        .storageBuffer(16, graph.buffer("shadow.lights"))
+        .uniform(17, graph.buffer("shadow.params"))
+        .record([this, push](PassContext& c) {
+            composite_.pipeline.push(c.cmd, push);
+            vkCmdDispatch(c.cmd, vk::divUp(width_, 8), vk::divUp(height_, 8), 1);
+        });
+}
+
+OitFrameStats CameraTranslucency::readStats(vk::CommandContext& cmd) const {
+    OitFrameStats s;
+    if (!active()) return s;
+    gpu::OitStats g;
+    const std::vector<uint8_t> bytes = cmd.readBuffer(stats_, sizeof(g));
+    std::memcpy(&g, bytes.data(), sizeof(g));
+    s.capacity = capacity_;
+    s.fragments = g.counts.x;
+    s.overflow = s.fragments > capacity_ ? s.fragments - capacity_ : 0;
+    s.kept = g.counts.y;
+    s.beyondMaxList = g.counts.z;
+    s.longest = g.counts.w;
+    s.poolBytes = capacity_ * kNodeBytes;
+    return s;
+}
+
+std::string describeTranslucency(const OitFrameStats& s) {
+    return fmt::format("translucency: {} camera fragments in front of the opaque surface, {} composited (longest "
+                       "list {}, {} beyond the {}-fragment cap merged into one layer); pool {:.1f} MiB for {} nodes",
+                       s.fragments, s.kept, s.longest, s.beyondMaxList, OIT_MAX_LIST,
+                       double(s.poolBytes) / (1024.0 * 1024.0), s.capacity);
+}
+
+std::vector<std::string> translucencyWarnings(const OitFrameStats& s) {
+    if (s.overflow == 0) return {};
+    return {fmt::format("camera translucency node pool overflow: {} of {} translucent fragments dropped (pool of {} "
+                        "nodes)",
+                        s.overflow, s.fragments, s.capacity)};
+}
+
+}  // namespace penumbra

@@ -1,0 +1,60 @@
+// Camera translucency: hair strands and alphaMode BLEND surfaces composited over the lit opaque
+// image in depth order, with the deep shadow map's machinery (per-pixel linked lists built in one
+// raster pass, sorted in compute). Techniques compose by name only: the build reads the opaque depth
+// ("gbuffer.depth") and "views"; the composite reads and rewrites the lit image ("hdr") after the
+// lighting pass, with the lights' shadow maps ("shadow.*"), deep shadow maps ("dsm.*") and the
+// indirect irradiance ("gi.irradiance"), so it works behind any camera path that publishes them.
+//
+// Frame: oit.clear -> oit.build (raster) -> ... lighting ... -> oit.composite (compute).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "dsm/hair_gpu.h"
+#include "render/frame_graph.h"
+
+namespace penumbra {
+
+struct OitFrameStats {
+    uint64_t fragments = 0;      // translucent camera fragments in front of the opaque surface
+    uint64_t capacity = 0;       // nodes in the pool
+    uint64_t overflow = 0;       // dropped because the pool was full
+    uint64_t kept = 0;           // composited
+    uint64_t beyondMaxList = 0;  // dropped beyond OIT_MAX_LIST per pixel (the farthest)
+    uint32_t longest = 0;
+    uint64_t poolBytes = 0;
+};
+
+class CameraTranslucency {
+public:
+    // `hair` may be null. Nothing is allocated when the scene has neither hair nor BLEND materials.
+    CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, const HairGpu* hair, uint32_t width, uint32_t height);
+    bool active() const { return hair_ || hasBlended_; }
+    // oit.clear and oit.build (after the G-buffer).
+    void addBuildTo(FrameGraph& graph, const RibbonView& camera);
+    // oit.composite (after lighting, before the tone mapper).
+    void addCompositeTo(FrameGraph& graph);
+    OitFrameStats readStats(vk::CommandContext& cmd) const;
+
+    static constexpr uint32_t kNodesPerPixel = 8;
+    static constexpr VkDeviceSize kNodeBytes = 16 + 4;  // node + normal
+
+private:
+    void recordBuild(VkCommandBuffer cmd, const RibbonView& camera) const;
+    vk::Allocator& alloc_;
+    SceneGpu& scene_;
+    const HairGpu* hair_;
+    bool hasBlended_ = false;
+    uint32_t width_, height_;
+    uint64_t capacity_ = 0;
+    vk::Buffer heads_, nodes_, normals_, stats_;
+    vk::DescriptorLayout buildLayout_;
+    vk::Pipeline hairPipeline_, meshPipeline_;
+    vk::ComputeKernel composite_;
+    vk::Sampler nearest_, compare_, border_, moments_;
+};
+
+std::string describeTranslucency(const OitFrameStats& s);
+std::vector<std::string> translucencyWarnings(const OitFrameStats& s);
+
+}  // namespace penumbra
