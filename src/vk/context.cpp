@@ -87,6 +87,8 @@ DeviceLimits deviceLimits(VkPhysicalDevice physical) {
     d.allocationSize = m3.maxMemoryAllocationSize;
     d.imageDimension2D = l.maxImageDimension2D;
     d.imageArrayLayers = l.maxImageArrayLayers;
+    d.sampledImagesPerStage = std::min({l.maxPerStageDescriptorSampledImages, l.maxDescriptorSetSampledImages,
+                                        l.maxPerStageResources, l.maxPerStageDescriptorSamplers});
     for (int i = 0; i < 3; ++i) d.workGroupCount[i] = l.maxComputeWorkGroupCount[i];
     return d;
 }
