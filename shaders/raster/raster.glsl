@@ -11,10 +11,10 @@
 // The depth test is a 32-bit atomicMin on the float bits: depths in [0, 1] order like their bits.
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 
-// Set 0 starts like the scene's draw set (render/scene_gpu.h): views, materials, textures.
+// Set 0 starts like the scene's draw set (render/scene_gpu.h): views, materials; set 1: the textures.
 layout(set = 0, binding = 0, std430) readonly buffer Views { mat4 viewProj[]; } views;
 layout(set = 0, binding = 1, std430) readonly buffer Materials { GpuMaterial materials[]; };
-layout(set = 0, binding = 2) uniform sampler2DArray materialTextures;
+#include "render/material_textures.glsl"
 layout(set = 0, binding = 3, std430) buffer Depth { uint depthBits[]; };
 layout(set = 0, binding = 4, std430) buffer Records { RasterTriangle records[]; };
 layout(set = 0, binding = 5, std430) buffer TileEntries { uvec2 tileEntries[]; };
@@ -99,7 +99,7 @@ bool alphaDiscarded(RasterTriangle t, vec2 offset) {
         // d(uvw / iw) = (d uvw - uv d iw) / iw
         const vec2 dx = (vec2(t.uOverW.y, t.vOverW.y) - uv * t.invW.y) / iw;
         const vec2 dy = (vec2(t.uOverW.z, t.vOverW.z) - uv * t.invW.z) / iw;
-        alpha *= textureGrad(materialTextures, vec3(uv, float(m.info.x)), dx, dy).a;
+        alpha *= materialTextureGrad(m.info.x, uv, dx, dy).a;
     }
     return alpha < m.params.x;
 }

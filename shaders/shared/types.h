@@ -42,6 +42,9 @@ using uint = uint32_t;
 #define ALPHA_BLEND 2
 
 #define NO_TEXTURE 0xFFFFFFFFu
+// Slots of the material texture table (render/material_textures.glsl, SceneGpu): with a pass's own
+// sampled images within lavapipe's 32 per stage (SceneGpu::checkTextureTable says why).
+#define MATERIAL_TEXTURE_SLOTS 28
 #define NO_SHADOW (-1.0)
 
 // Per-frame constants of the camera view.

@@ -9,6 +9,8 @@
 #include <fmt/format.h>
 
 #include "lpv/lpv.h"
+#include "render/scene_gpu.h"
+#include "render/texture_upload.h"
 #include "shadow/shadow_layout.h"
 
 namespace penumbra {
@@ -189,6 +191,12 @@ std::vector<Demand> frameDemands(const RenderSettings& s, const Scene& scene, co
     const uint64_t vertices = scene.vertices.size() * sizeof(Vertex), indices = scene.indices.size() * 4;
     d.push_back({"", 0, 0, "the scene's vertices", [=](uint64_t) { return vertices; }, true});
     d.push_back({"", 0, 0, "the scene's indices", [=](uint64_t) { return indices; }, true});
+    for (size_t i = 0; i < scene.textures.size(); ++i) {  // each its own image with its mip chain
+        const uint64_t bytes = mipChainBytes(scene.textures[i].width, scene.textures[i].height);
+        d.push_back({"", 0, 0, fmt::format("the scene's texture {} ({}x{} and its mips)", i, scene.textures[i].width,
+                                           scene.textures[i].height),
+                     [=](uint64_t) { return bytes; }});
+    }
     return d;
 }
 
@@ -199,6 +207,7 @@ uint64_t hairBytesPerStrand() {
 }
 
 void checkDeviceBudget(const vk::DeviceLimits& limits, const RenderSettings& settings, const Scene& scene) {
+    SceneGpu::checkTextureTable(scene.textures.size(), limits);
     const LayerCounts layers = layerCounts(settings, scene);
     checkDimensions(limits, settings, layers);
     checkEach(limits, frameDemands(settings, scene, layers));

@@ -35,15 +35,16 @@ ComputeRaster::ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, uint32_t res
       entryCapacity_(entryCapacityFor(recordCapacity_, resolution, layers_)) {
     vk::Context& ctx = alloc.context();
     const uint32_t pushBytes = sizeof(gpu::RasterPush);
-    // The scene's draw set (bindings 0-2 and the instance table); 3-6: depth, records, tile entries,
+    // The scene's draw set (bindings 0-1 and the instance table; set 1 its texture table); 3-6: depth, records, tile entries,
     // counters (raster.glsl).
     std::vector<vk::Binding> tiles = SceneGpu::drawSetBindings();
     for (uint32_t b = 3; b <= 6; ++b) tiles.push_back({b, kBuffer});
-    tiles_ = vk::ComputeKernel(ctx, "raster/tiles.comp", tiles, pushBytes);
-    bin_ = vk::ComputeKernel(ctx, "raster/bin.comp", tiles, pushBytes);
+    const std::vector<VkDescriptorSetLayout> table{SceneGpu::textureTableLayout(ctx)};
+    tiles_ = vk::ComputeKernel(ctx, "raster/tiles.comp", tiles, pushBytes, table);
+    bin_ = vk::ComputeKernel(ctx, "raster/bin.comp", tiles, pushBytes, table);
     std::vector<vk::Binding> setup = tiles;
     for (uint32_t b = 7; b <= 11; ++b) setup.push_back({b, kBuffer});  // vertices, indices, materials, layers, drawn triangles
-    setup_ = vk::ComputeKernel(ctx, "raster/setup.comp", setup, pushBytes);
+    setup_ = vk::ComputeKernel(ctx, "raster/setup.comp", setup, pushBytes, table);
     args_ = vk::ComputeKernel(ctx, "raster/args.comp", {kBuffer, kBuffer}, pushBytes);
 
     const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
