@@ -134,6 +134,9 @@ void checkFrameSettings(const FrameOptions& o, RenderSettings& settings) {
     settings.aov = parseAov(o.aov);
     finishDsmSettings(settings);
     checkCombinations(settings);
+    if (settings.aov == Aov::Velocity && settings.cameraPath == CameraPath::Gbuffer)
+        fmt::print(stderr, "penumbra: warning: --aov velocity with --camera-path gbuffer shows camera motion only "
+                           "(moving objects need the visibility path's triangle IDs)\n");
 }
 
 std::vector<Light> frameLights(const FrameOptions& o, const Scene& loaded) {
