@@ -144,7 +144,7 @@ struct GpuRsmLayer {
 
 struct RsmPush {
     uvec4 mode;    // x = RSM_GATHER_*, y = sample count, z = layer count, w = low-resolution factor
-    uvec4 sizes;   // x,y = output size (low-res or full), z = RSM resolution, w unused
+    uvec4 sizes;   // x,y = output size (low-res or full), z = RSM resolution, w = 1: bilinear VPLs
     vec4 params;   // x = normal cos threshold, y = distance threshold in pixel footprints, zw unused
 };
 

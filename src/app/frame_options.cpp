@@ -45,6 +45,9 @@ void addGiOptions(CLI::App& cmd, RenderSettings& rs) {
                           {{"unbiased", RsmWeights::Unbiased}, {"paper", RsmWeights::Paper}},
                           "RSM sample weights: unbiased, or the paper's xi1^2");
     cmd.add_option("--rsm-lowres", rs.rsm.lowResFactor, "Low-resolution gather factor")->check(CLI::Range(1, 32));
+    addChoice<bool>(cmd, "--rsm-vpls", rs.rsm.bilinearVpls, {{"nearest", false}, {"bilinear", true}},
+                    "A gather sample's VPL: the texel it falls in, or the four around it weighted bilinearly "
+                    "(4x the cost; steadier under moving lights)");
     cmd.add_flag("--rsm-per-cascade", rs.rsm.perCascade,
                  "A sun's RSM per cascade (the seed's way) instead of from its widest cascade only");
     addLpvOptions(cmd, rs.lpv);
