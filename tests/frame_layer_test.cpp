@@ -303,15 +303,22 @@ TEST_F(FrameLayerTest, PixelProbeEqualsEveryAovImageAtItsPixel) {
         const float* v = &image[4 * (size_t(p.y) * kW + p.x)];
         return glm::vec4(v[0], v[1], v[2], v[3]);
     };
-    // Two pixels on the box, one on the background beside it (alpha 0 in every AOV image).
+    // Two pixels on the box, one on the background beside it (alpha 0 in every AOV image). The previous
+    // frame's camera stood elsewhere, so that the velocity is not zero.
+    Camera before = camera;
+    before.eye += glm::vec3(0.05f, -0.02f, 0.03f);
+    FrameInputs plainIn{camera, scene.scene().lights};
+    plainIn.previous = FrameInputs::Previous{before, {}};
     int backgrounds = 0;
     for (const glm::uvec2 pixel : {glm::uvec2(kW / 3, kH / 2), glm::uvec2(kW / 2, 3), glm::uvec2(0, 0)}) {
-        FrameInputs in{camera, scene.scene().lights, {}, pixel};
+        FrameInputs in = plainIn;
+        in.probePixel = pixel;
         std::map<Aov, glm::vec4> image;
-        for (Aov aov : {Aov::Final, Aov::Direct, Aov::Indirect, Aov::Albedo, Aov::Normal, Aov::Depth, Aov::Shadow}) {
+        for (Aov aov : {Aov::Final, Aov::Direct, Aov::Indirect, Aov::Albedo, Aov::Normal, Aov::Depth, Aov::Shadow,
+                        Aov::Velocity}) {
             s.aov = aov;
             live.apply(s);
-            live.submit({camera, scene.scene().lights});
+            live.submit(plainIn);
             const std::vector<float> plain = live.readHdr();
             live.submit(in);
             EXPECT_EQ(live.readHdr(), plain) << "the probe changed the image";
@@ -330,6 +337,8 @@ TEST_F(FrameLayerTest, PixelProbeEqualsEveryAovImageAtItsPixel) {
         EXPECT_EQ(glm::vec3(p.albedo), glm::vec3(image[Aov::Albedo]));
         EXPECT_EQ(glm::vec3(p.normal), glm::vec3(image[Aov::Normal]));
         EXPECT_EQ(p.shadow.x, image[Aov::Shadow].x);
+        EXPECT_EQ(glm::vec2(p.velocity), glm::vec2(image[Aov::Velocity]));
+        EXPECT_GT(glm::length(glm::vec2(p.velocity)), 0.1f) << "the camera moved";
         EXPECT_GT(glm::length(glm::vec3(p.irradiance)), 0.0f) << "RSM gives cornell's walls indirect light";
     }
     EXPECT_EQ(backgrounds, 1);

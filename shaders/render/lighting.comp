@@ -17,6 +17,10 @@ layout(set = 0, binding = 5) uniform sampler2DArray shadowMask;  // shadow.filte
 layout(set = 0, binding = 6, rgba32f) uniform writeonly image2D outImage;
 layout(set = 0, binding = 7) uniform sampler2D indirectIrradiance;  // GI (frame.options.x != 0)
 layout(set = 0, binding = 12, std430) writeonly buffer Probe { PixelProbe probe; };  // pixel options.zw
+// Velocity: which instance a pixel shows (visibility IDs, frame.options.y) and where it was.
+layout(set = 0, binding = 13) uniform usampler2D visibilityIds;
+layout(set = 0, binding = 14, std430) readonly buffer DrawnTriangles { uvec2 drawnTriangles[]; };  // (instance, triangle)
+layout(set = 0, binding = 15, std430) readonly buffer Instances { GpuInstance instances[]; };
 
 #include "shadow/shadow_lookup.glsl"
 #include "dsm/dsm_lookup.glsl"  // bindings 8-11: translucent casters (hair, blended meshes)
@@ -73,6 +77,18 @@ Shading shade(ivec2 pixel) {
     return s;
 }
 
+// The velocity AOV: how far the surface at `pixel` (world position `p`) moved on the screen since
+// the previous frame, in pixels (x right, y down): the pixel's centre minus where that point was
+// then. A moving instance moves the point with it; that needs the instance, which only the camera's
+// visibility path records (the classic G-buffer path: camera motion only).
+vec2 pixelVelocity(ivec2 pixel, vec3 p) {
+    vec3 then = p;
+    const uint id = frame.options.y != 0u ? texelFetch(visibilityIds, pixel, 0).r : 0u;
+    if (id != 0u) then = (instances[drawnTriangles[id - 1u].x].toPrevious * vec4(p, 1.0)).xyz;
+    const vec4 clip = frame.previousViewProj * vec4(then, 1.0);
+    return vec2(pixel) + 0.5 - (clip.xy / clip.w * 0.5 + 0.5) * vec2(frame.size.xy);
+}
+
 vec4 aovValue(Shading s, uint aov, ivec2 pixel) {
     if (aov == AOV_LPV_SLICE || aov == AOV_GV_SLICE)  // debug views drawn by lpv/gather.comp
         return vec4(texelFetch(indirectIrradiance, pixel, 0).rgb, 1.0);
@@ -87,6 +103,7 @@ vec4 aovValue(Shading s, uint aov, ivec2 pixel) {
     if (aov == AOV_DEPTH) return vec4(vec3(s.eyeDistance), 1.0);
     if (aov == AOV_CASCADE) return vec4(shadowLayerColour(pixel), 1.0);
     if (aov == AOV_TRANSMITTANCE) return vec4(vec3(firstDeepShadowTransmittance(s.p, s.n, s.hair)), 1.0);
+    if (aov == AOV_VELOCITY) return vec4(pixelVelocity(pixel, s.p), 0.0, 1.0);
     return vec4(vec3(s.firstShadow), 1.0);
 }
 
@@ -101,6 +118,7 @@ void writeProbe(Shading s, ivec2 pixel) {
     probe.position = vec4(s.p, s.eyeDistance);
     float transmittance = s.surface ? firstDeepShadowTransmittance(s.p, s.n, s.hair) : 1.0;
     probe.shadow = vec4(s.firstShadow, s.surface ? firstShadowLayer(pixel) : -1.0, transmittance, 0.0);
+    probe.velocity = vec4(s.surface ? pixelVelocity(pixel, s.p) : vec2(0.0), 0.0, 0.0);
 }
 
 void main() {

@@ -100,6 +100,21 @@ float farVisibility(GpuRsmLayer L, uint layer, ivec2 t, vec3 x) {
     return 1.0;
 }
 
+// The four VPLs around RSM position uv, weighted bilinearly: the same expected light as the texel uv
+// falls in, but continuous in uv, so that it does not jump when the texel lattice moves under a sample.
+vec3 bilinearVplIrradiance(vec2 uv, int res, uint layer, vec3 x, vec3 n) {
+    const vec2 f = uv * float(res) - 0.5;
+    const ivec2 t0 = ivec2(floor(f));
+    const vec2 w = f - vec2(t0);
+    vec3 e = vec3(0.0);
+    for (int k = 0; k < 4; ++k) {
+        const ivec2 o = ivec2(k & 1, k >> 1);
+        const float weight = (o.x == 1 ? w.x : 1.0 - w.x) * (o.y == 1 ? w.y : 1.0 - w.y);
+        e += weight * vplIrradiance(clamp(t0 + o, ivec2(0), ivec2(res - 1)), layer, x, n);
+    }
+    return e;
+}
+
 vec3 gather(vec3 x, vec3 n) {
     vec3 e = vec3(0.0);
     const int res = int(pc.sizes.z);
@@ -126,7 +141,7 @@ vec3 gather(vec3 x, vec3 n) {
             vec2 uv = st + rotation * s.xy * scale;
             if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) continue;
             ivec2 t = ivec2(uv * float(res));
-            vec3 c = vplIrradiance(t, layer, x, n);
+            vec3 c = pc.sizes.w != 0u ? bilinearVplIrradiance(uv, res, layer, x, n) : vplIrradiance(t, layer, x, n);
             if (s.w > 0.5 && any(greaterThan(c, vec3(0.0)))) c *= farVisibility(L, layer, t, x);
             e += (s.z * scale * scale) * c;
         }

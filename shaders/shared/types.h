@@ -35,7 +35,8 @@ using uint = uint32_t;
 #define AOV_RSM_NORMAL 13  // debug: the RSM's normal, n * 0.5 + 0.5
 #define AOV_RSM_FLUX 14    // debug: the RSM's flux (exposed and tone-mapped like radiance)
 #define AOV_SHADOW_MAP 15  // debug: layer --aov-layer of the shadow-map array's depth
-#define AOV_COUNT 16
+#define AOV_VELOCITY 16    // screen-space motion since the previous frame, pixels (xy: now minus then)
+#define AOV_COUNT 17
 
 #define ALPHA_OPAQUE 0
 #define ALPHA_MASK 1
@@ -51,9 +52,11 @@ using uint = uint32_t;
 struct FrameUniforms {
     mat4 viewProj;
     mat4 invViewProj;
+    mat4 previousViewProj;  // the previous frame's viewProj (velocity); this frame's on the first
     vec4 cameraPos;  // xyz = eye, w = far plane
     uvec4 size;      // x = width, y = height, z = light count, w = AOV
-    uvec4 options;   // x = indirect irradiance image valid (GI on), y unused, zw = probed pixel (PROBE_OFF: none)
+    uvec4 options;   // x = indirect irradiance image valid (GI on), y = visibility IDs valid (the camera's
+                     // visibility path: velocity follows moving instances), zw = probed pixel (PROBE_OFF: none)
     vec4 lens;       // x = world size of a pixel at unit distance (2 tan(fovy/2) / height), yzw unused
 };
 
@@ -70,6 +73,7 @@ struct PixelProbe {
     vec4 normal;         // xyz = shading normal (hair: tangent), w = shading model (G-buffer .w)
     vec4 position;       // xyz = world position, w = distance to the eye (the depth AOV)
     vec4 shadow;         // x = first shadowed light's visibility, y = its layer code (-1: none), z = DSM transmittance
+    vec4 velocity;       // xy = the velocity AOV (pixels), zw unused
 };
 
 // One light as the lighting pass sees it. Units as in scene.h: directional radiance.rgb is
@@ -98,6 +102,7 @@ struct GpuMaterial {
 struct GpuInstance {
     mat4 model;   // object -> world
     mat4 normal;  // inverse transpose of model's upper 3x3 (columns 0-2)
+    mat4 toPrevious;  // world now -> world in the previous frame (previous model * inverse model): velocity
     uvec4 info;   // x = 1 when model mirrors (negative determinant: fronts flip), y = the drawn-triangle
                   // index of the mesh's first triangle (SceneGpu::drawnTriangles: visibility IDs), zw unused
 };
@@ -142,7 +147,7 @@ struct GpuRsmLayer {
 
 struct RsmPush {
     uvec4 mode;    // x = RSM_GATHER_*, y = sample count, z = layer count, w = low-resolution factor
-    uvec4 sizes;   // x,y = output size (low-res or full), z = RSM resolution, w unused
+    uvec4 sizes;   // x,y = output size (low-res or full), z = RSM resolution, w = 1: bilinear VPLs
     vec4 params;   // x = normal cos threshold, y = distance threshold in pixel footprints, zw unused
 };
 

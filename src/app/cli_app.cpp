@@ -138,7 +138,10 @@ int runRender(const RenderCliOptions& o, const vk::ContextOptions& vkOptions, Re
         device.checkValidation();
         return 0;
     }
-    const FrameInputs inputs = frameInputs(motion, o.frame.time);
+    FrameInputs inputs = frameInputs(motion, o.frame.time);
+    // One frame interval earlier is the previous frame: the velocity AOV shows the motion over it.
+    FrameInputs before = frameInputs(motion, o.frame.time - 1.0 / o.fps);
+    inputs.previous = FrameInputs::Previous{std::move(before.camera), std::move(before.instances)};
     std::vector<std::vector<vk::ScopeTiming>> timings;
     for (int frame = 0; frame < o.frames; ++frame) {
         renderer.render(inputs);

@@ -95,7 +95,7 @@ Light parseLight(const std::string& value) {
 std::vector<std::string> aovNames() {
     return {"direct",   "albedo",    "normal",   "depth",   "shadow",        "final",
             "indirect", "lpv-slice", "gv-slice", "cascade", "transmittance", "dsm-lists",
-            "rsm-depth", "rsm-normal", "rsm-flux", "shadow-map"};
+            "rsm-depth", "rsm-normal", "rsm-flux", "shadow-map", "velocity"};
 }
 
 Aov parseAov(const std::string& value) {

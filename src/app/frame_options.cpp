@@ -45,6 +45,9 @@ void addGiOptions(CLI::App& cmd, RenderSettings& rs) {
                           {{"unbiased", RsmWeights::Unbiased}, {"paper", RsmWeights::Paper}},
                           "RSM sample weights: unbiased, or the paper's xi1^2");
     cmd.add_option("--rsm-lowres", rs.rsm.lowResFactor, "Low-resolution gather factor")->check(CLI::Range(1, 32));
+    addChoice<bool>(cmd, "--rsm-vpls", rs.rsm.bilinearVpls, {{"nearest", false}, {"bilinear", true}},
+                    "A gather sample's VPL: the texel it falls in, or the four around it weighted bilinearly "
+                    "(4x the cost; steadier under moving lights)");
     cmd.add_flag("--rsm-per-cascade", rs.rsm.perCascade,
                  "A sun's RSM per cascade (the seed's way) instead of from its widest cascade only");
     addLpvOptions(cmd, rs.lpv);
@@ -134,6 +137,9 @@ void checkFrameSettings(const FrameOptions& o, RenderSettings& settings) {
     settings.aov = parseAov(o.aov);
     finishDsmSettings(settings);
     checkCombinations(settings);
+    if (settings.aov == Aov::Velocity && settings.cameraPath == CameraPath::Gbuffer)
+        fmt::print(stderr, "penumbra: warning: --aov velocity with --camera-path gbuffer shows camera motion only "
+                           "(moving objects need the visibility path's triangle IDs)\n");
 }
 
 std::vector<Light> frameLights(const FrameOptions& o, const Scene& loaded) {

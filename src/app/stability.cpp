@@ -23,10 +23,12 @@ std::vector<float> toLuminance(const std::vector<float>& rgba) {
 }
 
 // Camera-only motion is measured at fixed world points: the first frame's G-buffer positions, each
-// looked up in frame t at the pixel it projects to (NaN where it leaves the image or is hidden).
+// looked up in frame t at the pixel it projects to (NaN where it leaves the image or is hidden). The
+// lookups of each frame are kept (`maps`), so that the path tracer's frames are read at the same pixels.
 struct WorldPoints {
     std::vector<glm::vec3> points;  // per first-frame pixel (NaN where no surface)
     uint32_t width = 0, height = 0;
+    std::vector<std::vector<int64_t>> maps;  // per frame: per first-frame pixel, the pixel read (-1: none)
 
     void capture(Renderer& r) {
         width = r.settings().width, height = r.settings().height;
@@ -42,10 +44,11 @@ struct WorldPoints {
             points[i] = glm::vec3(p) / p.w;
         }
     }
-    std::vector<float> sample(Renderer& r, const std::vector<float>& lum) const {
+    // The pixel of frame `r` that shows each point (-1: off the image or hidden).
+    std::vector<int64_t> lookups(Renderer& r) const {
         const std::vector<uint8_t> depth = r.commands().readImage(r.gbuffer().depth, 4);
         const glm::mat4 vp = r.frameUniforms().viewProj;
-        std::vector<float> out(points.size(), NAN);
+        std::vector<int64_t> out(points.size(), -1);
         for (size_t i = 0; i < points.size(); ++i) {
             if (std::isnan(points[i].x)) continue;
             const glm::vec4 c = vp * glm::vec4(points[i], 1.0f);
@@ -56,11 +59,41 @@ struct WorldPoints {
             float d;
             std::memcpy(&d, depth.data() + (size_t(y) * width + x) * 4, 4);
             if (std::abs(d - ndc.z) > 1e-3f * std::max(1e-3f, 1.0f - ndc.z) * 50.0f) continue;  // hidden in frame t
-            out[i] = lum[size_t(y) * width + x];
+            out[i] = int64_t(y) * width + x;
         }
         return out;
     }
 };
+
+std::vector<float> sampleAt(const std::vector<int64_t>& map, const std::vector<float>& lum) {
+    std::vector<float> out(map.size(), NAN);
+    for (size_t i = 0; i < map.size(); ++i)
+        if (map[i] >= 0) out[i] = lum[size_t(map[i])];
+    return out;
+}
+
+// The second differences I_t - (I_{t-1} + I_{t+1}) / 2 of every interior frame and measured pixel,
+// and the mean of I: what both flicker figures are made of.
+struct SecondDifferences {
+    std::vector<double> d;
+    double mean = 0.0;
+};
+
+SecondDifferences secondDifferences(const std::vector<std::vector<float>>& lum) {
+    SecondDifferences out;
+    double sum = 0.0;
+    size_t m = 0;
+    for (size_t t = 1; t + 1 < lum.size(); ++t)
+        for (size_t i = 0; i < lum[t].size(); ++i) {
+            const float a = lum[t - 1][i], b = lum[t][i], c = lum[t + 1][i];
+            out.d.push_back(std::isnan(a) || std::isnan(b) || std::isnan(c) ? NAN : double(b) - 0.5 * (double(a) + double(c)));
+        }
+    for (const auto& img : lum)
+        for (float v : img)
+            if (!std::isnan(v)) sum += v, ++m;
+    out.mean = m ? sum / double(m) : 0.0;
+    return out;
+}
 
 struct Config {
     std::string name;
@@ -90,9 +123,34 @@ std::vector<Config> configs(const RenderSettings& base, bool all) {
     return out;
 }
 
-// The path tracer's figure for the same frames, spp doubled until doubling changes it by < 5%.
+// The path tracer's frames at `spp` (luminance of the final image and of the indirect light), read
+// at the world points' pixels when `maps` is given; `seedBase` makes every frame's noise its own.
+struct ReferenceFrames {
+    std::vector<std::vector<float>> final, indirect;
+};
+
+ReferenceFrames referenceFrames(const std::vector<Scene>& scenes, const std::vector<Camera>& cameras,
+                                const RenderSettings& s, uint32_t spp, uint64_t seedBase,
+                                const std::vector<std::vector<int64_t>>& maps) {
+    ReferenceFrames out;
+    for (size_t i = 0; i < scenes.size(); ++i) {
+        ReferenceSettings rs;
+        rs.width = s.width, rs.height = s.height, rs.spp = spp, rs.progress = false;
+        rs.seed = seedBase + i;
+        const ReferenceImage img = renderReference(scenes[i], cameras[i], rs);
+        std::vector<float> fin = toLuminance(img.rgba(ReferenceAov::Final)), ind = toLuminance(img.rgba(ReferenceAov::Indirect));
+        out.final.push_back(maps.empty() ? std::move(fin) : sampleAt(maps[i], fin));
+        out.indirect.push_back(maps.empty() ? std::move(ind) : sampleAt(maps[i], ind));
+    }
+    return out;
+}
+
+// The path tracer's figures for the same frames. The L1 figure: spp doubled until doubling changes it
+// by < 5% (its noise adds to it). The RMS figure with the noise removed: two renders of every frame
+// with independent seeds give second differences D_a = D + e_a and D_b = D + e_b, and the mean of
+// D_a * D_b estimates the mean of D^2 without bias (the noises are independent with mean 0).
 nlohmann::json referenceFlicker(const StabilityOptions& o, const PreparedFrame& f, const SceneMotion& motion,
-                                const RenderSettings& s) {
+                                const RenderSettings& s, const std::vector<std::vector<int64_t>>& maps) {
     std::vector<Scene> scenes;
     std::vector<Camera> cameras;
     for (int i = 0; i < o.frames; ++i) {
@@ -103,42 +161,45 @@ nlohmann::json referenceFlicker(const StabilityOptions& o, const PreparedFrame& 
     }
     double previousFinal = NAN, previousIndirect = NAN;
     nlohmann::json out;
-    for (uint32_t spp = o.referenceSpp; spp <= o.referenceMaxSpp; spp *= 2) {
-        std::vector<std::vector<float>> fin, ind;
-        for (int i = 0; i < o.frames; ++i) {
-            ReferenceSettings rs;
-            rs.width = s.width, rs.height = s.height, rs.spp = spp, rs.progress = false;
-            rs.seed = 1 + uint64_t(i);  // independent noise per frame: what is left after convergence is motion
-            const ReferenceImage img = renderReference(scenes[size_t(i)], cameras[size_t(i)], rs);
-            fin.push_back(toLuminance(img.rgba(ReferenceAov::Final)));
-            ind.push_back(toLuminance(img.rgba(ReferenceAov::Indirect)));
-        }
-        const double ff = flicker(fin), fi = flicker(ind);
+    ReferenceFrames a;
+    uint32_t spp = o.referenceSpp;
+    for (;; spp *= 2) {
+        a = referenceFrames(scenes, cameras, s, spp, 1, maps);
+        const double ff = flicker(a.final), fi = flicker(a.indirect);
         out = {{"spp", spp}, {"final_flicker", ff}, {"indirect_flicker", fi},
                {"converged", std::abs(ff - previousFinal) < 0.05 * ff && std::abs(fi - previousIndirect) < 0.05 * fi}};
-        if (out["converged"].get<bool>()) break;
+        if (out["converged"].get<bool>() || spp * 2 > o.referenceMaxSpp) break;
         previousFinal = ff, previousIndirect = fi;
     }
+    const ReferenceFrames b = referenceFrames(scenes, cameras, s, spp, 1 + uint64_t(o.frames), maps);
+    out["final_flicker_rms_noise_free"] = flickerRmsNoiseFree(a.final, b.final);
+    out["indirect_flicker_rms_noise_free"] = flickerRmsNoiseFree(a.indirect, b.indirect);
+    out["final_flicker_rms"] = flickerRms(a.final);
+    out["indirect_flicker_rms"] = flickerRms(a.indirect);
     return out;
 }
 
 }  // namespace
 
 double flicker(const std::vector<std::vector<float>>& lum) {
-    double diff = 0.0, sum = 0.0;
-    size_t n = 0, m = 0;
-    for (size_t t = 1; t + 1 < lum.size(); ++t)
-        for (size_t i = 0; i < lum[t].size(); ++i) {
-            const float a = lum[t - 1][i], b = lum[t][i], c = lum[t + 1][i];
-            if (std::isnan(a) || std::isnan(b) || std::isnan(c)) continue;
-            diff += std::abs(double(b) - 0.5 * (double(a) + double(c)));
-            ++n;
-        }
-    for (const auto& img : lum)
-        for (float v : img)
-            if (!std::isnan(v)) sum += v, ++m;
-    const double mean = m ? sum / double(m) : 0.0;
-    return n && mean > 0.0 ? diff / double(n) / mean : 0.0;
+    const SecondDifferences s = secondDifferences(lum);
+    double diff = 0.0;
+    size_t n = 0;
+    for (double d : s.d)
+        if (!std::isnan(d)) diff += std::abs(d), ++n;
+    return n && s.mean > 0.0 ? diff / double(n) / s.mean : 0.0;
+}
+
+double flickerRms(const std::vector<std::vector<float>>& lum) { return flickerRmsNoiseFree(lum, lum); }
+
+double flickerRmsNoiseFree(const std::vector<std::vector<float>>& a, const std::vector<std::vector<float>>& b) {
+    const SecondDifferences sa = secondDifferences(a), sb = secondDifferences(b);
+    double product = 0.0;
+    size_t n = 0;
+    for (size_t i = 0; i < sa.d.size() && i < sb.d.size(); ++i)
+        if (!std::isnan(sa.d[i]) && !std::isnan(sb.d[i])) product += sa.d[i] * sb.d[i], ++n;
+    const double mean = 0.5 * (sa.mean + sb.mean);
+    return n && mean > 0.0 ? std::sqrt(std::max(product / double(n), 0.0)) / mean : 0.0;
 }
 
 CLI::App* addStabilityCommand(CLI::App& app, StabilityOptions& o, RenderSettings& rs) {
@@ -173,10 +234,11 @@ int runStability(const StabilityOptions& o, const vk::ContextOptions& vkOptions,
     GpuScene scene(device.ctx, f.scene);
     const bool atWorldPoints = motion.cameraMoves();
     nlohmann::json results = nlohmann::json::array();
-    fmt::print("{:<14} {:>14} {:>17}\n", "technique", "final flicker", "indirect flicker");
+    fmt::print("{:<14} {:>13} {:>13}   {:>10} {:>12}\n", "technique", "final (L1)", "indirect (L1)", "final RMS",
+               "indirect RMS");
+    WorldPoints points;  // the first configuration's: the geometry is the same in all
     for (const Config& c : configs(settings, o.all)) {
         std::vector<std::vector<float>> fin, ind;
-        WorldPoints points;
         Renderer r(device.ctx, scene, c.settings, 1);
         for (int i = 0; i < o.frames; ++i) {
             const FrameInputs in = frameInputs(motion, o.frame.time + i / o.fps);
@@ -185,25 +247,30 @@ int runStability(const StabilityOptions& o, const vk::ContextOptions& vkOptions,
                 r.setAov(aov);
                 r.render(in);
                 std::vector<float> lum = toLuminance(r.readHdr());
-                if (atWorldPoints && i == 0) points.capture(r);
-                if (atWorldPoints) lum = points.sample(r, lum);
+                if (atWorldPoints && points.points.empty()) points.capture(r);
+                if (atWorldPoints && points.maps.size() <= size_t(i)) points.maps.push_back(points.lookups(r));
+                if (atWorldPoints) lum = sampleAt(points.maps[size_t(i)], lum);
                 (aov == Aov::Final ? fin : ind).push_back(std::move(lum));
             }
         }
-        nlohmann::json j{{"technique", c.name}, {"final_flicker", flicker(fin)}};
-        if (!ind.empty()) j["indirect_flicker"] = flicker(ind);
-        fmt::print("{:<14} {:>14.5f} {:>17}\n", c.name, flicker(fin),
-                   ind.empty() ? std::string("-") : fmt::format("{:.5f}", flicker(ind)));
+        nlohmann::json j{{"technique", c.name}, {"final_flicker", flicker(fin)}, {"final_flicker_rms", flickerRms(fin)}};
+        if (!ind.empty()) j["indirect_flicker"] = flicker(ind), j["indirect_flicker_rms"] = flickerRms(ind);
+        const auto cell = [&](const std::vector<std::vector<float>>& v, double (*figure)(const std::vector<std::vector<float>>&)) {
+            return v.empty() ? std::string("-") : fmt::format("{:.5f}", figure(v));
+        };
+        fmt::print("{:<14} {:>13} {:>13}   {:>10} {:>12}\n", c.name, cell(fin, flicker), cell(ind, flicker),
+                   cell(fin, flickerRms), cell(ind, flickerRms));
         results.push_back(j);
     }
     nlohmann::json out{{"command", o.command}, {"scene", f.scene.name}, {"frames", o.frames}, {"fps", o.fps},
                        {"start_time", o.frame.time}, {"camera_motion_at_world_points", atWorldPoints},
                        {"width", settings.width}, {"height", settings.height}, {"techniques", results}};
     if (o.reference) {
-        const nlohmann::json ref = referenceFlicker(o, f, motion, settings);
-        fmt::print("{:<14} {:>14.5f} {:>17.5f}   ({} spp{})\n", "path tracer", ref["final_flicker"].get<double>(),
-                   ref["indirect_flicker"].get<double>(), ref["spp"].get<uint32_t>(),
-                   ref["converged"].get<bool>() ? ", settled" : ", NOT settled: the floor includes noise");
+        const nlohmann::json ref = referenceFlicker(o, f, motion, settings, points.maps);
+        fmt::print("{:<14} {:>13.5f} {:>13.5f}   {:>10.5f} {:>12.5f}   ({} spp; L1 {}; RMS with its noise removed)\n",
+                   "path tracer", ref["final_flicker"].get<double>(), ref["indirect_flicker"].get<double>(),
+                   ref["final_flicker_rms_noise_free"].get<double>(), ref["indirect_flicker_rms_noise_free"].get<double>(),
+                   ref["spp"].get<uint32_t>(), ref["converged"].get<bool>() ? "settled" : "NOT settled: it includes noise");
         out["reference"] = ref;
     }
     if (!o.json.empty()) std::ofstream(o.json) << out.dump(2) << "\n";

@@ -30,5 +30,10 @@ int runStability(const StabilityOptions& options, const vk::ContextOptions& vkOp
 // Flicker of a sequence of luminance images (each `pixels` values, NaN = not measured): the mean over
 // interior frames and measured pixels of |I_t - (I_{t-1} + I_{t+1}) / 2|, divided by the mean of I.
 double flicker(const std::vector<std::vector<float>>& luminance);
+// The RMS form: sqrt(mean of (I_t - (I_{t-1} + I_{t+1}) / 2)^2) / mean(I).
+double flickerRms(const std::vector<std::vector<float>>& luminance);
+// The RMS form without the noise of two independent renders `a` and `b` of the same frames: the mean
+// of the products of their second differences (an unbiased estimate of the noise-free mean square).
+double flickerRmsNoiseFree(const std::vector<std::vector<float>>& a, const std::vector<std::vector<float>>& b);
 
 }  // namespace penumbra

@@ -159,6 +159,9 @@ LightingTechnique::LightingTechnique(vk::Allocator& alloc, vk::CommandContext& c
                                     VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, "no-indirect"});
     const uint64_t zero = 0;
     cmd.uploadImage(noIndirect_, &zero, sizeof(zero));
+    noIds_ = vk::Image(alloc, {VK_FORMAT_R32_UINT, 1, 1, 1, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+                               "no-ids"});
+    cmd.uploadImage(noIds_, &zero, sizeof(uint32_t));
 }
 
 gpu::TonemapPush LightingTechnique::tonemapParams(const RenderSettings& s, float depthFar) const {
@@ -179,12 +182,14 @@ gpu::TonemapPush LightingTechnique::tonemapParams(const RenderSettings& s, float
         case Aov::Shadow:
         case Aov::Transmittance: return {{1.0f, 0.0f, float(TONEMAP_LINEAR), 0.0f}};
         case Aov::DsmLists: return {{1.0f / float(s.dsm.maxList), 0.0f, float(TONEMAP_LINEAR), 0.0f}};
+        case Aov::Velocity: return {{1.0f / 32.0f, 0.5f, float(TONEMAP_LINEAR), 0.0f}};  // +-16 pixels
     }
     return {};
 }
 
 void LightingTechnique::addPasses(const FrameContext& f) {
     if (!f.graph.hasImage("gi.irradiance")) f.graph.publish("gi.irradiance", f.graph.import(noIndirect_));
+    if (!f.graph.hasImage("gbuffer.ids")) f.graph.publish("gbuffer.ids", f.graph.import(noIds_));
     lighting_.addTo(f.graph);
     if (afterLighting_) afterLighting_(f.graph);
     debugView_.addTo(f.graph, f.settings.aov, f.settings.aovLayer);

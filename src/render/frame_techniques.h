@@ -128,6 +128,7 @@ private:
     DebugViewPass debugView_;
     TonemapPass tonemap_;
     vk::Image noIndirect_;  // bound in place of the indirect irradiance when GI is off
+    vk::Image noIds_;       // bound in place of the visibility IDs on the classic G-buffer path
 };
 
 }  // namespace penumbra

@@ -18,7 +18,10 @@ LightingPass::LightingPass(vk::Allocator& alloc, uint32_t width, uint32_t height
                                          {9, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
                                          {10, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
                                          {11, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-                                         {12, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}});
+                                         {12, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                                         {13, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
+                                         {14, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+                                         {15, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}});
     pipeline_ = vk::Pipeline::compute(ctx, "render/lighting.comp", {layout_.handle()}, 0);
     pointSampler_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
 }
@@ -42,6 +45,9 @@ void LightingPass::addTo(FrameGraph& graph) {
         .storageBuffer(10, graph.buffer("dsm.nodes"))
         .storageBuffer(11, graph.buffer("dsm.links"))
         .storageBuffer(12, graph.buffer("probe"), Use::StorageWrite)
+        .sampled(13, graph.image("gbuffer.ids"), point)
+        .storageBuffer(14, graph.buffer("drawn-triangles"))
+        .storageBuffer(15, graph.buffer("instances"))
         .record([out](PassContext& c) {
             const vk::Image& image = c.image(out);
             vkCmdDispatch(c.cmd, vk::divUp(image.width(), 8), vk::divUp(image.height(), 8), 1);

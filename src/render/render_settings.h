@@ -29,6 +29,7 @@ enum class Aov {
     RsmNormal = AOV_RSM_NORMAL,
     RsmFlux = AOV_RSM_FLUX,
     ShadowMap = AOV_SHADOW_MAP,
+    Velocity = AOV_VELOCITY,
 };
 
 enum class GiMode { None, Rsm, Lpv };

@@ -225,10 +225,13 @@ void Renderer::writeFrameData(const FrameInputs& in) {
     gpu::FrameUniforms f{};
     f.viewProj = cameraViewProj(camera, aspect, zfar_);
     f.invViewProj = glm::inverse(f.viewProj);
+    const std::optional<FrameInputs::Previous>& previous = in.previous ? in.previous : lastFrame_;
+    f.previousViewProj = previous ? cameraViewProj(previous->camera, aspect, zfar_) : f.viewProj;
     f.cameraPos = glm::vec4(camera.eye, zfar_);
     f.size = {settings_.width, settings_.height, uint32_t(in.lights.size()), uint32_t(settings_.aov)};
     const glm::uvec2 probe = in.probePixel.value_or(glm::uvec2(PROBE_OFF));
-    f.options = {settings_.gi != GiMode::None ? 1u : 0u, 0u, probe.x, probe.y};
+    const bool ids = settings_.cameraPath == CameraPath::Visibility;
+    f.options = {settings_.gi != GiMode::None ? 1u : 0u, ids ? 1u : 0u, probe.x, probe.y};
     f.lens = {2.0f * std::tan(0.5f * camera.fovy) / float(settings_.height), 0.0f, 0.0f, 0.0f};
     frame_.write(&f, sizeof(f));
     frameConstants_ = f;
@@ -243,16 +246,15 @@ void Renderer::writeFrameData(const FrameInputs& in) {
         shadow_->pass().fillGpuLight(i, lights.back());
     }
     if (!lights.empty()) lightBuffer_.write(lights.data(), lights.size() * sizeof(gpu::GpuLight));
-    writeInstances(frameInstances(in));
+    const std::vector<glm::mat4>& transforms = frameInstances(in);
+    const std::vector<gpu::GpuInstance> rows =
+        scene_.meshes().instanceRows(transforms, previous ? previous->instances : std::vector<glm::mat4>{});
+    if (!rows.empty()) instances_.write(rows.data(), rows.size() * sizeof(gpu::GpuInstance));
+    lastFrame_ = FrameInputs::Previous{camera, transforms};
 }
 
 const std::vector<glm::mat4>& Renderer::frameInstances(const FrameInputs& in) const {
     return in.instances.size() == restInstances_.size() ? in.instances : restInstances_;
-}
-
-void Renderer::writeInstances(const std::vector<glm::mat4>& transforms) {
-    const std::vector<gpu::GpuInstance> rows = scene_.meshes().instanceRows(transforms);
-    if (!rows.empty()) instances_.write(rows.data(), rows.size() * sizeof(gpu::GpuInstance));
 }
 
 void Renderer::recordFrame(FrameSlot& slot, const FrameInputs& in, const FrameHooks& hooks) {
@@ -276,6 +278,7 @@ void Renderer::recordFrame(FrameSlot& slot, const FrameInputs& in, const FrameHo
     graph_.publish("views", graph_.import(views_.current()));
     graph_.publish("lights", graph_.import(lightBuffer_.current()));
     graph_.publish("instances", graph_.import(instances_.current()));
+    graph_.publish("drawn-triangles", graph_.import(scene_.meshes().drawnTriangles()));
     graph_.publish("probe", graph_.import(probe_.current()));
     for (Technique* t : list) t->addPasses(context);
 

@@ -26,6 +26,13 @@ struct FrameInputs {
     std::vector<Light> lights;
     std::vector<glm::mat4> instances;
     std::optional<glm::uvec2> probePixel;  // every AOV at this pixel, read back with the frame (probe())
+    // The previous frame's camera and instance transforms, for the velocity AOV; without it the
+    // renderer takes the frame it rendered last (the first frame: this one, so nothing moves).
+    struct Previous {
+        Camera camera;
+        std::vector<glm::mat4> instances;
+    };
+    std::optional<Previous> previous;
 };
 
 // Recorded into a frame's command buffer after its last pass (a viewer's present blit and UI), with
@@ -118,7 +125,6 @@ private:
     FrameSlot& acquireSlot();
     void writeFrameData(const FrameInputs& in);
     const std::vector<glm::mat4>& frameInstances(const FrameInputs& in) const;
-    void writeInstances(const std::vector<glm::mat4>& transforms);
     void recordFrame(FrameSlot& slot, const FrameInputs& in, const FrameHooks& hooks);
     void collect(FrameSlot& slot);
     std::vector<Technique*> techniques() const;
@@ -137,6 +143,7 @@ private:
     vk::BufferRing frame_, views_, lightBuffer_, instances_, probe_;
     std::vector<glm::mat4> restInstances_;    // the instances' transforms at rest (FrameInputs without any)
     std::vector<glm::mat4> cachedInstances_;  // the transforms the cached shadow layers were drawn with
+    std::optional<FrameInputs::Previous> lastFrame_;  // the camera and transforms last rendered (velocity)
     std::unique_ptr<DsmTechnique> dsm_;
     std::unique_ptr<ShadowTechnique> shadow_;
     std::unique_ptr<CameraTechnique> camera_;

@@ -145,7 +145,8 @@ void SceneGpu::setFrameInstances(const std::vector<glm::mat4>& transforms) {
     }
 }
 
-std::vector<gpu::GpuInstance> SceneGpu::instanceRows(const std::vector<glm::mat4>& transforms) const {
+std::vector<gpu::GpuInstance> SceneGpu::instanceRows(const std::vector<glm::mat4>& transforms,
+                                                     const std::vector<glm::mat4>& previous) const {
     std::vector<gpu::GpuInstance> rows;
     rows.reserve(transforms.size());
     for (size_t i = 0; i < transforms.size(); ++i) {
@@ -156,6 +157,9 @@ std::vector<gpu::GpuInstance> SceneGpu::instanceRows(const std::vector<glm::mat4
         row.model = m;
         row.normal = glm::mat4(std::abs(det) > 0.0f ? glm::transpose(glm::inverse(linear)) : linear);
         row.info = {det < 0.0f ? 1u : 0u, i < instanceTriangleBase_.size() ? instanceTriangleBase_[i] : 0u, 0u, 0u};
+        // A singular transform (scale 0) has no inverse: such an instance covers no pixel anyway.
+        const bool moved = i < previous.size() && previous[i] != m && std::abs(det) > 0.0f;
+        row.toPrevious = moved ? previous[i] * glm::inverse(m) : glm::mat4(1.0f);
         rows.push_back(row);
     }
     return rows;

@@ -55,8 +55,10 @@ public:
     void declareTriangles(PassBuilder& pass);
     static std::vector<vk::Binding> resolveSetBindings();
     // The rows of the instance table for these transforms (Scene::instances' order): normal matrix,
-    // mirror flag and the instance's first drawn triangle (visibility IDs).
-    std::vector<gpu::GpuInstance> instanceRows(const std::vector<glm::mat4>& transforms) const;
+    // mirror flag, the instance's first drawn triangle (visibility IDs) and the map to where it was
+    // in the previous frame (`previous`: the previous frame's transforms; empty = they did not move).
+    std::vector<gpu::GpuInstance> instanceRows(const std::vector<glm::mat4>& transforms,
+                                               const std::vector<glm::mat4>& previous = {}) const;
     // Draw `d`'s first triangle within its mesh. A visibility ID is the drawn-triangle index + 1:
     // the instance's base (GpuInstance.info.y) + this + gl_PrimitiveID + 1 (render/visibility.glsl).
     uint32_t triangleBase(const Draw& d) const { return drawTriangleInMesh_[size_t(&d - scene_.draws.data())]; }

@@ -92,7 +92,7 @@ void RsmGather::setSettings(const RsmSettings& s) {
 gpu::RsmPush RsmGather::constants(uint32_t mode, uint32_t layers) const {
     const bool low = mode == RSM_GATHER_LOWRES;
     return {{mode, settings_.samples, layers, std::max(1u, settings_.lowResFactor)},
-            {low ? lowWidth_ : width_, low ? lowHeight_ : height_, settings_.resolution, 0},
+            {low ? lowWidth_ : width_, low ? lowHeight_ : height_, settings_.resolution, settings_.bilinearVpls ? 1u : 0u},
             {settings_.normalThreshold, settings_.distanceThreshold, settings_.radius, 0}};
 }
 

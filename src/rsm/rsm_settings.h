@@ -33,6 +33,10 @@ struct RsmSettings {
     // fine cascade does not hold the distant VPLs that light its receivers.
     bool perCascade = false;
     float distanceThreshold = 1.0f;  // interpolation: max distance off the tangent plane, in low-res cell footprints
+    // A sample reads the VPL of the texel it falls in (nearest), or the four around it weighted
+    // bilinearly: 4x the VPL evaluations, but a sample's light moves continuously as the light's
+    // texel lattice moves under it (moving lights; README "Temporal stability").
+    bool bilinearVpls = false;
 };
 
 }  // namespace penumbra

@@ -353,6 +353,7 @@ void Panels::probeWindow(ViewSession& session) {
         ImGui::Text("%-10s %9.4f", "depth", p->position.w);
         ImGui::Text("%-10s %9.4f (layer %.2f)", "shadow", p->shadow.x, p->shadow.y);
         ImGui::Text("%-10s %9.4f", "dsm", p->shadow.z);
+        ImGui::Text("%-10s %9.3f %9.3f px", "velocity", p->velocity.x, p->velocity.y);
     }
     ImGui::End();
 }
