@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 #include <stb_image_write.h>
 
+#include "app/device_budget.h"
 #include "gltf_test_util.h"
 #include "gpu_fixture.h"
 #include "render/scene_gpu.h"
@@ -226,6 +227,33 @@ TEST_F(TextureUpload, MoreTexturesThanTheTableHoldsAreRefusedBeforeAnyWork) {
     } catch (const std::invalid_argument& e) {
         const std::string expected = std::to_string(MATERIAL_TEXTURE_SLOTS + 1) + " base-colour textures";
         EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+    }
+}
+
+// The CLI's device budget check (run before anything is allocated) refuses a glTF with one texture
+// more than the table holds, with the one-line reason.
+TEST_F(TextureUpload, GltfWithTooManyTexturesIsRefusedByTheDeviceBudget) {
+    TempDir dir;
+    const std::vector<uint8_t> bin = testBin();
+    json doc = testGltf(dataUri(bin), bin.size());
+    const json material = doc["materials"][0], image = doc["images"][0];
+    doc["materials"] = doc["textures"] = doc["images"] = json::array();
+    for (uint32_t i = 0; i <= MATERIAL_TEXTURE_SLOTS; ++i) {
+        json m = material;
+        m["pbrMetallicRoughness"]["baseColorTexture"]["index"] = i;
+        doc["materials"].push_back(m);
+        doc["textures"].push_back({{"source", i}});
+        doc["images"].push_back(image);
+    }
+    const Scene scene = loadGltf(writeGltf(dir, "many.gltf", doc));
+    ASSERT_EQ(scene.textures.size(), MATERIAL_TEXTURE_SLOTS + 1u);
+    RenderSettings settings;
+    settings.width = settings.height = 16;
+    try {
+        checkDeviceBudget(ctx(), settings, scene);
+        FAIL() << "accepted";
+    } catch (const std::invalid_argument& e) {
+        EXPECT_NE(std::string(e.what()).find("material texture table holds"), std::string::npos) << e.what();
     }
 }
 
