@@ -588,5 +588,51 @@ TEST_F(AnimatedShadowTest, BilinearVplsMoveContinuouslyWithTheLight) {
     EXPECT_LT(ratio[0], 1.8);
 }
 
+
+// --gi-temporal is an exponential average of the frames, reprojected: under a still camera whose light
+// changes from A to B after the first frame, frame k's indirect light is E_B + (1 - alpha)^k (E_A - E_B)
+// at every pixel (the history reprojects onto itself). That is its step response, the lag the README
+// reports: after k frames the old light still weighs (1 - alpha)^k. The first frame has no history.
+TEST_F(AnimatedShadowTest, TemporalGiIsAnExponentialAverageOfTheFrames) {
+    const Scene scene = makeBuiltinScene("cornell");
+    RenderSettings s;
+    s.width = 64;
+    s.height = 48;
+    s.gi = GiMode::Rsm;
+    s.rsm.mode = RsmMode::Full;
+    s.rsm.resolution = 128;
+    s.rsm.samples = 64;
+    s.aov = Aov::Indirect;
+    const Camera& camera = scene.cameras[0];
+    std::vector<Light> lightB = scene.lights;
+    lightB[0].position.x += 0.3f;
+    lightB[0].intensity *= 1.5f;
+    auto still = [&](const std::vector<Light>& lights) {
+        Renderer r(ctx(), scene, s);
+        r.render(FrameInputs{camera, lights});
+        return r.readHdr();
+    };
+    const std::vector<float> a = still(scene.lights), b = still(lightB);
+    s.giTemporal = true;
+    s.giTemporalAlpha = 0.25f;
+    Renderer r(ctx(), scene, s);
+    r.render(FrameInputs{camera, scene.lights});
+    EXPECT_EQ(r.readHdr(), a) << "the first frame has no history";
+    double largest = 0.0;
+    for (const float d : a) largest = std::max(largest, double(std::abs(d)));
+    for (int k = 1; k <= 3; ++k) {
+        r.render(FrameInputs{camera, lightB});
+        const std::vector<float> img = r.readHdr();
+        const double keep = std::pow(0.75, k);
+        double worst = 0.0;
+        for (size_t i = 0; i < img.size(); i += 4)
+            for (int c = 0; c < 3; ++c) {
+                const double expected = b[i + c] + keep * (double(a[i + c]) - b[i + c]);
+                worst = std::max(worst, std::abs(img[i + c] - expected));
+            }
+        EXPECT_LT(worst, 1e-5 * largest) << "frame " << k;
+    }
+}
+
 }  // namespace
 }  // namespace penumbra::test

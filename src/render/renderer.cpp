@@ -122,7 +122,10 @@ void Renderer::build(uint32_t parts) {
     if ((parts & kPartShadowFilters) && !(parts & kPartShadow)) shadow_->setFilters(settings_, lights_);
     if (parts & kPartCamera) parts |= kPartGi;
     warnings_.clear();
-    if (parts & kPartGi) rsm_.reset(), lpv_.reset();
+    if (parts & kPartGi) {
+        rsm_.reset(), lpv_.reset();
+        if (lighting_) lighting_->resetHistory();  // it accumulated the old GI
+    }
     if (parts & kPartShadow) shadow_.reset(), dsm_.reset();
     if (parts & kPartCamera) camera_.reset(), lighting_.reset();
 
@@ -227,6 +230,7 @@ void Renderer::writeFrameData(const FrameInputs& in) {
     f.invViewProj = glm::inverse(f.viewProj);
     const std::optional<FrameInputs::Previous>& previous = in.previous ? in.previous : lastFrame_;
     f.previousViewProj = previous ? cameraViewProj(previous->camera, aspect, zfar_) : f.viewProj;
+    f.reprojection = glm::mat4(glm::dmat4(f.previousViewProj) * glm::inverse(glm::dmat4(f.viewProj)));
     f.cameraPos = glm::vec4(camera.eye, zfar_);
     f.size = {settings_.width, settings_.height, uint32_t(in.lights.size()), uint32_t(settings_.aov)};
     const glm::uvec2 probe = in.probePixel.value_or(glm::uvec2(PROBE_OFF));
