@@ -195,6 +195,35 @@ TEST(SceneGraph, AMeshDrawnByTwoNodesIsStoredOnceAndDrawnTwice) {
     EXPECT_VEC3_NEAR(squares.max, glm::vec3(1.25f, 1.0f, 0.25f));
 }
 
+// A camera at `eye` looking at `target` (y up).
+Camera lookingAt(glm::vec3 eye, glm::vec3 target, float fovyDegrees) {
+    Camera c;
+    c.eye = eye;
+    c.target = target;
+    c.fovy = glm::radians(fovyDegrees);
+    return c;
+}
+
+// 96x72 hard-shadow AOV frames with one 512^2 map, no GI: where a pixel is lit is all the tests read.
+RenderSettings hardShadowAov() {
+    RenderSettings s;
+    s.width = 96;
+    s.height = 72;
+    s.aov = Aov::Shadow;
+    s.gi = GiMode::None;
+    s.shadow.filter = ShadowFilter::Hard;
+    s.shadow.resolution = 512;
+    return s;
+}
+
+Light sunAlong(glm::vec3 direction) {
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = direction;
+    sun.intensity = 3.0f;
+    return sun;
+}
+
 class AnimatedShadowTest : public GpuTest {};
 
 // Visibility IDs index the drawn (instance, triangle) list, and the resolve moves the triangle by its
@@ -212,10 +241,7 @@ TEST_F(AnimatedShadowTest, InstancesResolveFromVisibilityIdsAsTheClassicGBufferD
     f.doc["scenes"] = {{{"nodes", {0, 1, 2, 3}}}};
     Scene scene = loadScene(f.write(dir));
     ASSERT_EQ(scene.instances.size(), 4u);  // the static batch and the three squares
-    Camera camera;
-    camera.eye = {0.3f, 3.0f, 3.0f};
-    camera.target = {0.0f, 0.3f, 0.0f};
-    camera.fovy = glm::radians(50.0f);
+    const Camera camera = lookingAt({0.3f, 3.0f, 3.0f}, {0.0f, 0.3f, 0.0f}, 50.0f);
     const uint32_t w = 96, h = 72;
     std::map<CameraPath, std::vector<float>> normals, depths;
     for (CameraPath path : {CameraPath::Gbuffer, CameraPath::Visibility}) {
@@ -252,22 +278,9 @@ TEST_F(AnimatedShadowTest, InstancesResolveFromVisibilityIdsAsTheClassicGBufferD
 TEST_F(AnimatedShadowTest, ShadowLandsWhereTheAnimationPutsTheOccluder) {
     TempDir dir;
     Scene scene = loadScene(slidingOccluder(dir));
-    Light sun;
-    sun.type = LightType::Directional;
-    sun.direction = {0, -1, 0};
-    sun.intensity = 3.0f;
-    scene.lights = {sun};
-    Camera camera;
-    camera.eye = {0.0f, 3.0f, 3.0f};
-    camera.target = {0.0f, 0.0f, 0.0f};
-    camera.fovy = glm::radians(50.0f);
-    RenderSettings s;
-    s.width = 96;
-    s.height = 72;
-    s.aov = Aov::Shadow;
-    s.gi = GiMode::None;
-    s.shadow.filter = ShadowFilter::Hard;
-    s.shadow.resolution = 512;
+    scene.lights = {sunAlong({0, -1, 0})};
+    const Camera camera = lookingAt({0.0f, 3.0f, 3.0f}, {0.0f, 0.0f, 0.0f}, 50.0f);
+    RenderSettings s = hardShadowAov();
     s.shadow.cascades.count = 1;
     GpuScene gpu(ctx(), scene);
     Renderer renderer(ctx(), gpu, s, 1);
@@ -314,21 +327,9 @@ TEST_F(AnimatedShadowTest, SunSweepTogglesEachPixelsHardShadowAtMostOnce) {
     f.doc["nodes"] = {{{"mesh", 0}}, {{"mesh", 1}, {"translation", {0, 1, 0}}, {"scale", {2, 1, 2}}}};
     f.doc["scenes"] = {{{"nodes", {0, 1}}}};
     Scene scene = loadScene(f.write(dir));
-    Light sun;
-    sun.type = LightType::Directional;
-    sun.intensity = 3.0f;
-    scene.lights = {sun};
-    Camera camera;
-    camera.eye = {0.0f, 4.0f, 3.0f};
-    camera.target = {0.0f, 0.0f, 0.0f};
-    camera.fovy = glm::radians(55.0f);
-    RenderSettings s;
-    s.width = 96;
-    s.height = 72;
-    s.aov = Aov::Shadow;
-    s.gi = GiMode::None;
-    s.shadow.filter = ShadowFilter::Hard;
-    s.shadow.resolution = 512;
+    scene.lights = {sunAlong({0, -1, 0})};  // the path sets its direction
+    const Camera camera = lookingAt({0.0f, 4.0f, 3.0f}, {0.0f, 0.0f, 0.0f}, 55.0f);
+    RenderSettings s = hardShadowAov();
     GpuScene gpu(ctx(), scene);
     Renderer renderer(ctx(), gpu, s, 1);
     MotionPaths paths;
@@ -453,10 +454,7 @@ glm::dvec2 pixelOf(const Camera& camera, uint32_t width, uint32_t height, const 
 TEST_F(AnimatedShadowTest, VelocityIsWhereEachPointWasInThePreviousFrame) {
     TempDir dir;
     const Scene scene = loadScene(slidingOccluder(dir));
-    Camera camera;
-    camera.eye = {0.0f, 3.0f, 3.0f};
-    camera.target = {0.0f, 0.0f, 0.0f};
-    camera.fovy = glm::radians(50.0f);
+    const Camera camera = lookingAt({0.0f, 3.0f, 3.0f}, {0.0f, 0.0f, 0.0f}, 50.0f);
     Camera moved = camera;
     moved.eye += glm::vec3(0.06f, 0.02f, -0.04f);
     moved.target += glm::vec3(0.03f, 0.0f, 0.01f);
@@ -540,10 +538,7 @@ TEST_F(AnimatedShadowTest, BilinearVplsMoveContinuouslyWithTheLight) {
     spot.innerConeAngle = glm::radians(20.0f);
     spot.intensity = 10.0f;
     scene.lights = {spot};
-    Camera camera;
-    camera.eye = {-1.0f, 1.2f, 0.3f};
-    camera.target = {1.5f, 0.8f, 0.0f};
-    camera.fovy = glm::radians(50.0f);
+    const Camera camera = lookingAt({-1.0f, 1.2f, 0.3f}, {1.5f, 0.8f, 0.0f}, 50.0f);
     RenderSettings s;
     s.width = 64;
     s.height = 48;
