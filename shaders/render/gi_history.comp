@@ -16,10 +16,8 @@ layout(set = 0, binding = 3) uniform sampler2D history;
 layout(set = 0, binding = 4) uniform sampler2D historyDepth;   // view depth of each history pixel
 layout(set = 0, binding = 5, rgba16f) uniform writeonly image2D outHistory;
 layout(set = 0, binding = 6, r32f) uniform writeonly image2D outDepth;
-layout(set = 0, binding = 7) uniform usampler2D visibilityIds;
-layout(set = 0, binding = 8, std430) readonly buffer DrawnTriangles { uvec2 drawnTriangles[]; };
-layout(set = 0, binding = 9, std430) readonly buffer Instances { GpuInstance instances[]; };
 layout(push_constant) uniform Push { GiHistoryPush pc; };
+#define MOTION_FIRST_BINDING 7
 #include "render/motion.glsl"
 
 // Bilinear in float weights (a sampler's filter may round them to a few bits: a point reprojected onto

@@ -18,9 +18,8 @@ layout(set = 0, binding = 6, rgba32f) uniform writeonly image2D outImage;
 layout(set = 0, binding = 7) uniform sampler2D indirectIrradiance;  // GI (frame.options.x != 0)
 layout(set = 0, binding = 12, std430) writeonly buffer Probe { PixelProbe probe; };  // pixel options.zw
 // Velocity: which instance a pixel shows (visibility IDs, frame.options.y) and where it was.
-layout(set = 0, binding = 13) uniform usampler2D visibilityIds;
-layout(set = 0, binding = 14, std430) readonly buffer DrawnTriangles { uvec2 drawnTriangles[]; };  // (instance, triangle)
-layout(set = 0, binding = 15, std430) readonly buffer Instances { GpuInstance instances[]; };
+#define MOTION_FIRST_BINDING 13
+#include "render/motion.glsl"
 
 #include "shadow/shadow_lookup.glsl"
 #include "dsm/dsm_lookup.glsl"  // bindings 8-11: translucent casters (hair, blended meshes)
@@ -76,8 +75,6 @@ Shading shade(ivec2 pixel) {
     s.indirect = s.albedo / PI * s.irradiance;
     return s;
 }
-
-#include "render/motion.glsl"
 
 // The velocity AOV: how far the surface at `pixel` (world position `p`) moved on the screen since
 // the previous frame, in pixels (x right, y down): the pixel's centre minus where that point was then.

@@ -2,10 +2,14 @@
 // camera: a moving instance moves the point with it. That needs the instance, which only the camera's
 // visibility path records (frame.options.y; the classic G-buffer path: camera motion only). A point that
 // did not move goes through frame.reprojection (exact for a camera that stood still). The includer
-// declares `frame` (FrameUniforms), `visibilityIds` (usampler2D), `drawnTriangles[]` (uvec2: instance,
-// triangle) and `instances[]` (GpuInstance).
+// declares `frame` (FrameUniforms) and defines MOTION_FIRST_BINDING: the visibility IDs, the drawn
+// (instance, triangle) list and the instance table are bound there and at the next two
+// (declarePreviousFrameInputs in src/render/gi_history.h).
 #ifndef PENUMBRA_MOTION_GLSL
 #define PENUMBRA_MOTION_GLSL
+layout(set = 0, binding = MOTION_FIRST_BINDING) uniform usampler2D visibilityIds;
+layout(set = 0, binding = MOTION_FIRST_BINDING + 1, std430) readonly buffer DrawnTriangles { uvec2 drawnTriangles[]; };
+layout(set = 0, binding = MOTION_FIRST_BINDING + 2, std430) readonly buffer Instances { GpuInstance instances[]; };
 vec4 previousClip(ivec2 pixel, float depth, vec3 p) {
     const uint id = frame.options.y != 0u ? texelFetch(visibilityIds, pixel, 0).r : 0u;
     if (id != 0u) {

@@ -20,12 +20,20 @@ GiHistory::GiHistory(vk::Allocator& alloc, uint32_t width, uint32_t height) {
     }
 }
 
+void declarePreviousFrameInputs(PassBuilder& pass, uint32_t first, VkSampler nearest) {
+    FrameGraph& g = pass.graph();
+    pass.sampled(first, g.image("gbuffer.ids"), nearest)
+        .storageBuffer(first + 1, g.buffer("drawn-triangles"))
+        .storageBuffer(first + 2, g.buffer("instances"));
+}
+
 void GiHistory::addTo(FrameGraph& graph, float alpha) {
     const uint32_t write = next_, read = 1 - next_;
     const ImageHandle out = graph.import(irradiance_[write]), outDepth = graph.import(depth_[write]);
     const gpu::GiHistoryPush push{{alpha, valid_ ? 1.0f : 0.0f, 0.0f, 0.0f}};
-    graph.pass("gi.temporal")
-        .pipeline(kernel_.pipeline)
+    PassBuilder pass = graph.pass("gi.temporal");
+    declarePreviousFrameInputs(pass, 7, nearest_.handle());
+    pass.pipeline(kernel_.pipeline)
         .uniform(0, graph.buffer("frame"))
         .sampled(1, graph.image("gi.irradiance"), nearest_.handle())
         .sampled(2, graph.image("gbuffer.depth"), nearest_.handle())
@@ -33,9 +41,6 @@ void GiHistory::addTo(FrameGraph& graph, float alpha) {
         .sampled(4, graph.import(depth_[read]), nearest_.handle())
         .storageImage(5, out)
         .storageImage(6, outDepth)
-        .sampled(7, graph.image("gbuffer.ids"), nearest_.handle())
-        .storageBuffer(8, graph.buffer("drawn-triangles"))
-        .storageBuffer(9, graph.buffer("instances"))
         .record([this, out, push](PassContext& c) {
             kernel_.pipeline.push(c.cmd, push);
             const vk::Image& image = c.image(out);

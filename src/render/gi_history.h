@@ -8,6 +8,10 @@
 
 namespace penumbra {
 
+// The inputs of render/motion.glsl (where a pixel's point was in the previous frame) at bindings
+// first..first + 2: "gbuffer.ids", "drawn-triangles", "instances".
+void declarePreviousFrameInputs(PassBuilder& pass, uint32_t first, VkSampler nearest);
+
 class GiHistory {
 public:
     GiHistory(vk::Allocator& alloc, uint32_t width, uint32_t height);

@@ -6,7 +6,6 @@
 
 #include <fmt/format.h>
 
-#include "scene/animation.h"
 
 namespace penumbra {
 namespace {
@@ -101,9 +100,8 @@ void Renderer::init() {
     }
     drawLayout_ = vk::DescriptorLayout(ctx_, SceneGpu::drawSetBindings());
     frame_ = vk::BufferRing(alloc_, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, "frame");
-    const Scene& scene = scene_.scene();
-    restInstances_ = instanceTransforms(scene, nodeWorldTransforms(scene, 0.0, {}));
-    instances_ = vk::BufferRing(alloc_, sizeof(gpu::GpuInstance) * std::max<size_t>(restInstances_.size(), 1),
+    const size_t instances = scene_.meshes().restTransforms().size();
+    instances_ = vk::BufferRing(alloc_, sizeof(gpu::GpuInstance) * std::max<size_t>(instances, 1),
                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "instances");
     probe_ = vk::BufferRing(alloc_, sizeof(gpu::PixelProbe), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "probe");
     lights_ = scene_.scene().lights;
@@ -258,7 +256,8 @@ void Renderer::writeFrameData(const FrameInputs& in) {
 }
 
 const std::vector<glm::mat4>& Renderer::frameInstances(const FrameInputs& in) const {
-    return in.instances.size() == restInstances_.size() ? in.instances : restInstances_;
+    const std::vector<glm::mat4>& rest = scene_.meshes().restTransforms();
+    return in.instances.size() == rest.size() ? in.instances : rest;
 }
 
 void Renderer::recordFrame(FrameSlot& slot, const FrameInputs& in, const FrameHooks& hooks) {
@@ -266,10 +265,8 @@ void Renderer::recordFrame(FrameSlot& slot, const FrameInputs& in, const FrameHo
     for (vk::BufferRing* r : {&frame_, &views_, &lightBuffer_, &instances_, &probe_}) r->select(index);
     const std::vector<glm::mat4>& transforms = frameInstances(in);
     scene_.meshes().setFrameInstances(transforms);
-    if (transforms != cachedInstances_) {  // casters moved: cached shadow layers show them where they were
-        invalidateCaches();
-        cachedInstances_ = transforms;
-    }
+    // Casters moved since the last frame: cached shadow layers show them where they were.
+    if (!lastFrame_ || transforms != lastFrame_->instances) invalidateCaches();
     zfar_ = sceneFar(in.camera, scene_.scene().bounds);
     graph_.clear();
     const float aspect = float(settings_.width) / float(settings_.height);
