@@ -18,9 +18,8 @@ layout(set = 0, binding = 6, rgba32f) uniform writeonly image2D outImage;
 layout(set = 0, binding = 7) uniform sampler2D indirectIrradiance;  // GI (frame.options.x != 0)
 layout(set = 0, binding = 12, std430) writeonly buffer Probe { PixelProbe probe; };  // pixel options.zw
 // Velocity: which instance a pixel shows (visibility IDs, frame.options.y) and where it was.
-layout(set = 0, binding = 13) uniform usampler2D visibilityIds;
-layout(set = 0, binding = 14, std430) readonly buffer DrawnTriangles { uvec2 drawnTriangles[]; };  // (instance, triangle)
-layout(set = 0, binding = 15, std430) readonly buffer Instances { GpuInstance instances[]; };
+#define MOTION_FIRST_BINDING 13
+#include "render/motion.glsl"
 
 #include "shadow/shadow_lookup.glsl"
 #include "dsm/dsm_lookup.glsl"  // bindings 8-11: translucent casters (hair, blended meshes)
@@ -78,14 +77,9 @@ Shading shade(ivec2 pixel) {
 }
 
 // The velocity AOV: how far the surface at `pixel` (world position `p`) moved on the screen since
-// the previous frame, in pixels (x right, y down): the pixel's centre minus where that point was
-// then. A moving instance moves the point with it; that needs the instance, which only the camera's
-// visibility path records (the classic G-buffer path: camera motion only).
+// the previous frame, in pixels (x right, y down): the pixel's centre minus where that point was then.
 vec2 pixelVelocity(ivec2 pixel, vec3 p) {
-    vec3 then = p;
-    const uint id = frame.options.y != 0u ? texelFetch(visibilityIds, pixel, 0).r : 0u;
-    if (id != 0u) then = (instances[drawnTriangles[id - 1u].x].toPrevious * vec4(p, 1.0)).xyz;
-    const vec4 clip = frame.previousViewProj * vec4(then, 1.0);
+    const vec4 clip = previousClip(pixel, texelFetch(gDepth, pixel, 0).r, p);
     return vec2(pixel) + 0.5 - (clip.xy / clip.w * 0.5 + 0.5) * vec2(frame.size.xy);
 }
 

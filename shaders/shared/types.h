@@ -53,6 +53,9 @@ struct FrameUniforms {
     mat4 viewProj;
     mat4 invViewProj;
     mat4 previousViewProj;  // the previous frame's viewProj (velocity); this frame's on the first
+    mat4 reprojection;      // previousViewProj * inverse(viewProj), in double precision: this frame's clip
+                            // position -> the previous frame's, for points that did not move (exact when
+                            // the camera stood still, which a float round trip through the world is not)
     vec4 cameraPos;  // xyz = eye, w = far plane
     uvec4 size;      // x = width, y = height, z = light count, w = AOV
     uvec4 options;   // x = indirect irradiance image valid (GI on), y = visibility IDs valid (the camera's
@@ -149,6 +152,11 @@ struct RsmPush {
     uvec4 mode;    // x = RSM_GATHER_*, y = sample count, z = layer count, w = low-resolution factor
     uvec4 sizes;   // x,y = output size (low-res or full), z = RSM resolution, w = 1: bilinear VPLs
     vec4 params;   // x = normal cos threshold, y = distance threshold in pixel footprints, zw unused
+};
+
+// render/gi_history.comp: temporal accumulation of the indirect irradiance.
+struct GiHistoryPush {
+    vec4 params;  // x = weight of the new frame (alpha), y = 1: the history holds the previous frame, zw unused
 };
 
 // Push constants of the RSM resolve (rsm/resolve.comp): RSM texels from the shadow pass's visibility IDs.

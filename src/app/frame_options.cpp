@@ -45,6 +45,10 @@ void addGiOptions(CLI::App& cmd, RenderSettings& rs) {
                           {{"unbiased", RsmWeights::Unbiased}, {"paper", RsmWeights::Paper}},
                           "RSM sample weights: unbiased, or the paper's xi1^2");
     cmd.add_option("--rsm-lowres", rs.rsm.lowResFactor, "Low-resolution gather factor")->check(CLI::Range(1, 32));
+    cmd.add_option("--gi-temporal", rs.giTemporal,
+                   "Accumulate the indirect light over frames, reprojected (on/off; less flicker, more lag)");
+    cmd.add_option("--gi-temporal-alpha", rs.giTemporalAlpha, "Temporal accumulation: the new frame's weight")
+        ->check(finiteRange(1e-3, 1.0));
     addChoice<bool>(cmd, "--rsm-vpls", rs.rsm.bilinearVpls, {{"nearest", false}, {"bilinear", true}},
                     "A gather sample's VPL: the texel it falls in, or the four around it weighted bilinearly "
                     "(4x the cost; steadier under moving lights)");

@@ -162,6 +162,8 @@ LightingTechnique::LightingTechnique(vk::Allocator& alloc, vk::CommandContext& c
     noIds_ = vk::Image(alloc, {VK_FORMAT_R32_UINT, 1, 1, 1, VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                                "no-ids"});
     cmd.uploadImage(noIds_, &zero, sizeof(uint32_t));
+    if (s.giTemporal) history_ = std::make_unique<GiHistory>(alloc, s.width, s.height);
+    historyAlpha_ = s.giTemporalAlpha;
 }
 
 gpu::TonemapPush LightingTechnique::tonemapParams(const RenderSettings& s, float depthFar) const {
@@ -188,8 +190,9 @@ gpu::TonemapPush LightingTechnique::tonemapParams(const RenderSettings& s, float
 }
 
 void LightingTechnique::addPasses(const FrameContext& f) {
-    if (!f.graph.hasImage("gi.irradiance")) f.graph.publish("gi.irradiance", f.graph.import(noIndirect_));
     if (!f.graph.hasImage("gbuffer.ids")) f.graph.publish("gbuffer.ids", f.graph.import(noIds_));
+    if (!f.graph.hasImage("gi.irradiance")) f.graph.publish("gi.irradiance", f.graph.import(noIndirect_));
+    else if (history_) history_->addTo(f.graph, historyAlpha_);
     lighting_.addTo(f.graph);
     if (afterLighting_) afterLighting_(f.graph);
     debugView_.addTo(f.graph, f.settings.aov, f.settings.aovLayer);

@@ -14,6 +14,7 @@
 #include "lpv/lpv.h"
 #include "render/gbuffer_pass.h"
 #include "render/gpu_scene.h"
+#include "render/gi_history.h"
 #include "render/lighting_pass.h"
 #include "render/technique.h"
 #include "rsm/rsm_gather.h"
@@ -120,6 +121,11 @@ public:
     void addPasses(const FrameContext& f) override;
     LightingPass& lighting() { return lighting_; }
     TonemapPass& tonemap() { return tonemap_; }
+    // The GI that feeds the temporal accumulation changed: start it anew.
+    void resetHistory() {
+        if (history_) history_->reset();
+    }
+    void applyPerFrame(const RenderSettings& s) override { historyAlpha_ = s.giTemporalAlpha; }
 
 private:
     gpu::TonemapPush tonemapParams(const RenderSettings& s, float depthFar) const;
@@ -129,6 +135,8 @@ private:
     TonemapPass tonemap_;
     vk::Image noIndirect_;  // bound in place of the indirect irradiance when GI is off
     vk::Image noIds_;       // bound in place of the visibility IDs on the classic G-buffer path
+    std::unique_ptr<GiHistory> history_;  // --gi-temporal
+    float historyAlpha_ = 0.1f;
 };
 
 }  // namespace penumbra

@@ -1,5 +1,7 @@
 #include "render/lighting_pass.h"
 
+#include "render/gi_history.h"
+
 namespace penumbra {
 
 LightingPass::LightingPass(vk::Allocator& alloc, uint32_t width, uint32_t height) {
@@ -30,8 +32,9 @@ void LightingPass::addTo(FrameGraph& graph) {
     const ImageHandle out = graph.import(hdr);
     graph.publish("hdr", out);
     const VkSampler point = pointSampler_.handle();
-    graph.pass("lighting")
-        .pipeline(pipeline_)
+    PassBuilder pass = graph.pass("lighting");
+    declarePreviousFrameInputs(pass, 13, point);  // the velocity AOV
+    pass.pipeline(pipeline_)
         .uniform(0, graph.buffer("frame"))
         .storageBuffer(1, graph.buffer("lights"))
         .sampled(2, graph.image("gbuffer.albedo"), point)
@@ -45,9 +48,6 @@ void LightingPass::addTo(FrameGraph& graph) {
         .storageBuffer(10, graph.buffer("dsm.nodes"))
         .storageBuffer(11, graph.buffer("dsm.links"))
         .storageBuffer(12, graph.buffer("probe"), Use::StorageWrite)
-        .sampled(13, graph.image("gbuffer.ids"), point)
-        .storageBuffer(14, graph.buffer("drawn-triangles"))
-        .storageBuffer(15, graph.buffer("instances"))
         .record([out](PassContext& c) {
             const vk::Image& image = c.image(out);
             vkCmdDispatch(c.cmd, vk::divUp(image.width(), 8), vk::divUp(image.height(), 8), 1);

@@ -46,6 +46,10 @@ struct RenderSettings {
     CameraPath cameraPath = CameraPath::Visibility;  // how the camera's G-buffer is made (render/gbuffer_pass.h)
     ShadowSettings shadow;
     GiMode gi = GiMode::None;
+    // Temporal accumulation of the indirect irradiance (render/gi_history.h): off by default, it trades
+    // flicker under moving lights for lag (README "Temporal stability"); alpha = the new frame's weight.
+    bool giTemporal = false;
+    float giTemporalAlpha = 0.1f;
     RsmSettings rsm;
     LpvSettings lpv;
     DsmSettings dsm;

@@ -6,7 +6,6 @@
 
 #include <fmt/format.h>
 
-#include "scene/animation.h"
 
 namespace penumbra {
 namespace {
@@ -101,9 +100,8 @@ void Renderer::init() {
     }
     drawLayout_ = vk::DescriptorLayout(ctx_, SceneGpu::drawSetBindings());
     frame_ = vk::BufferRing(alloc_, sizeof(gpu::FrameUniforms), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT, "frame");
-    const Scene& scene = scene_.scene();
-    restInstances_ = instanceTransforms(scene, nodeWorldTransforms(scene, 0.0, {}));
-    instances_ = vk::BufferRing(alloc_, sizeof(gpu::GpuInstance) * std::max<size_t>(restInstances_.size(), 1),
+    const size_t instances = scene_.meshes().restTransforms().size();
+    instances_ = vk::BufferRing(alloc_, sizeof(gpu::GpuInstance) * std::max<size_t>(instances, 1),
                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "instances");
     probe_ = vk::BufferRing(alloc_, sizeof(gpu::PixelProbe), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "probe");
     lights_ = scene_.scene().lights;
@@ -122,7 +120,10 @@ void Renderer::build(uint32_t parts) {
     if ((parts & kPartShadowFilters) && !(parts & kPartShadow)) shadow_->setFilters(settings_, lights_);
     if (parts & kPartCamera) parts |= kPartGi;
     warnings_.clear();
-    if (parts & kPartGi) rsm_.reset(), lpv_.reset();
+    if (parts & kPartGi) {
+        rsm_.reset(), lpv_.reset();
+        if (lighting_) lighting_->resetHistory();  // it accumulated the old GI
+    }
     if (parts & kPartShadow) shadow_.reset(), dsm_.reset();
     if (parts & kPartCamera) camera_.reset(), lighting_.reset();
 
@@ -227,6 +228,7 @@ void Renderer::writeFrameData(const FrameInputs& in) {
     f.invViewProj = glm::inverse(f.viewProj);
     const std::optional<FrameInputs::Previous>& previous = in.previous ? in.previous : lastFrame_;
     f.previousViewProj = previous ? cameraViewProj(previous->camera, aspect, zfar_) : f.viewProj;
+    f.reprojection = glm::mat4(glm::dmat4(f.previousViewProj) * glm::inverse(glm::dmat4(f.viewProj)));
     f.cameraPos = glm::vec4(camera.eye, zfar_);
     f.size = {settings_.width, settings_.height, uint32_t(in.lights.size()), uint32_t(settings_.aov)};
     const glm::uvec2 probe = in.probePixel.value_or(glm::uvec2(PROBE_OFF));
@@ -254,7 +256,8 @@ void Renderer::writeFrameData(const FrameInputs& in) {
 }
 
 const std::vector<glm::mat4>& Renderer::frameInstances(const FrameInputs& in) const {
-    return in.instances.size() == restInstances_.size() ? in.instances : restInstances_;
+    const std::vector<glm::mat4>& rest = scene_.meshes().restTransforms();
+    return in.instances.size() == rest.size() ? in.instances : rest;
 }
 
 void Renderer::recordFrame(FrameSlot& slot, const FrameInputs& in, const FrameHooks& hooks) {
@@ -262,10 +265,8 @@ void Renderer::recordFrame(FrameSlot& slot, const FrameInputs& in, const FrameHo
     for (vk::BufferRing* r : {&frame_, &views_, &lightBuffer_, &instances_, &probe_}) r->select(index);
     const std::vector<glm::mat4>& transforms = frameInstances(in);
     scene_.meshes().setFrameInstances(transforms);
-    if (transforms != cachedInstances_) {  // casters moved: cached shadow layers show them where they were
-        invalidateCaches();
-        cachedInstances_ = transforms;
-    }
+    // Casters moved since the last frame: cached shadow layers show them where they were.
+    if (!lastFrame_ || transforms != lastFrame_->instances) invalidateCaches();
     zfar_ = sceneFar(in.camera, scene_.scene().bounds);
     graph_.clear();
     const float aspect = float(settings_.width) / float(settings_.height);

@@ -141,9 +141,9 @@ private:
     std::vector<Light> lights_;  // the lights the shadow layout was built for
     vk::DescriptorLayout drawLayout_;
     vk::BufferRing frame_, views_, lightBuffer_, instances_, probe_;
-    std::vector<glm::mat4> restInstances_;    // the instances' transforms at rest (FrameInputs without any)
-    std::vector<glm::mat4> cachedInstances_;  // the transforms the cached shadow layers were drawn with
-    std::optional<FrameInputs::Previous> lastFrame_;  // the camera and transforms last rendered (velocity)
+    // The camera and instance transforms last rendered: the velocity's previous frame, and what cached
+    // shadow layers were drawn with.
+    std::optional<FrameInputs::Previous> lastFrame_;
     std::unique_ptr<DsmTechnique> dsm_;
     std::unique_ptr<ShadowTechnique> shadow_;
     std::unique_ptr<CameraTechnique> camera_;

@@ -62,11 +62,11 @@ SceneGpu::SceneGpu(vk::CommandContext& cmd, const Scene& scene)
     if (drawn.size() >= size_t(UINT32_MAX))
         throw std::runtime_error(fmt::format("the scene draws {} triangles: visibility IDs hold 2^32 - 1", drawn.size()));
     drawnTriangleCount_ = uint32_t(drawn.size());
-    const std::vector<glm::mat4> rest = instanceTransforms(scene, nodeWorldTransforms(scene, 0.0, {}));
-    std::vector<gpu::GpuInstance> rows = instanceRows(rest);
+    restTransforms_ = instanceTransforms(scene, nodeWorldTransforms(scene, 0.0, {}));
+    std::vector<gpu::GpuInstance> rows = instanceRows(restTransforms_);
     restInstances_ = cmd.createDeviceBuffer(rows.data(), rows.size() * sizeof(rows[0]), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                             "rest-instances");
-    setFrameInstances(rest);
+    setFrameInstances(restTransforms_);
     if (drawn.empty()) drawn.push_back({0u, 0u});
     drawnTriangles_ = cmd.createDeviceBuffer(drawn.data(), drawn.size() * sizeof(glm::uvec2),
                                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "drawn-triangles");

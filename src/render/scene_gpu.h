@@ -28,6 +28,8 @@ public:
     // Every drawn triangle as (instance, triangle): what a compute pass walks to draw the scene.
     const vk::Buffer& drawnTriangles() const { return drawnTriangles_; }
     uint32_t drawnTriangleCount() const { return drawnTriangleCount_; }
+    // Scene::instances' world transforms at rest (t = 0, no animation).
+    const std::vector<glm::mat4>& restTransforms() const { return restTransforms_; }
     // The frame's instance transforms decide the cull mode of mirrored instances (set before recording).
     void setFrameInstances(const std::vector<glm::mat4>& transforms);
     // The base-colour textures, each its own image at its own size with its full mip chain (texture
@@ -97,6 +99,7 @@ private:
         bool mirrored;
     };
     std::vector<Run> runs_;  // this frame's
+    std::vector<glm::mat4> restTransforms_;  // Scene::instances' transforms at rest (t = 0)
     vk::Buffer restInstances_;  // the instance table at rest, for graphs without a frame's "instances"
     std::vector<vk::Image> textures_;
     vk::Sampler sampler_;

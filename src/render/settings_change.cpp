@@ -51,6 +51,8 @@ std::vector<SettingsOption> makeTable() {
         option("--rsm-mode", kStructure, kPartGi, [](S s) { return s.rsm.mode; }),
         option("--rsm-weights", kFrame, kPartNone, [](S s) { return s.rsm.weights; }),
         option("--rsm-vpls", kFrame, kPartNone, [](S s) { return s.rsm.bilinearVpls; }),
+        option("--gi-temporal", kStructure, kPartCamera, [](S s) { return s.giTemporal; }),
+        option("--gi-temporal-alpha", kFrame, kPartNone, [](S s) { return s.giTemporalAlpha; }),
         option("--rsm-lowres", kSizes, kPartGi, [](S s) { return s.rsm.lowResFactor; }),
         option("--rsm-per-cascade", kStructure, kPartGi, [](S s) { return s.rsm.perCascade; }),
         option("--lpv-res", kSizes, kPartGi, [](S s) { return s.lpv.resolution; }),

@@ -44,9 +44,13 @@ ShellResult shell(const std::string& command, const fs::path& dir) {
     return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
 }
 
+// Under scripts/sanitize.sh the sanitizer runtime is preloaded for penumbra alone
+// (PENUMBRA_SANITIZE_PRELOAD): preloaded into xvfb-run and its X server, LeakSanitizer fails them.
 std::string viewCommand(const fs::path& script, const std::string& extra = "") {
-    return std::string("xvfb-run -a -s '-screen 0 640x480x24' ") + PENUMBRA_BIN + " view --validate --script " +
-           script.string() + " " + extra;
+    const char* preload = std::getenv("PENUMBRA_SANITIZE_PRELOAD");
+    const std::string xvfb = preload ? "env -u LD_PRELOAD xvfb-run" : "xvfb-run";
+    const std::string bin = preload ? "env LD_PRELOAD='" + std::string(preload) + "' " + PENUMBRA_BIN : PENUMBRA_BIN;
+    return xvfb + " -a -s '-screen 0 640x480x24' " + bin + " view --validate --script " + script.string() + " " + extra;
 }
 
 fs::path scratch(const std::string& name) {
