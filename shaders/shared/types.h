@@ -46,6 +46,9 @@ using uint = uint32_t;
 // Slots of the material texture table (render/material_textures.glsl, SceneGpu): with a pass's own
 // sampled images within lavapipe's 32 per stage (SceneGpu::checkTextureTable says why).
 #define MATERIAL_TEXTURE_SLOTS 28
+// A material's texture handle: slot | layer << TEXTURE_LAYER_SHIFT (each slot is a 2D array of one size).
+#define TEXTURE_LAYER_SHIFT 5
+#define TEXTURE_SLOT_MASK 31u
 #define NO_SHADOW (-1.0)
 
 // Per-frame constants of the camera view.

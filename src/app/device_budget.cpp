@@ -8,6 +8,7 @@
 
 #include <fmt/format.h>
 
+#include "app/option_checks.h"
 #include "lpv/lpv.h"
 #include "render/scene_gpu.h"
 #include "render/texture_upload.h"
@@ -191,10 +192,10 @@ std::vector<Demand> frameDemands(const RenderSettings& s, const Scene& scene, co
     const uint64_t vertices = scene.vertices.size() * sizeof(Vertex), indices = scene.indices.size() * 4;
     d.push_back({"", 0, 0, "the scene's vertices", [=](uint64_t) { return vertices; }, true});
     d.push_back({"", 0, 0, "the scene's indices", [=](uint64_t) { return indices; }, true});
-    for (size_t i = 0; i < scene.textures.size(); ++i) {  // each its own image with its mip chain
-        const uint64_t bytes = mipChainBytes(scene.textures[i].width, scene.textures[i].height);
-        d.push_back({"", 0, 0, fmt::format("the scene's texture {} ({}x{} and its mips)", i, scene.textures[i].width,
-                                           scene.textures[i].height),
+    for (const TextureSlot& slot : planTextureTable(scene.textures).slots) {  // an array per size
+        const uint64_t bytes = mipChainBytes(slot.width, slot.height) * slot.textures.size();
+        d.push_back({"", 0, 0, fmt::format("the scene's {} ({}x{} and their mips)",
+                                           plural(slot.textures.size(), "texture"), slot.width, slot.height),
                      [=](uint64_t) { return bytes; }});
     }
     return d;
@@ -207,7 +208,7 @@ uint64_t hairBytesPerStrand() {
 }
 
 void checkDeviceBudget(const vk::DeviceLimits& limits, const RenderSettings& settings, const Scene& scene) {
-    SceneGpu::checkTextureTable(scene.textures.size(), limits);
+    SceneGpu::checkTextureTable(limits);
     const LayerCounts layers = layerCounts(settings, scene);
     checkDimensions(limits, settings, layers);
     checkEach(limits, frameDemands(settings, scene, layers));

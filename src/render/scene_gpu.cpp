@@ -13,7 +13,8 @@ namespace penumbra {
 SceneGpu::SceneGpu(vk::CommandContext& cmd, const Scene& scene)
     : scene_(scene), ctx_(cmd.allocator().context()) {
     if (scene.indices.empty() && scene.strands.empty()) throw vk::VulkanError("scene has no triangles");
-    checkTextureTable(scene.textures.size(), ctx_.limits());
+    checkTextureTable(ctx_.limits());
+    texturePlan_ = planTextureTable(scene.textures);
     // Visibility IDs are 32-bit: triangle + 1, 0 meaning nothing drawn (render/visibility.glsl).
     if (scene.indices.size() / 3 >= 0xFFFFFFFFull)
         throw vk::VulkanError("scene has more triangles than 32-bit visibility IDs can name");
@@ -34,7 +35,7 @@ SceneGpu::SceneGpu(vk::CommandContext& cmd, const Scene& scene)
         gpu::GpuMaterial g{};
         g.baseColor = m.baseColor;
         const bool hasTexture = m.baseColorTexture >= 0 && size_t(m.baseColorTexture) < scene.textures.size();
-        g.info = {hasTexture ? uint32_t(m.baseColorTexture) : NO_TEXTURE, uint32_t(m.alphaMode),
+        g.info = {hasTexture ? texturePlan_.handles[m.baseColorTexture] : NO_TEXTURE, uint32_t(m.alphaMode),
                   m.doubleSided ? 1u : 0u, 0u};
         g.params = {m.alphaCutoff, 0, 0, 0};
         mats.push_back(g);
@@ -105,11 +106,7 @@ std::vector<VkDescriptorSetLayout> SceneGpu::drawLayouts(vk::Context& ctx, VkDes
     return {set0, textureTableLayout(ctx)};
 }
 
-void SceneGpu::checkTextureTable(size_t textureCount, const vk::DeviceLimits& limits) {
-    if (textureCount > MATERIAL_TEXTURE_SLOTS)
-        throw std::invalid_argument(fmt::format("the scene has {} base-colour textures; the material texture table "
-                                                "holds {} (MATERIAL_TEXTURE_SLOTS)",
-                                                textureCount, MATERIAL_TEXTURE_SLOTS));
+void SceneGpu::checkTextureTable(const vk::DeviceLimits& limits) {
     if (limits.sampledImagesPerStage < MATERIAL_TEXTURE_SLOTS + kPassSampledImages)
         throw std::invalid_argument(fmt::format("the device allows {} sampled images per shader stage; the material "
                                                 "texture table needs {} plus {} for a pass's own",
@@ -119,7 +116,7 @@ void SceneGpu::checkTextureTable(size_t textureCount, const vk::DeviceLimits& li
 
 VkDeviceSize SceneGpu::textureBytes() const {
     VkDeviceSize bytes = 0;
-    for (size_t i = 0; i < scene_.textures.size(); ++i) bytes += textures_[i].bytes();
+    for (size_t i = 0; i < texturePlan_.slots.size(); ++i) bytes += textures_[i].bytes();
     return bytes;
 }
 
@@ -180,11 +177,11 @@ void SceneGpu::declareTriangles(PassBuilder& pass) {
 }
 
 void SceneGpu::uploadTextures(vk::CommandContext& cmd) {
-    // Each texture at its own size, its mips blitted on the GPU (render/texture_upload.h).
-    for (size_t i = 0; i < scene_.textures.size(); ++i)
-        textures_.push_back(uploadTexture(cmd, scene_.textures[i], "material-texture"));
-    const Texture white{1, 1, {255, 255, 255, 255}};
-    textures_.push_back(uploadTexture(cmd, white, "material-texture-unused"));
+    // Each slot an array of one size, its mips blitted on the GPU (render/texture_upload.h).
+    for (const TextureSlot& slot : texturePlan_.slots)
+        textures_.push_back(uploadTextureSlot(cmd, scene_.textures, slot, "material-textures"));
+    const std::vector<Texture> white{{1, 1, {255, 255, 255, 255}}};
+    textures_.push_back(uploadTextureSlot(cmd, white, {1, 1, {0}}, "material-textures-unused"));
     sampler_ = vk::Sampler(ctx_, {VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT, false, true});
     textureTable_ = vk::DescriptorSet(ctx_, textureTableBindings());
     vk::DescriptorWrites writes;

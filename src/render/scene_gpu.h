@@ -1,11 +1,13 @@
 // The scene's GPU copy: every mesh's vertices and indices (uploaded once), the material table and its
-// textures (each at its own size, in a texture table bound as set 1). Shared, read-only, by every pass that draws the scene (G-buffer, shadow maps, RSM, DSM).
+// textures (at their own sizes, in a texture table bound as set 1). Shared, read-only, by every pass
+// that draws the scene (G-buffer, shadow maps, RSM, DSM).
 // Meshes are drawn per instance (Scene::instances); the instances' transforms are per-frame data in
 // the frame graph's "instances" buffer (GpuInstance, written by the Renderer).
 #pragma once
 #include <vector>
 
 #include "render/frame_graph.h"
+#include "render/texture_upload.h"
 #include "scene/scene.h"
 #include "shared/types.h"
 #include "vk/commands.h"
@@ -32,16 +34,17 @@ public:
     const std::vector<glm::mat4>& restTransforms() const { return restTransforms_; }
     // The frame's instance transforms decide the cull mode of mirrored instances (set before recording).
     void setFrameInstances(const std::vector<glm::mat4>& transforms);
-    // The base-colour textures, each its own image at its own size with its full mip chain (texture
-    // i of the scene is textures()[i]; a last 1x1 white one fills the table's unused slots). Sampled
-    // through the texture table, set 1 of every pipeline that draws the scene
-    // (render/material_textures.glsl).
+    // The base-colour textures at their own sizes with their full mip chains: one 2D array per size
+    // (texturePlan() says which texture is in which slot and layer; a last 1x1 white array fills the
+    // table's unused slots). Sampled through the texture table, set 1 of every pipeline that draws
+    // the scene (render/material_textures.glsl).
     const std::vector<vk::Image>& textures() const { return textures_; }
+    const TextureTablePlan& texturePlan() const { return texturePlan_; }
     // GPU memory of the textures' images (the scene's, without the white filler).
     VkDeviceSize textureBytes() const;
-    // A scene's texture count against the table's MATERIAL_TEXTURE_SLOTS and the device's sampled
-    // images per stage (the table plus a pass's own); throws std::invalid_argument naming both.
-    static void checkTextureTable(size_t textureCount, const vk::DeviceLimits& limits);
+    // The table's MATERIAL_TEXTURE_SLOTS plus a pass's own sampled images against the device's per
+    // stage; throws std::invalid_argument naming both.
+    static void checkTextureTable(const vk::DeviceLimits& limits);
     // Set 0 of the pipelines that draw the scene: views and materials (bindings 0-1) and the frame's
     // instance table (SCENE_INSTANCES_BINDING, the graph's "instances"); a pass may declare more
     // bindings of its own. Set 1: the texture table. Both are bound by declareDrawSet.
@@ -101,6 +104,7 @@ private:
     std::vector<Run> runs_;  // this frame's
     std::vector<glm::mat4> restTransforms_;  // Scene::instances' transforms at rest (t = 0)
     vk::Buffer restInstances_;  // the instance table at rest, for graphs without a frame's "instances"
+    TextureTablePlan texturePlan_;
     std::vector<vk::Image> textures_;
     vk::Sampler sampler_;
     vk::DescriptorSet textureTable_;
