@@ -340,13 +340,14 @@ struct RasterTriangle {
     vec4 uOverW;     // planes of u/w, v/w and 1/w (perspective-correct uv): value at origin, d/dx, d/dy
     vec4 vOverW;
     vec4 invW;
+    uvec4 ids;       // x = visibility ID (drawn triangle + 1), y = ID layer + 1 (0: a depth-only layer), zw unused
 };
 
 // One layer the compute rasterizer draws (a host-written table: every layer of every light it
 // draws is one row of the setup dispatch).
 struct RasterLayer {
     uvec4 info;      // x = views row, y = target layer, z = 1: alphaMode BLEND casters are skipped (a deep
-                     // shadow map takes them), w unused
+                     // shadow map takes them), w = ID layer + 1 (0: depth only; else depth and visibility IDs)
 };
 
 // Push constants of the compute rasterizer's passes.
