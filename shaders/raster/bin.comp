@@ -12,13 +12,14 @@ layout(local_size_x = RASTER_BIN_GROUP) in;
 layout(push_constant) uniform Push { RasterPush push; };
 
 void main() {
-    const int res = int(push.target.x), bits = int(push.target.y);
+    const ivec2 size = ivec2(push.target.x, push.capacity.w);
+    const int bits = int(push.target.y);
     const uint count = min(counters.counts.x, push.capacity.x);
     for (uint r = gl_WorkGroupID.x; r < count; r += gl_NumWorkGroups.x) {
         const RasterTriangle t = records[r];
         if (t.origin.w < 0.0) continue;  // no entries: its setup thread rasterized it
         const uint first = uint(t.origin.w);
-        const Edges e = edgesOf(t, bits, res);
+        const Edges e = edgesOf(t, bits, size);
         const ivec4 tiles = ivec4(e.bbox.xy / RASTER_TILE_SIZE, e.bbox.zw / RASTER_TILE_SIZE);
         const int w = tiles.z - tiles.x + 1;
         const uint n = uint(w * (tiles.w - tiles.y + 1));

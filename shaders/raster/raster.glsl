@@ -40,7 +40,7 @@ int64_t edgeBias(ivec2 d) {
     return int64_t(topLeft ? 0 : -1);
 }
 
-Edges makeEdges(ivec2 v0, ivec2 v1, ivec2 v2, int subpixelBits, int resolution) {
+Edges makeEdges(ivec2 v0, ivec2 v1, ivec2 v2, int subpixelBits, ivec2 size) {
     Edges e;
     e.a[0] = i64vec2(v0); e.a[1] = i64vec2(v1); e.a[2] = i64vec2(v2);
     e.d[0] = i64vec2(v1 - v0); e.d[1] = i64vec2(v2 - v1); e.d[2] = i64vec2(v0 - v2);
@@ -50,7 +50,7 @@ Edges makeEdges(ivec2 v0, ivec2 v1, ivec2 v2, int subpixelBits, int resolution) 
     const ivec2 lo = min(v0, min(v1, v2)), hi = max(v0, max(v1, v2));
     const ivec2 first = (lo - centre + (one - 1)) >> subpixelBits;  // arithmetic shift: floor division
     const ivec2 last = (hi - centre) >> subpixelBits;
-    e.bbox = ivec4(max(first, ivec2(0)), min(last, ivec2(resolution - 1)));
+    e.bbox = ivec4(max(first, ivec2(0)), min(last, size - 1));
     return e;
 }
 
@@ -64,9 +64,9 @@ bool covers(Edges e, ivec2 p, int subpixelBits) {
     return true;
 }
 
-Edges edgesOf(RasterTriangle t, int subpixelBits, int resolution) {
+Edges edgesOf(RasterTriangle t, int subpixelBits, ivec2 size) {
     const ivec4 xy01 = ivec4(t.xy01);
-    return makeEdges(xy01.xy, xy01.zw, ivec2(t.xy2.xy), subpixelBits, resolution);
+    return makeEdges(xy01.xy, xy01.zw, ivec2(t.xy2.xy), subpixelBits, size);
 }
 
 // Tiles: all tiles of the triangle's box that no edge excludes (an edge excludes a tile when it is
@@ -109,26 +109,26 @@ bool alphaDiscarded(RasterTriangle t, vec2 offset) {
 }
 
 // Depth test and write of one covered sample.
-void shadeSample(RasterTriangle t, ivec2 p, int resolution) {
+void shadeSample(RasterTriangle t, ivec2 p, ivec2 size) {
     const vec2 offset = vec2(p) + 0.5 - t.origin.xy;
     float z = clamp(planeAt(t.depth, offset) + t.depth.w, 0.0, 1.0);
     const uint bits = floatBitsToUint(z) & 0x7FFFFFFFu;  // -0 -> +0
     if (t.ids.y != 0u) {
-        const uint index = ((t.ids.y - 1u) * uint(resolution) + uint(p.y)) * uint(resolution) + uint(p.x);
+        const uint index = ((t.ids.y - 1u) * uint(size.y) + uint(p.y)) * uint(size.x) + uint(p.x);
         if (bits >= uint(depthIds[index] >> 32)) return;  // cleared above 1.0: the far plane writes too
         if (t.origin.z != 0.0 && alphaDiscarded(t, offset)) return;
         atomicMin(depthIds[index], uint64_t(bits) << 32 | uint64_t(t.ids.x));
         return;
     }
-    const uint index = (t.xy2.z * uint(resolution) + uint(p.y)) * uint(resolution) + uint(p.x);
+    const uint index = (t.xy2.z * uint(size.y) + uint(p.y)) * uint(size.x) + uint(p.x);
     if (bits >= depthBits[index]) return;  // cheap early reject before the atomic and the texture
     if (t.origin.z != 0.0 && alphaDiscarded(t, offset)) return;
     atomicMin(depthBits[index], bits);
 }
 
 // Every covered sample of `t` inside the pixel rectangle r (inclusive).
-void rasterizeRect(RasterTriangle t, Edges e, ivec4 r, int subpixelBits, int resolution) {
+void rasterizeRect(RasterTriangle t, Edges e, ivec4 r, int subpixelBits, ivec2 size) {
     for (int y = r.y; y <= r.w; ++y)
         for (int x = r.x; x <= r.z; ++x)
-            if (covers(e, ivec2(x, y), subpixelBits)) shadeSample(t, ivec2(x, y), resolution);
+            if (covers(e, ivec2(x, y), subpixelBits)) shadeSample(t, ivec2(x, y), size);
 }

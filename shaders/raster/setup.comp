@@ -56,7 +56,7 @@ uint outcode(vec4 c) {
 }
 
 // Window position (x, y in pixels, z = depth) of a clip-space vertex: the viewport transform.
-vec3 toWindow(vec4 c, float halfSize) {
+vec3 toWindow(vec4 c, vec2 halfSize) {
     const vec3 ndc = c.xyz / c.w;
     return vec3(ndc.xy * halfSize + halfSize, ndc.z);
 }
@@ -94,18 +94,22 @@ bool bin(RasterTriangle t, Edges e) {
 // One triangle of the clipped polygon, in clip space.
 void emitTriangle(ClipVertex c0, ClipVertex c1, ClipVertex c2, uint layer, uint material, bool singleSided,
                   bool alphaTested, uvec2 ids) {
-    const int res = int(push.target.x), bits = int(push.target.y);
-    const float halfSize = 0.5 * float(res), one = float(1 << bits);
+    const ivec2 size = ivec2(push.target.x, push.capacity.w);
+    const int bits = int(push.target.y);
+    const vec2 halfSize = 0.5 * vec2(size);
+    const float one = float(1 << bits);
     vec3 w0 = toWindow(c0.position, halfSize), w1 = toWindow(c1.position, halfSize), w2 = toWindow(c2.position, halfSize);
     ivec2 s0 = ivec2(roundEven(w0.xy * one)), s1 = ivec2(roundEven(w1.xy * one)), s2 = ivec2(roundEven(w2.xy * one));
     const int64_t area = int64_t(s1.x - s0.x) * int64_t(s2.y - s0.y) - int64_t(s1.y - s0.y) * int64_t(s2.x - s0.x);
-    if (area == 0l || (area < 0l && singleSided)) return;  // empty, or a back face (fronts are clockwise)
+    // Fronts are clockwise in light views, counter-clockwise where the projection flips y (the camera).
+    const bool back = push.bias.z != 0.0 ? area > 0l : area < 0l;
+    if (area == 0l || (back && singleSided)) return;  // empty, or a culled back face
     if (area < 0l) {  // a double-sided back face: reorder to the positive winding the edges expect
         ClipVertex ct = c1; c1 = c2; c2 = ct;
         vec3 wt = w1; w1 = w2; w2 = wt;
         ivec2 st = s1; s1 = s2; s2 = st;
     }
-    const Edges e = makeEdges(s0, s1, s2, bits, res);
+    const Edges e = makeEdges(s0, s1, s2, bits, size);
     if (e.bbox.x > e.bbox.z || e.bbox.y > e.bbox.w) return;
     const float det = (w1.x - w0.x) * (w2.y - w0.y) - (w2.x - w0.x) * (w1.y - w0.y);
     if (det == 0.0) return;
@@ -125,7 +129,7 @@ void emitTriangle(ClipVertex c0, ClipVertex c1, ClipVertex c2, uint layer, uint 
     const bool small = e.bbox.z - e.bbox.x < smallExtent && e.bbox.w - e.bbox.y < smallExtent;
     if (small || !bin(t, e)) {
         if (!small) atomicAdd(counters.counts.z, 1u);
-        rasterizeRect(t, e, e.bbox, bits, res);
+        rasterizeRect(t, e, e.bbox, bits, size);
     }
 }
 

@@ -352,9 +352,10 @@ struct RasterLayer {
 
 // Push constants of the compute rasterizer's passes.
 struct RasterPush {
-    uvec4 target;    // x = resolution, y = subpixel precision bits, z = triangle count, w = layer count
-    uvec4 capacity;  // x = triangle records, y = tile entries, z = small-triangle extent (pixels), w unused
-    vec4 bias;       // x = constant factor, y = slope factor, zw unused
+    uvec4 target;    // x = width, y = subpixel precision bits, z = triangle count, w = layer count
+    uvec4 capacity;  // x = triangle records, y = tile entries, z = small-triangle extent (pixels), w = height
+    vec4 bias;       // x = constant factor, y = slope factor, z = 1: fronts counter-clockwise (a y-flipped
+                     // projection: the camera), w unused
 };
 
 // Counters of one frame's binning (cleared before setup).

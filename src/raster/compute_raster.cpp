@@ -17,8 +17,8 @@ uint32_t recordCapacityFor(uint64_t triangles, uint32_t layers) {
 // Tile entries: 8 per record, and at least 16 times every layer's tiles, so that a few triangles as
 // large as a layer (a ground plane under a cascade) do not fill the list: a triangle rasterized by its
 // setup thread instead costs a whole layer's texels in one thread. Capped at 64 MiB.
-uint32_t entryCapacityFor(uint32_t records, uint32_t resolution, uint32_t layers) {
-    const uint64_t tiles = uint64_t(vk::divUp(resolution, RASTER_TILE_SIZE)) * vk::divUp(resolution, RASTER_TILE_SIZE);
+uint32_t entryCapacityFor(uint32_t records, VkExtent2D size, uint32_t layers) {
+    const uint64_t tiles = uint64_t(vk::divUp(size.width, RASTER_TILE_SIZE)) * vk::divUp(size.height, RASTER_TILE_SIZE);
     return uint32_t(std::min<uint64_t>(std::max<uint64_t>(uint64_t(records) * 8, tiles * layers * 16), 1u << 23));
 }
 
@@ -26,14 +26,15 @@ uint32_t entryCapacityFor(uint32_t records, uint32_t resolution, uint32_t layers
 
 }  // namespace
 
-ComputeRaster::ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, uint32_t resolution, uint32_t layers)
+ComputeRaster::ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, VkExtent2D size, uint32_t layers, Views kind)
     : alloc_(alloc),
       scene_(scene),
-      resolution_(resolution),
+      size_(size),
+      kind_(kind),
       layers_(std::max(layers, 1u)),
       subpixelBits_(alloc.context().properties().limits.subPixelPrecisionBits),
       recordCapacity_(recordCapacityFor(scene.drawnTriangleCount(), layers_)),
-      entryCapacity_(entryCapacityFor(recordCapacity_, resolution, layers_)) {
+      entryCapacity_(entryCapacityFor(recordCapacity_, size, layers_)) {
     vk::Context& ctx = alloc.context();
     const uint32_t pushBytes = sizeof(gpu::RasterPush);
     // The scene's draw set (bindings 0-1 and the instance table; set 1 its texture table); 3-6: depth, records, tile entries,
@@ -47,12 +48,12 @@ ComputeRaster::ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, uint32_t res
     for (uint32_t b = 7; b <= 11; ++b) setup.push_back({b, kBuffer});  // vertices, indices, materials, layers, drawn triangles
     setup_ = vk::ComputeKernel(ctx, "raster/setup.comp", setup, pushBytes, table);
     args_ = vk::ComputeKernel(ctx, "raster/args.comp", {kBuffer, kBuffer}, pushBytes);
-    idSplit_ = vk::ComputeKernel(ctx, "raster/ids.comp", {kBuffer, kBuffer, kBuffer, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
-                                 pushBytes);
+    idSplit_ = vk::ComputeKernel(ctx, kind == Views::Camera ? "raster/ids_2d.comp" : "raster/ids.comp",
+                                 {kBuffer, kBuffer, kBuffer, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, pushBytes);
 
     const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     const VkBufferUsageFlags transfer = VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
-    const VkDeviceSize texels = VkDeviceSize(resolution) * resolution * layers_;
+    const VkDeviceSize texels = layerTexels() * layers_;
     depth_ = vk::Buffer(alloc, texels * 4, storage | transfer, false, "raster-depth");
     records_ = vk::Buffer(alloc, VkDeviceSize(recordCapacity_) * sizeof(gpu::RasterTriangle), storage, false,
                           "raster-triangles");
@@ -77,7 +78,7 @@ void ComputeRaster::setViews(const std::vector<RasterViews>& views, uint32_t slo
     if (rows.size() > layers_) throw std::invalid_argument("compute raster: more layers than it was made for");
     // Grown when a technique asks for more ID layers (a settings change: the renderer has waited for
     // the frames in flight); one unused element while none is drawn.
-    const VkDeviceSize idBytes = std::max<VkDeviceSize>(VkDeviceSize(resolution_) * resolution_ * idLayers_ * 8, 8);
+    const VkDeviceSize idBytes = std::max<VkDeviceSize>(layerTexels() * idLayers_ * 8, 8);
     if (!depthIds_ || depthIds_.size() < idBytes)
         depthIds_ = vk::Buffer(alloc_, idBytes,
                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, false,
@@ -89,9 +90,9 @@ void ComputeRaster::setViews(const std::vector<RasterViews>& views, uint32_t slo
 
 gpu::RasterPush ComputeRaster::push(RasterBias bias) const {
     const uint32_t triangles = scene_.drawnTriangleCount();
-    return {{resolution_, subpixelBits_, triangles, layerRows_},
-            {recordCapacity_, entryCapacity_, RASTER_SMALL_EXTENT, 0u},
-            {bias.constant, bias.slope, 0.0f, 0.0f}};
+    return {{size_.width, subpixelBits_, triangles, layerRows_},
+            {recordCapacity_, entryCapacity_, RASTER_SMALL_EXTENT, size_.height},
+            {bias.constant, bias.slope, kind_ == Views::Camera ? 1.0f : 0.0f, 0.0f}};
 }
 
 void ComputeRaster::addSetup(FrameGraph& graph, const std::string& name, BufferHandle viewRows,
@@ -132,7 +133,7 @@ void ComputeRaster::addTo(FrameGraph& graph, const std::string& name, ImageHandl
             vkCmdFillBuffer(c.cmd, counters_.handle(), 0, VK_WHOLE_SIZE, 0u);
             // Just above 1.0 in the high half (a triangle at 1.0 still writes its ID: the hardware's
             // test is LESS_OR_EQUAL), which the split pass reads as far and no ID.
-            const VkDeviceSize idBytes = VkDeviceSize(resolution_) * resolution_ * idLayers_ * 8;
+            const VkDeviceSize idBytes = layerTexels() * idLayers_ * 8;
             if (idBytes) vkCmdFillBuffer(c.cmd, depthIds_.handle(), 0, idBytes, 0x3F800001u);
         });
     if (layerRows_ == 0) return;
@@ -167,15 +168,15 @@ void ComputeRaster::addTo(FrameGraph& graph, const std::string& name, ImageHandl
     graph.pass(name + ".resolve", PassKind::Transfer)
         .use(depth, Use::TransferSrc)
         .use(target, Use::TransferDst)
-        .bytes(VkDeviceSize(resolution_) * resolution_ * layerRows_ * 8)
+        .bytes(layerTexels() * layerRows_ * 8)
         .record([this, target](PassContext& c) {
             std::vector<VkBufferImageCopy> regions;
-            const VkDeviceSize layerBytes = VkDeviceSize(resolution_) * resolution_ * 4;
+            const VkDeviceSize layerBytes = layerTexels() * 4;
             for (const RasterViews& v : views_) {
                 VkBufferImageCopy r{};
                 r.bufferOffset = layerBytes * v.firstLayer;
                 r.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, v.firstLayer, v.layerCount};
-                r.imageExtent = {resolution_, resolution_, 1};
+                r.imageExtent = {size_.width, size_.height, 1};
                 if (v.layerCount) regions.push_back(r);
             }
             vkCmdCopyBufferToImage(c.cmd, depth_.handle(), c.image(target).handle(),
@@ -190,10 +191,10 @@ void ComputeRaster::addIdSplit(FrameGraph& graph, const std::string& name, Image
         .storageBuffer(1, graph.import(depthIds_), Use::StorageRead)
         .storageBuffer(2, graph.import(layerTable_.current()))
         .storageImage(3, ids)
-        .bytes(VkDeviceSize(resolution_) * resolution_ * idLayers_ * 16)
+        .bytes(layerTexels() * idLayers_ * 16)
         .record([this, p](PassContext& c) {
             idSplit_.pipeline.push(c.cmd, p);
-            vkCmdDispatch(c.cmd, vk::divUp(resolution_, 8), vk::divUp(resolution_, 8), layerRows_);
+            vkCmdDispatch(c.cmd, vk::divUp(size_.width, 8), vk::divUp(size_.height, 8), layerRows_);
         });
 }
 

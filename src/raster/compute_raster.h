@@ -41,10 +41,15 @@ struct RasterBias {
 
 class ComputeRaster {
 public:
-    // Targets of `resolution`^2 texels with up to `layers` layers.
-    ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, uint32_t resolution, uint32_t layers);
-    // Per frame: the layers to draw into this frame slot's table.
+    // What it draws: light layers (y up, fronts clockwise, an array of ID layers), or the camera's
+    // view (a y-flipped projection, fronts counter-clockwise: SceneGpu::sceneFrontFace; a 2D ID image).
+    enum class Views { Light, Camera };
+    // Targets of `size` texels with up to `layers` layers.
+    ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, VkExtent2D size, uint32_t layers, Views kind = Views::Light);
+    // Per frame: the layers to draw into this frame slot's table (selects the slot).
     void setViews(const std::vector<RasterViews>& views, uint32_t slot);
+    // Per frame, for views that never change (set in every slot once): this frame's slot.
+    void select(uint32_t slot) { layerTable_.select(slot); }
     // The passes (see above) drawing the views set for this frame with the "views" rows of `views`
     // into `target` (D32_SFLOAT array, TRANSFER_DST) and, for views with ID layers, `ids` (R32_UINT
     // array, storage); `name` prefixes the pass names.
@@ -62,7 +67,10 @@ private:
     void addIdSplit(FrameGraph& graph, const std::string& name, ImageHandle ids, const gpu::RasterPush& p);
     vk::Allocator& alloc_;
     SceneGpu& scene_;
-    uint32_t resolution_, layers_, subpixelBits_;
+    VkDeviceSize layerTexels() const { return VkDeviceSize(size_.width) * size_.height; }
+    VkExtent2D size_;
+    Views kind_;
+    uint32_t layers_, subpixelBits_;
     uint32_t recordCapacity_, entryCapacity_;
     vk::ComputeKernel setup_, bin_, tiles_, args_, idSplit_;
     vk::Buffer depth_, records_, entries_, counters_, dispatchArgs_;

@@ -1,6 +1,8 @@
 #include "render/frame_techniques.h"
 #include <algorithm>
 
+#include "raster/raster_mode.h"
+
 namespace penumbra {
 namespace {
 
@@ -35,7 +37,8 @@ std::vector<RsmLayerSource> rsmLayersOf(const ShadowMapPass& shadow, bool widest
 
 CameraTechnique::CameraTechnique(vk::Allocator& alloc, GpuScene& scene, const RenderSettings& s,
                                  VkDescriptorSetLayout drawLayout)
-    : gbuffer_(alloc, scene.meshes(), s.width, s.height, drawLayout, s.cameraPath, !s.translucency) {
+    : gbuffer_(alloc, scene.meshes(), s.width, s.height, drawLayout, s.cameraPath, !s.translucency,
+               computeRasterFor(s.shadow.raster, alloc.context().properties())) {
     if (s.translucency) {
         translucency_ = std::make_unique<CameraTranslucency>(alloc, scene.meshes(), scene.hair(), s.width, s.height);
         if (!translucency_->active()) translucency_.reset();
@@ -45,7 +48,7 @@ CameraTechnique::CameraTechnique(vk::Allocator& alloc, GpuScene& scene, const Re
 }
 
 void CameraTechnique::addPasses(const FrameContext& f) {
-    gbuffer_.addTo(f.graph);
+    gbuffer_.addTo(f.graph, f.slot);
     const RibbonView view = cameraRibbonView(f.camera.eye, f.uniforms.lens.x);
     if (hair_) hair_->addTo(f.graph, view);
     if (translucency_) translucency_->addBuildTo(f.graph, view);

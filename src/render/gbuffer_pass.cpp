@@ -5,7 +5,7 @@
 namespace penumbra {
 
 GBufferPass::GBufferPass(vk::Allocator& alloc, SceneGpu& scene, uint32_t width, uint32_t height,
-                         VkDescriptorSetLayout drawLayout, CameraPath path, bool drawBlended)
+                         VkDescriptorSetLayout drawLayout, CameraPath path, bool drawBlended, bool computeRaster)
     : alloc_(alloc), scene_(scene), path_(path), drawBlended_(drawBlended) {
     vk::Context& ctx = alloc.context();
     const bool visibility = path == CameraPath::Visibility;
@@ -18,7 +18,7 @@ GBufferPass::GBufferPass(vk::Allocator& alloc, SceneGpu& scene, uint32_t width, 
     normal = vk::Image(alloc, {VK_FORMAT_R16G16B16A16_SFLOAT, width, height, 1, target, "gbuffer-normal"});
     depth = vk::Image(alloc, {VK_FORMAT_D32_SFLOAT, width, height, 1,
                               VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
-                                  VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                                  VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                               "gbuffer-depth"});
     vk::GraphicsDesc d;
     d.vertexShader = "render/scene.vert";
@@ -35,8 +35,15 @@ GBufferPass::GBufferPass(vk::Allocator& alloc, SceneGpu& scene, uint32_t width, 
     }
     ids = vk::Image(alloc, {VK_FORMAT_R32_UINT, width, height, 1,
                             VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
-                                VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                                VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_STORAGE_BIT,
                             "gbuffer-ids"});
+    if (computeRaster) {
+        compute_ = std::make_unique<ComputeRaster>(alloc, scene, VkExtent2D{width, height}, 1,
+                                                   ComputeRaster::Views::Camera);
+        // One layer, the camera's row of "views" (0), with IDs; blended materials as the raster's filter.
+        for (uint32_t slot = 0; slot < vk::kMaxFramesInFlight; ++slot)
+            compute_->setViews({{0, 0, 1, !drawBlended, 0}}, slot);
+    }
     d.colorFormats = {ids.format()};
     pipeline_ = vk::Pipeline::graphics(ctx, d, SceneGpu::drawLayouts(ctx, drawLayout), sizeof(gpu::DrawPush));
     d.fragmentShader = "render/visibility_masked.frag";
@@ -53,12 +60,12 @@ GBufferPass::GBufferPass(vk::Allocator& alloc, SceneGpu& scene, uint32_t width, 
     nearest_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
 }
 
-void GBufferPass::addTo(FrameGraph& graph) {
+void GBufferPass::addTo(FrameGraph& graph, uint32_t slot) {
     const ImageHandle a = graph.import(albedo), n = graph.import(normal), d = graph.import(depth);
     graph.publish("gbuffer.albedo", a);
     graph.publish("gbuffer.normal", n);
     graph.publish("gbuffer.depth", d);
-    if (path_ == CameraPath::Visibility) return addVisibility(graph, a, n, d);
+    if (path_ == CameraPath::Visibility) return addVisibility(graph, a, n, d, slot);
     PassBuilder pass = graph.pass("gbuffer", PassKind::Raster);
     pass.pipeline(pipeline_).use(a, Use::ColorAttachment).use(n, Use::ColorAttachment).use(d, Use::DepthAttachment);
     scene_.declareDrawSet(pass, graph.buffer("views"));
@@ -74,9 +81,19 @@ void GBufferPass::addTo(FrameGraph& graph) {
     });
 }
 
-void GBufferPass::addVisibility(FrameGraph& graph, ImageHandle a, ImageHandle n, ImageHandle d) {
+void GBufferPass::addVisibility(FrameGraph& graph, ImageHandle a, ImageHandle n, ImageHandle d, uint32_t slot) {
     const ImageHandle id = graph.import(ids);
     graph.publish("gbuffer.ids", id);
+    if (compute_) {
+        compute_->select(slot);
+        compute_->addTo(graph, "visibility", d, graph.buffer("views"), {}, id);
+    } else {
+        addVisibilityRaster(graph, id, d);
+    }
+    addResolve(graph, a, n, id);
+}
+
+void GBufferPass::addVisibilityRaster(FrameGraph& graph, ImageHandle id, ImageHandle d) {
     PassBuilder raster = graph.pass("visibility", PassKind::Raster);
     raster.pipeline(pipeline_).use(id, Use::ColorAttachment).use(d, Use::DepthAttachment);
     scene_.declareDrawSet(raster, graph.buffer("views"));
@@ -97,6 +114,9 @@ void GBufferPass::addVisibility(FrameGraph& graph, ImageHandle a, ImageHandle n,
             [this](const Material& m) { return drawBlended_ || m.alphaMode != AlphaMode::Blend; });
         vkCmdEndRendering(c.cmd);
     });
+}
+
+void GBufferPass::addResolve(FrameGraph& graph, ImageHandle a, ImageHandle n, ImageHandle id) {
     const uint32_t w = albedo.width(), h = albedo.height();
     PassBuilder resolve = graph.pass("visibility.resolve");
     resolve.pipeline(resolve_);

@@ -5,8 +5,12 @@
 //               (RGBA16F) and normal from the ID (render/visibility_resolve.comp; texture level of
 //               detail from the neighbouring pixels' rays, as the raster's 2x2 quads take it).
 // Each colour target a raster pass writes costs fill rate on GPUs whose raster path is narrow
-// (issue 14); the visibility path writes one 32-bit target.
+// (issue 14); the visibility path writes one 32-bit target, or none: with `computeRaster` the
+// compute rasterizer (src/raster) writes depth and ID with 64-bit atomics instead of the hardware.
 #pragma once
+#include <memory>
+
+#include "raster/compute_raster.h"
 #include "render/frame_graph.h"
 #include "render/render_settings.h"
 #include "render/scene_gpu.h"
@@ -17,16 +21,18 @@ class GBufferPass {
 public:
     // `drawBlended`: alphaMode BLEND materials are drawn opaque (no camera translucency).
     GBufferPass(vk::Allocator& alloc, SceneGpu& scene, uint32_t width, uint32_t height,
-                VkDescriptorSetLayout drawLayout, CameraPath path, bool drawBlended = true);
+                VkDescriptorSetLayout drawLayout, CameraPath path, bool drawBlended = true, bool computeRaster = false);
     // Reads "views" (and "frame"); publishes "gbuffer.albedo", "gbuffer.normal", "gbuffer.depth"
-    // (and "gbuffer.ids" on the visibility path).
-    void addTo(FrameGraph& graph);
+    // (and "gbuffer.ids" on the visibility path). `slot`: the frame in flight.
+    void addTo(FrameGraph& graph, uint32_t slot = 0);
     CameraPath path() const { return path_; }
 
     vk::Image albedo, normal, depth, ids;
 
 private:
-    void addVisibility(FrameGraph& graph, ImageHandle a, ImageHandle n, ImageHandle d);
+    void addVisibility(FrameGraph& graph, ImageHandle a, ImageHandle n, ImageHandle d, uint32_t slot);
+    void addVisibilityRaster(FrameGraph& graph, ImageHandle id, ImageHandle d);
+    void addResolve(FrameGraph& graph, ImageHandle a, ImageHandle n, ImageHandle id);
     vk::Allocator& alloc_;
     SceneGpu& scene_;
     CameraPath path_;
@@ -35,6 +41,7 @@ private:
     vk::DescriptorLayout resolveLayout_;
     vk::Pipeline resolve_;
     vk::Sampler nearest_;
+    std::unique_ptr<ComputeRaster> compute_;  // the visibility raster in compute (null: the hardware's)
 };
 
 }  // namespace penumbra

@@ -42,7 +42,7 @@ std::vector<SettingsOption> makeTable() {
         option("--csm-blend", kFrame, kPartNone, [](S s) { return s.shadow.cascades.blend; }),
         option("--csm-distance", kFrame, kPartNone, [](S s) { return s.shadow.cascades.distance; }),
         option("--point-shadow", kStructure, shadowSized, [](S s) { return s.shadow.pointMode; }),
-        option("--raster", kStructure, kPartShadow, [](S s) { return s.shadow.raster; }),
+        option("--raster", kStructure, kPartShadow | kPartCamera, [](S s) { return s.shadow.raster; }),
         option("--gi", kStructure, kPartGi, [](S s) { return s.gi; }),
         option("--rsm-res", kSizes, kPartGi, [](S s) { return s.rsm.resolution; }),
         option("--rsm-samples", kFrame, kPartNone, [](S s) { return s.rsm.samples; }),
