@@ -24,19 +24,9 @@ layout(push_constant) uniform Push { LpvPush pc; };
 
 #include "lpv/sh.glsl"
 #include "lpv/volume.glsl"
+#include "lpv/subgroup_add.glsl"
 
 const float PI = 3.14159265358979;
-
-// coeffs added at coefficient `base` of `volume`: once per subgroup where every active invocation
-// adds to the same cell.
-#define ADD_COEFFS(volume, base, coeffs)                                              \
-    if (subgroupAllEqual(base)) {                                                     \
-        vec4 sum = subgroupAdd(coeffs);                                               \
-        if (subgroupElect())                                                          \
-            for (uint j = 0; j < 4u; ++j) atomicAdd(volume[base + j], sum[j]);        \
-    } else {                                                                          \
-        for (uint j = 0; j < 4u; ++j) atomicAdd(volume[base + j], coeffs[j]);         \
-    }
 
 void main() {
     uint i = gl_GlobalInvocationID.x;
