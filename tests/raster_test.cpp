@@ -252,6 +252,53 @@ TEST_F(RasterSceneTest, VcShadowsEqualTheHardware) {
     expectSameShadows(scene, camera, "VC", false);
 }
 
+// The RSM's shadow layers drawn with visibility IDs (render/visibility.glsl) by both rasterizers:
+// the hardware's depth + R32_UINT pass and the compute rasterizer's 64-bit depth << 32 | ID. Where
+// both cover, the same triangle; coverage within 0.01% (the depth-only rule above).
+TEST_F(RasterSceneTest, VisibilityIdsEqualTheHardware) {
+    Camera vcCamera;
+    Scene vc = vcScene(vcCamera);
+    Light sun;  // the sun of the GI suite's view (a cascade with an RSM)
+    sun.direction = glm::normalize(glm::vec3(0.1f, -1.0f, 0.2f));
+    sun.intensity = 3.0f;
+    if (!vc.indices.empty()) vc.lights = {sun};
+    const Scene cornell = makeBuiltinScene("cornell");
+    for (const Scene* scene : {&cornell, const_cast<const Scene*>(&vc)}) {
+        if (scene->indices.empty()) continue;  // no ../shared/assets
+        const Camera camera = scene == &vc ? vcCamera : cornell.cameras[0];
+        std::vector<std::vector<uint32_t>> ids[2];
+        for (RasterMode mode : {RasterMode::Hardware, RasterMode::Compute}) {
+            RenderSettings s = sceneSettings(mode, 64, 48);
+            s.gi = GiMode::Rsm;
+            Renderer r(ctx(), *scene, s);
+            r.render(camera);
+            vk::Image& image = r.shadow().ids();
+            ASSERT_GT(image.layers(), 0u);
+            for (uint32_t k = 0; k < image.layers(); ++k) {
+                const std::vector<uint8_t> bytes = r.commands().readImage(image, 4, k);
+                ids[mode == RasterMode::Compute].push_back(std::vector<uint32_t>(bytes.size() / 4));
+                std::memcpy(ids[mode == RasterMode::Compute].back().data(), bytes.data(), bytes.size());
+            }
+        }
+        ASSERT_EQ(ids[0].size(), ids[1].size());
+        for (size_t k = 0; k < ids[0].size(); ++k) {
+            size_t coverage = 0, triangle = 0, covered = 0;
+            for (size_t t = 0; t < ids[0][k].size(); ++t) {
+                const uint32_t h = ids[0][k][t], c = ids[1][k][t];
+                coverage += (h == 0) != (c == 0);
+                covered += h != 0 && c != 0;
+                triangle += h != 0 && c != 0 && h != c;
+            }
+            const size_t texels = ids[0][k].size();
+            std::printf("[ raster ] %s ID layer %zu: %zu covered by both, coverage differs on %zu, the triangle on %zu of %zu texels\n",
+                        scene == &vc ? "VC" : "cornell", k, covered, coverage, triangle, texels);
+            EXPECT_GT(covered, texels / 4);
+            EXPECT_LE(coverage, texels / 10000);
+            EXPECT_LE(triangle, texels / 10000);
+        }
+    }
+}
+
 TEST_F(RasterSceneTest, DISABLED_VcDepthWithin1e6) {
     Camera camera;
     const Scene scene = vcScene(camera);

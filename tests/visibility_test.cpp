@@ -127,67 +127,73 @@ TEST_F(VisibilityTest, VcAlbedoWithinAPercentileBound) {
 // by Embree through every RSM texel's centre: the same surface (depth within 1e-5 of the depth range,
 // normal within 2e-3, flux = albedo * E * A within 1% from the CPU) on all texels but those whose
 // nearest ID texel holds a neighbouring triangle (edges: at most 2%).
+// Both rasterizers give the IDs: the hardware's depth + R32_UINT pass and the compute rasterizer's
+// 64-bit depth << 32 | ID.
 TEST_F(VisibilityTest, CornellRsmEqualsRaysFromTheLight) {
     const Scene scene = makeBuiltinScene("cornell");
-    RenderSettings s;
-    s.width = 64;
-    s.height = 48;
-    s.gi = GiMode::Rsm;
-    s.rsm.resolution = 128;
-    s.shadow.resolution = 256;
-    Renderer r(ctx(), scene, s);
-    r.render(scene.cameras[0]);
-    RsmPass& rsm = *r.rsm();
-    ASSERT_EQ(rsm.layerCount(), 1u);
-    const uint32_t res = rsm.settings().resolution;
-    const gpu::GpuRsmLayer layer = rsm.layerTable().as<gpu::GpuRsmLayer>()[0];
-    const auto rd = r.commands().readImage(rsm.depth(), 4), rn = r.commands().readImage(rsm.normal(), 4),
-               rf = r.commands().readImage(rsm.flux(), 8);
-    const reference::RayScene rays(scene);
-    const glm::dmat4 inv(layer.invViewProj), vp(layer.viewProj);
-    const Light& light = scene.lights[0];
-    size_t hits = 0, differ = 0, bothEmpty = 0;
-    for (uint32_t t = 0; t < res * res; ++t) {
-        const double u = (t % res + 0.5) / res * 2.0 - 1.0, v = (t / res + 0.5) / res * 2.0 - 1.0;
-        const glm::dvec4 a = inv * glm::dvec4(u, v, 0.0, 1.0), b = inv * glm::dvec4(u, v, 1.0, 1.0);
-        const dvec3 o = dvec3(a) / a.w, dir = glm::normalize(dvec3(b) / b.w - o);
-        const auto hit = rays.intersect(glm::vec3(o), glm::vec3(dir), 0.0f, 1e30f);
-        const float depth = f32(rd, t);
-        if (!hit) {
-            bothEmpty += depth >= 1.0f;
-            differ += depth < 1.0f;
-            continue;
+    for (RasterMode mode : {RasterMode::Hardware, RasterMode::Compute}) {
+        RenderSettings s;
+        s.shadow.raster = mode;
+        s.width = 64;
+        s.height = 48;
+        s.gi = GiMode::Rsm;
+        s.rsm.resolution = 128;
+        s.shadow.resolution = 256;
+        Renderer r(ctx(), scene, s);
+        r.render(scene.cameras[0]);
+        RsmPass& rsm = *r.rsm();
+        ASSERT_EQ(rsm.layerCount(), 1u);
+        const uint32_t res = rsm.settings().resolution;
+        const gpu::GpuRsmLayer layer = rsm.layerTable().as<gpu::GpuRsmLayer>()[0];
+        const auto rd = r.commands().readImage(rsm.depth(), 4), rn = r.commands().readImage(rsm.normal(), 4),
+                   rf = r.commands().readImage(rsm.flux(), 8);
+        const reference::RayScene rays(scene);
+        const glm::dmat4 inv(layer.invViewProj), vp(layer.viewProj);
+        const Light& light = scene.lights[0];
+        size_t hits = 0, differ = 0, bothEmpty = 0;
+        for (uint32_t t = 0; t < res * res; ++t) {
+            const double u = (t % res + 0.5) / res * 2.0 - 1.0, v = (t / res + 0.5) / res * 2.0 - 1.0;
+            const glm::dvec4 a = inv * glm::dvec4(u, v, 0.0, 1.0), b = inv * glm::dvec4(u, v, 1.0, 1.0);
+            const dvec3 o = dvec3(a) / a.w, dir = glm::normalize(dvec3(b) / b.w - o);
+            const auto hit = rays.intersect(glm::vec3(o), glm::vec3(dir), 0.0f, 1e30f);
+            const float depth = f32(rd, t);
+            if (!hit) {
+                bothEmpty += depth >= 1.0f;
+                differ += depth < 1.0f;
+                continue;
+            }
+            ++hits;
+            const reference::SurfacePoint sp = rays.surface(*hit, glm::vec3(dir));
+            const glm::dvec4 clip = vp * glm::dvec4(dvec3(sp.position), 1.0);
+            int16_t e[2];
+            std::memcpy(e, rn.data() + t * 4, 4);
+            const glm::vec2 enc(std::max(e[0] / 32767.0f, -1.0f), std::max(e[1] / 32767.0f, -1.0f));
+            glm::vec3 n(enc.x, enc.y, 1.0f - std::abs(enc.x) - std::abs(enc.y));
+            const float k = std::max(-n.z, 0.0f);
+            n.x += n.x >= 0.0f ? -k : k;
+            n.y += n.y >= 0.0f ? -k : k;
+            n = glm::normalize(n);
+            // Expected flux: albedo * I / d^2 * cone * t^2 z^2 cos(a) (rsm/resolve.comp's footprint).
+            const dvec3 toLight = dvec3(light.position) - dvec3(sp.position);
+            const double d2 = glm::dot(toLight, toLight), z = clip.w;
+            const double cosAxis = glm::dot(-glm::normalize(toLight), dvec3(glm::normalize(light.direction)));
+            const double cosOuter = std::cos(double(light.outerConeAngle)), cosInner = std::cos(double(light.innerConeAngle));
+            const double cone = std::pow(std::clamp((cosAxis - cosOuter) / (cosInner - cosOuter), 0.0, 1.0), 2.0);
+            const double texel = layer.params.x;
+            const double area = texel * texel * z * z * std::clamp(z / std::sqrt(d2), 0.0, 1.0);
+            const dvec3 flux = dvec3(sp.albedo) * dvec3(light.color) * double(light.intensity) / d2 * cone * area;
+            const dvec3 got(half(rf, t * 4), half(rf, t * 4 + 1), half(rf, t * 4 + 2));
+            const bool same = std::abs(depth - clip.z / clip.w) <= 1e-5 &&
+                              glm::length(glm::dvec3(n) - glm::dvec3(sp.shadingNormal)) <= 2e-3 &&
+                              glm::length(got - flux) <= 0.01 * glm::length(flux) + 1e-7;
+            differ += !same;
         }
-        ++hits;
-        const reference::SurfacePoint sp = rays.surface(*hit, glm::vec3(dir));
-        const glm::dvec4 clip = vp * glm::dvec4(dvec3(sp.position), 1.0);
-        int16_t e[2];
-        std::memcpy(e, rn.data() + t * 4, 4);
-        const glm::vec2 enc(std::max(e[0] / 32767.0f, -1.0f), std::max(e[1] / 32767.0f, -1.0f));
-        glm::vec3 n(enc.x, enc.y, 1.0f - std::abs(enc.x) - std::abs(enc.y));
-        const float k = std::max(-n.z, 0.0f);
-        n.x += n.x >= 0.0f ? -k : k;
-        n.y += n.y >= 0.0f ? -k : k;
-        n = glm::normalize(n);
-        // Expected flux: albedo * I / d^2 * cone * t^2 z^2 cos(a) (rsm/resolve.comp's footprint).
-        const dvec3 toLight = dvec3(light.position) - dvec3(sp.position);
-        const double d2 = glm::dot(toLight, toLight), z = clip.w;
-        const double cosAxis = glm::dot(-glm::normalize(toLight), dvec3(glm::normalize(light.direction)));
-        const double cosOuter = std::cos(double(light.outerConeAngle)), cosInner = std::cos(double(light.innerConeAngle));
-        const double cone = std::pow(std::clamp((cosAxis - cosOuter) / (cosInner - cosOuter), 0.0, 1.0), 2.0);
-        const double texel = layer.params.x;
-        const double area = texel * texel * z * z * std::clamp(z / std::sqrt(d2), 0.0, 1.0);
-        const dvec3 flux = dvec3(sp.albedo) * dvec3(light.color) * double(light.intensity) / d2 * cone * area;
-        const dvec3 got(half(rf, t * 4), half(rf, t * 4 + 1), half(rf, t * 4 + 2));
-        const bool same = std::abs(depth - clip.z / clip.w) <= 1e-5 &&
-                          glm::length(glm::dvec3(n) - glm::dvec3(sp.shadingNormal)) <= 2e-3 &&
-                          glm::length(got - flux) <= 0.01 * glm::length(flux) + 1e-7;
-        differ += !same;
+        std::printf("[ visibility ] RSM %u^2 (%s raster): %zu texels hit, %zu empty in both, %zu differ from the rays\n",
+                    res, mode == RasterMode::Compute ? "compute" : "hardware", hits, bothEmpty, differ);
+        if (mode == RasterMode::Compute) EXPECT_NE(r.shadow().computeRaster(), nullptr);
+        EXPECT_GT(hits, size_t(res) * res / 4);
+        EXPECT_LE(differ, size_t(res) * res / 50);
     }
-    std::printf("[ visibility ] RSM %u^2: %zu texels hit, %zu empty in both, %zu differ from the rays\n", res, hits,
-                bothEmpty, differ);
-    EXPECT_GT(hits, size_t(res) * res / 4);
-    EXPECT_LE(differ, size_t(res) * res / 50);
 }
 
 }  // namespace

@@ -9,16 +9,20 @@
 //  - alpha-masked casters sample the base-colour alpha (perspective-correct uv, analytic gradients
 //    for the texture LOD) and drop samples below the material's cutoff.
 // The depth test is a 32-bit atomicMin on the float bits: depths in [0, 1] order like their bits.
+// Layers with visibility IDs (an RSM's) test a 64-bit atomicMin of depth bits << 32 | ID instead, so
+// depth and ID of the nearest triangle land together (ties: the smaller ID).
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+#extension GL_EXT_shader_atomic_int64 : require
 
-// Set 0 starts like the scene's draw set (render/scene_gpu.h): views, materials, textures.
+// Set 0 starts like the scene's draw set (render/scene_gpu.h): views, materials; set 1: the textures.
 layout(set = 0, binding = 0, std430) readonly buffer Views { mat4 viewProj[]; } views;
 layout(set = 0, binding = 1, std430) readonly buffer Materials { GpuMaterial materials[]; };
-layout(set = 0, binding = 2) uniform sampler2DArray materialTextures;
+#include "render/material_textures.glsl"
 layout(set = 0, binding = 3, std430) buffer Depth { uint depthBits[]; };
 layout(set = 0, binding = 4, std430) buffer Records { RasterTriangle records[]; };
 layout(set = 0, binding = 5, std430) buffer TileEntries { uvec2 tileEntries[]; };
 layout(set = 0, binding = 6, std430) buffer Counters { RasterCounters counters; };
+layout(set = 0, binding = 16, std430) buffer DepthIds { uint64_t depthIds[]; };  // per texel of the ID layers
 
 // Edge functions of a triangle with positive area: E_i(p) = d_i x (p - a_i) > 0 inside.
 struct Edges {
@@ -99,7 +103,7 @@ bool alphaDiscarded(RasterTriangle t, vec2 offset) {
         // d(uvw / iw) = (d uvw - uv d iw) / iw
         const vec2 dx = (vec2(t.uOverW.y, t.vOverW.y) - uv * t.invW.y) / iw;
         const vec2 dy = (vec2(t.uOverW.z, t.vOverW.z) - uv * t.invW.z) / iw;
-        alpha *= textureGrad(materialTextures, vec3(uv, float(m.info.x)), dx, dy).a;
+        alpha *= materialTextureGrad(m.info.x, uv, dx, dy).a;
     }
     return alpha < m.params.x;
 }
@@ -109,6 +113,13 @@ void shadeSample(RasterTriangle t, ivec2 p, int resolution) {
     const vec2 offset = vec2(p) + 0.5 - t.origin.xy;
     float z = clamp(planeAt(t.depth, offset) + t.depth.w, 0.0, 1.0);
     const uint bits = floatBitsToUint(z) & 0x7FFFFFFFu;  // -0 -> +0
+    if (t.ids.y != 0u) {
+        const uint index = ((t.ids.y - 1u) * uint(resolution) + uint(p.y)) * uint(resolution) + uint(p.x);
+        if (bits >= uint(depthIds[index] >> 32)) return;  // cleared above 1.0: the far plane writes too
+        if (t.origin.z != 0.0 && alphaDiscarded(t, offset)) return;
+        atomicMin(depthIds[index], uint64_t(bits) << 32 | uint64_t(t.ids.x));
+        return;
+    }
     const uint index = (t.xy2.z * uint(resolution) + uint(p.y)) * uint(resolution) + uint(p.x);
     if (bits >= depthBits[index]) return;  // cheap early reject before the atomic and the texture
     if (t.origin.z != 0.0 && alphaDiscarded(t, offset)) return;

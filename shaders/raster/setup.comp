@@ -93,7 +93,7 @@ bool bin(RasterTriangle t, Edges e) {
 
 // One triangle of the clipped polygon, in clip space.
 void emitTriangle(ClipVertex c0, ClipVertex c1, ClipVertex c2, uint layer, uint material, bool singleSided,
-                  bool alphaTested) {
+                  bool alphaTested, uvec2 ids) {
     const int res = int(push.target.x), bits = int(push.target.y);
     const float halfSize = 0.5 * float(res), one = float(1 << bits);
     vec3 w0 = toWindow(c0.position, halfSize), w1 = toWindow(c1.position, halfSize), w2 = toWindow(c2.position, halfSize);
@@ -120,6 +120,7 @@ void emitTriangle(ClipVertex c0, ClipVertex c1, ClipVertex c2, uint layer, uint 
     t.invW = plane(iw, w0.xy, w1.xy, w2.xy, invDet);
     t.uOverW = plane(vec3(c0.uv.x, c1.uv.x, c2.uv.x) * iw, w0.xy, w1.xy, w2.xy, invDet);
     t.vOverW = plane(vec3(c0.uv.y, c1.uv.y, c2.uv.y) * iw, w0.xy, w1.xy, w2.xy, invDet);
+    t.ids = uvec4(ids, 0u, 0u);
     const int smallExtent = int(push.capacity.z);
     const bool small = e.bbox.z - e.bbox.x < smallExtent && e.bbox.w - e.bbox.y < smallExtent;
     if (small || !bin(t, e)) {
@@ -133,7 +134,8 @@ ClipVertex lerpVertex(ClipVertex a, ClipVertex b, float t) {
 }
 
 // Sutherland-Hodgman against the planes in `planes`, then a fan of triangles.
-void clipAndEmit(ClipVertex v[3], uint planes, uint layer, uint material, bool singleSided, bool alphaTested) {
+void clipAndEmit(ClipVertex v[3], uint planes, uint layer, uint material, bool singleSided, bool alphaTested,
+                 uvec2 ids) {
     ClipVertex poly[kMaxPolygon], next[kMaxPolygon];
     int n = 3;
     for (int i = 0; i < 3; ++i) poly[i] = v[i];
@@ -149,7 +151,8 @@ void clipAndEmit(ClipVertex v[3], uint planes, uint layer, uint material, bool s
         n = m;
         for (int i = 0; i < n; ++i) poly[i] = next[i];
     }
-    for (int i = 1; i + 1 < n; ++i) emitTriangle(poly[0], poly[i], poly[i + 1], layer, material, singleSided, alphaTested);
+    for (int i = 1; i + 1 < n; ++i)
+        emitTriangle(poly[0], poly[i], poly[i + 1], layer, material, singleSided, alphaTested, ids);
 }
 
 void setupTriangle(uint drawn, RasterLayer target) {
@@ -166,10 +169,11 @@ void setupTriangle(uint drawn, RasterLayer target) {
     if ((c0 & c1 & c2) != 0u) return;  // entirely outside one plane
     const uint layer = target.info.y;
     const bool singleSided = m.info.z == 0u, alphaTested = m.info.y == ALPHA_MASK;
+    const uvec2 ids = uvec2(drawn + 1u, target.info.w);  // the visibility ID (render/visibility.glsl)
     if ((c0 | c1 | c2) == 0u)
-        emitTriangle(v[0], v[1], v[2], layer, material, singleSided, alphaTested);
+        emitTriangle(v[0], v[1], v[2], layer, material, singleSided, alphaTested, ids);
     else
-        clipAndEmit(v, c0 | c1 | c2, layer, material, singleSided, alphaTested);
+        clipAndEmit(v, c0 | c1 | c2, layer, material, singleSided, alphaTested, ids);
 }
 
 void main() {

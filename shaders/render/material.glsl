@@ -1,11 +1,11 @@
 // Material lookup shared by the fragment shaders that draw the scene.
 layout(set = 0, binding = 1, std430) readonly buffer Materials { GpuMaterial materials[]; };
-layout(set = 0, binding = 2) uniform sampler2DArray materialTextures;
+#include "render/material_textures.glsl"
 
 vec4 baseColor(uint index, vec2 uv) {
     GpuMaterial m = materials[index];
     vec4 c = m.baseColor;
-    if (m.info.x != NO_TEXTURE) c *= texture(materialTextures, vec3(uv, float(m.info.x)));
+    if (m.info.x != NO_TEXTURE) c *= materialTexture(m.info.x, uv);
     return c;
 }
 
@@ -18,6 +18,6 @@ bool alphaDiscarded(uint index, float alpha) {
 vec4 baseColorGrad(uint index, vec2 uv, vec2 dx, vec2 dy) {
     GpuMaterial m = materials[index];
     vec4 c = m.baseColor;
-    if (m.info.x != NO_TEXTURE) c *= textureGrad(materialTextures, vec3(uv, float(m.info.x)), dx, dy);
+    if (m.info.x != NO_TEXTURE) c *= materialTextureGrad(m.info.x, uv, dx, dy);
     return c;
 }

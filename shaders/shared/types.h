@@ -43,6 +43,12 @@ using uint = uint32_t;
 #define ALPHA_BLEND 2
 
 #define NO_TEXTURE 0xFFFFFFFFu
+// Slots of the material texture table (render/material_textures.glsl, SceneGpu): with a pass's own
+// sampled images within lavapipe's 32 per stage (SceneGpu::checkTextureTable says why).
+#define MATERIAL_TEXTURE_SLOTS 28
+// A material's texture handle: slot | layer << TEXTURE_LAYER_SHIFT (each slot is a 2D array of one size).
+#define TEXTURE_LAYER_SHIFT 5
+#define TEXTURE_SLOT_MASK 31u
 #define NO_SHADOW (-1.0)
 
 // Per-frame constants of the camera view.
@@ -334,13 +340,14 @@ struct RasterTriangle {
     vec4 uOverW;     // planes of u/w, v/w and 1/w (perspective-correct uv): value at origin, d/dx, d/dy
     vec4 vOverW;
     vec4 invW;
+    uvec4 ids;       // x = visibility ID (drawn triangle + 1), y = ID layer + 1 (0: a depth-only layer), zw unused
 };
 
 // One layer the compute rasterizer draws (a host-written table: every layer of every light it
 // draws is one row of the setup dispatch).
 struct RasterLayer {
     uvec4 info;      // x = views row, y = target layer, z = 1: alphaMode BLEND casters are skipped (a deep
-                     // shadow map takes them), w unused
+                     // shadow map takes them), w = ID layer + 1 (0: depth only; else depth and visibility IDs)
 };
 
 // Push constants of the compute rasterizer's passes.

@@ -8,7 +8,10 @@
 
 #include <fmt/format.h>
 
+#include "app/option_checks.h"
 #include "lpv/lpv.h"
+#include "render/scene_gpu.h"
+#include "render/texture_upload.h"
 #include "shadow/shadow_layout.h"
 
 namespace penumbra {
@@ -189,6 +192,12 @@ std::vector<Demand> frameDemands(const RenderSettings& s, const Scene& scene, co
     const uint64_t vertices = scene.vertices.size() * sizeof(Vertex), indices = scene.indices.size() * 4;
     d.push_back({"", 0, 0, "the scene's vertices", [=](uint64_t) { return vertices; }, true});
     d.push_back({"", 0, 0, "the scene's indices", [=](uint64_t) { return indices; }, true});
+    for (const TextureSlot& slot : planTextureTable(scene.textures).slots) {  // an array per size
+        const uint64_t bytes = mipChainBytes(slot.width, slot.height) * slot.textures.size();
+        d.push_back({"", 0, 0, fmt::format("the scene's {} ({}x{} and their mips)",
+                                           plural(slot.textures.size(), "texture"), slot.width, slot.height),
+                     [=](uint64_t) { return bytes; }});
+    }
     return d;
 }
 
@@ -199,6 +208,7 @@ uint64_t hairBytesPerStrand() {
 }
 
 void checkDeviceBudget(const vk::DeviceLimits& limits, const RenderSettings& settings, const Scene& scene) {
+    SceneGpu::checkTextureTable(limits);
     const LayerCounts layers = layerCounts(settings, scene);
     checkDimensions(limits, settings, layers);
     checkEach(limits, frameDemands(settings, scene, layers));

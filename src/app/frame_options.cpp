@@ -8,6 +8,7 @@
 #include "app/cli_parse.h"
 #include "app/option_checks.h"
 #include "app/shadow_cli.h"
+#include "render/texture_upload.h"
 
 namespace penumbra {
 namespace {
@@ -171,6 +172,8 @@ PreparedFrame prepareFrame(const FrameOptions& o, RenderSettings& settings) {
     PreparedFrame f;
     f.scene = loadScene(o.scene, o.builtin);
     for (const std::string& w : f.scene.warnings) fmt::print(stderr, "penumbra: warning: {}\n", w);
+    if (const std::string w = planTextureTable(f.scene.textures).warning(); !w.empty())
+        fmt::print(stderr, "penumbra: warning: {}\n", w);
     f.scene.lights = frameLights(o, f.scene);
     f.camera = frameCamera(o, f.scene);
     SceneMotion(f.scene, f.camera, f.scene.lights, o.motion, o.animation);  // --animation N exists, paths fit

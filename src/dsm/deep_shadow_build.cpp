@@ -8,7 +8,7 @@ DeepShadowBuildPass::DeepShadowBuildPass(vk::Allocator& alloc, SceneGpu& scene, 
                                          DsmResources& res, bool depthTest)
     : alloc_(alloc), scene_(scene), hair_(hair), res_(res), depthTest_(depthTest) {
     for (const Material& m : scene.scene().materials) hasBlended_ |= m.alphaMode == AlphaMode::Blend;
-    // Set 0: the scene's draw set (views = the DSM views, materials, textures), the hair buffers,
+    // Set 0: the scene's draw set (views = the DSM views, materials; set 1 the textures), the hair buffers,
     std::vector<vk::Binding> b = SceneGpu::drawSetBindings();
     for (const vk::Binding& h : HairGpu::bindings()) b.push_back(h);
     // then heads, nodes and counters, and for the depth test the lights, the shadow lights and layers
@@ -19,7 +19,7 @@ DeepShadowBuildPass::DeepShadowBuildPass(vk::Allocator& alloc, SceneGpu& scene, 
     vk::Context& ctx = alloc.context();
     layout_ = vk::DescriptorLayout(ctx, b);
     if (hair) {
-        hairPipeline_ = vk::Pipeline::graphics(ctx, HairGpu::pipelineDesc("dsm/build_hair.frag"), {layout_.handle()},
+        hairPipeline_ = vk::Pipeline::graphics(ctx, HairGpu::pipelineDesc("dsm/build_hair.frag"), SceneGpu::drawLayouts(ctx, layout_.handle()),
                                                sizeof(gpu::HairDrawPush));
     }
     if (hasBlended_) {
@@ -30,7 +30,7 @@ DeepShadowBuildPass::DeepShadowBuildPass(vk::Allocator& alloc, SceneGpu& scene, 
         d.vertexAttributes = SceneGpu::vertexAttributes();
         d.dynamicCullMode = true;  // single-sided blended surfaces cast only from their front
         d.frontFace = SceneGpu::sceneFrontFace(false);
-        meshPipeline_ = vk::Pipeline::graphics(ctx, d, {layout_.handle()}, sizeof(gpu::HairDrawPush));
+        meshPipeline_ = vk::Pipeline::graphics(ctx, d, SceneGpu::drawLayouts(ctx, layout_.handle()), sizeof(gpu::HairDrawPush));
     }
 }
 

@@ -34,7 +34,7 @@ CameraTranslucency::CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, co
     normals_ = vk::Buffer(alloc, capacity_ * 4, usage, false, "oit-normals");
     stats_ = vk::Buffer(alloc, sizeof(gpu::OitStats), usage, false, "oit-stats");
 
-    // Build set: the scene's draw set (0-2), the hair buffers (3, 4), heads, nodes, normals, counters
+    // Build set: the scene's draw set (0, 1 and the instances; set 1 its textures), the hair buffers (3, 4), heads, nodes, normals, counters
     // and the opaque depth (5-9).
     std::vector<vk::Binding> b = SceneGpu::drawSetBindings();
     for (const vk::Binding& h : HairGpu::bindings()) b.push_back(h);
@@ -43,7 +43,7 @@ CameraTranslucency::CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, co
     buildLayout_ = vk::DescriptorLayout(ctx, b);
     if (hair_)
         hairPipeline_ = vk::Pipeline::graphics(ctx, HairGpu::pipelineDesc("dsm/oit_hair.frag"),
-                                               {buildLayout_.handle()}, sizeof(gpu::HairDrawPush));
+                                               SceneGpu::drawLayouts(ctx, buildLayout_.handle()), sizeof(gpu::HairDrawPush));
     if (hasBlended_) {
         vk::GraphicsDesc d;
         d.vertexShader = "render/scene.vert";
@@ -52,7 +52,7 @@ CameraTranslucency::CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, co
         d.vertexAttributes = SceneGpu::vertexAttributes();
         d.dynamicCullMode = true;  // single-sided blended surfaces are invisible from behind
         d.frontFace = SceneGpu::sceneFrontFace(true);
-        meshPipeline_ = vk::Pipeline::graphics(ctx, d, {buildLayout_.handle()}, sizeof(gpu::HairDrawPush));
+        meshPipeline_ = vk::Pipeline::graphics(ctx, d, SceneGpu::drawLayouts(ctx, buildLayout_.handle()), sizeof(gpu::HairDrawPush));
     }
 
     const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;

@@ -27,7 +27,8 @@ uint32_t entryCapacityFor(uint32_t records, uint32_t resolution, uint32_t layers
 }  // namespace
 
 ComputeRaster::ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, uint32_t resolution, uint32_t layers)
-    : scene_(scene),
+    : alloc_(alloc),
+      scene_(scene),
       resolution_(resolution),
       layers_(std::max(layers, 1u)),
       subpixelBits_(alloc.context().properties().limits.subPixelPrecisionBits),
@@ -35,16 +36,19 @@ ComputeRaster::ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, uint32_t res
       entryCapacity_(entryCapacityFor(recordCapacity_, resolution, layers_)) {
     vk::Context& ctx = alloc.context();
     const uint32_t pushBytes = sizeof(gpu::RasterPush);
-    // The scene's draw set (bindings 0-2 and the instance table); 3-6: depth, records, tile entries,
+    // The scene's draw set (bindings 0-1 and the instance table; set 1 its texture table); 3-6: depth, records, tile entries,
     // counters (raster.glsl).
     std::vector<vk::Binding> tiles = SceneGpu::drawSetBindings();
-    for (uint32_t b = 3; b <= 6; ++b) tiles.push_back({b, kBuffer});
-    tiles_ = vk::ComputeKernel(ctx, "raster/tiles.comp", tiles, pushBytes);
-    bin_ = vk::ComputeKernel(ctx, "raster/bin.comp", tiles, pushBytes);
+    for (uint32_t b : {3u, 4u, 5u, 6u, 16u}) tiles.push_back({b, kBuffer});  // 16: depth << 32 | ID
+    const std::vector<VkDescriptorSetLayout> table{SceneGpu::textureTableLayout(ctx)};
+    tiles_ = vk::ComputeKernel(ctx, "raster/tiles.comp", tiles, pushBytes, table);
+    bin_ = vk::ComputeKernel(ctx, "raster/bin.comp", tiles, pushBytes, table);
     std::vector<vk::Binding> setup = tiles;
     for (uint32_t b = 7; b <= 11; ++b) setup.push_back({b, kBuffer});  // vertices, indices, materials, layers, drawn triangles
-    setup_ = vk::ComputeKernel(ctx, "raster/setup.comp", setup, pushBytes);
+    setup_ = vk::ComputeKernel(ctx, "raster/setup.comp", setup, pushBytes, table);
     args_ = vk::ComputeKernel(ctx, "raster/args.comp", {kBuffer, kBuffer}, pushBytes);
+    idSplit_ = vk::ComputeKernel(ctx, "raster/ids.comp", {kBuffer, kBuffer, kBuffer, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+                                 pushBytes);
 
     const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     const VkBufferUsageFlags transfer = VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
@@ -62,10 +66,22 @@ ComputeRaster::ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, uint32_t res
 void ComputeRaster::setViews(const std::vector<RasterViews>& views, uint32_t slot) {
     views_ = views;
     std::vector<gpu::RasterLayer> rows;
+    idLayers_ = 0;
     for (const RasterViews& v : views)
-        for (uint32_t k = 0; k < v.layerCount; ++k)
-            rows.push_back({{v.firstViewRow + k, v.firstLayer + k, v.skipBlended ? 1u : 0u, 0u}});
+        for (uint32_t k = 0; k < v.layerCount; ++k) {
+            const bool ids = v.firstIdLayer != RasterViews::kNoIds;
+            rows.push_back({{v.firstViewRow + k, v.firstLayer + k, v.skipBlended ? 1u : 0u,
+                             ids ? v.firstIdLayer + k + 1 : 0u}});
+            if (ids) idLayers_ = std::max(idLayers_, v.firstIdLayer + k + 1);
+        }
     if (rows.size() > layers_) throw std::invalid_argument("compute raster: more layers than it was made for");
+    // Grown when a technique asks for more ID layers (a settings change: the renderer has waited for
+    // the frames in flight); one unused element while none is drawn.
+    const VkDeviceSize idBytes = std::max<VkDeviceSize>(VkDeviceSize(resolution_) * resolution_ * idLayers_ * 8, 8);
+    if (!depthIds_ || depthIds_.size() < idBytes)
+        depthIds_ = vk::Buffer(alloc_, idBytes,
+                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, false,
+                               "raster-depth-ids");
     layerRows_ = uint32_t(rows.size());
     layerTable_.select(slot);
     if (!rows.empty()) layerTable_.write(rows.data(), rows.size() * sizeof(rows[0]));
@@ -85,6 +101,7 @@ void ComputeRaster::addSetup(FrameGraph& graph, const std::string& name, BufferH
     setup.pipeline(setup_.pipeline);
     scene_.declareDrawSet(setup, viewRows);
     setup.storageBuffer(3, depth, Use::StorageWrite)
+        .storageBuffer(16, graph.import(depthIds_), Use::StorageWrite)
         .storageBuffer(4, graph.import(records_), Use::StorageWrite)
         .storageBuffer(5, graph.import(entries_), Use::StorageWrite)
         .storageBuffer(6, counters, Use::StorageWrite)
@@ -101,16 +118,22 @@ void ComputeRaster::addSetup(FrameGraph& graph, const std::string& name, BufferH
 }
 
 void ComputeRaster::addTo(FrameGraph& graph, const std::string& name, ImageHandle target, BufferHandle viewRows,
-                          RasterBias bias) {
+                          RasterBias bias, ImageHandle ids) {
+    if (idLayers_ > 0 && !ids) throw std::invalid_argument("compute raster: views with ID layers but no ID image");
     const BufferHandle depth = graph.import(depth_), counters = graph.import(counters_),
                        args = graph.import(dispatchArgs_), records = graph.import(records_),
-                       entries = graph.import(entries_);
+                       entries = graph.import(entries_), depthIds = graph.import(depthIds_);
     graph.pass(name + ".clear", PassKind::Transfer)
         .use(depth, Use::TransferDst)
         .use(counters, Use::TransferDst)
+        .use(depthIds, Use::TransferDst)
         .record([this](PassContext& c) {
             vkCmdFillBuffer(c.cmd, depth_.handle(), 0, VK_WHOLE_SIZE, 0x3F800000u);  // 1.0f: far
             vkCmdFillBuffer(c.cmd, counters_.handle(), 0, VK_WHOLE_SIZE, 0u);
+            // Just above 1.0 in the high half (a triangle at 1.0 still writes its ID: the hardware's
+            // test is LESS_OR_EQUAL), which the split pass reads as far and no ID.
+            const VkDeviceSize idBytes = VkDeviceSize(resolution_) * resolution_ * idLayers_ * 8;
+            if (idBytes) vkCmdFillBuffer(c.cmd, depthIds_.handle(), 0, idBytes, 0x3F800001u);
         });
     if (layerRows_ == 0) return;
     const gpu::RasterPush p = push(bias);
@@ -130,6 +153,7 @@ void ComputeRaster::addTo(FrameGraph& graph, const std::string& name, ImageHandl
         pass.pipeline(k->pipeline);
         scene_.declareDrawSet(pass, viewRows);
         pass.storageBuffer(3, depth, binning ? Use::StorageRead : Use::StorageWrite)
+            .storageBuffer(16, depthIds, binning ? Use::StorageRead : Use::StorageWrite)
             .storageBuffer(4, records, Use::StorageRead)
             .storageBuffer(5, entries, binning ? Use::StorageWrite : Use::StorageRead)
             .storageBuffer(6, counters, Use::StorageRead)
@@ -139,6 +163,7 @@ void ComputeRaster::addTo(FrameGraph& graph, const std::string& name, ImageHandl
                 vkCmdDispatchIndirect(c.cmd, dispatchArgs_.handle(), binning ? sizeof(gpu::uvec4) : 0);
             });
     }
+    if (idLayers_ > 0) addIdSplit(graph, name, ids, p);
     graph.pass(name + ".resolve", PassKind::Transfer)
         .use(depth, Use::TransferSrc)
         .use(target, Use::TransferDst)
@@ -155,6 +180,20 @@ void ComputeRaster::addTo(FrameGraph& graph, const std::string& name, ImageHandl
             }
             vkCmdCopyBufferToImage(c.cmd, depth_.handle(), c.image(target).handle(),
                                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, uint32_t(regions.size()), regions.data());
+        });
+}
+
+void ComputeRaster::addIdSplit(FrameGraph& graph, const std::string& name, ImageHandle ids, const gpu::RasterPush& p) {
+    graph.pass(name + ".ids")
+        .pipeline(idSplit_.pipeline)
+        .storageBuffer(0, graph.import(depth_), Use::StorageWrite)
+        .storageBuffer(1, graph.import(depthIds_), Use::StorageRead)
+        .storageBuffer(2, graph.import(layerTable_.current()))
+        .storageImage(3, ids)
+        .bytes(VkDeviceSize(resolution_) * resolution_ * idLayers_ * 16)
+        .record([this, p](PassContext& c) {
+            idSplit_.pipeline.push(c.cmd, p);
+            vkCmdDispatch(c.cmd, vk::divUp(resolution_, 8), vk::divUp(resolution_, 8), layerRows_);
         });
 }
 

@@ -7,9 +7,11 @@
 //   <name>.args    the bin and tile passes' indirect dispatch sizes
 //   <name>.bin     one workgroup per large triangle: which tiles of its box its edges may cover
 //   <name>.tiles   one workgroup per (large triangle, tile) entry
+//   <name>.ids     layers with visibility IDs only: split depth << 32 | ID into depth and the ID image
 //   <name>.resolve copy of the depth buffer into the D32 target's layers (the filters read it as is)
 // Depth is a 32-bit atomicMin on the float bits in a storage buffer (depths in [0, 1] order like
-// their bits). When a bin list is full its triangle is rasterized by its setup thread: slower, never
+// their bits); layers with IDs (an RSM's, resolved from them) take a 64-bit atomicMin of
+// depth << 32 | ID, so one pass gives both, as the hardware's depth + R32_UINT colour pass does. When a bin list is full its triangle is rasterized by its setup thread: slower, never
 // wrong. See shaders/raster/*.comp; Laine & Karras (HPG 2011) for the binning, Nanite for the
 // small-triangle path.
 #pragma once
@@ -27,6 +29,9 @@ struct RasterViews {
     uint32_t firstLayer = 0;
     uint32_t layerCount = 0;
     bool skipBlended = false;  // alphaMode BLEND casters stay out (a deep shadow map takes them)
+    // Layer k of the run also writes visibility IDs into layer firstIdLayer + k of the ID image.
+    static constexpr uint32_t kNoIds = UINT32_MAX;
+    uint32_t firstIdLayer = kNoIds;
 };
 
 struct RasterBias {
@@ -41,8 +46,10 @@ public:
     // Per frame: the layers to draw into this frame slot's table.
     void setViews(const std::vector<RasterViews>& views, uint32_t slot);
     // The passes (see above) drawing the views set for this frame with the "views" rows of `views`
-    // into `target` (D32_SFLOAT array, TRANSFER_DST); `name` prefixes the pass names.
-    void addTo(FrameGraph& graph, const std::string& name, ImageHandle target, BufferHandle viewRows, RasterBias bias);
+    // into `target` (D32_SFLOAT array, TRANSFER_DST) and, for views with ID layers, `ids` (R32_UINT
+    // array, storage); `name` prefixes the pass names.
+    void addTo(FrameGraph& graph, const std::string& name, ImageHandle target, BufferHandle viewRows, RasterBias bias,
+               ImageHandle ids = {});
 
     // Read-backs for tests: depth bits per texel (layer-major), and this frame's RasterCounters.
     const vk::Buffer& depth() const { return depth_; }
@@ -52,11 +59,15 @@ public:
 private:
     gpu::RasterPush push(RasterBias bias) const;
     void addSetup(FrameGraph& graph, const std::string& name, BufferHandle viewRows, const gpu::RasterPush& p);
+    void addIdSplit(FrameGraph& graph, const std::string& name, ImageHandle ids, const gpu::RasterPush& p);
+    vk::Allocator& alloc_;
     SceneGpu& scene_;
     uint32_t resolution_, layers_, subpixelBits_;
     uint32_t recordCapacity_, entryCapacity_;
-    vk::ComputeKernel setup_, bin_, tiles_, args_;
+    vk::ComputeKernel setup_, bin_, tiles_, args_, idSplit_;
     vk::Buffer depth_, records_, entries_, counters_, dispatchArgs_;
+    vk::Buffer depthIds_;     // uint64 per texel of each ID layer, grown to the most requested
+    uint32_t idLayers_ = 0;  // ID layers this frame's views write
     vk::BufferRing layerTable_;
     std::vector<RasterViews> views_;
     uint32_t layerRows_ = 0;

@@ -78,15 +78,14 @@ RayScene::RayScene(const Scene& scene) : scene_(scene) {
 
     tris_.scene = &scene;
     tris_.mips = &mips_;
-    // The texels the renderer shades with (texture.h says why); building the chains is the slow
+    // The mip levels the renderer shades with (texture.h says why); building the chains is the slow
     // part of loading a textured scene, so the textures are shared out between threads.
-    const uint32_t layer = textureLayerSize(scene.textures);
     std::vector<std::optional<MipChain>> chains(scene.textures.size());
     std::atomic<size_t> next{0};
     std::vector<std::thread> pool;
     for (uint32_t i = 0; i < std::min<size_t>(std::max(1u, std::thread::hardware_concurrency()), chains.size()); ++i)
         pool.emplace_back([&] {
-            for (size_t k; (k = next.fetch_add(1)) < chains.size();) chains[k].emplace(scene.textures[k], layer);
+            for (size_t k; (k = next.fetch_add(1)) < chains.size();) chains[k].emplace(scene.textures[k]);
         });
     for (std::thread& t : pool) t.join();
     for (std::optional<MipChain>& c : chains) mips_.push_back(std::move(*c));

@@ -81,10 +81,9 @@ Texture resample(const Texture& src, uint32_t w, uint32_t h) {
 
 }  // namespace
 
-MipChain::MipChain(const Texture& original, uint32_t squareSize) : original_(&original) {
+MipChain::MipChain(const Texture& original) : original_(&original) {
     const size_t texels = size_t(original.width) * original.height;
     if (texels == 0 || original.rgba8.size() < texels * 4) return;
-    if (squareSize > 0) resampled_ = resample(original, squareSize, squareSize);
     const Texture& base = level(0);
     uint32_t w = base.width, h = base.height;
     while (w > 1 || h > 1) {

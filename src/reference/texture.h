@@ -6,11 +6,9 @@
 // mip-mapped (pre-filtered) texture. A reference that sampled full-resolution texels at the same
 // points would alias VC's window textures into noise as large as the lighting error being measured
 // (relative L1 of VC's direct light 0.32); filtering over the same footprint makes texture detail
-// cancel out of the comparison. For the same reason the texels are those the renderer shades with:
-// each texture resampled (in linear light) to the renderer's square power-of-two layer size, every
-// mip level from the original. With the original textures instead, VC's direct light differs by
-// 6.3% (relative L1), since the renderer magnifies the 256^2 textures, upsampled to 1024^2 with a
-// sharper filter than bilinear; with the same texels, 1.5%.
+// cancel out of the comparison. For the same reason the mip levels are those the renderer shades
+// with: each texture at its own size, every level from the one above in linear light, as the
+// renderer's blit chain builds them (render/texture_upload.cpp).
 #pragma once
 #include <cstdint>
 #include <vector>
@@ -26,20 +24,16 @@ glm::vec4 sampleTexture(const Texture& texture, glm::vec2 uv);
 
 class MipChain {
 public:
-    // Level 0 is `base` itself (not copied), or with squareSize > 0 `base` resampled (in linear light)
-    // to squareSize x squareSize, the layout of the renderer's texture array (see textureLayerSize).
-    explicit MipChain(const Texture& base, uint32_t squareSize = 0);
+    // Level 0 is `base` itself (not copied).
+    explicit MipChain(const Texture& base);
     // Trilinear lookup; `dUVdx`, `dUVdy`: the change of uv across one pixel. Level of detail as
     // Vulkan defines it for isotropic filtering: lambda = log2(max(|dUVdx * size|, |dUVdy * size|)).
     glm::vec4 sample(glm::vec2 uv, glm::vec2 dUVdx, glm::vec2 dUVdy) const;
     size_t levels() const { return 1 + smaller_.size(); }
-    const Texture& level(size_t i) const {
-        return i > 0 ? smaller_[i - 1] : resampled_.width > 0 ? resampled_ : *original_;
-    }
+    const Texture& level(size_t i) const { return i > 0 ? smaller_[i - 1] : *original_; }
 
 private:
     const Texture* original_;
-    Texture resampled_;             // level 0 when squareSize > 0 (else the original is)
     std::vector<Texture> smaller_;  // levels 1.. : halved (rounded down, at least 1) per level
 };
 

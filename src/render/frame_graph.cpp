@@ -72,6 +72,16 @@ const char* useName(Use u) {
     return names[static_cast<int>(u)];
 }
 
+// "a, a, a, b" -> "a x3, b".
+void collapseRepeats(std::vector<std::string>& names) {
+    std::vector<std::string> out;
+    for (size_t i = 0, j; i < names.size(); i = j) {
+        for (j = i + 1; j < names.size() && names[j] == names[i];) ++j;
+        out.push_back(j - i > 1 ? fmt::format("{} x{}", names[i], j - i) : names[i]);
+    }
+    names = std::move(out);
+}
+
 }  // namespace
 
 void FrameGraph::barriers(VkCommandBuffer cmd, const PassDesc& pass) {
@@ -137,10 +147,13 @@ void FrameGraph::barriers(VkCommandBuffer cmd, const PassDesc& pass) {
     vkCmdPipelineBarrier2(cmd, &dep);
 }
 
-// Binds the pass's pipeline and pushes its set 0, made only from the pass's declarations.
+// Binds the pass's pipeline, pushes its set 0, made only from the pass's declarations, and binds the
+// long-lived sets it declared.
 void FrameGraph::bind(VkCommandBuffer cmd, const PassDesc& pass) {
     if (!pass.pipeline) return;
     pass.pipeline->bind(cmd);
+    for (const auto& [index, set] : pass.sets)
+        vkCmdBindDescriptorSets(cmd, pass.pipeline->bindPoint(), pass.pipeline->layout(), index, 1, &set, 0, nullptr);
     if (pass.bindings.empty()) return;
     vk::DescriptorWrites writes;
     for (const PassBinding& b : pass.bindings) {
@@ -253,6 +266,12 @@ PassBuilder& PassBuilder::uniform(uint32_t binding, BufferHandle buffer) {
     return *this;
 }
 
+PassBuilder& PassBuilder::descriptorSet(uint32_t set, VkDescriptorSet handle, const std::vector<ImageHandle>& sampled) {
+    for (ImageHandle image : sampled) pass_.images.push_back({image, Use::Sampled});
+    pass_.sets.push_back({set, handle});
+    return *this;
+}
+
 PassBuilder& PassBuilder::use(ImageHandle image, Use use) {
     pass_.images.push_back({image, use});
     return *this;
@@ -273,8 +292,6 @@ void PassBuilder::record(std::function<void(PassContext&)> fn) {
     graph_.add(std::move(pass_));
 }
 
-
-
 std::string FrameGraph::describe() const {
     std::string out;
     for (const PassDesc& p : passes_) {
@@ -285,6 +302,7 @@ std::string FrameGraph::describe() const {
         };
         for (const auto& [h, use] : p.images) sort(imageOf(h).name(), use);
         for (const auto& [h, use] : p.buffers) sort(bufferOf(h).name(), use);
+        collapseRepeats(reads);  // a texture table is many images of one name
         out += fmt::format("{:<22} {:<8} reads [{}] writes [{}]\n", p.name,
                            p.kind == PassKind::Raster ? "raster" : p.kind == PassKind::Compute ? "compute" : "copy",
                            fmt::join(reads, ", "), fmt::join(writes, ", "));

@@ -1,5 +1,6 @@
 // The frame graph: passes declare every image and buffer they touch, by handle, and the graph binds
-// the descriptor set of each pass from those declarations (push descriptors), inserts the barriers
+// the descriptor set of each pass from those declarations (push descriptors; long-lived tables such as the
+// material textures are bound as declared sets), inserts the barriers
 // between passes (and across frames: resource states persist), and wraps each pass in a GPU
 // timestamp scope. A pass cannot bind what it did not declare: descriptor pushes exist only here.
 //
@@ -76,6 +77,7 @@ struct PassDesc {
     std::vector<std::pair<ImageHandle, Use>> images;
     std::vector<std::pair<BufferHandle, Use>> buffers;
     std::vector<PassBinding> bindings;
+    std::vector<std::pair<uint32_t, VkDescriptorSet>> sets;  // long-lived sets bound at sets 1..
     std::function<void(PassContext&)> record;
     // Bytes the pass must move at the least (reads + writes of its data, once), for passes bound by
     // memory bandwidth; `penumbra bench` reports the achieved GB/s against the copy bandwidth. 0 = n/a.
@@ -91,6 +93,8 @@ public:
     PassBuilder& storageImage(uint32_t binding, ImageHandle image, Use use = Use::StorageWrite);
     PassBuilder& storageBuffer(uint32_t binding, BufferHandle buffer, Use use = Use::StorageRead);
     PassBuilder& uniform(uint32_t binding, BufferHandle buffer);
+    // A long-lived descriptor set (vk::DescriptorSet) bound at `set`, whose images the pass samples.
+    PassBuilder& descriptorSet(uint32_t set, VkDescriptorSet handle, const std::vector<ImageHandle>& sampled);
     // Accesses without a descriptor: attachments, indirect arguments, transfers, vertex input.
     PassBuilder& use(ImageHandle image, Use use);
     PassBuilder& use(BufferHandle buffer, Use use);

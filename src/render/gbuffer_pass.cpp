@@ -30,7 +30,7 @@ GBufferPass::GBufferPass(vk::Allocator& alloc, SceneGpu& scene, uint32_t width, 
     d.frontFace = SceneGpu::sceneFrontFace(true);
     if (!visibility) {
         d.colorFormats = {albedo.format(), normal.format()};
-        pipeline_ = vk::Pipeline::graphics(ctx, d, {drawLayout}, sizeof(gpu::DrawPush));
+        pipeline_ = vk::Pipeline::graphics(ctx, d, SceneGpu::drawLayouts(ctx, drawLayout), sizeof(gpu::DrawPush));
         return;
     }
     ids = vk::Image(alloc, {VK_FORMAT_R32_UINT, width, height, 1,
@@ -38,16 +38,17 @@ GBufferPass::GBufferPass(vk::Allocator& alloc, SceneGpu& scene, uint32_t width, 
                                 VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                             "gbuffer-ids"});
     d.colorFormats = {ids.format()};
-    pipeline_ = vk::Pipeline::graphics(ctx, d, {drawLayout}, sizeof(gpu::DrawPush));
+    pipeline_ = vk::Pipeline::graphics(ctx, d, SceneGpu::drawLayouts(ctx, drawLayout), sizeof(gpu::DrawPush));
     d.fragmentShader = "render/visibility_masked.frag";
-    masked_ = vk::Pipeline::graphics(ctx, d, {drawLayout}, sizeof(gpu::DrawPush));
+    masked_ = vk::Pipeline::graphics(ctx, d, SceneGpu::drawLayouts(ctx, drawLayout), sizeof(gpu::DrawPush));
     std::vector<vk::Binding> bindings = SceneGpu::resolveSetBindings();
     bindings.push_back({3, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER});
     bindings.push_back({5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
     bindings.push_back({6, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
     bindings.push_back({7, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
     resolveLayout_ = vk::DescriptorLayout(ctx, bindings);
-    resolve_ = vk::Pipeline::compute(ctx, "render/visibility_resolve.comp", {resolveLayout_.handle()},
+    resolve_ = vk::Pipeline::compute(ctx, "render/visibility_resolve.comp",
+                                     SceneGpu::drawLayouts(ctx, resolveLayout_.handle()),
                                      sizeof(gpu::VisibilityResolvePush));
     nearest_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
 }

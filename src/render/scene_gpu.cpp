@@ -13,6 +13,8 @@ namespace penumbra {
 SceneGpu::SceneGpu(vk::CommandContext& cmd, const Scene& scene)
     : scene_(scene), ctx_(cmd.allocator().context()) {
     if (scene.indices.empty() && scene.strands.empty()) throw vk::VulkanError("scene has no triangles");
+    checkTextureTable(ctx_.limits());
+    texturePlan_ = planTextureTable(scene.textures);
     // Visibility IDs are 32-bit: triangle + 1, 0 meaning nothing drawn (render/visibility.glsl).
     if (scene.indices.size() / 3 >= 0xFFFFFFFFull)
         throw vk::VulkanError("scene has more triangles than 32-bit visibility IDs can name");
@@ -33,7 +35,7 @@ SceneGpu::SceneGpu(vk::CommandContext& cmd, const Scene& scene)
         gpu::GpuMaterial g{};
         g.baseColor = m.baseColor;
         const bool hasTexture = m.baseColorTexture >= 0 && size_t(m.baseColorTexture) < scene.textures.size();
-        g.info = {hasTexture ? uint32_t(m.baseColorTexture) : NO_TEXTURE, uint32_t(m.alphaMode),
+        g.info = {hasTexture ? texturePlan_.handles[m.baseColorTexture] : NO_TEXTURE, uint32_t(m.alphaMode),
                   m.doubleSided ? 1u : 0u, 0u};
         g.params = {m.alphaCutoff, 0, 0, 0};
         mats.push_back(g);
@@ -81,14 +83,49 @@ std::vector<VkVertexInputAttributeDescription> SceneGpu::vertexAttributes() {
 std::vector<vk::Binding> SceneGpu::drawSetBindings() {
     return {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
             {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-            {2, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
             {SCENE_INSTANCES_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+}
+
+namespace {
+
+// Set 1 (render/material_textures.glsl): the texture slots and their sampler.
+std::vector<vk::Binding> textureTableBindings() {
+    return {{0, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, MATERIAL_TEXTURE_SLOTS}, {1, VK_DESCRIPTOR_TYPE_SAMPLER}};
+}
+
+// Sampled images a pass that draws the scene may declare besides the table.
+constexpr uint32_t kPassSampledImages = 4;
+
+}  // namespace
+
+VkDescriptorSetLayout SceneGpu::textureTableLayout(vk::Context& ctx) {
+    return vk::DescriptorLayout(ctx, textureTableBindings(), false).handle();  // the device's cache owns it
+}
+
+std::vector<VkDescriptorSetLayout> SceneGpu::drawLayouts(vk::Context& ctx, VkDescriptorSetLayout set0) {
+    return {set0, textureTableLayout(ctx)};
+}
+
+void SceneGpu::checkTextureTable(const vk::DeviceLimits& limits) {
+    if (limits.sampledImagesPerStage < MATERIAL_TEXTURE_SLOTS + kPassSampledImages)
+        throw std::invalid_argument(fmt::format("the device allows {} sampled images per shader stage; the material "
+                                                "texture table needs {} plus {} for a pass's own",
+                                                limits.sampledImagesPerStage, MATERIAL_TEXTURE_SLOTS,
+                                                kPassSampledImages));
+}
+
+VkDeviceSize SceneGpu::textureBytes() const {
+    VkDeviceSize bytes = 0;
+    for (size_t i = 0; i < texturePlan_.slots.size(); ++i) bytes += textures_[i].bytes();
+    return bytes;
 }
 
 void SceneGpu::declareDrawSet(PassBuilder& pass, BufferHandle views) {
     FrameGraph& g = pass.graph();
-    pass.storageBuffer(0, views).storageBuffer(1, g.import(materials_)).sampled(2, g.import(textures_),
-                                                                                sampler_.handle());
+    pass.storageBuffer(0, views).storageBuffer(1, g.import(materials_));
+    std::vector<ImageHandle> textures;  // static after the upload: imported, only ever sampled
+    for (vk::Image& t : textures_) textures.push_back(g.import(t));
+    pass.descriptorSet(1, textureTable_.handle(), textures);
     pass.storageBuffer(SCENE_INSTANCES_BINDING, g.hasBuffer("instances") ? g.buffer("instances") : g.import(restInstances_));
 }
 
@@ -140,11 +177,18 @@ void SceneGpu::declareTriangles(PassBuilder& pass) {
 }
 
 void SceneGpu::uploadTextures(vk::CommandContext& cmd) {
-    // Each texture at its own size is blitted into its square layer and the mips are blitted on the GPU
-    // (render/texture_upload.h); the layer size is the largest texture's side (textureLayerSize).
-    const std::vector<Texture>& src = scene_.textures;
-    textures_ = uploadTextureArray(cmd, src, src.empty() ? 1 : textureLayerSize(src));
+    // Each slot an array of one size, its mips blitted on the GPU (render/texture_upload.h).
+    for (const TextureSlot& slot : texturePlan_.slots)
+        textures_.push_back(uploadTextureSlot(cmd, scene_.textures, slot, "material-textures"));
+    const std::vector<Texture> white{{1, 1, {255, 255, 255, 255}}};
+    textures_.push_back(uploadTextureSlot(cmd, white, {1, 1, {0}}, "material-textures-unused"));
     sampler_ = vk::Sampler(ctx_, {VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_REPEAT, false, true});
+    textureTable_ = vk::DescriptorSet(ctx_, textureTableBindings());
+    vk::DescriptorWrites writes;
+    for (uint32_t slot = 0; slot < MATERIAL_TEXTURE_SLOTS; ++slot)
+        writes.sampledImage(0, slot, textures_[std::min<size_t>(slot, textures_.size() - 1)].view());
+    writes.sampler(1, sampler_.handle());
+    writes.update(ctx_.device(), textureTable_.handle());
 }
 
 }  // namespace penumbra

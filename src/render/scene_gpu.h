@@ -1,11 +1,13 @@
 // The scene's GPU copy: every mesh's vertices and indices (uploaded once), the material table and its
-// textures. Shared, read-only, by every pass that draws the scene (G-buffer, shadow maps, RSM, DSM).
+// textures (at their own sizes, in a texture table bound as set 1). Shared, read-only, by every pass
+// that draws the scene (G-buffer, shadow maps, RSM, DSM).
 // Meshes are drawn per instance (Scene::instances); the instances' transforms are per-frame data in
 // the frame graph's "instances" buffer (GpuInstance, written by the Renderer).
 #pragma once
 #include <vector>
 
 #include "render/frame_graph.h"
+#include "render/texture_upload.h"
 #include "scene/scene.h"
 #include "shared/types.h"
 #include "vk/commands.h"
@@ -32,14 +34,25 @@ public:
     const std::vector<glm::mat4>& restTransforms() const { return restTransforms_; }
     // The frame's instance transforms decide the cull mode of mirrored instances (set before recording).
     void setFrameInstances(const std::vector<glm::mat4>& transforms);
-    // All base-colour textures as layers of one mip-mapped sRGB 2D array (one descriptor, which
-    // fits every device's per-stage sampler limit; lavapipe allows only 32 samplers per stage).
-    vk::Image& textures() { return textures_; }
-    VkSampler textureSampler() const { return sampler_.handle(); }
-    // Set 0 of the pipelines that draw the scene: views, materials, textures (bindings 0-2) and the
-    // frame's instance table (SCENE_INSTANCES_BINDING, the graph's "instances"); a pass may declare
-    // more bindings of its own.
+    // The base-colour textures at their own sizes with their full mip chains: one 2D array per size
+    // (texturePlan() says which texture is in which slot and layer; a last 1x1 white array fills the
+    // table's unused slots). Sampled through the texture table, set 1 of every pipeline that draws
+    // the scene (render/material_textures.glsl).
+    const std::vector<vk::Image>& textures() const { return textures_; }
+    const TextureTablePlan& texturePlan() const { return texturePlan_; }
+    // GPU memory of the textures' images (the scene's, without the white filler).
+    VkDeviceSize textureBytes() const;
+    // The table's MATERIAL_TEXTURE_SLOTS plus a pass's own sampled images against the device's per
+    // stage; throws std::invalid_argument naming both.
+    static void checkTextureTable(const vk::DeviceLimits& limits);
+    // Set 0 of the pipelines that draw the scene: views and materials (bindings 0-1) and the frame's
+    // instance table (SCENE_INSTANCES_BINDING, the graph's "instances"); a pass may declare more
+    // bindings of its own. Set 1: the texture table. Both are bound by declareDrawSet.
     void declareDrawSet(PassBuilder& pass, BufferHandle views);
+    // The set layouts of such a pipeline: `set0` (made from drawSetBindings() and the pass's own),
+    // then the texture table's.
+    static std::vector<VkDescriptorSetLayout> drawLayouts(vk::Context& ctx, VkDescriptorSetLayout set0);
+    static VkDescriptorSetLayout textureTableLayout(vk::Context& ctx);
     static std::vector<vk::Binding> drawSetBindings();
     // The triangles as compute resolves of visibility IDs fetch them (render/visibility.glsl):
     // vertices, indices, triangle materials and the drawn (instance, triangle) list at bindings 12-14
@@ -91,8 +104,10 @@ private:
     std::vector<Run> runs_;  // this frame's
     std::vector<glm::mat4> restTransforms_;  // Scene::instances' transforms at rest (t = 0)
     vk::Buffer restInstances_;  // the instance table at rest, for graphs without a frame's "instances"
-    vk::Image textures_;
+    TextureTablePlan texturePlan_;
+    std::vector<vk::Image> textures_;
     vk::Sampler sampler_;
+    vk::DescriptorSet textureTable_;
 };
 
 template <class PerDraw, class Filter>

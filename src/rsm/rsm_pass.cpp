@@ -13,7 +13,7 @@ RsmPass::RsmPass(vk::Allocator& alloc, SceneGpu& scene, const RsmSettings& setti
     bindings.push_back({5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});  // shadow.ids
     for (uint32_t k : {6u, 7u, 8u}) bindings.push_back({k, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
     layout_ = vk::DescriptorLayout(ctx, bindings);
-    pipeline_ = vk::Pipeline::compute(ctx, "rsm/resolve.comp", {layout_.handle()}, sizeof(gpu::RsmResolvePush));
+    pipeline_ = vk::Pipeline::compute(ctx, "rsm/resolve.comp", SceneGpu::drawLayouts(ctx, layout_.handle()), sizeof(gpu::RsmResolvePush));
     nearest_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
     setLayers({}, 0);
 }

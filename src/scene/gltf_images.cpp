@@ -22,15 +22,28 @@ std::optional<Texture> decode(const tinygltf::Image& img, std::string& error) {
         return std::nullopt;
     }
     int w = 0, h = 0, channels = 0;
-    stbi_uc* texels = stbi_load_from_memory(img.image.data(), int(img.image.size()), &w, &h, &channels, 4);
-    if (!texels) {
-        error = fmt::format("it cannot be decoded ({})", stbi_failure_reason());
+    // The file's own channels, widened to RGBA here in one pass: asking stb for 4 costs one more
+    // image-sized buffer (64 MB at 4096^2), and fresh memory is what a large texture's load spends on.
+    stbi_uc* texels = stbi_load_from_memory(img.image.data(), int(img.image.size()), &w, &h, &channels, 0);
+    if (!texels || channels < 1 || channels > 4) {
+        error = fmt::format("it cannot be decoded ({})", texels ? "unsupported channel count" : stbi_failure_reason());
+        stbi_image_free(texels);
         return std::nullopt;
     }
     Texture t;
     t.width = uint32_t(w);
     t.height = uint32_t(h);
-    t.rgba8.assign(texels, texels + size_t(w) * size_t(h) * 4);
+    const size_t n = size_t(w) * size_t(h);
+    t.rgba8.resize(n * 4);
+    uint8_t* out = t.rgba8.data();
+    for (size_t i = 0; i < n; ++i, out += 4) {
+        const stbi_uc* in = texels + i * size_t(channels);
+        const bool grey = channels < 3;
+        out[0] = in[0];
+        out[1] = grey ? in[0] : in[1];
+        out[2] = grey ? in[0] : in[2];
+        out[3] = channels == 2 ? in[1] : channels == 4 ? in[3] : 255;
+    }
     stbi_image_free(texels);
     return t;
 }

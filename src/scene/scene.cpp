@@ -110,14 +110,4 @@ Scene loadScene(const std::string& pathOrName, const BuiltinOptions& options) {
     return scene;
 }
 
-uint32_t textureLayerSize(const std::vector<Texture>& textures) {
-    uint32_t largest = 1;
-    for (const Texture& t : textures) largest = std::max({largest, t.width, t.height});
-    uint32_t size = 1;
-    while (size < largest && size < 2048) size *= 2;
-    const uint64_t budget = uint64_t(256) << 20;
-    while (size > 64 && uint64_t(size) * size * 4 * textures.size() * 4 / 3 > budget) size /= 2;
-    return size;
-}
-
 }  // namespace penumbra

@@ -194,10 +194,6 @@ Scene makeBuiltinScene(const std::string& name, const BuiltinOptions& options = 
 // The result has had addDefaultsIfMissing applied.
 Scene loadScene(const std::string& pathOrName, const BuiltinOptions& options = {});
 
-// Side of the square layers of the renderer's texture array (the largest texture's side as a power
-// of two, capped to stay within a 256 MiB budget); the reference resamples to the same texels.
-uint32_t textureLayerSize(const std::vector<Texture>& textures);
-
 // Adds a default sun and camera where the scene has none, so that any glTF model renders.
 void addDefaultsIfMissing(Scene& scene);
 

@@ -128,28 +128,37 @@ void ShadowMapPass::addTo(FrameGraph& graph, uint32_t firstView,
         if (compute_) {
             compute_->setViews(computeViews(firstView), slot_);
             compute_->addTo(graph, "shadow.raster", map, graph.buffer("views"),
-                            {settings_.depthBiasConstant, settings_.depthBiasSlope});
+                            {settings_.depthBiasConstant, settings_.depthBiasSlope}, importIds(graph));
+        } else {
+            addIdPass(graph, map, firstView);
         }
-        addIdPass(graph, map, firstView);
         if (extraCasters) extraCasters(graph);
     }
     idLayers_.clear();
     moments_.addTo(graph);
 }
 
-// The layers with an RSM, each drawn once with depth and visibility IDs (the hardware draws them
-// under --raster compute too, until the compute rasterizer writes IDs).
-void ShadowMapPass::addIdPass(FrameGraph& graph, ImageHandle map, uint32_t firstView) {
-    if (idLayers_.empty()) return;
+// The ID image of this frame's requested layers ("shadow.ids"; none when no layer is requested).
+ImageHandle ShadowMapPass::importIds(FrameGraph& graph) {
+    if (idLayers_.empty()) return {};
     const uint32_t n = uint32_t(idLayers_.size());
-    if (!ids_ || ids_.layers() != n) heldIds_.clear();
-    if (!ids_ || ids_.layers() != n)
+    if (!ids_ || ids_.layers() != n) {
+        heldIds_.clear();
         ids_ = vk::Image(alloc_, {VK_FORMAT_R32_UINT, settings_.resolution, settings_.resolution, n,
-                                  VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
-                                      VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                                  VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_STORAGE_BIT |
+                                      VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                                   "shadow-ids", 1, true});
+    }
     const ImageHandle ids = graph.import(ids_);
     graph.publish("shadow.ids", ids);
+    return ids;
+}
+
+// The hardware draws the layers with an RSM once each, with depth and visibility IDs.
+void ShadowMapPass::addIdPass(FrameGraph& graph, ImageHandle map, uint32_t firstView) {
+    const ImageHandle ids = importIds(graph);
+    if (!ids) return;
+    const uint32_t n = uint32_t(idLayers_.size());
     PassBuilder pass = graph.pass("shadow.map-ids", PassKind::Raster);
     pass.pipeline(raster_.setLayoutPipeline()).use(map, Use::DepthAttachment).use(ids, Use::ColorAttachment);
     scene_.declareDrawSet(pass, graph.buffer("views"));
@@ -171,23 +180,25 @@ bool ShadowMapPass::hasParaboloid() const {
     return false;
 }
 
-// Every layer of every light but paraboloid ones (their edges bend: hardware tessellation).
-// Every layer of every light but paraboloid ones (their edges bend: hardware tessellation) and those
-// drawn with visibility IDs, in runs of consecutive layers.
+// Every layer of every light but paraboloid ones (their edges bend: hardware tessellation), in runs
+// of consecutive depth-only layers; a layer with IDs (an RSM's: directional and spot lights only) is
+// a run of its own.
 std::vector<RasterViews> ShadowMapPass::computeViews(uint32_t firstView) const {
     std::vector<RasterViews> views;
-    const auto withIds = [&](uint32_t l) { return std::find(idLayers_.begin(), idLayers_.end(), l) != idLayers_.end(); };
     for (const ShadowedLight& s : layout_.shadowed()) {
         if (s.kind == SHADOW_KIND_PARABOLOID) continue;
         const bool skipBlended = !raster_.drawsBlended(s.light);
         for (uint32_t k = 0; k < s.layerCount; ++k) {
             const uint32_t l = s.firstLayer + k;
-            if (withIds(l)) continue;
-            if (!views.empty() && views.back().firstLayer + views.back().layerCount == l &&
-                views.back().skipBlended == skipBlended)
+            const auto id = std::find(idLayers_.begin(), idLayers_.end(), l);
+            const uint32_t idLayer = id == idLayers_.end() ? RasterViews::kNoIds : uint32_t(id - idLayers_.begin());
+            const bool extends = !views.empty() && views.back().firstLayer + views.back().layerCount == l &&
+                                 views.back().skipBlended == skipBlended &&
+                                 views.back().firstIdLayer == RasterViews::kNoIds;
+            if (extends && idLayer == RasterViews::kNoIds)
                 ++views.back().layerCount;
             else
-                views.push_back({firstView + l, l, 1, skipBlended});
+                views.push_back({firstView + l, l, 1, skipBlended, idLayer});
         }
     }
     return views;

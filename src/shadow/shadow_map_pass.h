@@ -53,8 +53,9 @@ public:
     // "shadow.map" after shadow.map, before the moments are taken from it.
     void addTo(FrameGraph& graph, uint32_t firstView, const std::function<void(FrameGraph&)>& extraCasters = {});
     // This frame's layers that an RSM is resolved from (src/rsm), in the order of the ID image's layers:
-    // addTo draws them with depth and visibility IDs ("shadow.ids", R32_UINT, one layer each) and
-    // forgets the request; every other layer stays depth only.
+    // addTo draws them with depth and visibility IDs ("shadow.ids", R32_UINT, one layer each; the
+    // hardware's depth + colour pass or the compute rasterizer's 64-bit depth << 32 | ID) and forgets
+    // the request; every other layer stays depth only.
     void requestIds(std::vector<uint32_t> layers) { idLayers_ = std::move(layers); }
     // Lights with a deep shadow map: their alphaMode BLEND casters stay out of the shadow map.
     void setDeepShadowLights(std::vector<uint32_t> lights) {
@@ -74,6 +75,7 @@ public:
     void addFilterTo(FrameGraph& graph);
 
     vk::Image& shadowMap() { return map_; }          // D32_SFLOAT array, one layer per ShadowLayer
+    vk::Image& ids() { return ids_; }                // R32_UINT array, the last requested ID layers
     vk::Image& mask() { return filter_.mask(); }     // RG16F array, one layer per shadowed light
     vk::Image& moments() { return moments_.moments(); }
     bool linearCompare() const { return filter_.linearCompare(); }
@@ -103,6 +105,7 @@ private:
 
     std::vector<RasterViews> computeViews(uint32_t firstView) const;
     void addIdPass(FrameGraph& graph, ImageHandle map, uint32_t firstView);
+    ImageHandle importIds(FrameGraph& graph);
     bool hasParaboloid() const;
 };
 

@@ -23,9 +23,9 @@ ShadowRaster::ShadowRaster(vk::Context& ctx, const SceneGpu& scene, const Shadow
     vk::GraphicsDesc id = d;
     id.colorFormats = {VK_FORMAT_R32_UINT};
     id.fragmentShader = "render/visibility.frag";
-    ids_.opaque = vk::Pipeline::graphics(ctx, id, {drawLayout}, sizeof(gpu::ShadowDrawPush));
+    ids_.opaque = vk::Pipeline::graphics(ctx, id, SceneGpu::drawLayouts(ctx, drawLayout), sizeof(gpu::ShadowDrawPush));
     id.fragmentShader = "render/visibility_masked.frag";
-    ids_.masked = vk::Pipeline::graphics(ctx, id, {drawLayout}, sizeof(gpu::ShadowDrawPush));
+    ids_.masked = vk::Pipeline::graphics(ctx, id, SceneGpu::drawLayouts(ctx, drawLayout), sizeof(gpu::ShadowDrawPush));
     d.vertexShader = "shadow/paraboloid.vert";
     // Position and uv only: the paraboloid stages have no use for the normal.
     std::erase_if(d.vertexAttributes, [](const VkVertexInputAttributeDescription& a) { return a.location == 1; });
@@ -37,9 +37,9 @@ ShadowRaster::ShadowRaster(vk::Context& ctx, const SceneGpu& scene, const Shadow
 ShadowRaster::Pipelines ShadowRaster::make(vk::Context& ctx, vk::GraphicsDesc d,
                                            VkDescriptorSetLayout drawLayout) const {
     Pipelines p;
-    p.opaque = vk::Pipeline::graphics(ctx, d, {drawLayout}, sizeof(gpu::ShadowDrawPush));
+    p.opaque = vk::Pipeline::graphics(ctx, d, SceneGpu::drawLayouts(ctx, drawLayout), sizeof(gpu::ShadowDrawPush));
     d.fragmentShader = "shadow/shadow_mask.frag";
-    p.masked = vk::Pipeline::graphics(ctx, d, {drawLayout}, sizeof(gpu::ShadowDrawPush));
+    p.masked = vk::Pipeline::graphics(ctx, d, SceneGpu::drawLayouts(ctx, drawLayout), sizeof(gpu::ShadowDrawPush));
     return p;
 }
 

@@ -87,6 +87,8 @@ DeviceLimits deviceLimits(VkPhysicalDevice physical) {
     d.allocationSize = m3.maxMemoryAllocationSize;
     d.imageDimension2D = l.maxImageDimension2D;
     d.imageArrayLayers = l.maxImageArrayLayers;
+    d.sampledImagesPerStage = std::min({l.maxPerStageDescriptorSampledImages, l.maxDescriptorSetSampledImages,
+                                        l.maxPerStageResources, l.maxPerStageDescriptorSamplers});
     for (int i = 0; i < 3; ++i) d.workGroupCount[i] = l.maxComputeWorkGroupCount[i];
     return d;
 }
@@ -147,6 +149,8 @@ std::vector<FeatureCheck> checkRequiredFeatures(VkPhysicalDevice device) {
         {"shaderClipDistance", is13 && f.features.shaderClipDistance},
         // The compute rasterizer's edge functions are exact 64-bit integers (src/raster).
         {"shaderInt64", is13 && f.features.shaderInt64},
+        // Its layers with visibility IDs test depth << 32 | ID with one 64-bit atomicMin.
+        {"shaderBufferInt64Atomics", is13 && f12.shaderBufferInt64Atomics},
         // Visibility IDs (render/visibility.glsl): gl_PrimitiveID in fragment shaders needs the Geometry
         // capability; the RSM resolve writes its RG16_SNORM normals as a storage image.
         {"geometryShader", is13 && f.features.geometryShader},
@@ -329,6 +333,7 @@ void Context::createDevice() {
     VkPhysicalDeviceVulkan12Features f12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &f13};
     f12.hostQueryReset = VK_TRUE;
     f12.shaderOutputLayer = VK_TRUE;
+    f12.shaderBufferInt64Atomics = VK_TRUE;
     VkPhysicalDeviceVulkan11Features f11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES, &f12};
     f11.shaderDrawParameters = VK_TRUE;
     VkPhysicalDeviceFeatures2 f{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f11};

@@ -37,6 +37,12 @@ struct DeviceLimits {
     uint64_t deviceMemory = 0;        // the largest device-local heap
     uint32_t imageDimension2D = 0;    // maxImageDimension2D
     uint32_t imageArrayLayers = 0;    // maxImageArrayLayers
+    // Sampled images one pipeline stage may see across all its sets: the least of
+    // maxPerStageDescriptorSampledImages, maxDescriptorSetSampledImages, maxPerStageResources and
+    // maxPerStageDescriptorSamplers. The last because Mesa 22.3's lavapipe (32) keeps only that many
+    // fragment sampler views across a vkCmdBlitImage recorded after draws (its blitter's save
+    // array): with more, the blit overwrites memory and the queue thread crashes.
+    uint32_t sampledImagesPerStage = 0;
     uint32_t workGroupCount[3] = {};  // maxComputeWorkGroupCount
 };
 

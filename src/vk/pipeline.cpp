@@ -252,9 +252,11 @@ void Pipeline::pushConstants(VkCommandBuffer cmd, const void* data, uint32_t byt
 }
 
 ComputeKernel::ComputeKernel(Context& ctx, const std::string& shader, const std::vector<Binding>& bindings,
-                             uint32_t pushBytes) {
+                             uint32_t pushBytes, const std::vector<VkDescriptorSetLayout>& moreSets) {
     layout = DescriptorLayout(ctx, bindings);
-    pipeline = Pipeline::compute(ctx, shader, {layout.handle()}, pushBytes);
+    std::vector<VkDescriptorSetLayout> sets{layout.handle()};
+    sets.insert(sets.end(), moreSets.begin(), moreSets.end());
+    pipeline = Pipeline::compute(ctx, shader, sets, pushBytes);
 }
 
 ComputeKernel::ComputeKernel(Context& ctx, const std::string& shader, const std::vector<VkDescriptorType>& types,
@@ -264,9 +266,10 @@ ComputeKernel::ComputeKernel(Context& ctx, const std::string& shader, const std:
     *this = ComputeKernel(ctx, shader, bindings, pushBytes);
 }
 
-VkWriteDescriptorSet& DescriptorWrites::add(uint32_t binding, VkDescriptorType type) {
+VkWriteDescriptorSet& DescriptorWrites::add(uint32_t binding, VkDescriptorType type, uint32_t element) {
     VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
     w.dstBinding = binding;
+    w.dstArrayElement = element;
     w.descriptorCount = 1;
     w.descriptorType = type;
     writes_.push_back(w);
@@ -298,6 +301,19 @@ DescriptorWrites& DescriptorWrites::uniformBuffer(uint32_t binding, const Buffer
     return *this;
 }
 
+DescriptorWrites& DescriptorWrites::sampledImage(uint32_t binding, uint32_t element, VkImageView view,
+                                                 VkImageLayout layout) {
+    images_.push_back({VK_NULL_HANDLE, view, layout});
+    add(binding, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, element).pImageInfo = &images_.back();
+    return *this;
+}
+
+DescriptorWrites& DescriptorWrites::sampler(uint32_t binding, VkSampler sampler) {
+    images_.push_back({sampler, VK_NULL_HANDLE, VK_IMAGE_LAYOUT_UNDEFINED});
+    add(binding, VK_DESCRIPTOR_TYPE_SAMPLER).pImageInfo = &images_.back();
+    return *this;
+}
+
 void DescriptorWrites::push(const Context& ctx, VkCommandBuffer cmd, const Pipeline& pipeline, uint32_t set) {
     ctx.cmdPushDescriptorSet(cmd, pipeline.bindPoint(), pipeline.layout(), set,
                              static_cast<uint32_t>(writes_.size()), writes_.data());
@@ -306,6 +322,40 @@ void DescriptorWrites::push(const Context& ctx, VkCommandBuffer cmd, const Pipel
 void DescriptorWrites::update(VkDevice device, VkDescriptorSet set) {
     for (auto& w : writes_) w.dstSet = set;
     vkUpdateDescriptorSets(device, static_cast<uint32_t>(writes_.size()), writes_.data(), 0, nullptr);
+}
+
+DescriptorSet::DescriptorSet(Context& ctx, const std::vector<Binding>& bindings)
+    : device_(ctx.device()), layout_(ctx, bindings, false) {
+    std::vector<VkDescriptorPoolSize> sizes;
+    for (const Binding& b : bindings) sizes.push_back({b.type, b.count});
+    VkDescriptorPoolCreateInfo pi{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
+    pi.maxSets = 1;
+    pi.poolSizeCount = static_cast<uint32_t>(sizes.size());
+    pi.pPoolSizes = sizes.data();
+    VK_CHECK(vkCreateDescriptorPool(device_, &pi, nullptr, &pool_));
+    VkDescriptorSetAllocateInfo ai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
+    ai.descriptorPool = pool_;
+    ai.descriptorSetCount = 1;
+    const VkDescriptorSetLayout layout = layout_.handle();
+    ai.pSetLayouts = &layout;
+    VK_CHECK(vkAllocateDescriptorSets(device_, &ai, &set_));
+}
+
+DescriptorSet& DescriptorSet::operator=(DescriptorSet&& o) noexcept {
+    if (this != &o) {
+        reset();
+        device_ = o.device_;
+        layout_ = std::move(o.layout_);
+        pool_ = std::exchange(o.pool_, VK_NULL_HANDLE);
+        set_ = std::exchange(o.set_, VK_NULL_HANDLE);
+    }
+    return *this;
+}
+
+void DescriptorSet::reset() {
+    if (pool_) vkDestroyDescriptorPool(device_, pool_, nullptr);  // frees the set
+    pool_ = VK_NULL_HANDLE;
+    set_ = VK_NULL_HANDLE;
 }
 
 }  // namespace penumbra::vk

@@ -1,6 +1,6 @@
 // Descriptor-set layouts, push-descriptor writes, compute and graphics pipelines.
 // Passes bind their per-frame resources with push descriptors (VK_KHR_push_descriptor): no pools,
-// no set lifetime to manage; only long-lived tables (material textures) use a pooled set.
+// no set lifetime to manage; only long-lived tables (material textures) use a pooled set (DescriptorSet).
 #pragma once
 #include <deque>
 #include <string>
@@ -89,7 +89,9 @@ struct ComputeKernel {
     ComputeKernel() = default;
     // Bindings given by number (a kernel that reads the scene's draw set, whose instance table sits at
     // SCENE_INSTANCES_BINDING).
-    ComputeKernel(Context& ctx, const std::string& shader, const std::vector<Binding>& bindings, uint32_t pushBytes);
+    // `moreSets`: the layouts of sets 1.. (long-lived tables, see DescriptorSet).
+    ComputeKernel(Context& ctx, const std::string& shader, const std::vector<Binding>& bindings, uint32_t pushBytes,
+                  const std::vector<VkDescriptorSetLayout>& moreSets = {});
     ComputeKernel(Context& ctx, const std::string& shader, const std::vector<VkDescriptorType>& types,
                   uint32_t pushBytes);
 };
@@ -106,16 +108,40 @@ public:
     DescriptorWrites& storageImage(uint32_t binding, VkImageView view);
     DescriptorWrites& storageBuffer(uint32_t binding, const Buffer& buffer);
     DescriptorWrites& uniformBuffer(uint32_t binding, const Buffer& buffer);
+    // Element `element` of an array of sampled images; a separate sampler.
+    DescriptorWrites& sampledImage(uint32_t binding, uint32_t element, VkImageView view,
+                                   VkImageLayout layout = VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL);
+    DescriptorWrites& sampler(uint32_t binding, VkSampler sampler);
     void update(VkDevice device, VkDescriptorSet set);  // for pooled sets
 
 private:
     // Only the frame graph pushes sets, from what a pass declared (render/frame_graph.h).
     friend class ::penumbra::FrameGraph;
     void push(const Context& ctx, VkCommandBuffer cmd, const Pipeline& pipeline, uint32_t set = 0);
-    VkWriteDescriptorSet& add(uint32_t binding, VkDescriptorType type);
+    VkWriteDescriptorSet& add(uint32_t binding, VkDescriptorType type, uint32_t element = 0);
     std::vector<VkWriteDescriptorSet> writes_;
     std::deque<VkDescriptorImageInfo> images_;
     std::deque<VkDescriptorBufferInfo> buffers_;
+};
+
+// One descriptor set from a pool of its own, for a long-lived table that many passes bind as it is
+// (written once with DescriptorWrites::update; the frame graph binds it beside the pushed set 0).
+class DescriptorSet {
+public:
+    DescriptorSet() = default;
+    DescriptorSet(Context& ctx, const std::vector<Binding>& bindings);
+    ~DescriptorSet() { reset(); }
+    DescriptorSet(DescriptorSet&& o) noexcept { *this = std::move(o); }
+    DescriptorSet& operator=(DescriptorSet&& o) noexcept;
+    VkDescriptorSet handle() const { return set_; }
+    VkDescriptorSetLayout layout() const { return layout_.handle(); }
+    void reset();
+
+private:
+    VkDevice device_ = VK_NULL_HANDLE;
+    DescriptorLayout layout_;
+    VkDescriptorPool pool_ = VK_NULL_HANDLE;
+    VkDescriptorSet set_ = VK_NULL_HANDLE;
 };
 
 inline uint32_t divUp(uint32_t a, uint32_t b) { return (a + b - 1) / b; }
