@@ -198,6 +198,27 @@ TEST(LpvCascades, NestedSnappedAndCoveringTheScene) {
     EXPECT_EQ(glm::vec3(d[0].origin), glm::vec3(c[0].origin));
 }
 
+TEST(LpvCascades, RoomSizedScenesGetGridsFitToTheSceneThatIgnoreTheCamera) {
+    Bounds b;
+    b.extend({-1, 0, -1});
+    b.extend({1, 2, 1});
+    EXPECT_EQ(automaticCascadeCount(b), 3u);
+    const auto c = placeCascades(b, glm::vec3(0.3f, 1.0f, 3.6f), 3, 16);
+    ASSERT_EQ(c.size(), 3u);
+    EXPECT_EQ(placeCascades(b, glm::vec3(-5.0f, 7.0f, 2.0f), 3, 16)[2].origin, c[2].origin) << "camera-independent";
+    for (size_t k = 0; k < c.size(); ++k) {
+        const glm::vec3 centre = glm::vec3(c[k].origin) + 8.0f * c[k].origin.w;
+        EXPECT_LT(glm::length(centre - b.center()), 1e-5f) << "cascade " << k << " shares the scene's centre";
+        if (k > 0) {
+            EXPECT_NEAR(c[k].origin.w, 2.0f * c[k - 1].origin.w, 1e-6f);
+        }
+        for (int a = 0; a < 3; ++a) {  // the finest covers the scene with a margin of half a cell
+            EXPECT_LE(c[0].origin[a], b.min[a] - 0.49f * c[0].origin.w);
+            EXPECT_GE(c[0].origin[a] + 16 * c[0].origin.w, b.max[a] + 0.49f * c[0].origin.w);
+        }
+    }
+}
+
 TEST_F(LpvVolumeTest, SingleVplPropagatesSymmetricallyWithoutGainingFlux) {
     // A VPL at the centre of cell (16, 16, 16) facing +y: its light spreads symmetrically about the
     // y axis (x <-> -x, z <-> -z, x <-> z) and no step adds flux.
@@ -321,39 +342,47 @@ TEST_F(LpvVolumeTest, InjectionIsOrderIndependent) {
     EXPECT_LT(maxDiff, 1e-5 * maxValue);
 }
 
+// The defaults (16^3 x 8, 3 cascades) on cornell: the floor is redder by the red wall, and the
+// coarser cascades carry the floor's bounce to the ceiling of the 2 m box, which one grid of 8 steps
+// (about 6 cells, 0.8 m) leaves nearly dark.
 TEST_F(GpuTest, LpvCornellBleedsWallColoursAndLightsTheCeiling) {
     Scene scene = makeBuiltinScene("cornell");
-    RenderSettings s;
-    s.width = 160;
-    s.height = 120;
-    s.aov = Aov::Indirect;
-    s.gi = GiMode::Lpv;
-    s.lpv.rsmResolution = 512;
-    s.lpv.vplResolution = 128;
-    // Light moves at most one cell per step and spreads sideways as it goes (propagation is
-    // diffusive), so the bounce off the floor reaches the ceiling of a 2 m box only with cells of
-    // ~13 cm and enough steps: 16^3 x 32 here (the defaults, 32^3 x 8, light ~0.5 m around each VPL).
-    s.lpv.resolution = 16;
-    s.lpv.iterations = 32;
-    Renderer r(ctx(), scene, s);
-    r.render(scene.cameras[0]);
-    FloatImage img{s.width, s.height, r.readHdr()};
-    const auto world = gbufferWorldPositions(r);
-    dvec3 nearRed(0.0), nearGreen(0.0), ceiling(0.0);
-    size_t ceilingPixels = 0;
-    for (uint32_t y = 0; y < s.height; ++y)
-        for (uint32_t x = 0; x < s.width; ++x) {
-            if (!world[size_t(y) * s.width + x]) continue;
-            const dvec3 w = *world[size_t(y) * s.width + x];
-            const dvec3 c(img.at(x, y, 0), img.at(x, y, 1), img.at(x, y, 2));
-            if (w.y < 0.01 && w.x < -0.7) nearRed += c;
-            if (w.y < 0.01 && w.x > 0.7) nearGreen += c;
-            if (w.y > 1.99) ceiling += c, ++ceilingPixels;
-        }
-    const double redLeft = nearRed.x / nearRed.y, redRight = nearGreen.x / nearGreen.y;
-    std::printf("[ lpv ] floor red/green: %.3f by the red wall, %.3f by the green wall (ratio %.2f); ceiling %.4f\n",
-                redLeft, redRight, redLeft / redRight, ceiling.y / double(ceilingPixels));
-    EXPECT_GT(redLeft, 1.5 * redRight);
-    ASSERT_GT(ceilingPixels, 100u);
-    EXPECT_GT(ceiling.y / double(ceilingPixels), 1e-3);
+    struct Result {
+        double redLeft, redRight, ceiling;
+    };
+    auto render = [&](uint32_t cascades) {
+        RenderSettings s;
+        s.width = 160;
+        s.height = 120;
+        s.aov = Aov::Indirect;
+        s.gi = GiMode::Lpv;
+        s.lpv.rsmResolution = 512;
+        s.lpv.vplResolution = 128;
+        s.lpv.cascades = cascades;
+        Renderer r(ctx(), scene, s);
+        r.render(scene.cameras[0]);
+        FloatImage img{s.width, s.height, r.readHdr()};
+        const auto world = gbufferWorldPositions(r);
+        dvec3 nearRed(0.0), nearGreen(0.0), ceiling(0.0);
+        size_t ceilingPixels = 0;
+        for (uint32_t y = 0; y < s.height; ++y)
+            for (uint32_t x = 0; x < s.width; ++x) {
+                if (!world[size_t(y) * s.width + x]) continue;
+                const dvec3 w = *world[size_t(y) * s.width + x];
+                const dvec3 c(img.at(x, y, 0), img.at(x, y, 1), img.at(x, y, 2));
+                if (w.y < 0.01 && w.x < -0.7) nearRed += c;
+                if (w.y < 0.01 && w.x > 0.7) nearGreen += c;
+                if (w.y > 1.99) ceiling += c, ++ceilingPixels;
+            }
+        EXPECT_GT(ceilingPixels, 100u);
+        return Result{nearRed.x / nearRed.y, nearGreen.x / nearGreen.y, ceiling.y / double(ceilingPixels)};
+    };
+    const Result defaults = render(0), oneGrid = render(1);
+    std::printf("[ lpv ] floor red/green: %.3f by the red wall, %.3f by the green wall (ratio %.2f); ceiling %.4f "
+                "(one grid: %.4f)\n",
+                defaults.redLeft, defaults.redRight, defaults.redLeft / defaults.redRight, defaults.ceiling,
+                oneGrid.ceiling);
+    EXPECT_GT(defaults.redLeft, 1.5 * defaults.redRight);
+    EXPECT_GT(defaults.ceiling, 1e-3);
+    EXPECT_GT(defaults.ceiling, 5.0 * oneGrid.ceiling);  // measured 9.7x
 }
