@@ -15,13 +15,17 @@ namespace {
 class MotionGiTest : public GpuTest {};
 
 // Camera-only motion leaves LPV's light where it was: cascades snap to whole cells, and the spot
-// light's RSM does not depend on the camera. Cornell with three cascades nested around the eye, the
-// eye moved by fractions of a cell: the summed light volume at the same world cell is unchanged
-// (within 4 ulps: float-atomic injection sums in a varying order) at cells 2 or more cells inside
+// light's RSM does not depend on the camera. Cornell with three cascades nested around the eye (its
+// bounds widened past the 20 m under which the grids are fit to the scene and never move), the eye
+// moved by fractions of a cell: the summed light volume at the same world cell is unchanged
+// (within 2e-5 relative: float-atomic injection sums in a varying order) at cells 2 or more cells inside
 // both grids, and 5 (the propagation steps + 1: light from beyond a border never enters a grid).
-// Measured: no cell differs, with camera geometry off and on (printed).
+// Measured: no cell differs with camera geometry off (printed; on, the G-buffer differs).
 TEST_F(MotionGiTest, CameraOnlyMotionLeavesLpvLightAtFixedWorldCells) {
-    const Scene scene = makeBuiltinScene("cornell");
+    Scene scene = makeBuiltinScene("cornell");
+    const glm::vec3 centre = scene.bounds.center();
+    scene.bounds.extend(centre + glm::vec3(12.0f));
+    scene.bounds.extend(centre - glm::vec3(12.0f));
     RenderSettings s;
     s.width = 64;
     s.height = 48;
@@ -30,7 +34,7 @@ TEST_F(MotionGiTest, CameraOnlyMotionLeavesLpvLightAtFixedWorldCells) {
     s.lpv.resolution = 16;
     s.lpv.iterations = 4;
     s.lpv.rsmResolution = 256;
-    s.lpv.vplResolution = 64;
+    s.lpv.vplResolution = 16;  // few VPLs per cell (0.37 m here): short float-atomic sums
     for (bool cameraGeometry : {false, true}) {
         s.lpv.cameraGeometry = cameraGeometry;
         Renderer renderer(ctx(), scene, s);
@@ -52,7 +56,11 @@ TEST_F(MotionGiTest, CameraOnlyMotionLeavesLpvLightAtFixedWorldCells) {
             std::copy_n(renderer.lpv()->constants().cascades, LPV_MAX_CASCADES, f.cascades.begin());
             frames.push_back(std::move(f));
         }
-        const int res = int(s.lpv.resolution), inner = int(s.lpv.iterations) + 1;
+        // Float-atomic injection sums in a varying order: with the widened bounds a cell (0.77 m) sums
+    // tens of VPLs, and under load on lavapipe the sums were seen to differ by up to 1e-5 (relative)
+    // with 4096 VPLs; moved light would differ by O(1).
+    constexpr double kAtomicOrder = 2e-5;
+    const int res = int(s.lpv.resolution), inner = int(s.lpv.iterations) + 1;
         const size_t cells = size_t(res) * res * res;
         for (int margin : {inner, 2}) {
             size_t compared = 0, differ = 0, shifted = 0;
@@ -78,7 +86,7 @@ TEST_F(MotionGiTest, CameraOnlyMotionLeavesLpvLightAtFixedWorldCells) {
                                 const float scale = std::max(glm::length(va), 1e-30f);
                                 const double d = glm::length(va - vb) / scale;
                                 worst = std::max(worst, d);
-                                differ += d > 4.0 * 1.2e-7;
+                                differ += d > kAtomicOrder;
                             }
                         }
             }

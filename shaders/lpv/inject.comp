@@ -5,9 +5,15 @@
 // RSM flux already contains the texel's footprint (rsm/rsm.frag), so no surfel-area guess is needed.
 // Geometry: the surfel blocks area / cell^2 of the cell's cross-section, as a cosine lobe around its
 // normal scaled to peak at that coverage, added at the nearest geometry-volume corner.
-// Every cascade that holds the VPL receives it: cascades propagate independently.
+// Every cascade that holds the VPL receives it: cascades propagate independently. In the coarser
+// cascades most VPLs of a subgroup (neighbouring RSM texels) land in the same cell: they are summed
+// in the subgroup first, one atomic per coefficient instead of one per VPL (on the H100 the room's
+// injection into 3 cascades took 5 ms with per-VPL atomics).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_atomic_float : require
+#extension GL_KHR_shader_subgroup_basic : require
+#extension GL_KHR_shader_subgroup_vote : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
 #include "shared/types.h"
 
 layout(local_size_x = 64) in;
@@ -18,6 +24,7 @@ layout(push_constant) uniform Push { LpvPush pc; };
 
 #include "lpv/sh.glsl"
 #include "lpv/volume.glsl"
+#include "lpv/subgroup_add.glsl"
 
 const float PI = 3.14159265358979;
 
@@ -35,14 +42,14 @@ void main() {
             for (uint ch = 0; ch < 3u; ++ch) {
                 vec4 coeffs = lobe * (v.flux[ch] / PI);
                 uint base = lightIndex(k, ch, c) * 4u;
-                for (uint j = 0; j < 4u; ++j) atomicAdd(lightCoeffs[base + j], coeffs[j]);
+                ADD_COEFFS(lightCoeffs, base, coeffs)
             }
         }
         ivec3 g = ivec3(floor(gridCoord(k, v.position.xyz) + 0.5));  // nearest cell corner
         if (insideGrid(g)) {
             vec4 blocking = lobe * (min(v.normal.w / (cell * cell), 1.0) / LOBE_PEAK);
             uint base = geometryIndex(k, g) * 4u;
-            for (uint j = 0; j < 4u; ++j) atomicAdd(geometryCoeffs[base + j], blocking[j]);
+            ADD_COEFFS(geometryCoeffs, base, blocking)
         }
     }
 }

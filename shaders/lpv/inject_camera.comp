@@ -4,6 +4,9 @@
 // is the block's world footprint over the viewing cosine.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_atomic_float : require
+#extension GL_KHR_shader_subgroup_basic : require
+#extension GL_KHR_shader_subgroup_vote : require
+#extension GL_KHR_shader_subgroup_arithmetic : require
 #include "shared/types.h"
 #include "render/reconstruct.glsl"
 
@@ -16,6 +19,7 @@ layout(push_constant) uniform Push { LpvPush pc; };
 
 #include "lpv/sh.glsl"
 #include "lpv/volume.glsl"
+#include "lpv/subgroup_add.glsl"
 
 void main() {
     int step = int(pc.params.z);
@@ -37,6 +41,6 @@ void main() {
         if (!insideGrid(g)) continue;
         vec4 blocking = lobe * min(area / (cell * cell), 1.0);
         uint base = geometryIndex(k, g) * 4u;
-        for (uint j = 0; j < 4u; ++j) atomicAdd(geometryCoeffs[base + j], blocking[j]);
+        ADD_COEFFS(geometryCoeffs, base, blocking)
     }
 }

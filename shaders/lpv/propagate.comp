@@ -2,9 +2,16 @@
 // One propagation step (gather form, Kaplanyan 2009): each cell collects, from each of its 6
 // neighbours, the flux the neighbour's intensity sends through the 5 faces of this cell that do not
 // touch the neighbour (solid angles 0.4006696846 for the face ahead, 0.4234413544 for each side
-// face), re-emitted from this cell's centre as a cosine lobe towards that face. Light crossing into
-// the cell is attenuated by the geometry volume sampled on the shared face (skipped on the first
-// step, where the light would block itself). Output: this step's light, and the running sum.
+// face). Light crossing into the cell is attenuated by the geometry volume sampled on the shared face
+// (skipped on the first step, where the light would block itself). Output: this step's light, and
+// the running sum in two halves: near (and every step of cascade 0) and far (the steps of a coarser
+// cascade from pc.grid.w on, the light that has left the finer cascade's reach; lpv.h).
+//
+// Unlike the paper, the flux through a face goes on in the direction it travelled (from the
+// neighbour's centre to the face) and is re-emitted as the L1 projection of that direction, not as a
+// cosine lobe towards the face: the paper's re-emission turns light that moves up through a side face
+// into light that moves sideways, which makes propagation diffusive (32^3 x 8 steps: a VPL's light
+// reaches about 4 cells; README "LPV: where the light goes").
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
 
@@ -38,16 +45,17 @@ vec4 faceGeometry(uint cascade, ivec3 cell, ivec3 d) {
     return 0.25 * sum;
 }
 
-// Directions and solid angles of the 30 faces a cell's light leaves through (5 into each of the 6
-// neighbours): `face` 0 ahead along axis a, 1-4 the side faces.
-void faceOf(int a, int face, out vec3 eval, out vec3 emit, out float solid) {
-    vec3 dir = vec3(AXES[a]);
+// Direction of travel and solid angle of the 30 faces a cell's light leaves through (5 into each of
+// the 6 neighbours): `face` 0 ahead along axis a, 1-4 the side faces.
+void faceOf(int a, int face, out vec3 dir, out float solid) {
+    dir = vec3(AXES[a]);
+    solid = FRONT_SOLID_ANGLE;
+    if (face == 0) return;
     ivec3 s1 = AXES[a].x != 0 ? ivec3(0, 1, 0) : ivec3(1, 0, 0);
     ivec3 s2 = ivec3(cross(dir, vec3(s1)));
-    vec3 side = face == 0 ? vec3(0.0) : vec3(face < 3 ? s1 : s2) * ((face & 1) != 0 ? 1.0 : -1.0);
-    eval = face == 0 ? dir : (2.0 * dir + side) / sqrt(5.0);
-    emit = face == 0 ? dir : side;
-    solid = face == 0 ? FRONT_SOLID_ANGLE : SIDE_SOLID_ANGLE;
+    vec3 side = vec3(face < 3 ? s1 : s2) * ((face & 1) != 0 ? 1.0 : -1.0);
+    dir = (2.0 * dir + side) / sqrt(5.0);
+    solid = SIDE_SOLID_ANGLE;
 }
 
 // Evaluating an L1 intensity at 30 face directions and clamping the negative lobes at zero sends out
@@ -59,10 +67,10 @@ float outflowScale(vec4 intensity) {
     float sent = 0.0;
     for (int a = 0; a < 6; ++a)
         for (int f = 0; f < 5; ++f) {
-            vec3 eval, emit;
+            vec3 dir;
             float solid;
-            faceOf(a, f, eval, emit, solid);
-            sent += solid * max(dot(intensity, shBasis(eval)), 0.0);
+            faceOf(a, f, dir, solid);
+            sent += solid * max(dot(intensity, shBasis(dir)), 0.0);
         }
     float flux = intensity.x * (4.0 * SH_C0);  // both sides in units of 1/pi (solid angles are / pi)
     return sent > flux ? max(flux, 0.0) / sent : 1.0;
@@ -72,7 +80,8 @@ void main() {
     ivec3 cell = ivec3(gl_GlobalInvocationID.x, gl_GlobalInvocationID.y, gl_GlobalInvocationID.z % pc.grid.x);
     uint cascade = gl_GlobalInvocationID.z / pc.grid.x;
     if (any(greaterThanEqual(cell, ivec3(pc.grid.x))) || cascade >= pc.grid.y) return;
-    const bool first = pc.grid.z != 0u;
+    const bool first = pc.grid.z == 0u;
+    const bool far = cascade > 0u && pc.grid.z + 1u >= pc.grid.w;
     const bool occlusion = pc.params.x > 0.5 && !first;
     vec4 result[3] = vec4[](vec4(0.0), vec4(0.0), vec4(0.0));
     for (int a = 0; a < 6; ++a) {
@@ -87,18 +96,26 @@ void main() {
             scale[ch] = outflowScale(source[ch]);
         }
         for (int f = 0; f < 5; ++f) {
-            vec3 eval, emit;
+            vec3 dir;
             float solid;
-            faceOf(a, f, eval, emit, solid);
-            float transmit = 1.0 - clamp(dot(blocking, shBasis(-eval)), 0.0, 1.0);
-            vec4 y = shBasis(eval), lobe = cosineLobe(emit);
+            faceOf(a, f, dir, solid);
+            float transmit = 1.0 - clamp(dot(blocking, shBasis(-dir)), 0.0, 1.0);
+            // shBasis(dir) * PI: the projection of a beam along dir that integrates, like a cosine
+            // lobe, to pi (the solid angles are divided by pi).
+            vec4 y = shBasis(dir);
             for (uint ch = 0; ch < 3u; ++ch)
-                result[ch] += (solid * transmit * scale[ch] * max(dot(source[ch], y), 0.0)) * lobe;
+                result[ch] += (solid * transmit * scale[ch] * max(dot(source[ch], y), 0.0) * PI) * y;
         }
     }
     for (uint ch = 0; ch < 3u; ++ch) {
         uint i = lightIndex(cascade, ch, cell);
         dst[i] = result[ch];
-        accum[i] = (first ? src[i] : accum[i]) + result[ch];
+        if (far) {
+            if (first) accum[i] = src[i];
+            uint f = i + 3u * pc.grid.y * cellsPerVolume();
+            accum[f] += result[ch];
+        } else {
+            accum[i] = (first ? src[i] : accum[i]) + result[ch];
+        }
     }
 }

@@ -20,18 +20,28 @@ float maxExtent(const Bounds& b) {
 
 }  // namespace
 
-uint32_t automaticCascadeCount(const Bounds& scene) {
-    // A room-sized scene fits one grid; a city needs resolution near the camera and reach far away.
-    return glm::length(scene.max - scene.min) < 20.0f ? 1u : 3u;
+namespace {
+// A room-sized scene: grids fit to the scene. A city: grids nested around the camera.
+bool roomSized(const Bounds& scene) { return glm::length(scene.max - scene.min) < 20.0f; }
+}  // namespace
+
+uint32_t automaticCascadeCount(const Bounds&) {
+    // Light goes about one cell per step: 8 steps in one grid leave most of a room dark. Each coarser
+    // cascade carries it twice as far (README "LPV"), for every scene size.
+    return 3u;
 }
 
 std::vector<gpu::GpuLpvCascade> placeCascades(const Bounds& scene, const glm::vec3& eye, uint32_t count,
                                               uint32_t resolution) {
     std::vector<gpu::GpuLpvCascade> out;
     const float extent = maxExtent(scene) * 1.02f;
-    if (count == 1) {  // one grid fit to the scene (a margin of half a cell all round)
-        const float cell = extent / float(resolution - 1);
-        out.push_back({glm::vec4(scene.center() - 0.5f * cell * float(resolution), cell)});
+    if (count == 1 || roomSized(scene)) {
+        // The finest grid fit to the scene (a margin of half a cell all round), each next one twice as
+        // coarse around the same centre: they stay put whatever the camera does.
+        for (uint32_t k = 0; k < count; ++k) {
+            const float cell = extent / float(resolution - 1) * float(1u << k);
+            out.push_back({glm::vec4(scene.center() - 0.5f * cell * float(resolution), cell)});
+        }
         return out;
     }
     // Nested around the eye; the outermost is twice the scene so that it covers the scene from
@@ -47,11 +57,11 @@ std::vector<gpu::GpuLpvCascade> placeCascades(const Bounds& scene, const glm::ve
 LightPropagationVolume::LightPropagationVolume(vk::Allocator& alloc, uint32_t width, uint32_t height,
                                                const LpvSettings& settings, const Bounds& bounds)
     : alloc_(alloc), settings_(settings), bounds_(bounds), width_(width), height_(height) {
-    cascadeCount_ = settings.cascades ? settings.cascades : automaticCascadeCount(bounds);
+    cascadeCount_ = settings_.cascades ? settings_.cascades : automaticCascadeCount(bounds);
     if (cascadeCount_ > LPV_MAX_CASCADES) throw vk::VulkanError("LPV: at most 4 cascades");
-    if (settings.rsmResolution % settings.vplResolution)
+    if (settings_.rsmResolution % settings_.vplResolution)
         throw vk::VulkanError(fmt::format("LPV: the RSM resolution ({}) must be a multiple of the VPL resolution ({})",
-                                          settings.rsmResolution, settings.vplResolution));
+                                          settings_.rsmResolution, settings_.vplResolution));
     vk::Context& ctx = alloc.context();
     const uint32_t push = sizeof(gpu::LpvPush);
     downsample_ = vk::ComputeKernel(ctx, "lpv/downsample.comp", {kTex, kTex, kTex, kSsbo, kSsbo, kSsbo}, push);
@@ -61,19 +71,20 @@ LightPropagationVolume::LightPropagationVolume(vk::Allocator& alloc, uint32_t wi
     gather_ = vk::ComputeKernel(ctx, "lpv/gather.comp", {kUbo, kTex, kTex, kSsbo, kSsbo, kImg}, push);
     pointSampler_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
 
-    const VkDeviceSize cells = VkDeviceSize(settings.resolution) * settings.resolution * settings.resolution;
+    const VkDeviceSize cells = VkDeviceSize(settings_.resolution) * settings_.resolution * settings_.resolution;
     const VkDeviceSize light = cells * cascadeCount_ * 3 * 16;
     volumeA_ = vk::Buffer(alloc, light, kVolumeUsage, false, "lpv-light-a");
     volumeB_ = vk::Buffer(alloc, light, kVolumeUsage, false, "lpv-light-b");
-    accum_ = vk::Buffer(alloc, light, kVolumeUsage, false, "lpv-light-sum");
+    // The sum of the steps in two halves: near (steps before the window of a coarser cascade) and far.
+    accum_ = vk::Buffer(alloc, 2 * light, kVolumeUsage, false, "lpv-light-sum");
     geometry_ = vk::Buffer(alloc, cells * cascadeCount_ * 16, kVolumeUsage, false, "lpv-geometry");
     irradiance_ = vk::Image(alloc, {VK_FORMAT_R32G32B32A32_SFLOAT, width, height, 1,
                                     VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
                                         VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                                     "lpv-irradiance"});
-    push_.grid = {settings.resolution, cascadeCount_, 0, 0};
-    push_.counts = {0, settings.rsmResolution, settings.vplResolution, 0};
-    push_.params = {settings.occlusion ? 1.0f : 0.0f, settings.blendCells, float(settings.cameraGeometryStep), 0};
+    push_.grid = {settings_.resolution, cascadeCount_, 0, 0};
+    push_.counts = {0, settings_.rsmResolution, settings_.vplResolution, 0};
+    push_.params = {settings_.occlusion ? 1.0f : 0.0f, settings_.blendCells, float(settings_.cameraGeometryStep), 0};
 }
 
 void LightPropagationVolume::update(const glm::vec3& eye) {
@@ -179,7 +190,10 @@ void LightPropagationVolume::addPropagation(FrameGraph& graph) {
                        geometry = graph.import(geometry_);
     for (uint32_t i = 0; i < settings_.iterations; ++i) {
         gpu::LpvPush push = push_;
-        push.grid.z = i == 0 ? 1u : 0u;
+        push.grid.z = i;
+        // A coarser cascade's far half starts where the finer one's steps end: after half its steps
+        // (cells twice as large), light has gone as far as the finer cascade's last step took it.
+        push.grid.w = std::max(1u, (settings_.iterations + 1) / 2);
         // Per cell, once: source 48, geometry 16, destination 48, running sum read + written 96.
         graph.pass(fmt::format("lpv.propagate[{}]", i))
             .pipeline(propagate_.pipeline)

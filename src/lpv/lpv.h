@@ -4,9 +4,14 @@
 //   lpv.inject            VPLs -> light volume (L1 SH per colour, float atomics) and geometry volume
 //   lpv.inject-camera     camera G-buffer surfels -> geometry volume
 //   lpv.propagate[i]      6 neighbours x 5 faces, occlusion from the geometry volume, running sum
-//   lpv.gather            per pixel irradiance from the summed volume (trilinear, cascade blend)
-// Cascades: nested grids of the same resolution around the camera, each twice as large, snapped
-// to whole cells. The output is the same indirect-irradiance image the RSM gather produces.
+//   lpv.gather            per pixel irradiance from the summed volume (trilinear, cascades summed)
+// Cascades: nested grids of the same resolution, each twice as coarse: fit to the scene for scenes
+// under 20 m, else around the camera (snapped to whole cells). Light goes about one cell per step, so
+// cascade k + 1, after half the steps, holds light that has gone beyond cascade k's reach: its running
+// sum is kept in two halves, near (steps before (iterations + 1) / 2) and far (the rest). The gather
+// adds every cascade's far half to the finest cascade's near half (a coarser near half only where the
+// finer cascade does not hold the receiver): no light counted twice. The output is the same
+// indirect-irradiance image the RSM gather produces.
 #pragma once
 #include <array>
 #include <vector>
@@ -43,7 +48,8 @@ public:
     const LpvSettings& settings() const { return settings_; }
     uint32_t cascadeCount() const { return cascadeCount_; }
     const gpu::LpvPush& constants() const { return push_; }
-    // Buffers for tests: the summed light volume, the last step's light, the geometry volume, VPLs.
+    // Buffers for tests: the summed light volume (near half, then far half), the last step's light,
+    // the geometry volume, VPLs.
     const vk::Buffer& accumulated() const { return accum_; }
     const vk::Buffer& lastStep() const { return settings_.iterations % 2 ? volumeB_ : volumeA_; }
     const vk::Buffer& geometry() const { return geometry_; }

@@ -5,9 +5,9 @@
 namespace penumbra {
 
 struct LpvSettings {
-    uint32_t resolution = 32;       // cells per side of each cascade
+    uint32_t resolution = 16;       // cells per side of each cascade (README "LPV": 16 beat 24 and 32)
     uint32_t iterations = 8;        // propagation steps
-    uint32_t cascades = 0;          // 1..4; 0 = automatic (1 for small scenes, 3 for large ones)
+    uint32_t cascades = 0;          // 1..4; 0 = automatic (3)
     uint32_t rsmResolution = 2048;  // RSM rendered for injection, per light
     uint32_t vplResolution = 512;   // RSM down-sampled to this many VPLs per side
     bool occlusion = true;          // geometry volume blocks propagation (after the first step)
@@ -15,7 +15,7 @@ struct LpvSettings {
     uint32_t cameraGeometryStep = 4;  // one camera surfel per step x step pixels
     float blendCells = 2.0f;        // cascade border blend band, in cells
     uint32_t sliceAxis = 2;         // debug AOVs lpv-slice / gv-slice: axis (0 x, 1 y, 2 z)
-    uint32_t sliceIndex = 16;       // and cell index along it
+    uint32_t sliceIndex = 8;        // and cell index along it
 };
 
 }  // namespace penumbra
