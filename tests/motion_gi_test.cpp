@@ -57,10 +57,10 @@ TEST_F(MotionGiTest, CameraOnlyMotionLeavesLpvLightAtFixedWorldCells) {
             frames.push_back(std::move(f));
         }
         // Float-atomic injection sums in a varying order: with the widened bounds a cell (0.77 m) sums
-    // tens of VPLs, and under load on lavapipe the sums were seen to differ by up to 1e-5 (relative)
-    // with 4096 VPLs; moved light would differ by O(1).
-    constexpr double kAtomicOrder = 2e-5;
-    const int res = int(s.lpv.resolution), inner = int(s.lpv.iterations) + 1;
+        // tens of VPLs, and under load on lavapipe the sums were seen to differ by up to 1e-5 (relative)
+        // with 4096 VPLs; moved light would differ by O(1).
+        constexpr double kAtomicOrder = 2e-5;
+        const int res = int(s.lpv.resolution), inner = int(s.lpv.iterations) + 1;
         const size_t cells = size_t(res) * res * res;
         for (int margin : {inner, 2}) {
             size_t compared = 0, differ = 0, shifted = 0;
