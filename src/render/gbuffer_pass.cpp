@@ -86,7 +86,7 @@ void GBufferPass::addVisibility(FrameGraph& graph, ImageHandle a, ImageHandle n,
     graph.publish("gbuffer.ids", id);
     if (compute_) {
         compute_->select(slot);
-        compute_->addTo(graph, "visibility", d, graph.buffer("views"), {}, id);
+        compute_->addTo(graph, "visibility.raster", d, graph.buffer("views"), {}, id);
     } else {
         addVisibilityRaster(graph, id, d);
     }
