@@ -71,8 +71,9 @@ void addShadowOptions(CLI::App& cmd, ShadowSettings& s, std::vector<std::string>
     addChoice<RasterMode>(cmd, "--raster", s.raster,
                           {{"hardware", RasterMode::Hardware}, {"compute", RasterMode::Compute},
                            {"auto", RasterMode::Auto}},
-                          "Who draws the shadow maps: the raster hardware, the compute rasterizer (paraboloid point "
-                          "lights stay on the hardware), or auto (by the device's kind)");
+                          "Who draws the shadow maps and the camera's visibility buffer: the raster hardware, the "
+                          "compute rasterizer (paraboloid point lights stay on the hardware), or auto (by the "
+                          "device's kind: compute on NVIDIA H100/H200, the hardware elsewhere)");
     addChoice<PointShadowMode>(cmd, "--point-shadow", s.pointMode,
                                {{"cube", PointShadowMode::Cube}, {"paraboloid", PointShadowMode::Paraboloid}},
                                "Point-light shadow maps: 6 cube faces or 2 paraboloids");
