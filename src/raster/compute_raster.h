@@ -46,10 +46,8 @@ public:
     enum class Views { Light, Camera };
     // Targets of `size` texels with up to `layers` layers.
     ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, VkExtent2D size, uint32_t layers, Views kind = Views::Light);
-    // Per frame: the layers to draw into this frame slot's table (selects the slot).
+    // Per frame: the layers to draw into this frame slot's table.
     void setViews(const std::vector<RasterViews>& views, uint32_t slot);
-    // Per frame, for views that never change (set in every slot once): this frame's slot.
-    void select(uint32_t slot) { layerTable_.select(slot); }
     // The passes (see above) drawing the views set for this frame with the "views" rows of `views`
     // into `target` (D32_SFLOAT array, TRANSFER_DST) and, for views with ID layers, `ids` (R32_UINT
     // array, storage); `name` prefixes the pass names.

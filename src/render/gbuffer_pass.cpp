@@ -37,13 +37,9 @@ GBufferPass::GBufferPass(vk::Allocator& alloc, SceneGpu& scene, uint32_t width, 
                             VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
                                 VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_STORAGE_BIT,
                             "gbuffer-ids"});
-    if (computeRaster) {
+    if (computeRaster)
         compute_ = std::make_unique<ComputeRaster>(alloc, scene, VkExtent2D{width, height}, 1,
                                                    ComputeRaster::Views::Camera);
-        // One layer, the camera's row of "views" (0), with IDs; blended materials as the raster's filter.
-        for (uint32_t slot = 0; slot < vk::kMaxFramesInFlight; ++slot)
-            compute_->setViews({{0, 0, 1, !drawBlended, 0}}, slot);
-    }
     d.colorFormats = {ids.format()};
     pipeline_ = vk::Pipeline::graphics(ctx, d, SceneGpu::drawLayouts(ctx, drawLayout), sizeof(gpu::DrawPush));
     d.fragmentShader = "render/visibility_masked.frag";
@@ -85,7 +81,8 @@ void GBufferPass::addVisibility(FrameGraph& graph, ImageHandle a, ImageHandle n,
     const ImageHandle id = graph.import(ids);
     graph.publish("gbuffer.ids", id);
     if (compute_) {
-        compute_->select(slot);
+        // One layer, the camera's row of "views" (0), with IDs; blended materials as the raster's filter.
+        compute_->setViews({{0, 0, 1, !drawBlended_, 0}}, slot);
         compute_->addTo(graph, "visibility.raster", d, graph.buffer("views"), {}, id);
     } else {
         addVisibilityRaster(graph, id, d);
