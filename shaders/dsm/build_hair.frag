@@ -10,4 +10,4 @@ layout(location = 4) in vec3 inWorld;
 
 #include "dsm/dsm_insert.glsl"
 
-void main() { dsmInsert(inDepth, inAlpha, inWorld); }
+void main() { dsmInsert(uvec2(gl_FragCoord.xy), inDepth, inAlpha, inWorld); }

@@ -12,4 +12,4 @@ layout(location = 2) in vec3 inWorld;
 
 #include "dsm/dsm_insert.glsl"
 
-void main() { dsmInsert(dsmDepth(draw.viewer, inWorld), baseColor(draw.ids.y, inUv).a, inWorld); }
+void main() { dsmInsert(uvec2(gl_FragCoord.xy), dsmDepth(draw.viewer, inWorld), baseColor(draw.ids.y, inUv).a, inWorld); }

@@ -1,4 +1,4 @@
-// The DSM build's one job per light-space fragment: allocate a node from the pool (one atomic add)
+// The DSM build's one job per light-space fragment (raster or compute, dsm/ribbon_raster.glsl): allocate a node from the pool (one atomic add)
 // and push it onto the texel's list (one atomic exchange, one store). Needs `draw` (HairDrawPush:
 // ids.x = DSM layer, ids.z = the scene light, or DSM_NONE for no depth test, ids.w = capacity).
 // A full pool drops the fragment; the counter keeps counting, so the overflow is known exactly and
@@ -58,7 +58,7 @@ bool hiddenByOpaque(vec3 world) {
     return false;
 }
 
-void dsmInsert(float depth, float alpha, vec3 world) {
+void dsmInsert(uvec2 texel, float depth, float alpha, vec3 world) {
     if (alpha <= 0.0) return;  // nothing to cast
     if (hiddenByOpaque(world)) {
         atomicAdd(stats.build.y, 1u);
@@ -67,7 +67,6 @@ void dsmInsert(float depth, float alpha, vec3 world) {
     uint node = atomicAdd(stats.build.x, 1u);
     if (node >= draw.ids.w) return;
     uint res = uint(draw.footprint.z);
-    uvec2 texel = uvec2(gl_FragCoord.xy);
     uint previous = atomicExchange(heads[(draw.ids.x * res + texel.y) * res + texel.x], node);
     nodes[node] = uvec4(floatBitsToUint(depth), floatBitsToUint(min(alpha, 1.0)), previous, DSM_NONE);
 }

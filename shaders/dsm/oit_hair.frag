@@ -11,4 +11,4 @@ layout(location = 2) in float inAlpha;
 
 #include "dsm/oit_insert.glsl"
 
-void main() { oitInsert(inColor, inAlpha, normalize(inTangent), true); }
+void main() { oitInsert(ivec2(gl_FragCoord.xy), gl_FragCoord.z, inColor, inAlpha, normalize(inTangent), true); }

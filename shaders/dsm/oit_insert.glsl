@@ -1,6 +1,6 @@
-// Camera translucency build (src/dsm/translucency.h): every hair or BLEND fragment in front of the
-// opaque surface (the G-buffer depth) pushes a node onto its pixel's list, as the DSM build does
-// (dsm/dsm_insert.glsl). Needs `draw` (HairDrawPush: ids.z = image width, ids.w = node capacity).
+// Camera translucency build (src/dsm/translucency.h): every hair or BLEND fragment (raster, or hair
+// in compute: dsm/ribbon_raster.glsl) in front of the opaque surface (the G-buffer depth) pushes a
+// node onto its pixel's list, as the DSM build does (dsm/dsm_insert.glsl). Needs `draw` (HairDrawPush: ids.z = image width, ids.w = node capacity).
 layout(set = 0, binding = 5, std430) buffer Heads { uint heads[]; };
 layout(set = 0, binding = 6, std430) writeonly buffer Nodes { uvec4 nodes[]; };
 layout(set = 0, binding = 7, std430) writeonly buffer Normals { uint normals[]; };
@@ -9,16 +9,15 @@ layout(set = 0, binding = 9) uniform sampler2D opaqueDepth;
 
 #include "dsm/octahedral.glsl"
 
-void oitInsert(vec3 albedo, float alpha, vec3 normal, bool hair) {
+void oitInsert(ivec2 pixel, float depth, vec3 albedo, float alpha, vec3 normal, bool hair) {
     if (alpha <= 0.0) return;
-    ivec2 pixel = ivec2(gl_FragCoord.xy);
     // Behind (or on) the opaque surface: hidden (a coplanar translucent surface loses to the opaque one).
-    if (gl_FragCoord.z >= texelFetch(opaqueDepth, pixel, 0).r) return;
+    if (depth >= texelFetch(opaqueDepth, pixel, 0).r) return;
     uint node = atomicAdd(stats.counts.x, 1u);
     if (node >= draw.ids.w) return;  // pool full: counted, dropped
     uint previous = atomicExchange(heads[uint(pixel.y) * draw.ids.z + uint(pixel.x)], node);
     alpha = min(alpha, 1.0);
-    nodes[node] = uvec4(floatBitsToUint(gl_FragCoord.z), packHalf2x16(albedo.rg), previous,
+    nodes[node] = uvec4(floatBitsToUint(depth), packHalf2x16(albedo.rg), previous,
                         packHalf2x16(vec2(albedo.b, hair ? -alpha : alpha)));
     normals[node] = packSnorm2x16(octEncode(normal));
 }

@@ -5,7 +5,7 @@
 namespace penumbra {
 
 DeepShadowBuildPass::DeepShadowBuildPass(vk::Allocator& alloc, SceneGpu& scene, const HairGpu* hair,
-                                         DsmResources& res, bool depthTest)
+                                         DsmResources& res, bool depthTest, bool computeHair)
     : alloc_(alloc), scene_(scene), hair_(hair), res_(res), depthTest_(depthTest) {
     for (const Material& m : scene.scene().materials) hasBlended_ |= m.alphaMode == AlphaMode::Blend;
     // Set 0: the scene's draw set (views = the DSM views, materials; set 1 the textures), the hair buffers,
@@ -18,7 +18,12 @@ DeepShadowBuildPass::DeepShadowBuildPass(vk::Allocator& alloc, SceneGpu& scene, 
     nearest_ = vk::Sampler(alloc.context(), {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
     vk::Context& ctx = alloc.context();
     layout_ = vk::DescriptorLayout(ctx, b);
-    if (hair) {
+    if (hair && computeHair) {
+        // The views, the hair buffers and bindings 5-11 as above (dsm/build_hair.comp).
+        std::vector<vk::Binding> k{{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+        k.insert(k.end(), b.begin() + 3, b.end());
+        hairKernel_ = vk::ComputeKernel(ctx, "dsm/build_hair.comp", k, sizeof(gpu::HairDrawPush));
+    } else if (hair) {
         hairPipeline_ = vk::Pipeline::graphics(ctx, HairGpu::pipelineDesc("dsm/build_hair.frag"), SceneGpu::drawLayouts(ctx, layout_.handle()),
                                                sizeof(gpu::HairDrawPush));
     }
@@ -34,13 +39,18 @@ DeepShadowBuildPass::DeepShadowBuildPass(vk::Allocator& alloc, SceneGpu& scene, 
     }
 }
 
-void DeepShadowBuildPass::recordLayer(VkCommandBuffer cmd, uint32_t layer) const {
+gpu::HairDrawPush DeepShadowBuildPass::layerPush(uint32_t layer) const {
     const DsmLayer& l = res_.layers[layer];
-    RasterTarget target{{res_.resolution, res_.resolution}, {}, VK_NULL_HANDLE};  // no attachments
-    beginRaster(cmd, target);
     const uint32_t depthTestLight = depthTest_ ? l.light : DSM_NONE;
     gpu::HairDrawPush push{{layer, 0, depthTestLight, uint32_t(res_.capacity)}, l.view.viewer, l.view.footprint};
     push.footprint.z = float(res_.resolution);
+    return push;
+}
+
+void DeepShadowBuildPass::recordLayer(VkCommandBuffer cmd, uint32_t layer) const {
+    RasterTarget target{{res_.resolution, res_.resolution}, {}, VK_NULL_HANDLE};  // no attachments
+    beginRaster(cmd, target);
+    gpu::HairDrawPush push = layerPush(layer);
     // Both pipelines share one set layout: the set the pass pushed stays bound across them.
     for (const vk::Pipeline* p : {&hairPipeline_, &meshPipeline_}) {
         if (!p->handle()) continue;
@@ -72,20 +82,37 @@ void DeepShadowBuildPass::addTo(FrameGraph& graph) {
             vkCmdFillBuffer(c.cmd, c.buffer(stats).handle(), 0, VK_WHOLE_SIZE, 0);
         });
 
-    PassBuilder build = graph.pass("dsm.build", PassKind::Raster);
-    build.pipeline(setLayoutPipeline());
-    scene_.declareDrawSet(build, graph.import(res_.views.current()));
-    if (hair_) hair_->declare(build);
-    build.storageBuffer(5, heads, Use::StorageWrite)
-        .storageBuffer(6, nodes, Use::StorageWrite)
-        .storageBuffer(7, stats, Use::StorageWrite)
+    heads_ = heads, nodes_ = nodes, stats_ = stats;
+    if (hasBlended_ || hairPipeline_.handle()) {
+        PassBuilder build = graph.pass("dsm.build", PassKind::Raster);
+        build.pipeline(setLayoutPipeline());
+        scene_.declareDrawSet(build, graph.import(res_.views.current()));
+        if (hairPipeline_.handle()) hair_->declare(build);
+        declareLists(build).record([this](PassContext& c) {
+            for (uint32_t layer = 0; layer < res_.layerCount(); ++layer) recordLayer(c.cmd, layer);
+        });
+    }
+    if (hairKernel_.pipeline.handle()) {
+        PassBuilder build = graph.pass("dsm.build.hair");
+        build.pipeline(hairKernel_.pipeline).storageBuffer(0, graph.import(res_.views.current()));
+        hair_->declare(build);
+        declareLists(build).record([this](PassContext& c) {
+            for (uint32_t layer = 0; layer < res_.layerCount(); ++layer)
+                hair_->dispatchSegments(c.cmd, hairKernel_.pipeline, layerPush(layer));
+        });
+    }
+}
+
+// Bindings 5-11 of both builds: the lists, and what the depth test reads.
+PassBuilder& DeepShadowBuildPass::declareLists(PassBuilder& pass) const {
+    FrameGraph& graph = pass.graph();
+    return pass.storageBuffer(5, heads_, Use::StorageWrite)
+        .storageBuffer(6, nodes_, Use::StorageWrite)
+        .storageBuffer(7, stats_, Use::StorageWrite)
         .storageBuffer(8, graph.buffer("lights"))
         .storageBuffer(9, graph.buffer("shadow.lights"))
         .storageBuffer(10, graph.buffer("shadow.layers"))
-        .sampled(11, graph.image("shadow.map"), nearest_.handle())
-        .record([this](PassContext& c) {
-            for (uint32_t layer = 0; layer < res_.layerCount(); ++layer) recordLayer(c.cmd, layer);
-        });
+        .sampled(11, graph.image("shadow.map"), nearest_.handle());
 }
 
 }  // namespace penumbra

@@ -46,7 +46,7 @@ double mib(uint64_t bytes) { return double(bytes) / (1024.0 * 1024.0); }
 
 DeepShadowMaps::DeepShadowMaps(vk::Allocator& alloc, SceneGpu& scene, const HairGpu* hair, const DsmSettings& settings,
                                uint32_t shadowResolution, const std::vector<Light>& lights,
-                               std::vector<std::string>& warnings)
+                               std::vector<std::string>& warnings, bool computeHair)
     : settings_(settings) {
     if (settings.maxList < 1 || settings.maxList > DSM_MAX_LIST_CAP)
         throw vk::VulkanError(fmt::format("--dsm-max-list {}: must be in 1..{}", settings.maxList, DSM_MAX_LIST_CAP));
@@ -56,7 +56,7 @@ DeepShadowMaps::DeepShadowMaps(vk::Allocator& alloc, SceneGpu& scene, const Hair
         warnings.push_back("--shadow dsm: no directional or spot light casts shadows; no deep shadow map");
     res_ = std::make_unique<DsmResources>(alloc, settings, res, std::move(layers), lights.size());
     if (!active()) return;
-    build_ = std::make_unique<DeepShadowBuildPass>(alloc, scene, hair, *res_, settings.depthTest);
+    build_ = std::make_unique<DeepShadowBuildPass>(alloc, scene, hair, *res_, settings.depthTest, computeHair);
     resolve_ = std::make_unique<DeepShadowResolvePass>(alloc, *res_);
 }
 

@@ -32,9 +32,11 @@ struct DsmFrameStats {
 class DeepShadowMaps {
 public:
     // Gives a DSM to the lights `settings` selects (directional and spot; point lights get a warning).
-    // Throws on bad settings (light index, pool size beyond the device).
+    // Throws on bad settings (light index, pool size beyond the device). `computeHair`: hair is
+    // rasterized in compute (DeepShadowBuildPass).
     DeepShadowMaps(vk::Allocator& alloc, SceneGpu& scene, const HairGpu* hair, const DsmSettings& settings,
-                   uint32_t shadowResolution, const std::vector<Light>& lights, std::vector<std::string>& warnings);
+                   uint32_t shadowResolution, const std::vector<Light>& lights, std::vector<std::string>& warnings,
+                   bool computeHair = false);
 
     bool active() const { return !res_->layers.empty(); }
     // Per frame: refits each DSM to its light's current position and direction (same lights as built).

@@ -1,5 +1,7 @@
 #include "dsm/hair_gpu.h"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 namespace penumbra {
@@ -80,6 +82,13 @@ vk::GraphicsDesc HairGpu::pipelineDesc(const std::string& fragmentShader) {
 void HairGpu::draw(VkCommandBuffer cmd, const vk::Pipeline& pipeline, const gpu::HairDrawPush& push) const {
     pipeline.push(cmd, push);
     vkCmdDraw(cmd, vertexCount_, 1, 0, 0);
+}
+
+void HairGpu::dispatchSegments(VkCommandBuffer cmd, const vk::Pipeline& pipeline,
+                               const gpu::HairDrawPush& push) const {
+    pipeline.push(cmd, push);
+    const uint32_t groups = vk::divUp(vertexCount_ / 2 - 1, 64), x = std::min(groups, 32768u);
+    vkCmdDispatch(cmd, x, vk::divUp(groups, x), 1);
 }
 
 }  // namespace penumbra

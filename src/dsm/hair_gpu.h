@@ -33,6 +33,9 @@ public:
     static vk::GraphicsDesc pipelineDesc(const std::string& fragmentShader);
     // Every ribbon of the scene in one draw; `push` says which view.
     void draw(VkCommandBuffer cmd, const vk::Pipeline& pipeline, const gpu::HairDrawPush& push) const;
+    // Every ribbon segment in one dispatch of a compute raster (dsm/ribbon_raster.glsl: 64 segments
+    // per group, groups in 2D); `push` says which view.
+    void dispatchSegments(VkCommandBuffer cmd, const vk::Pipeline& pipeline, const gpu::HairDrawPush& push) const;
 
     const vk::Buffer& points() const { return points_; }
     const vk::Buffer& strands() const { return strands_; }

@@ -20,7 +20,7 @@ uint64_t devicePoolLimit(vk::Context& ctx) {
 }  // namespace
 
 CameraTranslucency::CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, const HairGpu* hair, uint32_t width,
-                                       uint32_t height)
+                                       uint32_t height, bool computeHair)
     : alloc_(alloc), scene_(scene), hair_(hair), width_(width), height_(height) {
     for (const Material& m : scene.scene().materials) hasBlended_ |= m.alphaMode == AlphaMode::Blend;
     if (!active()) return;
@@ -41,7 +41,12 @@ CameraTranslucency::CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, co
     for (uint32_t i = 5; i <= 8; ++i) b.push_back({i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
     b.push_back({9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
     buildLayout_ = vk::DescriptorLayout(ctx, b);
-    if (hair_)
+    if (hair_ && computeHair) {
+        // The views, the hair buffers and bindings 5-9 as above (dsm/oit_hair.comp).
+        std::vector<vk::Binding> k{{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+        k.insert(k.end(), b.begin() + 3, b.end());
+        hairKernel_ = vk::ComputeKernel(ctx, "dsm/oit_hair.comp", k, sizeof(gpu::HairDrawPush));
+    } else if (hair_)
         hairPipeline_ = vk::Pipeline::graphics(ctx, HairGpu::pipelineDesc("dsm/oit_hair.frag"),
                                                SceneGpu::drawLayouts(ctx, buildLayout_.handle()), sizeof(gpu::HairDrawPush));
     if (hasBlended_) {
@@ -74,10 +79,14 @@ CameraTranslucency::CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, co
     moments_ = vk::Sampler(ctx, {VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
 }
 
+gpu::HairDrawPush CameraTranslucency::cameraPush(const RibbonView& camera) const {
+    return {{0, 0, width_, uint32_t(capacity_)}, camera.viewer, camera.footprint};
+}
+
 void CameraTranslucency::recordBuild(VkCommandBuffer cmd, const RibbonView& camera) const {
     beginRaster(cmd, {{width_, height_}, {}, VK_NULL_HANDLE});  // no attachments: the lists are the output
-    gpu::HairDrawPush push{{0, 0, width_, uint32_t(capacity_)}, camera.viewer, camera.footprint};
-    if (hair_) {
+    gpu::HairDrawPush push = cameraPush(camera);
+    if (hairPipeline_.handle()) {
         hairPipeline_.bind(cmd);
         hair_->draw(cmd, hairPipeline_, push);
     }
@@ -106,16 +115,31 @@ void CameraTranslucency::addBuildTo(FrameGraph& graph, const RibbonView& camera)
             vkCmdFillBuffer(c.cmd, c.buffer(heads).handle(), 0, VK_WHOLE_SIZE, DSM_NONE);
             vkCmdFillBuffer(c.cmd, c.buffer(stats).handle(), 0, VK_WHOLE_SIZE, 0);
         });
-    PassBuilder build = graph.pass("oit.build", PassKind::Raster);
-    build.pipeline(hair_ ? hairPipeline_ : meshPipeline_);
-    scene_.declareDrawSet(build, graph.buffer("views"));
-    if (hair_) hair_->declare(build);
-    build.storageBuffer(5, heads, Use::StorageWrite)
-        .storageBuffer(6, nodes, Use::StorageWrite)
-        .storageBuffer(7, normals, Use::StorageWrite)
-        .storageBuffer(8, stats, Use::StorageWrite)
-        .sampled(9, graph.image("gbuffer.depth"), nearest_.handle())
-        .record([this, camera](PassContext& c) { recordBuild(c.cmd, camera); });
+    lists_ = {heads, nodes, normals, stats};
+    if (hasBlended_ || hairPipeline_.handle()) {
+        PassBuilder build = graph.pass("oit.build", PassKind::Raster);
+        build.pipeline(hairPipeline_.handle() ? hairPipeline_ : meshPipeline_);
+        scene_.declareDrawSet(build, graph.buffer("views"));
+        if (hairPipeline_.handle()) hair_->declare(build);
+        declareLists(build).record([this, camera](PassContext& c) { recordBuild(c.cmd, camera); });
+    }
+    if (hairKernel_.pipeline.handle()) {
+        PassBuilder build = graph.pass("oit.build.hair");
+        build.pipeline(hairKernel_.pipeline).storageBuffer(0, graph.buffer("views"));
+        hair_->declare(build);
+        declareLists(build).record([this, camera](PassContext& c) {
+            hair_->dispatchSegments(c.cmd, hairKernel_.pipeline, cameraPush(camera));
+        });
+    }
+}
+
+// Bindings 5-9 of both builds: the lists and the opaque depth they are tested against.
+PassBuilder& CameraTranslucency::declareLists(PassBuilder& pass) const {
+    return pass.storageBuffer(5, lists_[0], Use::StorageWrite)
+        .storageBuffer(6, lists_[1], Use::StorageWrite)
+        .storageBuffer(7, lists_[2], Use::StorageWrite)
+        .storageBuffer(8, lists_[3], Use::StorageWrite)
+        .sampled(9, pass.graph().image("gbuffer.depth"), nearest_.handle());
 }
 
 void CameraTranslucency::addCompositeTo(FrameGraph& graph) {

@@ -5,8 +5,10 @@
 // lighting pass, with the lights' shadow maps ("shadow.*"), deep shadow maps ("dsm.*") and the
 // indirect irradiance ("gi.irradiance"), so it works behind any camera path that publishes them.
 //
-// Frame: oit.clear -> oit.build (raster) -> ... lighting ... -> oit.composite (compute).
+// Frame: oit.clear -> oit.build (raster; hair in compute, oit.build.hair, with `computeHair`: see
+// dsm/ribbon_raster.glsl) -> ... lighting ... -> oit.composite (compute).
 #pragma once
+#include <array>
 #include <string>
 #include <vector>
 
@@ -28,7 +30,8 @@ struct OitFrameStats {
 class CameraTranslucency {
 public:
     // `hair` may be null. Nothing is allocated when the scene has neither hair nor BLEND materials.
-    CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, const HairGpu* hair, uint32_t width, uint32_t height);
+    CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, const HairGpu* hair, uint32_t width, uint32_t height,
+                       bool computeHair = false);
     bool active() const { return hair_ || hasBlended_; }
     // oit.clear and oit.build (after the G-buffer).
     void addBuildTo(FrameGraph& graph, const RibbonView& camera);
@@ -41,6 +44,8 @@ public:
 
 private:
     void recordBuild(VkCommandBuffer cmd, const RibbonView& camera) const;
+    gpu::HairDrawPush cameraPush(const RibbonView& camera) const;
+    PassBuilder& declareLists(PassBuilder& pass) const;
     vk::Allocator& alloc_;
     SceneGpu& scene_;
     const HairGpu* hair_;
@@ -48,9 +53,10 @@ private:
     uint32_t width_, height_;
     uint64_t capacity_ = 0;
     vk::Buffer heads_, nodes_, normals_, stats_;
+    std::array<BufferHandle, 4> lists_;  // this frame's heads, nodes, normals and stats (addBuildTo)
     vk::DescriptorLayout buildLayout_;
-    vk::Pipeline hairPipeline_, meshPipeline_;
-    vk::ComputeKernel composite_;
+    vk::Pipeline hairPipeline_, meshPipeline_;  // the raster's (hairPipeline_ without computeHair)
+    vk::ComputeKernel hairKernel_, composite_;
     vk::Sampler nearest_, compare_, border_, moments_;
 };
 

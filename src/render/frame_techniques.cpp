@@ -40,7 +40,8 @@ CameraTechnique::CameraTechnique(vk::Allocator& alloc, GpuScene& scene, const Re
     : gbuffer_(alloc, scene.meshes(), s.width, s.height, drawLayout, s.cameraPath, !s.translucency,
                computeRasterFor(s.shadow.raster, alloc.context().properties())) {
     if (s.translucency) {
-        translucency_ = std::make_unique<CameraTranslucency>(alloc, scene.meshes(), scene.hair(), s.width, s.height);
+        translucency_ = std::make_unique<CameraTranslucency>(alloc, scene.meshes(), scene.hair(), s.width, s.height,
+                                                             computeRasterFor(s.shadow.raster, alloc.context().properties()));
         if (!translucency_->active()) translucency_.reset();
     } else if (scene.hair()) {
         hair_ = std::make_unique<HairGBufferPass>(alloc, *scene.hair(), gbuffer_);
@@ -115,7 +116,8 @@ void ShadowTechnique::addPasses(const FrameContext& f) {
 
 DsmTechnique::DsmTechnique(vk::Allocator& alloc, GpuScene& scene, const RenderSettings& s,
                            const std::vector<Light>& lights, std::vector<std::string>& warnings)
-    : maps_(alloc, scene.meshes(), scene.hair(), s.dsm, s.shadow.resolution, lights, warnings),
+    : maps_(alloc, scene.meshes(), scene.hair(), s.dsm, s.shadow.resolution, lights, warnings,
+            computeRasterFor(s.shadow.raster, alloc.context().properties())),
       bounds_(scene.scene().bounds) {}
 
 RsmTechnique::RsmTechnique(vk::Allocator& alloc, vk::CommandContext& cmd, GpuScene& scene, const RenderSettings& s,

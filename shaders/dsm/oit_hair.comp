@@ -1,0 +1,24 @@
+#version 460
+// Camera translucency build for hair in compute (--raster compute|auto; dsm/ribbon_raster.glsl says
+// why): every segment's ribbon in the camera's view, each pixel it covers in front of the opaque
+// surface pushing a node (dsm/oit_insert.glsl) with the strand's coverage as alpha.
+#extension GL_GOOGLE_include_directive : require
+#include "shared/types.h"
+#include "dsm/dsm_common.glsl"
+
+layout(local_size_x = 64) in;
+layout(push_constant) uniform Push { HairDrawPush draw; };
+
+#include "dsm/ribbon.glsl"
+#include "dsm/oit_insert.glsl"
+#include "dsm/ribbon_raster.glsl"
+
+void ribbonFragment(ivec2 pixel, float ndcDepth, float viewerDepth, float alpha, vec3 world, vec3 tangent,
+                    vec3 colour) {
+    oitInsert(pixel, ndcDepth, colour, alpha, tangent, true);
+}
+
+void main() {
+    uint i;
+    if (ribbonSegmentIndex(i)) rasterRibbonSegment(i, vec2(textureSize(opaqueDepth, 0)));
+}
