@@ -184,6 +184,67 @@ TEST_F(DsmTest, ListCapKeepsNearestNodes) {
     EXPECT_EQ(run.stats.beyondMaxList, 5 * run.stats.lists);
 }
 
+// A point light's deep shadow map is a cube of six faces. k nested translucent cubes (opacity 0.3)
+// around the light, inside an opaque room: every ray from the light to a wall crosses each cube
+// once, so the walls' transmittance is (1 - 0.3)^k in every direction. Two cameras at the light,
+// looking along +(1,1,1) and -(1,1,1), see all six walls; pixels near the cube's edges, where a
+// ray grazes two faces of a layer (and where the DSM's faces meet), are left out.
+TEST_F(DsmTest, NestedLayersAroundAPointLightGiveClosedFormTransmittance) {
+    constexpr float kAlpha = 0.3f, kRoom = 2.0f;
+    constexpr uint32_t kSize = 48;
+    auto addCube = [](Scene& s, float half, uint32_t material) {
+        for (int axis = 0; axis < 3; ++axis)
+            for (float sign : {-1.0f, 1.0f}) {
+                glm::vec3 n(0.0f), u(0.0f), v(0.0f);
+                n[axis] = sign * half;
+                u[(axis + 1) % 3] = 2.0f * half;
+                v[(axis + 2) % 3] = 2.0f * half;
+                addQuad(s, n - 0.5f * u - 0.5f * v, u, v, material);
+            }
+    };
+    for (uint32_t k : {1u, 3u}) {
+        Scene s;
+        s.name = "dsm-point";
+        const uint32_t layer = addBlendMaterial(s, kAlpha), wall = addMaterial(s, glm::vec3(0.5f));
+        s.materials[layer].doubleSided = true;
+        s.materials[wall].doubleSided = true;
+        for (uint32_t j = 0; j < k; ++j) addCube(s, 0.4f + 0.2f * float(j), layer);
+        addCube(s, kRoom, wall);
+        Light point;
+        point.type = LightType::Point;
+        point.position = glm::vec3(0.0f);
+        s.lights.push_back(point);
+        s.computeBounds();
+        const double expected = std::pow(1.0 - double(kAlpha), double(k));
+        double worst = 0.0;
+        size_t checked = 0;
+        uint32_t longest = 0;
+        for (float sign : {1.0f, -1.0f}) {
+            Camera cam;
+            cam.eye = glm::vec3(0.0f);
+            cam.target = glm::vec3(sign);
+            cam.up = glm::vec3(0.0f, 1.0f, 0.0f);
+            cam.fovy = glm::radians(110.0f);
+            const DsmRun run = renderDsm(s, cam, kSize, kSize, Aov::Transmittance, {});
+            EXPECT_EQ(run.stats.overflow, 0u);
+            longest = std::max(longest, run.stats.longest);
+            for (uint32_t py = 0; py < kSize; ++py)
+                for (uint32_t px = 0; px < kSize; ++px) {
+                    dvec3 d = glm::abs(cameraRay(cam, kSize, kSize, px, py).dir);
+                    std::sort(&d[0], &d[0] + 3);
+                    if (d[1] > 0.9 * d[2]) continue;  // near an edge of the cubes (and a seam of the faces)
+                    worst = std::max(worst, std::abs(double(run.image.at(px, py)) - expected));
+                    ++checked;
+                }
+        }
+        std::printf("[dsm point] k=%u: %zu wall pixels, T max error %.2e against %.6f; longest list %u\n", k, checked,
+                    worst, expected, longest);
+        EXPECT_GT(checked, 2000u);
+        EXPECT_LT(worst, 1e-3) << "k = " << k;
+        EXPECT_EQ(longest, k);
+    }
+}
+
 // A pool of 100 nodes for thousands of fragments: the overflow is counted exactly, reported as a
 // warning, and the image (lit and transmittance) stays finite and in range.
 TEST_F(DsmTest, PoolOverflowIsReportedAndImageStaysFinite) {

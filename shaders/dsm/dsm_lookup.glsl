@@ -4,6 +4,7 @@
 // Opaque casters are not in the DSM: lighting multiplies this with the ordinary shadow map.
 // Reads `frame` (FrameUniforms) of the including shader.
 #include "dsm/dsm_common.glsl"
+#include "shadow/cube_face.glsl"
 
 layout(set = 0, binding = 8, std430) readonly buffer DsmLights { GpuDsmLight dsmLights[]; };
 layout(set = 0, binding = 9, std430) readonly buffer DsmHeads { uint dsmHeads[]; };
@@ -49,6 +50,9 @@ float dsmTapWeight(float s, float width, int i) {
 float deepShadowTransmittance(uint lightIndex, vec3 p, vec3 n, bool hair) {
     GpuDsmLight dsm = dsmLights[lightIndex];
     if (dsm.params.z < 0.0) return 1.0;
+    // A point light: the cube face in p's direction (faces overlap by a margin, so the filter's taps
+    // stay inside it).
+    if (dsm.params.y > 1.5) dsm = dsmLights[uint(dsm.kernel.w) + cubeFace(p - dsm.viewer.xyz)];
     float texel = dsm.params.x * (dsm.params.y > 0.5 ? distance(p, dsm.viewer.xyz) : 1.0);
     vec3 towardsLight = dsm.viewer.w > 0.5 ? normalize(dsm.viewer.xyz - p) : dsm.viewer.xyz;
     vec3 q = p + (hair ? towardsLight : n) * (dsm.kernel.z * texel);

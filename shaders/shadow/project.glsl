@@ -7,13 +7,7 @@ struct ShadowCoord {
     float depth;   // the value the map stores for this point (compare reference)
 };
 
-// Cube face of direction d, in the order +x, -x, +y, -y, +z, -z (cubeFaceProjections).
-uint cubeFace(vec3 d) {
-    vec3 a = abs(d);
-    if (a.x >= a.y && a.x >= a.z) return d.x >= 0.0 ? 0u : 1u;
-    if (a.y >= a.z) return d.y >= 0.0 ? 2u : 3u;
-    return d.z >= 0.0 ? 4u : 5u;
-}
+#include "shadow/cube_face.glsl"
 
 // The layer of light `s` that holds world point q: `chosen` for a spot light or the cascade chosen
 // for the pixel, the face or hemisphere in q's direction for a point light (so that filter taps

@@ -283,9 +283,11 @@ struct HairDrawPush {
 struct GpuDsmLight {
     mat4 viewProj;  // world -> the DSM's clip space
     vec4 viewer;    // as HairDrawPush.viewer: node depths are measured from it
-    vec4 params;    // x = texel world size (ortho) or per unit distance (perspective), y = perspective,
-                    // z = DSM layer (< 0: the light has no DSM), w = resolution
-    vec4 kernel;    // x = PCF box width (texels), y = depth bias (texels), z = normal offset (texels), w unused
+    vec4 params;    // x = texel world size (ortho) or per unit distance (perspective), y = perspective (1),
+                    // or 2 for a point light's cube of six faces, z = DSM layer (< 0: the light has no DSM;
+                    // a cube: its first face's), w = resolution
+    vec4 kernel;    // x = PCF box width (texels), y = depth bias (texels), z = normal offset (texels),
+                    // w = a cube's first face entry (faces +x, -x, +y, -y, +z, -z follow the lights' entries)
 };
 
 // Counters of one frame (cleared before the build; read back for the report).

@@ -1,6 +1,7 @@
 #include "dsm/deep_shadow_maps.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstring>
 
 #include <fmt/format.h>
@@ -8,8 +9,18 @@
 namespace penumbra {
 namespace {
 
+// Layer `face` of light l's DSM: the view of its ordinary shadow map (a point light's cube faces
+// overlap by the filter's reach, as its cube shadow map's do).
+LightProjection dsmProjection(const Light& l, const Bounds& bounds, uint32_t res, uint32_t face,
+                              const DsmSettings& s) {
+    if (l.type == LightType::Directional) return directionalProjection(l.direction, bounds, res);
+    if (l.type == LightType::Spot) return spotProjection(l, bounds, res);
+    const float margin = std::ceil(0.5f * s.filterWidth + s.normalOffset) + 2.0f;
+    return cubeFaceProjections(l.position, pointLightRange(l, bounds), res, margin)[face];
+}
+
 std::vector<DsmLayer> chooseLayers(const std::vector<Light>& lights, const Bounds& bounds, const DsmSettings& s,
-                                   uint32_t res, std::vector<std::string>& warnings) {
+                                   uint32_t res) {
     for (uint32_t i : s.lights)
         if (i >= lights.size())
             throw vk::VulkanError(fmt::format("--dsm-lights: light {} does not exist (the scene has {})", i,
@@ -20,16 +31,11 @@ std::vector<DsmLayer> chooseLayers(const std::vector<Light>& lights, const Bound
         const Light& l = lights[i];
         const bool listed = std::find(s.lights.begin(), s.lights.end(), i) != s.lights.end();
         if (!(s.lights.empty() ? l.castsShadow : listed)) continue;
-        if (l.type == LightType::Point) {
-            warnings.push_back(fmt::format("{}: deep shadow maps cover directional and spot lights; hair and blended "
-                                           "meshes cast no shadow from this point light",
-                                           l.name.empty() ? "point light " + std::to_string(i) : l.name));
-            continue;
+        const bool cube = l.type == LightType::Point;
+        for (uint32_t face = 0; face < (cube ? 6u : 1u); ++face) {
+            const LightProjection p = dsmProjection(l, bounds, res, face, s);
+            layers.push_back({i, p, lightRibbonView(l, p), cube, face});
         }
-        const LightProjection p = l.type == LightType::Directional
-                                      ? directionalProjection(l.direction, bounds, res)
-                                      : spotProjection(l, bounds, res);
-        layers.push_back({i, p, lightRibbonView(l, p)});
     }
     return layers;
 }
@@ -51,9 +57,9 @@ DeepShadowMaps::DeepShadowMaps(vk::Allocator& alloc, SceneGpu& scene, const Hair
     if (settings.maxList < 1 || settings.maxList > DSM_MAX_LIST_CAP)
         throw vk::VulkanError(fmt::format("--dsm-max-list {}: must be in 1..{}", settings.maxList, DSM_MAX_LIST_CAP));
     const uint32_t res = settings.resolution ? settings.resolution : shadowResolution;
-    std::vector<DsmLayer> layers = chooseLayers(lights, scene.scene().bounds, settings, res, warnings);
+    std::vector<DsmLayer> layers = chooseLayers(lights, scene.scene().bounds, settings, res);
     if (settings.enabled && layers.empty())
-        warnings.push_back("--shadow dsm: no directional or spot light casts shadows; no deep shadow map");
+        warnings.push_back("--shadow dsm: no light casts shadows; no deep shadow map");
     res_ = std::make_unique<DsmResources>(alloc, settings, res, std::move(layers), lights.size());
     if (!active()) return;
     build_ = std::make_unique<DeepShadowBuildPass>(alloc, scene, hair, *res_, settings.depthTest, computeHair);
@@ -63,9 +69,7 @@ DeepShadowMaps::DeepShadowMaps(vk::Allocator& alloc, SceneGpu& scene, const Hair
 void DeepShadowMaps::update(const std::vector<Light>& lights, const Bounds& bounds, uint32_t slot) {
     for (DsmLayer& layer : res_->layers) {
         const Light& l = lights.at(layer.light);
-        layer.projection = l.type == LightType::Directional
-                               ? directionalProjection(l.direction, bounds, res_->resolution)
-                               : spotProjection(l, bounds, res_->resolution);
+        layer.projection = dsmProjection(l, bounds, res_->resolution, layer.face, settings_);
         layer.view = lightRibbonView(l, layer.projection);
     }
     res_->writeTables(settings_, slot);

@@ -31,7 +31,7 @@ struct DsmFrameStats {
 
 class DeepShadowMaps {
 public:
-    // Gives a DSM to the lights `settings` selects (directional and spot; point lights get a warning).
+    // Gives a DSM to the lights `settings` selects (directional and spot: one map; point: a cube of six).
     // Throws on bad settings (light index, pool size beyond the device). `computeHair`: hair is
     // rasterized in compute (DeepShadowBuildPass).
     DeepShadowMaps(vk::Allocator& alloc, SceneGpu& scene, const HairGpu* hair, const DsmSettings& settings,

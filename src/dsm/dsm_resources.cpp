@@ -65,7 +65,8 @@ DsmResources::DsmResources(vk::Allocator& alloc, const DsmSettings& settings, ui
     stats = vk::Buffer(alloc, sizeof(gpu::DsmStats), cleared, false, "dsm-stats");
 
     views = vk::BufferRing(alloc, std::max<size_t>(layers.size(), 1) * sizeof(glm::mat4), storage, "dsm-views");
-    lightTable = vk::BufferRing(alloc, std::max<size_t>(lightCount, 1) * sizeof(gpu::GpuDsmLight), storage,
+    const size_t faces = size_t(std::count_if(layers.begin(), layers.end(), [](const DsmLayer& l) { return l.cube; }));
+    lightTable = vk::BufferRing(alloc, (std::max<size_t>(lightCount, 1) + faces) * sizeof(gpu::GpuDsmLight), storage,
                                "dsm-lights");
     lightCount_ = std::max<size_t>(lightCount, 1);
     for (uint32_t slot = 0; slot < vk::kMaxFramesInFlight; ++slot) writeTables(settings, slot);
@@ -76,7 +77,19 @@ void DsmResources::writeTables(const DsmSettings& settings, uint32_t slot) {
     std::vector<gpu::GpuDsmLight> table(lightCount_);
     for (gpu::GpuDsmLight& g : table) g.params = {0.0f, 0.0f, -1.0f, float(resolution)};  // no DSM
     for (size_t i = 0; i < layers.size(); ++i) {
-        table.at(layers[i].light) = tableEntry(layers[i], int(i), resolution, settings);
+        const gpu::GpuDsmLight entry = tableEntry(layers[i], int(i), resolution, settings);
+        if (!layers[i].cube) {
+            table.at(layers[i].light) = entry;
+        } else {
+            // A point light's entry names its first face's; the faces follow the lights' entries.
+            if (layers[i].face == 0) {
+                gpu::GpuDsmLight cube = entry;
+                cube.params.y = 2.0f;
+                cube.kernel.w = float(table.size());
+                table.at(layers[i].light) = cube;
+            }
+            table.push_back(entry);
+        }
         if (i == 0) rows.clear();
         rows.push_back(layers[i].projection.viewProj);
     }

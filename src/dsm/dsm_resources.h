@@ -14,11 +14,14 @@
 
 namespace penumbra {
 
-// A light with a deep shadow map.
+// One map of a light with a deep shadow map: a directional or spot light has one, a point light six
+// (the faces of a cube, +x, -x, +y, -y, +z, -z, consecutive).
 struct DsmLayer {
     uint32_t light;
     LightProjection projection;  // the light's view of the whole scene, like its ordinary shadow map
     RibbonView view;
+    bool cube = false;
+    uint32_t face = 0;
 };
 
 struct DsmResources {
@@ -28,7 +31,7 @@ struct DsmResources {
     uint32_t maxList = 50;
     std::vector<DsmLayer> layers;
     vk::BufferRing views;       // row k: layer k's viewProj (binding 0 of the build), per frame slot
-    vk::BufferRing lightTable;  // GpuDsmLight per scene light, per frame slot
+    vk::BufferRing lightTable;  // GpuDsmLight per scene light, then per cube face, per frame slot
     vk::Buffer heads;       // uint per texel and layer
     vk::Buffer nodes;       // uvec4 per node
     vk::Buffer upLinks;     // uint per node
