@@ -184,6 +184,38 @@ TEST_F(DsmTest, ListCapKeepsNearestNodes) {
     EXPECT_EQ(run.stats.beyondMaxList, 5 * run.stats.lists);
 }
 
+// k horizontal strands wide enough to cover the receivers (a 4 m ribbon has coverage 1: alpha =
+// opacity), stacked like the layers above: behind all of them both volumetric techniques give the
+// closed form (1 - 0.3)^k exactly (the opacity map's optical depths add up to -ln T whatever layers
+// they fall in), in front of them 1. Between strands the deep opacity map interpolates within its
+// layers where the lists are exact: that difference is what `eval --hair` measures.
+TEST_F(DsmTest, StackedStrandsGiveClosedFormTransmittanceInBothTechniques) {
+    constexpr float kAlpha = 0.3f;
+    const auto above = platePixels(kCeilingY, true), below = platePixels(kFloorY, false);
+    for (bool opacityMaps : {false, true})
+        for (uint32_t k : {1u, 4u}) {
+            Scene s = stackedLayers({}, {});
+            Strand style;
+            style.width = 4.0f;
+            style.opacity = kAlpha;
+            for (uint32_t j = 0; j < k; ++j) {
+                const float y = 1.0f + 0.1f * float(j);
+                const std::vector<glm::vec3> points{{-2.0f, y, 0.0f}, {0.0f, y, 0.0f}, {2.0f, y, 0.0f}};
+                addStrand(s, points, style);
+            }
+            s.computeBounds();
+            DsmSettings dsm;
+            dsm.opacityMaps = opacityMaps;
+            const DsmRun run = renderDsm(s, topCamera(), kW, kH, Aov::Transmittance, dsm);
+            const double expected = std::pow(1.0 - double(kAlpha), double(k));
+            const double errBehind = maxError(run.image, above, expected), errFront = maxError(run.image, below, 1.0);
+            std::printf("[dsm strands] %s, k=%u: T behind max error %.2e (expected %.6f), in front %.2e\n",
+                        opacityMaps ? "deep opacity map" : "deep shadow map", k, errBehind, expected, errFront);
+            EXPECT_LT(errBehind, 1e-3) << k;
+            EXPECT_LT(errFront, 1e-6) << k;
+        }
+}
+
 // A point light's deep shadow map is a cube of six faces. k nested translucent cubes (opacity 0.3)
 // around the light, inside an opaque room: every ray from the light to a wall crosses each cube
 // once, so the walls' transmittance is (1 - 0.3)^k in every direction. Two cameras at the light,

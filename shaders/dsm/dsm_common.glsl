@@ -6,3 +6,10 @@
 float dsmDepth(vec4 viewer, vec3 p) {
     return viewer.w > 0.5 ? distance(p, viewer.xyz) : -dot(p, viewer.xyz);
 }
+
+// Depths as uints that keep their order (negative ones too), for atomicMin (deep opacity maps).
+uint orderedDepth(float d) {
+    uint u = floatBitsToUint(d);
+    return (u & 0x80000000u) != 0u ? ~u : u | 0x80000000u;
+}
+float fromOrderedDepth(uint u) { return uintBitsToFloat((u & 0x80000000u) != 0u ? u & 0x7FFFFFFFu : ~u); }

@@ -44,6 +44,19 @@ float dsmTapWeight(float s, float width, int i) {
     return (dsmTentCdf(s + 0.5 * width - c) - dsmTentCdf(s - 0.5 * width - c)) / width;
 }
 
+// Deep opacity map (--shadow dom): transmittance at depth d in `texel`: exp of minus the optical
+// depth of the layers in front of d, the layer d lies in counted in proportion (the linear
+// interpolation between layer boundaries of Yuksel & Keyser 2008).
+float domTransmittance(uint texel, float d, float thickness) {
+    uint first = dsmHeads[texel];
+    if (first == DSM_NONE) return 1.0;  // the clear value: no strand over this texel
+    float x = (d - fromOrderedDepth(first)) / thickness;
+    vec4 layers = uintBitsToFloat(dsmNodes[texel]);
+    float sigma = 0.0;
+    for (int k = 0; k < DOM_LAYERS; ++k) sigma += layers[k] * clamp(x - float(k), 0.0, 1.0);
+    return exp(-sigma);
+}
+
 // Filtered transmittance at p for light `lightIndex` (1 where it has no DSM). The receiver moves
 // `kernel.z` texels along its normal n (hair, whose n is a tangent: towards the light) and its depth
 // `kernel.y` texels towards the light, so that it does not shadow itself through its own nodes.
@@ -65,6 +78,13 @@ float deepShadowTransmittance(uint lightIndex, vec3 p, vec3 n, bool hair) {
     ivec2 lo = ivec2(floor(s - 0.5 * width - 0.5)), hi = ivec2(floor(s + 0.5 * width - 0.5)) + 1;
     uint base = uint(dsm.params.z) * uint(res * res);
     float sum = 0.0;
+    if (dsm.opacity.x > 0.5) {  // deep opacity map: the same taps, each read in place
+        for (int y = max(lo.y, 0); y <= min(hi.y, res - 1); ++y)
+            for (int x = max(lo.x, 0); x <= min(hi.x, res - 1); ++x)
+                sum += dsmTapWeight(s.y, width, y) * dsmTapWeight(s.x, width, x) *
+                       (domTransmittance(base + uint(y * res + x), d, dsm.opacity.y) - 1.0);
+        return clamp(1.0 + sum, 0.0, 1.0);  // taps outside the map cast nothing (1 - 1 = 0 there)
+    }
     uint rowHint = DSM_NONE;  // the upper link of the previous row's first node
     for (int y = lo.y; y <= hi.y; ++y) {
         float wy = dsmTapWeight(s.y, width, y);
@@ -89,14 +109,20 @@ float firstDeepShadowTransmittance(vec3 p, vec3 n, bool hair) {
 }
 
 // Debug AOV: list length (after the resolve's cap) per texel of the first light with a DSM, its
-// map stretched over the image; -1 when no light has one.
+// map stretched over the image (a deep opacity map: how many of its layers hold opacity); -1 when
+// no light has one.
 float dsmListLengthAov(ivec2 pixel, uvec2 size, uint lightCount) {
     for (uint i = 0; i < lightCount; ++i) {
         GpuDsmLight dsm = dsmLights[i];
         if (dsm.params.z < 0.0) continue;
         uint res = uint(dsm.params.w);
         uvec2 texel = min(uvec2(pixel) * res / size, uvec2(res - 1));
-        uint n = dsmHeads[uint(dsm.params.z) * res * res + texel.y * res + texel.x];
+        uint index = uint(dsm.params.z) * res * res + texel.y * res + texel.x;
+        if (dsm.opacity.x > 0.5) {  // a deep opacity map: its layers holding opacity
+            vec4 layers = uintBitsToFloat(dsmNodes[index]);
+            return float(dsmHeads[index] != DSM_NONE) * dot(vec4(greaterThan(layers, vec4(0.0))), vec4(1.0));
+        }
+        uint n = dsmHeads[index];
         uint length = 0;
         for (; n != DSM_NONE && length < DSM_MAX_LIST_CAP; n = dsmNodes[n].z) ++length;
         return float(length);

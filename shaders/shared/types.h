@@ -288,7 +288,11 @@ struct GpuDsmLight {
                     // a cube: its first face's), w = resolution
     vec4 kernel;    // x = PCF box width (texels), y = depth bias (texels), z = normal offset (texels),
                     // w = a cube's first face entry (faces +x, -x, +y, -y, +z, -z follow the lights' entries)
+    vec4 opacity;   // x = 1: deep opacity maps (--shadow dom; heads hold each texel's first depth, the node
+                    // at the texel's index its DOM_LAYERS optical depths), 0: lists; y = layer thickness
+                    // (world units); zw unused
 };
+#define DOM_LAYERS 4  // opacity layers of a deep opacity map texel (one vec4)
 
 // Counters of one frame (cleared before the build; read back for the report).
 struct DsmStats {

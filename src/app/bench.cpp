@@ -69,7 +69,8 @@ nlohmann::json settingsJson(const RenderSettings& s, const FrameOptions& f) {
             {"lpv", {{"resolution", s.lpv.resolution}, {"iterations", s.lpv.iterations},
                      {"cascades", s.lpv.cascades}, {"rsm_resolution", s.lpv.rsmResolution},
                      {"vpl_resolution", s.lpv.vplResolution}, {"occlusion", s.lpv.occlusion}}},
-            {"dsm", s.dsm.enabled}};
+            {"dsm", s.dsm.enabled},
+            {"dom", s.dsm.enabled && s.dsm.opacityMaps}};
 }
 
 std::string today() {

@@ -106,7 +106,7 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o, RenderSettings& rs) {
     addGiOptions(cmd, rs);
     cmd.add_option("--exposure", rs.exposure, "Linear exposure multiplier before tone mapping")
         ->check(finiteRange(1e-6, 1e6));
-    addShadowOptions(cmd, rs.shadow, o.lightFilters, rs.dsm.enabled);
+    addShadowOptions(cmd, rs.shadow, o.lightFilters, rs.dsm);
     addDsmOptions(cmd, rs.dsm, o.builtin);
     cmd.add_option("--translucency", rs.translucency,
                    "Hair and BLEND surfaces composited in depth order on/off (off: drawn opaque)");

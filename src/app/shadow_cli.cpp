@@ -11,21 +11,22 @@
 namespace penumbra {
 namespace {
 
-// `--shadow` value: a filter name and/or "dsm" (deep shadow maps for hair and blended meshes, which
-// add to the filter of the opaque casters), comma separated.
+// `--shadow` value: a filter name and/or "dsm" or "dom" (deep shadow maps or deep opacity maps for
+// hair and blended meshes, which add to the filter of the opaque casters), comma separated.
 // One filter for the opaque casters at most: `pcf,vsm` would silently keep the last.
-void parseShadowOption(const std::string& value, ShadowFilter& filter, bool& deepShadows) {
+void parseShadowOption(const std::string& value, ShadowFilter& filter, DsmSettings& deep) {
     std::stringstream ss(value);
     std::string opaque;
     for (std::string token; std::getline(ss, token, ',');) {
-        if (token == "dsm") {
-            deepShadows = true;
+        if (token == "dsm" || token == "dom") {
+            deep.enabled = true;
+            deep.opacityMaps = token == "dom";
             continue;
         }
         try {
             filter = parseShadowFilter(token, "--shadow");
         } catch (const std::invalid_argument& e) {
-            throw CLI::ValidationError(std::string(e.what()) + "; or dsm");
+            throw CLI::ValidationError(std::string(e.what()) + "; or dsm, dom");
         }
         if (!opaque.empty())
             throw CLI::ValidationError(fmt::format("--shadow {}: one filter for opaque casters ({} or {}), optionally "
@@ -36,7 +37,7 @@ void parseShadowOption(const std::string& value, ShadowFilter& filter, bool& dee
 
 }  // namespace
 
-void addShadowOptions(CLI::App& cmd, ShadowSettings& s, std::vector<std::string>& lightFilters, bool& deepShadows) {
+void addShadowOptions(CLI::App& cmd, ShadowSettings& s, std::vector<std::string>& lightFilters, DsmSettings& deep) {
     cmd.add_option("--shadow-res", s.resolution, "Shadow map resolution")->check(CLI::Range(16, 16384));
     cmd.add_option("--shadow-bias-constant", s.depthBiasConstant, "Rasterizer constant depth bias")
         ->check(finiteRange(0.0, 1e6));
@@ -45,9 +46,9 @@ void addShadowOptions(CLI::App& cmd, ShadowSettings& s, std::vector<std::string>
     cmd.add_option("--shadow-normal-offset", s.normalOffset, "Receiver normal offset in shadow texels")
         ->check(finiteRange(0.0, 100.0));
     cmd.add_option_function<std::string>(
-        "--shadow", [&s, &deepShadows](const std::string& v) { parseShadowOption(v, s.filter, deepShadows); },
+        "--shadow", [&s, &deep](const std::string& v) { parseShadowOption(v, s.filter, deep); },
         "Shadow filter of every light: hard, pcf, pcss, vsm, evsm, msm (default pcf); dsm (alone or e.g. pcf,dsm) adds "
-        "deep shadow maps for hair and blended meshes");
+        "deep shadow maps for hair and blended meshes, dom deep opacity maps for hair (for comparison)");
     cmd.add_option("--light-shadow", lightFilters, "Filter of one light, overriding --shadow: N=MODE (repeatable)");
     cmd.add_option("--pcf-radius", s.pcfRadius, "PCF kernel radius in shadow texels")
         ->check(finiteRange(0.0, 64.0));

@@ -6,14 +6,15 @@
 
 #include <CLI/CLI.hpp>
 
+#include "dsm/dsm_settings.h"
 #include "shadow/shadow_settings.h"
 
 namespace penumbra {
 
 // Adds the options to `cmd`; `lightFilters` collects the repeatable `--light-shadow N=MODE`;
-// `deepShadows` is set by `--shadow dsm` (alone or with a filter: `--shadow pcf,dsm`).
+// `deep` is enabled by `--shadow dsm` or `dom` (alone or with a filter: `--shadow pcf,dsm`).
 void addShadowOptions(CLI::App& cmd, ShadowSettings& settings, std::vector<std::string>& lightFilters,
-                      bool& deepShadows);
+                      DsmSettings& deep);
 
 // Applies `--light-shadow N=MODE` to the scene's lights (after `--light` replaced them); throws
 // std::invalid_argument for a malformed spec, an unknown mode or a light index out of range.

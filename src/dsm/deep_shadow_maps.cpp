@@ -60,8 +60,19 @@ DeepShadowMaps::DeepShadowMaps(vk::Allocator& alloc, SceneGpu& scene, const Hair
     std::vector<DsmLayer> layers = chooseLayers(lights, scene.scene().bounds, settings, res);
     if (settings.enabled && layers.empty())
         warnings.push_back("--shadow dsm: no light casts shadows; no deep shadow map");
-    res_ = std::make_unique<DsmResources>(alloc, settings, res, std::move(layers), lights.size());
+    const bool blended = std::any_of(scene.scene().materials.begin(), scene.scene().materials.end(),
+                                     [](const Material& m) { return m.alphaMode == AlphaMode::Blend; });
+    if (settings.opacityMaps && !layers.empty() && blended)
+        warnings.push_back("--shadow dom: deep opacity maps take hair strands only; blended meshes cast no shadow "
+                           "from the lights that have one (use --shadow dsm)");
+    if (settings.opacityMaps && !hair) layers.clear();  // nothing to cast: every lookup reads "no map"
+    const float domLayer = settings.opacityMaps ? DeepOpacityBuildPass::layerThickness(scene.scene()) : 1.0f;
+    res_ = std::make_unique<DsmResources>(alloc, settings, res, std::move(layers), lights.size(), domLayer);
     if (!active()) return;
+    if (settings.opacityMaps) {
+        opacity_ = std::make_unique<DeepOpacityBuildPass>(alloc, *hair, *res_);
+        return;
+    }
     build_ = std::make_unique<DeepShadowBuildPass>(alloc, scene, hair, *res_, settings.depthTest, computeHair);
     resolve_ = std::make_unique<DeepShadowResolvePass>(alloc, *res_);
 }
@@ -85,6 +96,10 @@ void DeepShadowMaps::addTo(FrameGraph& graph) {
     graph.publish("dsm.nodes", graph.import(res_->nodes));
     graph.publish("dsm.links", graph.import(res_->upLinks));
     if (!active()) return;
+    if (opacity_) {
+        opacity_->addTo(graph);
+        return;
+    }
     build_->addTo(graph);
     resolve_->addTo(graph);
 }
@@ -98,7 +113,8 @@ DsmFrameStats DeepShadowMaps::readStats(vk::CommandContext& cmd) const {
     s.maxList = res_->maxList;
     s.poolBytes = res_->poolBytes();
     s.headBytes = active() ? res_->headBytes() : 0;
-    if (!active()) return s;
+    if (opacity_) s.opacityLayer = res_->opacityLayer;
+    if (!active() || opacity_) return s;
     gpu::DsmStats g;
     const std::vector<uint8_t> bytes = cmd.readBuffer(res_->stats, sizeof(g));
     std::memcpy(&g, bytes.data(), sizeof(g));
@@ -115,6 +131,10 @@ DsmFrameStats DeepShadowMaps::readStats(vk::CommandContext& cmd) const {
 
 std::string describeDsm(const DsmFrameStats& s) {
     if (s.maps == 0) return "dsm: no light has a deep shadow map";
+    if (s.opacityLayer > 0.0f)
+        return fmt::format("dom: {} deep opacity map(s) of {}^2, {} layers of {:.4g} m behind each texel's nearest strand; "
+                           "{:.1f} MiB",
+                           s.maps, s.resolution, DOM_LAYERS, s.opacityLayer, mib(s.poolBytes + s.headBytes));
     return fmt::format(
         "dsm: {} map(s) of {}^2: {} light-space fragments ({} more hidden behind opaque casters skipped), {} nodes kept in {} lists (longest {}, {} beyond the "
         "{}-node cap dropped); node pool {:.1f} MiB for {} nodes ({:.1f} MiB used), heads {:.1f} MiB",

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "dsm/deep_opacity_build.h"
 #include "dsm/deep_shadow_build.h"
 #include "dsm/deep_shadow_resolve.h"
 
@@ -27,6 +28,7 @@ struct DsmFrameStats {
     uint32_t maxList = 0, longest = 0;
     uint64_t lists = 0;            // texels with at least one node
     uint64_t poolBytes = 0, headBytes = 0, usedBytes = 0;
+    float opacityLayer = 0.0f;     // deep opacity maps: their layer thickness (then no list counts)
 };
 
 class DeepShadowMaps {
@@ -56,6 +58,7 @@ private:
     std::unique_ptr<DsmResources> res_;
     std::unique_ptr<DeepShadowBuildPass> build_;
     std::unique_ptr<DeepShadowResolvePass> resolve_;
+    std::unique_ptr<DeepOpacityBuildPass> opacity_;  // `--shadow dom`, in place of the two above
 };
 
 // One report line ("dsm: ..."), and the warnings a frame deserves (pool overflow).

@@ -36,28 +36,31 @@ uint64_t maxNodes(vk::Context& ctx, VkDeviceSize headBytes) {
     return std::max<uint64_t>(1, std::min({lim.storageBufferRange / 16, lim.allocationSize / 16, forHeap}));
 }
 
-gpu::GpuDsmLight tableEntry(const DsmLayer& layer, int index, uint32_t resolution, const DsmSettings& s) {
+gpu::GpuDsmLight tableEntry(const DsmLayer& layer, int index, uint32_t resolution, const DsmSettings& s,
+                            float opacityLayer) {
     gpu::GpuDsmLight g{};
     g.viewProj = layer.projection.viewProj;
     g.viewer = layer.view.viewer;
     g.params = {layer.projection.texelSize, layer.projection.perspective ? 1.0f : 0.0f, float(index),
                 float(resolution)};
     g.kernel = {s.filterWidth, s.depthBias, s.normalOffset, 0.0f};
+    g.opacity = {s.opacityMaps ? 1.0f : 0.0f, opacityLayer, 0.0f, 0.0f};
     return g;
 }
 
 }  // namespace
 
 DsmResources::DsmResources(vk::Allocator& alloc, const DsmSettings& settings, uint32_t res,
-                           std::vector<DsmLayer> dsmLayers, size_t lightCount)
-    : resolution(res), maxList(settings.maxList), layers(std::move(dsmLayers)) {
+                           std::vector<DsmLayer> dsmLayers, size_t lightCount, float domLayer)
+    : resolution(res), maxList(settings.maxList), opacityMaps(settings.opacityMaps), opacityLayer(domLayer),
+      layers(std::move(dsmLayers)) {
     const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     const VkBufferUsageFlags cleared = storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
     const uint64_t texels = uint64_t(res) * res * std::max<size_t>(layers.size(), 1);
     const uint64_t automatic = std::min({texels * DsmSettings::kAutoNodesPerTexel, DsmSettings::kMaxPoolNodes - 1,
                                          maxNodes(alloc.context(), texels * 4)});
-    capacity = layers.empty() ? 1 : settings.poolNodes ? settings.poolNodes : automatic;
-    deviceLimited = !layers.empty() && !settings.poolNodes && automatic < texels * DsmSettings::kAutoNodesPerTexel;
+    capacity = layers.empty() ? 1 : opacityMaps ? texels : settings.poolNodes ? settings.poolNodes : automatic;
+    deviceLimited = !layers.empty() && !opacityMaps && !settings.poolNodes && automatic < texels * DsmSettings::kAutoNodesPerTexel;
     if (!layers.empty()) checkFits(alloc.context(), capacity, texels * 4);  // an explicit --dsm-nodes may not fit
     heads = vk::Buffer(alloc, layers.empty() ? 4 : texels * 4, cleared, false, "dsm-heads");
     nodes = vk::Buffer(alloc, capacity * 16, cleared, false, "dsm-nodes");
@@ -77,7 +80,7 @@ void DsmResources::writeTables(const DsmSettings& settings, uint32_t slot) {
     std::vector<gpu::GpuDsmLight> table(lightCount_);
     for (gpu::GpuDsmLight& g : table) g.params = {0.0f, 0.0f, -1.0f, float(resolution)};  // no DSM
     for (size_t i = 0; i < layers.size(); ++i) {
-        const gpu::GpuDsmLight entry = tableEntry(layers[i], int(i), resolution, settings);
+        const gpu::GpuDsmLight entry = tableEntry(layers[i], int(i), resolution, settings, opacityLayer);
         if (!layers[i].cube) {
             table.at(layers[i].light) = entry;
         } else {

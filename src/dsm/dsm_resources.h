@@ -29,6 +29,8 @@ struct DsmResources {
     uint64_t capacity = 1;  // nodes in the pool
     bool deviceLimited = false;  // the automatic size was cut to what the device addresses
     uint32_t maxList = 50;
+    bool opacityMaps = false;   // deep opacity maps: node t holds texel t's layers (DeepOpacityBuildPass)
+    float opacityLayer = 1.0f;  // their layer thickness (world units)
     std::vector<DsmLayer> layers;
     vk::BufferRing views;       // row k: layer k's viewProj (binding 0 of the build), per frame slot
     vk::BufferRing lightTable;  // GpuDsmLight per scene light, then per cube face, per frame slot
@@ -43,7 +45,7 @@ struct DsmResources {
     // Allocates every buffer and writes the tables of every slot. Throws vk::VulkanError with a clear message
     // when the pool does not fit the device (storage-buffer range, allocation size, memory heap).
     DsmResources(vk::Allocator& alloc, const DsmSettings& settings, uint32_t resolution, std::vector<DsmLayer> layers,
-                 size_t lightCount);
+                 size_t lightCount, float opacityLayer = 1.0f);
 
     uint32_t layerCount() const { return uint32_t(layers.size()); }
     // Writes frame slot `slot`'s tables from the layers' current projections.

@@ -6,7 +6,10 @@
 namespace penumbra {
 
 struct DsmSettings {
-    bool enabled = false;          // `--shadow dsm`: hair and blended meshes cast through a DSM
+    bool enabled = false;          // `--shadow dsm` or `dom`: hair and blended meshes cast through a DSM
+    // `--shadow dom`: Deep Opacity Maps (Yuksel & Keyser 2008) instead of the lists, for comparison:
+    // per texel the first depth and DOM_LAYERS layers of accumulated opacity behind it (hair only).
+    bool opacityMaps = false;
     std::vector<uint32_t> lights;  // `--dsm-lights`: the lights that get one (empty: every shadowed
                                    // directional or spot light)
     uint32_t resolution = 0;       // texels per side; 0 = the shadow-map resolution

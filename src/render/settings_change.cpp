@@ -27,6 +27,7 @@ std::vector<SettingsOption> makeTable() {
         // `--shadow` sets both the opaque filter and deep shadow maps on or off (`pcf,dsm`).
         option("--shadow", kStructure, kPartShadowFilters, [](S s) { return s.shadow.filter; }),
         option("--shadow", kStructure, kPartShadow | kPartGi | kPartDsm, [](S s) { return s.dsm.enabled; }),
+        option("--shadow", kStructure, kPartDsm, [](S s) { return s.dsm.opacityMaps; }),
         option("--shadow-res", kSizes, shadowSized, [](S s) { return s.shadow.resolution; }),
         option("--shadow-bias-constant", kFrame, kPartNone, [](S s) { return s.shadow.depthBiasConstant; }),
         option("--shadow-bias-slope", kFrame, kPartNone, [](S s) { return s.shadow.depthBiasSlope; }),
