@@ -138,9 +138,9 @@ TEST_F(GpuTest, HairOnlyGltfRenders) {
     EXPECT_GT(r.deepShadows().readStats(r.commands()).fragments, 0u);
 }
 
-// After a frame of the hair scene: every list is sorted by depth, at most maxList long, its
-// transmittance falls from node to node, and every neighbour link points at the node of the
-// neighbour's list with the largest depth <= the node's own.
+// After a frame of the hair scene: every list is sorted by depth, packed in consecutive nodes, at
+// most maxList long, its transmittance falls from node to node, and every neighbour link points at
+// the node of the neighbour's list with the largest depth <= the node's own.
 TEST_F(GpuTest, DsmListsAndLinksAreConsistent) {
     BuiltinOptions options;
     options.hairStrands = 2000;
@@ -158,20 +158,23 @@ TEST_F(GpuTest, DsmListsAndLinksAreConsistent) {
     ASSERT_EQ(st.overflow, 0u);
     const uint32_t n = res.resolution;
     auto heads = r.commands().readBuffer(res.heads, VkDeviceSize(n) * n * 4);
-    auto nodeBytes = r.commands().readBuffer(res.nodes, st.fragments * 16);
-    auto upBytes = r.commands().readBuffer(res.upLinks, st.fragments * 4);
+    // The resolve packs the sorted lists after the build's nodes (dsm/resolve.comp).
+    const uint64_t used = std::min<uint64_t>(st.fragments + st.kept, res.capacity);
+    auto nodeBytes = r.commands().readBuffer(res.nodes, used * 16);
+    auto upBytes = r.commands().readBuffer(res.upLinks, used * 4);
     const auto* head = reinterpret_cast<const uint32_t*>(heads.data());
     const auto* node = reinterpret_cast<const glm::uvec4*>(nodeBytes.data());
     const auto* up = reinterpret_cast<const uint32_t*>(upBytes.data());
     auto depth = [&](uint32_t i) { return glm::uintBitsToFloat(node[i].x); };
-    std::vector<int64_t> owner(st.fragments, -1);
+    std::vector<int64_t> owner(used, -1);
     uint64_t kept = 0;
-    size_t unsorted = 0, rising = 0, tooLong = 0;
+    size_t unsorted = 0, rising = 0, tooLong = 0, scattered = 0;
     for (uint32_t t = 0; t < n * n; ++t) {
         uint32_t len = 0;
         float lastDepth = -1e30f, lastT = 1.0f;
         for (uint32_t i = head[t]; i != DSM_NONE && len <= rs.dsm.maxList; i = node[i].z, ++len) {
             owner[i] = t;
+            scattered += node[i].z != DSM_NONE && node[i].z != i + 1;  // packed: each list in consecutive nodes
             unsorted += depth(i) < lastDepth;
             rising += glm::uintBitsToFloat(node[i].y) > lastT;
             lastDepth = depth(i);
@@ -188,19 +191,21 @@ TEST_F(GpuTest, DsmListsAndLinksAreConsistent) {
         for (uint32_t j = head[u]; j != DSM_NONE && depth(j) <= depth(i); j = node[j].z) expected = j;
         badLinks += link != expected;
     };
-    for (uint32_t i = 0; i < st.fragments; ++i) {
+    for (uint32_t i = 0; i < used; ++i) {
         if (owner[i] < 0) continue;
         const uint32_t t = uint32_t(owner[i]), x = t % n, y = t / n;
         if (x + 1 < n) checkLink(i, node[i].w, t + 1);
         if (y + 1 < n) checkLink(i, up[i], t + n);
     }
     std::printf("[dsm lists] %llu nodes in %llu lists (longest %u before the cap of %u): %zu unsorted, %zu "
-                "transmittance rises, %zu too long; %zu of %zu links wrong\n",
+                "transmittance rises, %zu too long, %zu nodes not followed by their list's next; %zu of %zu links "
+                "wrong\n",
                 (unsigned long long)kept, (unsigned long long)st.lists, st.longest, rs.dsm.maxList, unsorted, rising,
-                tooLong, badLinks, links);
+                tooLong, scattered, badLinks, links);
     EXPECT_EQ(kept, st.kept);
     EXPECT_GT(st.longest, rs.dsm.maxList);  // the cap was exercised
     EXPECT_EQ(unsorted + rising + tooLong, 0u);
+    EXPECT_EQ(scattered, 0u);
     EXPECT_GT(links, 1000u);
     EXPECT_EQ(badLinks, 0u);
 }
@@ -337,4 +342,16 @@ TEST_F(GpuTest, HairComputeRasterEqualsTheHardware) {
     EXPECT_NEAR(double(cs.oitFragments), double(hw.oitFragments), 1e-3 * double(hw.oitFragments));
     EXPECT_LT(direct, 0.01);
     EXPECT_LT(final, 0.01);
+}
+
+// A deep shadow map with nothing to cast (cornell: no hair, no BLEND material) builds empty maps
+// under both rasterizers: the build once bound a raster pipeline that did not exist and crashed.
+TEST(DsmCli, SceneWithoutTranslucentCastersRenders) {
+    ScratchDir dir;
+    for (const char* raster : {"hardware", "compute"}) {
+        const Cli r = runCli(dir, fmt::format("render cornell --shadow dsm --raster {} --width 32 --height 24 "
+                                              "--shadow-res 64 -o {}", raster, dir.file("cornell.png")));
+        EXPECT_EQ(r.status, 0) << raster << ": " << r.err;
+        EXPECT_NE(r.out.find("dsm: 1 map(s) of 64^2: 0 light-space fragments"), std::string::npos) << r.out;
+    }
 }

@@ -1,40 +1,41 @@
 #version 460
-// DSM resolve, one thread per texel of every layer. The build left each list in drawing order; this
-// keeps its `maxList` nearest nodes, sorted by depth, each holding the transmittance behind it,
-// T_k = prod_{j<=k} (1 - alpha_j). Farther nodes (the list's tail after sorting) are unlinked and
-// counted. The sorted values are written back into the list's first nodes, so no allocation is needed.
+// DSM resolve, one thread per texel of every layer. The build left each list in drawing order, its
+// nodes scattered over the pool; this keeps the list's `maxList` nearest nodes, sorted by depth, each
+// holding the transmittance behind it, T_k = prod_{j<=k} (1 - alpha_j). Farther nodes (the list's
+// tail after sorting) are unlinked and counted.
+//
+// The sorted nodes are written packed: a workgroup's lists (an 8x8 tile of texels) side by side in
+// the pool after the build's nodes, each list in consecutive nodes, so that the link pass and every
+// lookup walk memory in order (the lookups of the camera's hair layers walked scattered nodes: most
+// of oit.composite on the H100). The head then points at the packed list. When the pool has no room
+// left for a tile, its lists are written back in place into their own first nodes instead.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(set = 0, binding = 0, std430) readonly buffer Heads { uint heads[]; };
+layout(set = 0, binding = 0, std430) buffer Heads { uint heads[]; };
 layout(set = 0, binding = 1, std430) buffer Nodes { uvec4 nodes[]; };
 layout(set = 0, binding = 2, std430) buffer Stats { DsmStats stats; };
 layout(push_constant) uniform Push { DsmPush pc; };
 
-shared uint groupKept, groupDropped, groupLongest, groupLists;
+shared uint groupKept, groupDropped, groupLongest, groupLists, groupPacked;
 
 #define SORT_CAPACITY DSM_MAX_LIST_CAP
 vec2 sortEntry(uint n) { return vec2(uintBitsToFloat(nodes[n].x), uintBitsToFloat(nodes[n].y)); }  // (depth, alpha)
 #include "dsm/sort_nearest.glsl"
 
-void resolveTexel(uint texel) {
-    uint head = heads[texel];
-    if (head == DSM_NONE) return;
-    uint count;
-    uint length = sortNearest(head, pc.sizes.w, pc.sizes.z, count);  // the pool bounds a list
+// Writes the `count` sorted entries as a list: at `first` onwards (packed), or, with first ==
+// DSM_NONE, into the list's own first nodes (in place).
+void writeList(uint texel, uint head, uint count, uint first) {
     float t = 1.0;
-    uint n = head;
+    uint n = first == DSM_NONE ? head : first;
+    if (first != DSM_NONE) heads[texel] = first;
     for (uint i = 0; i < count; ++i) {
-        uint next = nodes[n].z;
+        uint next = first == DSM_NONE ? nodes[n].z : n + 1;
         t *= 1.0 - clamp(sorted[i].y, 0.0, 1.0);
         nodes[n] = uvec4(floatBitsToUint(sorted[i].x), floatBitsToUint(t), i + 1 < count ? next : DSM_NONE, DSM_NONE);
         n = next;
     }
-    atomicAdd(groupKept, count);
-    atomicAdd(groupDropped, length - count);
-    atomicMax(groupLongest, length);
-    atomicAdd(groupLists, 1u);
 }
 
 void main() {
@@ -47,7 +48,26 @@ void main() {
     barrier();
     const uint res = pc.sizes.x;
     uvec3 id = gl_GlobalInvocationID;
-    if (id.x < res && id.y < res) resolveTexel((id.z * res + id.y) * res + id.x);
+    uint texel = (id.z * res + id.y) * res + id.x;
+    uint head = id.x < res && id.y < res ? heads[texel] : DSM_NONE;
+    uint count = 0u, length = 0u;
+    if (head != DSM_NONE) length = sortNearest(head, pc.sizes.w, pc.sizes.z, count);  // the pool bounds a list
+    // This texel's place among the tile's packed lists, then the tile's place in the pool (one
+    // global atomic per tile, on a counter of its own: build.z).
+    uint offset = atomicAdd(groupKept, count);
+    barrier();
+    if (gl_LocalInvocationIndex == 0) {
+        uint used = min(stats.build.x, pc.sizes.z);  // the build's nodes
+        uint start = groupKept > 0u ? used + atomicAdd(stats.build.z, groupKept) : 0u;
+        groupPacked = groupKept > 0u && start + groupKept <= pc.sizes.z ? start : DSM_NONE;
+    }
+    barrier();
+    if (head != DSM_NONE) {
+        writeList(texel, head, count, groupPacked == DSM_NONE ? DSM_NONE : groupPacked + offset);
+        atomicAdd(groupDropped, length - count);
+        atomicMax(groupLongest, length);
+        atomicAdd(groupLists, 1u);
+    }
     barrier();
     // One global update per workgroup, not per texel.
     if (gl_LocalInvocationIndex == 0 && groupLists > 0u) {

@@ -297,7 +297,8 @@ struct GpuDsmLight {
 // Counters of one frame (cleared before the build; read back for the report).
 struct DsmStats {
     uvec4 build;  // x = light-space fragments (allocations tried: beyond the capacity = dropped),
-                  // y = fragments skipped by the depth test against opaque casters, zw unused
+                  // y = fragments skipped by the depth test against opaque casters, z = nodes the
+                  // resolve asked for to pack the sorted lists (dsm/resolve.comp), w unused
     uvec4 lists;  // x = nodes kept, y = nodes dropped beyond the max list length, z = longest list,
                   // w = texels with a list
 };

@@ -125,7 +125,7 @@ DsmFrameStats DeepShadowMaps::readStats(vk::CommandContext& cmd) const {
     s.beyondMaxList = g.lists.y;
     s.longest = g.lists.z;
     s.lists = g.lists.w;
-    s.usedBytes = std::min(s.fragments, s.capacity) * DsmResources::kNodeBytes;
+    s.usedBytes = std::min(s.fragments + g.build.z, s.capacity) * DsmResources::kNodeBytes;  // build + packed lists
     return s;
 }
 
