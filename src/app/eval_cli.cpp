@@ -41,7 +41,7 @@ nlohmann::json referenceKey(const EvalCliOptions& o, const PreparedFrame& f) {
 GroundTruth fromImages(ImageF direct, ImageF indirect, const ImageF& mask, ImageF shadow, ImageF hair,
                        const nlohmann::json& noise) {
     GroundTruth t{std::move(direct), std::move(indirect), {}, {}, noise.value("final", 0.0),
-                  noise.value("indirect", 0.0), std::move(shadow), std::move(hair)};
+                  noise.value("indirect", 0.0), std::move(shadow), std::move(hair), noise.value("hair", 0.0)};
     t.final = t.direct;
     for (size_t k = 0; k < t.final.rgba.size(); ++k) t.final.rgba[k] += t.indirect.rgba[k];
     t.mask.resize(size_t(mask.width) * mask.height);
@@ -68,7 +68,10 @@ GroundTruth groundTruth(const EvalCliOptions& o, const PreparedFrame& f) {
     }
     const ReferenceImage img = renderReference(f.scene, f.camera, o.reference.settings);
     const uint32_t w = img.width, h = img.height;
+    std::vector<uint8_t> hairPixels(img.hair.size());  // as eval --hair selects them
+    for (size_t i = 0; i < hairPixels.size(); ++i) hairPixels[i] = img.hair[i] >= kHairPixelAlpha;
     const nlohmann::json noise{{"final", img.relativeNoise(ReferenceAov::Final)},
+                               {"hair", img.relativeNoise(ReferenceAov::Final, hairPixels)},
                                {"indirect", img.relativeNoise(ReferenceAov::Indirect)}};
     if (o.reference.settings.progress)
         fmt::print("penumbra: reference rendered: {} paths/pixel, {} bounce(s), {:.1f} s\n", img.spp,
@@ -261,14 +264,16 @@ int runHairEvalCommand(const EvalCliOptions& given, const vk::ContextOptions& vk
     fmt::print("{}", formatHairEvalTable(rows, gpu));
     for (const HairEvalRow& r : rows)
         for (const std::string& w : r.warnings) fmt::print(stderr, "penumbra: warning: {}: {}\n", r.variant.technique, w);
-    fmt::print("reference noise (its own relative L2 error of the image): {:.3f}\n", truth.noiseFinal);
+    fmt::print("reference noise (its own relative L2 error, the floor of the L2 columns): image {:.3f}, hair pixels "
+               "{:.3f}\n", truth.noiseFinal, truth.noiseHair);
     if (!gpu) fmt::print("(GPU ms left out: {} is a CPU device)\n", ctx.info().name);
     if (!o.json.empty()) {
         nlohmann::json j{{"command", o.command}, {"device", ctx.info().name}, {"device_type", ctx.info().type},
                          {"scene", f.scene.name}, {"strands", f.scene.strands.size()}, {"width", base.width},
                          {"height", base.height},
                          {"reference", {{"spp", o.reference.settings.spp}, {"antialias", true}, {"bounces", 0},
-                                        {"seed", o.reference.settings.seed}, {"noise_final", truth.noiseFinal}}},
+                                        {"seed", o.reference.settings.seed}, {"noise_final", truth.noiseFinal},
+                                        {"noise_hair_pixels", truth.noiseHair}}},
                          {"mask_pixels", count(h.mask)}, {"hair_pixels", count(h.hairPixels)},
                          {"floor_shadow_pixels", count(h.shadowPixels)}, {"reference_mean_transmittance", refT},
                          {"rows", hairEvalRowsJson(rows)}};

@@ -34,6 +34,7 @@ struct GroundTruth {
     std::vector<uint8_t> mask;
     double noiseFinal = 0.0, noiseIndirect = 0.0;
     ImageF shadow, hair;  // the reference's shadow and hair AOVs (path_tracer.h), for `eval --hair`
+    double noiseHair = 0.0;  // relative L2 noise of `final` over the hair pixels (eval/hair_eval.h)
 };
 
 struct EvalRow {

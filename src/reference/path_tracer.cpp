@@ -254,10 +254,10 @@ std::vector<float> ReferenceImage::rgba(ReferenceAov aov) const {
     return out;
 }
 
-double ReferenceImage::relativeNoise(ReferenceAov aov) const {
+double ReferenceImage::relativeNoise(ReferenceAov aov, const std::vector<uint8_t>& mask) const {
     double var = 0.0, sq = 0.0;
     for (size_t i = 0; i < covered.size(); ++i) {
-        if (!covered[i]) continue;
+        if (!(mask.empty() ? covered[i] : mask[i])) continue;
         const double d = aov != ReferenceAov::Indirect ? 1.0 : 0.0, in = aov != ReferenceAov::Direct ? 1.0 : 0.0;
         const glm::dvec3 v = d * glm::dvec3(directVar[i]) + in * glm::dvec3(indirectVar[i]);
         const glm::dvec3 m = d * glm::dvec3(direct[i]) + in * glm::dvec3(indirect[i]);

@@ -52,9 +52,10 @@ struct ReferenceImage {
 
     // RGBA32F of one AOV (mask: 1 on covered pixels), as writeExr takes it.
     std::vector<float> rgba(ReferenceAov aov) const;
-    // The image's relative standard error, sqrt(sum var / sum mean^2) over covered pixels and the
-    // three channels (Final: direct and indirect variances added, their covariance neglected).
-    double relativeNoise(ReferenceAov aov) const;
+    // The image's relative standard error, sqrt(sum var / sum mean^2) over covered pixels (or those
+    // `mask` selects) and the three channels (Final: direct and indirect variances added, their
+    // covariance neglected).
+    double relativeNoise(ReferenceAov aov, const std::vector<uint8_t>& mask = {}) const;
 };
 
 // Throws std::invalid_argument for bad settings (size 0, spp 0, bounces > kMaxBounces).
