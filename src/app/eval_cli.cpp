@@ -267,6 +267,20 @@ int runHairEvalCommand(const EvalCliOptions& given, const vk::ContextOptions& vk
     fmt::print("reference noise (its own relative L2 error, the floor of the L2 columns): image {:.3f}, hair pixels "
                "{:.3f}\n", truth.noiseFinal, truth.noiseHair);
     if (!gpu) fmt::print("(GPU ms left out: {} is a CPU device)\n", ctx.info().name);
+    if (!o.images.empty()) {
+        std::error_code ec;
+        fs::create_directories(o.images, ec);
+        double heat = 0.0;
+        uint32_t w = 0, fh = 0;
+        // Not the auto exposure: the floor outside the spot's cone drags the log-average down (x100).
+        const float exposure = o.reference.exposure > 0.0f ? o.reference.exposure : 1.0f;
+        const std::vector<uint8_t> fig = hairEvalFigure(rows, h, exposure, o.figureCellWidth, heat, w, fh);
+        const std::string path = (fs::path(o.images) / "hair-figure.png").string();
+        writePng(path, w, fh, fig);
+        fmt::print("figure {}: columns reference, PCF, DSM; rows final (x{:.3g}), floor transmittance T (white 1), "
+                   "|T - T_ref| over the measured floor pixels (black 0 .. pale yellow {:.3g}; grey: not measured)\n",
+                   path, exposure, heat);
+    }
     if (!o.json.empty()) {
         nlohmann::json j{{"command", o.command}, {"device", ctx.info().name}, {"device_type", ctx.info().type},
                          {"scene", f.scene.name}, {"strands", f.scene.strands.size()}, {"width", base.width},

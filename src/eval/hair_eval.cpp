@@ -14,13 +14,13 @@ namespace penumbra {
 std::vector<EvalVariant> hairEvalVariants(const RenderSettings& base) {
     std::vector<EvalVariant> v;
     for (const std::string& name : shadowFilterNames()) {
-        EvalVariant s{"shadow " + name, "hair opaque in the shadow map", base, false};
+        EvalVariant s{"shadow " + name, "hair opaque in the shadow map", base, name == "pcf"};
         s.render.gi = GiMode::None;
         s.render.shadow.filter = parseShadowFilter(name, "eval");
         v.push_back(s);
     }
     // `--shadow dsm`: deep shadow maps for the hair, the CLI's default filter (PCF) for opaque casters.
-    EvalVariant dsm{"shadow dsm", "", base, false};
+    EvalVariant dsm{"shadow dsm", "", base, true};
     dsm.render.gi = GiMode::None;
     dsm.render.shadow.filter = ShadowFilter::Pcf;
     dsm.render.dsm.enabled = true;
@@ -85,8 +85,22 @@ std::vector<uint8_t> floorPixels(vk::Context& ctx, const Scene& scene, const Cam
     Renderer r(ctx, gpuScene, s, 1);
     r.render(camera);
     const std::vector<float> normal = r.readHdr();
+    r.setAov(Aov::Depth);  // distance to the eye: the height of the pixel's surface
+    r.render(camera);
+    const std::vector<float> distance = r.readHdr();
+    // The camera's rays as the renderer's (glm::lookAt, vertical fovy, top row first).
+    const glm::vec3 forward = glm::normalize(camera.target - camera.eye);
+    const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up)), up = glm::cross(right, forward);
+    const float tanHalf = std::tan(0.5f * camera.fovy), aspect = float(s.width) / float(s.height);
+    const float lowest = scene.bounds.min.y + 1e-3f * glm::length(scene.bounds.max - scene.bounds.min);
     std::vector<uint8_t> out(size_t(s.width) * s.height);
-    for (size_t i = 0; i < out.size(); ++i) out[i] = normal[i * 4 + 1] > 0.9f;
+    for (uint32_t y = 0; y < s.height; ++y)
+        for (uint32_t x = 0; x < s.width; ++x) {
+            const size_t i = size_t(y) * s.width + x;
+            const glm::vec3 dir = glm::normalize(forward + ((x + 0.5f) / s.width * 2.0f - 1.0f) * tanHalf * aspect * right +
+                                                 (1.0f - (y + 0.5f) / s.height * 2.0f) * tanHalf * up);
+            out[i] = normal[i * 4 + 1] > 0.9f && camera.eye.y + distance[i * 4] * dir.y < lowest;
+        }
     return out;
 }
 
@@ -129,20 +143,22 @@ std::vector<HairEvalRow> runHairEval(vk::Context& ctx, const Scene& scene, const
         Renderer& b = use(removed, bareScene, s);
         b.render(camera);
         const ImageF without{s.width, s.height, b.readHdr()};
-        HairEvalRow row{v, medianOf(ms), {}, {}, {}, std::move(warnings)};
+        HairEvalRow row{v, medianOf(ms), {}, {}, {}, std::move(warnings), {}, {}};
+        ImageF transmittance = transmittanceImage(with, without);
         row.image = compareImages(final, truth.final, truth.mask);
         row.hair = compareImages(final, truth.final, truth.hairPixels);
-        row.transmittance = compareImages(transmittanceImage(with, without), truth.transmittance, truth.shadowPixels);
+        row.transmittance = compareImages(transmittance, truth.transmittance, truth.shadowPixels);
+        if (v.figure) row.finalImage = final, row.floorImage = std::move(transmittance);
         rows.push_back(std::move(row));
     }
     return rows;
 }
 
 std::string formatHairEvalTable(const std::vector<HairEvalRow>& rows, bool gpu) {
-    constexpr const char* kRow = "| {:<12} | {:<36} | {:>8} | {:>8} | {:>7} | {:>10} | {:>10} | {:>9} |\n";
+    constexpr const char* kRow = "| {:<12} | {:<38} | {:>8} | {:>8} | {:>7} | {:>10} | {:>10} | {:>9} |\n";
     std::string out = fmt::format(kRow, "technique", "settings", "GPU ms", "image L2", "hair L2", "floor T L2",
                                   "floor T bias", "floor T");
-    out += fmt::format(kRow, std::string(12, '-'), std::string(36, '-'), "-------:", "-------:", "------:", "---------:",
+    out += fmt::format(kRow, std::string(12, '-'), std::string(38, '-'), "-------:", "-------:", "------:", "---------:",
                        "-----------:", "--------:");
     for (const HairEvalRow& r : rows)
         out += fmt::format(kRow, r.variant.technique, r.variant.settings, gpu ? fmtValue(r.frameMs) : "-",
@@ -150,6 +166,16 @@ std::string formatHairEvalTable(const std::vector<HairEvalRow>& rows, bool gpu) 
                            fmtValue(r.transmittance.meanBias, "{:+.3f}"),
                            fmtValue(r.transmittance.refMean + r.transmittance.meanBias));
     return out;
+}
+
+std::vector<uint8_t> hairEvalFigure(const std::vector<HairEvalRow>& rows, const HairGroundTruth& truth, float exposure,
+                                    uint32_t maxCellWidth, double& heatScale, uint32_t& width, uint32_t& height) {
+    // evalFigure's second and third rows show the transmittance in place of the indirect light.
+    std::vector<EvalRow> shown;
+    for (const HairEvalRow& r : rows)
+        if (r.variant.figure) shown.push_back({r.variant, r.frameMs, {}, {}, {}, r.finalImage, r.floorImage});
+    const GroundTruth t{{}, truth.transmittance, truth.final, truth.shadowPixels};
+    return evalFigure(shown, t, exposure, 1.0f, maxCellWidth, heatScale, width, height);
 }
 
 nlohmann::json hairEvalRowsJson(const std::vector<HairEvalRow>& rows) {

@@ -56,6 +56,7 @@ struct HairEvalRow {
     ImageMetrics image, hair, transmittance;     // final radiance (all, hair pixels); floor T
     // What the frame dropped (its pools full): a row with drops measures the pool, not the technique.
     std::vector<std::string> warnings;
+    ImageF finalImage, floorImage;  // final radiance and T, kept for figure variants only
 };
 
 // Renders each variant on the scene and on the scene without its strands (final radiance `frames`
@@ -65,7 +66,8 @@ std::vector<HairEvalRow> runHairEval(vk::Context& ctx, const Scene& scene, const
                                      const std::vector<EvalVariant>& variants, const HairGroundTruth& truth,
                                      int frames, const std::function<void(size_t, size_t, const std::string&)>& progress);
 
-// Pixels whose opaque surface faces up (the renderer's normal AOV, y > 0.9), rendered without strands.
+// The floor's pixels: the opaque surface (rendered without strands) faces up (normal AOV y > 0.9) at
+// the scene's lowest height (depth AOV; not the top of the head).
 std::vector<uint8_t> floorPixels(vk::Context& ctx, const Scene& scene, const Camera& camera, const RenderSettings& base);
 
 // The scene without its hair strands (the "removed" render of the transmittance).
@@ -74,6 +76,12 @@ Scene withoutStrands(const Scene& scene);
 // Markdown table: technique, settings, GPU ms (blank unless `gpu`), relative L2 of the image and of
 // its hair pixels, relative L2 and mean bias (GPU - reference, in transmittance) of the floor's T.
 std::string formatHairEvalTable(const std::vector<HairEvalRow>& rows, bool gpu);
+
+// The side-by-side figure (evalFigure's layout): columns reference and the figure variants (PCF and
+// DSM); rows final radiance (at `exposure`), floor transmittance T (grey, 1 = white after the tone
+// mapper), |T - T_ref| over the measured floor pixels (`heatScale`: the heat map's top).
+std::vector<uint8_t> hairEvalFigure(const std::vector<HairEvalRow>& rows, const HairGroundTruth& truth, float exposure,
+                                    uint32_t maxCellWidth, double& heatScale, uint32_t& width, uint32_t& height);
 nlohmann::json hairEvalRowsJson(const std::vector<HairEvalRow>& rows);
 
 }  // namespace penumbra
