@@ -81,9 +81,11 @@ int runReferenceCommand(const ReferenceCliOptions& o, bool dryRun) {
     if (ext == ".exr") writeExr(o.output, out.width, out.height, out.rgba);
     else writePng(o.output, out.width, out.height, toneMap(out, o.exposure));
     if (o.settings.progress)
-        fmt::print("penumbra: reference '{}' ({} triangles, {}) {}x{}, {} paths/pixel, {} bounce(s): "
+        fmt::print("penumbra: reference '{}' ({} triangles, {}{}) {}x{}, {} paths/pixel, {} bounce(s): "
                    "{:.1f} s, {:.1f} M rays/s -> {}\n",
-                   f.scene.name, f.scene.triangleCount(), plural(f.scene.lights.size(), "light"), img.width, img.height, img.spp,
+                   f.scene.name, f.scene.triangleCount(),
+                   f.scene.strands.empty() ? "" : fmt::format("{} strands, ", f.scene.strands.size()),
+                   plural(f.scene.lights.size(), "light"), img.width, img.height, img.spp,
                    o.settings.bounces, img.seconds, double(img.rays) / img.seconds * 1e-6, o.output);
     return 0;
 }

@@ -289,7 +289,8 @@ std::optional<glm::vec2> RayScene::planeUv(uint32_t triangle, const glm::vec3& o
 }
 
 // A strand hit: the point on the segment's axis (the ribbon is at most half a width from it), lit
-// along the segment's direction; its normals face the viewer (only offsets read them).
+// along the segment's direction; its normals point back along the ray, to the viewer (Kajiya-Kay's
+// view direction; a strand's rays leave from its axis, so no offset reads them).
 SurfacePoint RayScene::strandSurface(const Hit& hit, const glm::vec3& dir) const {
     const glm::vec3 a = scene_.strandPoints[hit.triangle], b = scene_.strandPoints[hit.triangle + 1];
     SurfacePoint s;
