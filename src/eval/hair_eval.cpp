@@ -10,6 +10,23 @@
 #include "render/gpu_scene.h"
 
 namespace penumbra {
+namespace {
+
+// Clears the pixels of `masks` where `image` is not finite (they would make every metric NaN); the
+// warning that says so, or "" when there are none.
+std::string leaveOutNonFinite(const ImageF& image, std::vector<std::vector<uint8_t>*> masks) {
+    size_t count = 0, first = 0;
+    for (size_t p = 0; p < image.rgba.size() / 4; ++p) {
+        if (std::isfinite(image.rgba[p * 4] + image.rgba[p * 4 + 1] + image.rgba[p * 4 + 2])) continue;
+        if (count++ == 0) first = p;
+        for (std::vector<uint8_t>* m : masks) (*m)[p] = 0;
+    }
+    return count ? fmt::format("{} non-finite pixel(s) in the final image (the first at {}, {}), left out of the "
+                               "image metrics", count, first % image.width, first / image.width)
+                 : std::string();
+}
+
+}  // namespace
 
 std::vector<EvalVariant> hairEvalVariants(const RenderSettings& base) {
     std::vector<EvalVariant> v;
@@ -143,10 +160,12 @@ std::vector<HairEvalRow> runHairEval(vk::Context& ctx, const Scene& scene, const
         Renderer& b = use(removed, bareScene, s);
         b.render(camera);
         const ImageF without{s.width, s.height, b.readHdr()};
+        std::vector<uint8_t> finite = truth.mask, finiteHair = truth.hairPixels;
+        if (std::string w = leaveOutNonFinite(final, {&finite, &finiteHair}); !w.empty()) warnings.push_back(w);
         HairEvalRow row{v, medianOf(ms), {}, {}, {}, std::move(warnings), {}, {}};
         ImageF transmittance = transmittanceImage(with, without);
-        row.image = compareImages(final, truth.final, truth.mask);
-        row.hair = compareImages(final, truth.final, truth.hairPixels);
+        row.image = compareImages(final, truth.final, finite);
+        row.hair = compareImages(final, truth.final, finiteHair);
         row.transmittance = compareImages(transmittance, truth.transmittance, truth.shadowPixels);
         if (v.figure) row.finalImage = final, row.floorImage = std::move(transmittance);
         rows.push_back(std::move(row));
