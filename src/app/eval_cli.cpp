@@ -214,6 +214,22 @@ int runSuite(const EvalCliOptions& o, const vk::ContextOptions& vkOptions, bool 
     return 0;
 }
 
+// `eval --hair --images DIR`: DIR/hair-figure.png (eval/hair_eval.h).
+void writeHairFigure(const EvalCliOptions& o, const std::vector<HairEvalRow>& rows, const HairGroundTruth& h) {
+    std::error_code ec;
+    fs::create_directories(o.images, ec);
+    double heat = 0.0;
+    uint32_t w = 0, fh = 0;
+    // Not the auto exposure: the floor outside the spot's cone drags the log-average down (x100).
+    const float exposure = o.reference.exposure > 0.0f ? o.reference.exposure : 1.0f;
+    const std::vector<uint8_t> fig = hairEvalFigure(rows, h, exposure, o.figureCellWidth, heat, w, fh);
+    const std::string path = (fs::path(o.images) / "hair-figure.png").string();
+    writePng(path, w, fh, fig);
+    fmt::print("figure {}: columns reference, PCF, DSM; rows final (x{:.3g}), floor transmittance T (white 1), "
+               "|T - T_ref| over the measured floor pixels (black 0 .. pale yellow {:.3g}; grey: not measured)\n",
+               path, exposure, heat);
+}
+
 // `eval --hair` (eval/hair_eval.h): the anti-aliased, direct-light reference of the scene and of
 // the scene without its strands (cached in DIR and DIR/without-strands), then every shadow technique.
 int runHairEvalCommand(const EvalCliOptions& given, const vk::ContextOptions& vkOptions, bool dryRun) {
@@ -267,20 +283,7 @@ int runHairEvalCommand(const EvalCliOptions& given, const vk::ContextOptions& vk
     fmt::print("reference noise (its own relative L2 error, the floor of the L2 columns): image {:.3f}, hair pixels "
                "{:.3f}\n", truth.noiseFinal, truth.noiseHair);
     if (!gpu) fmt::print("(GPU ms left out: {} is a CPU device)\n", ctx.info().name);
-    if (!o.images.empty()) {
-        std::error_code ec;
-        fs::create_directories(o.images, ec);
-        double heat = 0.0;
-        uint32_t w = 0, fh = 0;
-        // Not the auto exposure: the floor outside the spot's cone drags the log-average down (x100).
-        const float exposure = o.reference.exposure > 0.0f ? o.reference.exposure : 1.0f;
-        const std::vector<uint8_t> fig = hairEvalFigure(rows, h, exposure, o.figureCellWidth, heat, w, fh);
-        const std::string path = (fs::path(o.images) / "hair-figure.png").string();
-        writePng(path, w, fh, fig);
-        fmt::print("figure {}: columns reference, PCF, DSM; rows final (x{:.3g}), floor transmittance T (white 1), "
-                   "|T - T_ref| over the measured floor pixels (black 0 .. pale yellow {:.3g}; grey: not measured)\n",
-                   path, exposure, heat);
-    }
+    if (!o.images.empty()) writeHairFigure(o, rows, h);
     if (!o.json.empty()) {
         nlohmann::json j{{"command", o.command}, {"device", ctx.info().name}, {"device_type", ctx.info().type},
                          {"scene", f.scene.name}, {"strands", f.scene.strands.size()}, {"width", base.width},
