@@ -11,6 +11,7 @@
 #include "app/ground_truth_cli.h"
 #include "app/option_checks.h"
 #include "eval/eval.h"
+#include "eval/hair_eval.h"
 #include "eval/suite.h"
 #include "render/gpu_scene.h"
 #include "io/image_io.h"
@@ -30,15 +31,17 @@ nlohmann::json referenceKey(const EvalCliOptions& o, const PreparedFrame& f) {
                           l.direction.z, l.color.x, l.color.y, l.color.z, l.intensity, l.range, l.innerConeAngle,
                           l.outerConeAngle, l.castsShadow});
     return {{"scene", o.reference.frame.scene}, {"triangles", f.scene.triangleCount()},
+            {"strands", f.scene.strands.size()}, {"strand_points", f.scene.strandPoints.size()},
             {"camera", {c.eye.x, c.eye.y, c.eye.z, c.target.x, c.target.y, c.target.z, c.up.x, c.up.y, c.up.z,
                         c.fovy, c.znear, c.zfar}},
             {"lights", lights}, {"width", s.width}, {"height", s.height}, {"spp", s.spp}, {"bounces", s.bounces},
             {"seed", s.seed}, {"antialias", s.antialias}};
 }
 
-GroundTruth fromImages(ImageF direct, ImageF indirect, const ImageF& mask, const nlohmann::json& noise) {
+GroundTruth fromImages(ImageF direct, ImageF indirect, const ImageF& mask, ImageF shadow, ImageF hair,
+                       const nlohmann::json& noise) {
     GroundTruth t{std::move(direct), std::move(indirect), {}, {}, noise.value("final", 0.0),
-                  noise.value("indirect", 0.0)};
+                  noise.value("indirect", 0.0), std::move(shadow), std::move(hair), noise.value("hair", 0.0)};
     t.final = t.direct;
     for (size_t k = 0; k < t.final.rgba.size(); ++k) t.final.rgba[k] += t.indirect.rgba[k];
     t.mask.resize(size_t(mask.width) * mask.height);
@@ -58,12 +61,17 @@ GroundTruth groundTruth(const EvalCliOptions& o, const PreparedFrame& f) {
             return fromImages(readExrChecked((dir / "direct.exr").string(), "--reference"),
                               readExrChecked((dir / "indirect.exr").string(), "--reference"),
                               readExrChecked((dir / "mask.exr").string(), "--reference"),
+                              readExrChecked((dir / "shadow.exr").string(), "--reference"),
+                              readExrChecked((dir / "hair.exr").string(), "--reference"),
                               stored.value("noise", nlohmann::json::object()));
         }
     }
     const ReferenceImage img = renderReference(f.scene, f.camera, o.reference.settings);
     const uint32_t w = img.width, h = img.height;
+    std::vector<uint8_t> hairPixels(img.hair.size());  // as eval --hair selects them
+    for (size_t i = 0; i < hairPixels.size(); ++i) hairPixels[i] = img.hair[i] >= kHairPixelAlpha;
     const nlohmann::json noise{{"final", img.relativeNoise(ReferenceAov::Final)},
+                               {"hair", img.relativeNoise(ReferenceAov::Final, hairPixels)},
                                {"indirect", img.relativeNoise(ReferenceAov::Indirect)}};
     if (o.reference.settings.progress)
         fmt::print("penumbra: reference rendered: {} paths/pixel, {} bounce(s), {:.1f} s\n", img.spp,
@@ -74,10 +82,13 @@ GroundTruth groundTruth(const EvalCliOptions& o, const PreparedFrame& f) {
         writeExr((dir / "direct.exr").string(), w, h, img.rgba(ReferenceAov::Direct));
         writeExr((dir / "indirect.exr").string(), w, h, img.rgba(ReferenceAov::Indirect));
         writeExr((dir / "mask.exr").string(), w, h, img.rgba(ReferenceAov::Mask));
+        writeExr((dir / "shadow.exr").string(), w, h, img.rgba(ReferenceAov::Shadow));
+        writeExr((dir / "hair.exr").string(), w, h, img.rgba(ReferenceAov::Hair));
         std::ofstream(dir / "reference.json") << nlohmann::json{{"key", key}, {"noise", noise}}.dump(2) << "\n";
     }
     return fromImages({w, h, img.rgba(ReferenceAov::Direct)}, {w, h, img.rgba(ReferenceAov::Indirect)},
-                      {w, h, img.rgba(ReferenceAov::Mask)}, noise);
+                      {w, h, img.rgba(ReferenceAov::Mask)}, {w, h, img.rgba(ReferenceAov::Shadow)},
+                      {w, h, img.rgba(ReferenceAov::Hair)}, noise);
 }
 
 }  // namespace
@@ -107,6 +118,9 @@ CLI::App* addEvalCommand(CLI::App& app, EvalCliOptions& o) {
     cmd->add_option("--assets", o.assets, "--suite: the folder holding sponza/ and VC/");
     cmd->add_option("--scenes", o.suiteScenes, "--suite: only these scenes (cornell, street, room, sponza, vc)")
         ->delimiter(',');
+    cmd->add_flag("--hair", o.hair, "The hair evaluation: every shadow filter and deep shadow maps against the "
+                                    "path-traced strands (anti-aliased, direct light): image and floor transmittance");
+    cmd->get_option("--bounces")->each([&o](const std::string&) { o.bouncesGiven = true; });
     return cmd;
 }
 
@@ -200,6 +214,93 @@ int runSuite(const EvalCliOptions& o, const vk::ContextOptions& vkOptions, bool 
     return 0;
 }
 
+// `eval --hair --images DIR`: DIR/hair-figure.png (eval/hair_eval.h).
+void writeHairFigure(const EvalCliOptions& o, const std::vector<HairEvalRow>& rows, const HairGroundTruth& h) {
+    std::error_code ec;
+    fs::create_directories(o.images, ec);
+    double heat = 0.0;
+    uint32_t w = 0, fh = 0;
+    // Not the auto exposure: the floor outside the spot's cone drags the log-average down (x100).
+    const float exposure = o.reference.exposure > 0.0f ? o.reference.exposure : 1.0f;
+    const std::vector<uint8_t> fig = hairEvalFigure(rows, h, exposure, o.figureCellWidth, heat, w, fh);
+    const std::string path = (fs::path(o.images) / "hair-figure.png").string();
+    writePng(path, w, fh, fig);
+    fmt::print("figure {}: columns reference, PCF, DSM; rows final (x{:.3g}), floor transmittance T (white 1), "
+               "|T - T_ref| over the measured floor pixels (black 0 .. pale yellow {:.3g}; grey: not measured)\n",
+               path, exposure, heat);
+}
+
+// `eval --hair` (eval/hair_eval.h): the anti-aliased, direct-light reference of the scene and of
+// the scene without its strands (cached in DIR and DIR/without-strands), then every shadow technique.
+int runHairEvalCommand(const EvalCliOptions& given, const vk::ContextOptions& vkOptions, bool dryRun) {
+    EvalCliOptions o = given;
+    o.reference.settings.antialias = true;  // strands far thinner than a pixel: samples over its area
+    o.reference.settings.bounces = 0;       // direct light: neither side has GI through hair
+    const PreparedFrame f = prepareReferenceFrame(o.reference);
+    if (f.scene.strands.empty())
+        throw std::invalid_argument(fmt::format("--hair: scene '{}' has no hair strands", f.scene.name));
+    if (given.bouncesGiven && given.reference.settings.bounces != 0)
+        fmt::print(stderr, "penumbra: warning: --hair compares direct light: --bounces {} ignored (0)\n",
+                   given.reference.settings.bounces);
+    if (dryRun) return 0;
+    const bool progressLine = o.reference.settings.progress && isatty(STDERR_FILENO);
+    const GroundTruth truth = groundTruth(o, f);
+    PreparedFrame bareFrame = f;
+    bareFrame.scene = withoutStrands(f.scene);
+    EvalCliOptions bareOptions = o;
+    if (!o.referenceDir.empty()) bareOptions.referenceDir = (fs::path(o.referenceDir) / "without-strands").string();
+    const GroundTruth bare = groundTruth(bareOptions, bareFrame);
+
+    vk::Context ctx(vkOptions);
+    RenderSettings base;
+    base.width = o.reference.settings.width;
+    base.height = o.reference.settings.height;
+    const HairGroundTruth h = makeHairGroundTruth(truth.final, truth.mask, truth.hair, truth.shadow, bare.shadow,
+                                                  floorPixels(ctx, f.scene, f.camera, base), truth.noiseFinal);
+    auto count = [](const std::vector<uint8_t>& m) { return size_t(std::count(m.begin(), m.end(), uint8_t(1))); };
+    if (count(h.hairPixels) == 0 || count(h.shadowPixels) == 0)
+        throw std::runtime_error(fmt::format("--hair: the camera sees {} hair pixels and {} floor pixels in the hair's "
+                                             "shadow: nothing to measure (another --camera?)",
+                                             count(h.hairPixels), count(h.shadowPixels)));
+    const std::vector<HairEvalRow> rows = runHairEval(
+        ctx, f.scene, f.camera, hairEvalVariants(base), h, o.frames, [&](size_t i, size_t n, const std::string& name) {
+            if (progressLine) fmt::print(stderr, "\reval --hair: {}/{} {:<40}", i + 1, n, name), std::fflush(stderr);
+        });
+    if (progressLine) fmt::print(stderr, "\r{:80}\r", "");
+    const bool gpu = ctx.info().type != "cpu";
+    double refT = 0.0;
+    for (size_t i = 0; i < h.shadowPixels.size(); ++i) refT += h.shadowPixels[i] ? h.transmittance.rgba[i * 4] : 0.0;
+    refT /= double(count(h.shadowPixels));
+    fmt::print("penumbra eval --hair: '{}' ({} strands) {}x{} on {}; reference {} anti-aliased paths/pixel, direct "
+               "light (no GI on either side)\nimage L2 over the {} pixels with geometry, hair L2 over the {} where the "
+               "reference's paths stop at a strand in >= {:.0f}%; floor T = shadow AOV with / without the strands over "
+               "the {} floor pixels in the hair's shadow (reference mean T {:.3f}); bias = mean(T - T_ref)\n",
+               f.scene.name, f.scene.strands.size(), base.width, base.height, ctx.info().name, o.reference.settings.spp,
+               count(h.mask), count(h.hairPixels), 100.0 * kHairPixelAlpha, count(h.shadowPixels), refT);
+    fmt::print("{}", formatHairEvalTable(rows, gpu));
+    for (const HairEvalRow& r : rows)
+        for (const std::string& w : r.warnings) fmt::print(stderr, "penumbra: warning: {}: {}\n", r.variant.technique, w);
+    fmt::print("reference noise (its own relative L2 error, the floor of the L2 columns): image {:.3f}, hair pixels "
+               "{:.3f}\n", truth.noiseFinal, truth.noiseHair);
+    if (!gpu) fmt::print("(GPU ms left out: {} is a CPU device)\n", ctx.info().name);
+    if (!o.images.empty()) writeHairFigure(o, rows, h);
+    if (!o.json.empty()) {
+        nlohmann::json j{{"command", o.command}, {"device", ctx.info().name}, {"device_type", ctx.info().type},
+                         {"scene", f.scene.name}, {"strands", f.scene.strands.size()}, {"width", base.width},
+                         {"height", base.height},
+                         {"reference", {{"spp", o.reference.settings.spp}, {"antialias", true}, {"bounces", 0},
+                                        {"seed", o.reference.settings.seed}, {"noise_final", truth.noiseFinal},
+                                        {"noise_hair_pixels", truth.noiseHair}}},
+                         {"mask_pixels", count(h.mask)}, {"hair_pixels", count(h.hairPixels)},
+                         {"floor_shadow_pixels", count(h.shadowPixels)}, {"reference_mean_transmittance", refT},
+                         {"rows", hairEvalRowsJson(rows)}};
+        std::ofstream(o.json) << j.dump(2) << "\n";
+    }
+    if (ctx.validationMessages() > 0)
+        throw std::runtime_error(fmt::format("{} validation message(s) reported", ctx.validationMessages()));
+    return 0;
+}
+
 }  // namespace
 
 int runEvalCommand(const EvalCliOptions& o, const vk::ContextOptions& vkOptions, bool dryRun) {
@@ -209,7 +310,9 @@ int runEvalCommand(const EvalCliOptions& o, const vk::ContextOptions& vkOptions,
     if (!o.json.empty()) checkWritable(o.json, "--json");
     if (!o.images.empty()) checkWritable(o.images, "--images", true);
     if (!o.referenceDir.empty()) checkWritable(o.referenceDir, "--reference", true);
+    if (o.suite && o.hair) throw std::invalid_argument("--suite and --hair: one evaluation at a time");
     if (o.suite) return runSuite(o, vkOptions, dryRun);
+    if (o.hair) return runHairEvalCommand(o, vkOptions, dryRun);
     PreparedFrame f = prepareReferenceFrame(o.reference);
     if (dryRun) return 0;
     const GroundTruth truth = groundTruth(o, f);

@@ -47,6 +47,8 @@ struct EvalCliOptions {
     bool suite = false;             // --suite: the GI evaluation suite instead of one scene
     std::string assets = "../shared/assets";  // --suite: the folder holding sponza/ and VC/
     std::vector<std::string> suiteScenes;     // --scenes: a subset of the suite (empty = all)
+    bool hair = false;              // --hair: the hair evaluation (eval/hair_eval.h) instead of GI modes
+    bool bouncesGiven = false;      // --bounces was on the command line (--hair ignores it)
 };
 CLI::App* addEvalCommand(CLI::App& app, EvalCliOptions& options);
 int runEvalCommand(const EvalCliOptions& options, const vk::ContextOptions& vkOptions, bool dryRun = false);

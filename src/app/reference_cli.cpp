@@ -34,6 +34,8 @@ void addReferenceSceneOptions(CLI::App& cmd, ReferenceCliOptions& o) {
     cmd.add_option("--seed", o.settings.seed, "Random seed (the image is a function of it)");
     cmd.add_option("--threads", o.settings.threads, "Worker threads (default: every hardware thread)")
         ->check(CLI::Range(0, 1024));
+    cmd.add_option("--strands", o.frame.builtin.hairStrands, "Hair strands of the built-in `hair` scene")
+        ->check(CLI::Range(1, 2'000'000));
     cmd.add_flag("--aa", o.settings.antialias, "Spread paths over the pixel (default: its centre, as the rasterizer)");
     cmd.add_flag_function("-q,--quiet", [&o](int64_t) { o.settings.progress = false; },
                           "No progress bar and no summary");
@@ -52,9 +54,6 @@ PreparedFrame prepareReferenceFrame(const ReferenceCliOptions& o) {
         f.scene = std::move(world);
         f.camera = pose.camera;
     }
-    if (!f.scene.strands.empty())
-        fmt::print(stderr, "penumbra: warning: the reference does not trace hair strands ({} ignored)\n",
-                   f.scene.strands.size());
     return f;
 }
 
@@ -62,7 +61,8 @@ CLI::App* addReferenceCommand(CLI::App& app, ReferenceCliOptions& o) {
     CLI::App* cmd = app.add_subcommand("reference", "Path-trace the ground truth on the CPU (Embree): EXR radiance");
     addReferenceSceneOptions(*cmd, o);
     cmd->add_option("-o,--output", o.output, "Output image: .exr (linear) or .png (tone-mapped)");
-    cmd->add_option("--aov", o.aov, "final (direct + indirect), direct, indirect, mask (1 on geometry)");
+    cmd->add_option("--aov", o.aov, "final (direct + indirect), direct, indirect, mask (1 on geometry), shadow (the first shadowed light's "
+                   "visibility at the opaque surface, as render's), hair (fraction of paths stopping at a strand)");
     cmd->add_option("--exposure", o.exposure, "PNG only: linear multiplier before tone mapping")
         ->check(finiteRange(1e-6, 1e6));
     return cmd;
@@ -81,9 +81,11 @@ int runReferenceCommand(const ReferenceCliOptions& o, bool dryRun) {
     if (ext == ".exr") writeExr(o.output, out.width, out.height, out.rgba);
     else writePng(o.output, out.width, out.height, toneMap(out, o.exposure));
     if (o.settings.progress)
-        fmt::print("penumbra: reference '{}' ({} triangles, {}) {}x{}, {} paths/pixel, {} bounce(s): "
+        fmt::print("penumbra: reference '{}' ({} triangles, {}{}) {}x{}, {} paths/pixel, {} bounce(s): "
                    "{:.1f} s, {:.1f} M rays/s -> {}\n",
-                   f.scene.name, f.scene.triangleCount(), plural(f.scene.lights.size(), "light"), img.width, img.height, img.spp,
+                   f.scene.name, f.scene.triangleCount(),
+                   f.scene.strands.empty() ? "" : fmt::format("{} strands, ", f.scene.strands.size()),
+                   plural(f.scene.lights.size(), "light"), img.width, img.height, img.spp,
                    o.settings.bounces, img.seconds, double(img.rays) / img.seconds * 1e-6, o.output);
     return 0;
 }

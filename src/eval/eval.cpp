@@ -17,12 +17,6 @@ EvalVariant giVariant(const RenderSettings& base, GiMode gi, const std::string& 
     return v;
 }
 
-double median(std::vector<double> v) {
-    if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
-    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
-    return v[v.size() / 2];
-}
-
 constexpr uint32_t kGap = 4;  // white pixels between the figure's cells
 
 // Copies `src` (w x h RGBA8) into the figure at cell (col, row) of cells w x h.
@@ -60,7 +54,9 @@ std::vector<uint8_t> rampCell(uint32_t w, uint32_t h) {
     return errorHeatMap(ramp, zero, {}, scale);
 }
 
-std::string fmtValue(double v, const char* spec = "{:.3f}") {
+}  // namespace
+
+std::string fmtValue(double v, const char* spec) {
     if (std::isnan(v)) return "-";
     if (std::isinf(v)) return "inf";
     return fmt::format(fmt::runtime(spec), v);
@@ -73,7 +69,11 @@ nlohmann::json metricsJson(const ImageMetrics& m) {
             {"max_error", num(m.maxError)}, {"ssim", num(m.ssim)},      {"ssim_range", num(m.ssimRange)}};
 }
 
-}  // namespace
+double medianOf(std::vector<double> v) {
+    if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
+    std::nth_element(v.begin(), v.begin() + v.size() / 2, v.end());
+    return v[v.size() / 2];
+}
 
 std::vector<EvalVariant> evalVariants(const RenderSettings& base, bool sun) {
     std::vector<EvalVariant> v;
@@ -139,7 +139,7 @@ std::vector<EvalRow> runEval(vk::Context& ctx, const Scene& scene, const Camera&
             r.render(camera);
             if (f > 0 || frames <= 1) ms.push_back(r.frameTimings().gpuMs);  // the first frame warms caches
         }
-        EvalRow row{v, median(ms), {}, {}, {}, {}, {}};
+        EvalRow row{v, medianOf(ms), {}, {}, {}, {}, {}};
         ImageF final{s.width, s.height, r.readHdr()};
         r.setAov(Aov::Indirect);
         r.render(camera);

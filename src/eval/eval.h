@@ -33,6 +33,8 @@ struct GroundTruth {
     ImageF direct, indirect, final;
     std::vector<uint8_t> mask;
     double noiseFinal = 0.0, noiseIndirect = 0.0;
+    ImageF shadow, hair;  // the reference's shadow and hair AOVs (path_tracer.h), for `eval --hair`
+    double noiseHair = 0.0;  // relative L2 noise of `final` over the hair pixels (eval/hair_eval.h)
 };
 
 struct EvalRow {
@@ -55,6 +57,10 @@ nlohmann::json evalRowsJson(const std::vector<EvalRow>& rows);
 
 // Relative bias sum(A - B) / sum(B) over the compared pixels and channels.
 double relativeBias(const ImageMetrics& m);
+// Every metric as JSON (non-finite values as null); a table cell ("-" for NaN); the median (NaN if none).
+nlohmann::json metricsJson(const ImageMetrics& m);
+std::string fmtValue(double v, const char* spec = "{:.3f}");
+double medianOf(std::vector<double> v);
 
 // Side by side (RGBA8): a column for the reference and one per figure variant; rows: final radiance
 // (tone-mapped at `exposure`), indirect radiance (at `indirectExposure`), the indirect error heat

@@ -47,46 +47,102 @@ struct PinholeCamera {
     }
 };
 
+// Kajiya-Kay hair shading as shaders/dsm/kajiya_kay.glsl defines it (written again from the formula,
+// README "Deep shadow maps"), per unit irradiance facing the light: a strand of unit tangent t lit
+// from l, seen from v. Diffuse albedo / pi sin(t, l); a white specular cone lobe around t,
+// (n + 2) / (2 pi) cos^n with cos = sin(t,l) sin(t,v) - (t.l)(t.v), times sin(t, l).
+constexpr float kHairSpecular = 0.08f, kHairExponent = 60.0f;  // the renderer's constants
+
+glm::vec3 kajiyaKay(const glm::vec3& albedo, const glm::vec3& t, const glm::vec3& l, const glm::vec3& v) {
+    const float tl = glm::dot(t, l), tv = glm::dot(t, v);
+    const float sinTL = std::sqrt(std::max(0.0f, 1.0f - tl * tl)), sinTV = std::sqrt(std::max(0.0f, 1.0f - tv * tv));
+    const float cone = std::max(0.0f, sinTL * sinTV - tl * tv);
+    const float specular = kHairSpecular * (kHairExponent + 2.0f) / (2.0f * kPi) * std::pow(cone, kHairExponent);
+    return (albedo / kPi + glm::vec3(specular)) * sinTL;
+}
+
 struct Tracer {
     const Scene& scene;
     const RayScene& rays;
     uint32_t bounces;
 
-    // Radiance a Lambertian surface reflects towards its viewer from every light (next-event
-    // estimation; a punctual light is a delta: one shadow ray each, no noise).
+    // Fraction of the light along unit `toLight` (at `dist`) that reaches s: a strand's shadow ray
+    // leaves from its axis and ignores its own strand; a surface's from just above it.
+    float visibility(const SurfacePoint& s, const glm::vec3& toLight, float dist, uint64_t& count) const {
+        const float eps = RayScene::epsilon(s.position);
+        const float tmax = std::isinf(dist) ? std::numeric_limits<float>::infinity() : dist - 2.0f * eps;
+        if (tmax <= 0.0f) return 1.0f;
+        ++count;
+        return s.strand >= 0 ? rays.transmittance(s.position, toLight, tmax, s.strand)
+                             : rays.transmittance(s.position + eps * s.geometricNormal, toLight, tmax);
+    }
+
+    // Radiance s reflects towards its viewer from every light (next-event estimation; a punctual
+    // light is a delta: one shadow ray each, no noise): Lambert for surfaces, Kajiya-Kay for strands
+    // (whose shadingNormal points to the viewer).
     glm::vec3 direct(const SurfacePoint& s, uint64_t& count) const {
-        glm::vec3 sum(0.0f);
+        glm::vec3 sum(0.0f), hair(0.0f);
         for (const Light& l : scene.lights) {
             glm::vec3 toLight;
             float dist;
             const glm::vec3 e = referenceIrradiance(l, s.position, toLight, dist);
-            const float cosine = glm::dot(s.shadingNormal, toLight);
+            const float cosine = s.strand >= 0 ? 1.0f : glm::dot(s.shadingNormal, toLight);
             if (cosine <= 0.0f || e == glm::vec3(0.0f)) continue;
-            if (l.castsShadow) {  // unshadowed lights are unshadowed in the renderer too
-                const float eps = RayScene::epsilon(s.position);
-                const float tmax = std::isinf(dist) ? std::numeric_limits<float>::infinity() : dist - 2.0f * eps;
-                ++count;
-                if (tmax > 0.0f && rays.occluded(s.position + eps * s.geometricNormal, toLight, tmax)) continue;
-            }
-            sum += e * cosine;
+            // Unshadowed lights are unshadowed in the renderer too.
+            const float v = l.castsShadow ? visibility(s, toLight, dist, count) : 1.0f;
+            if (v <= 0.0f) continue;
+            if (s.strand >= 0) hair += e * v * kajiyaKay(s.albedo, s.tangent, toLight, s.shadingNormal);
+            else sum += e * (cosine * v);
         }
-        return sum * s.albedo / kPi;
+        return sum * s.albedo / kPi + hair;
     }
 
-    // Radiance reflected at s after at least one bounce: cosine-weighted sampling (pdf cos/pi), so a
-    // path's weight is the product of the albedos; every vertex is lit by next-event estimation.
+    // The renderer's shadow AOV: visibility of the first light that casts shadows at s (0 where it
+    // does not light s).
+    float firstShadow(const SurfacePoint& s, uint64_t& count) const {
+        for (const Light& l : scene.lights) {
+            if (!l.castsShadow) continue;
+            glm::vec3 toLight;
+            float dist;
+            const glm::vec3 e = referenceIrradiance(l, s.position, toLight, dist);
+            if ((s.strand < 0 && glm::dot(s.shadingNormal, toLight) <= 0.0f) || e == glm::vec3(0.0f)) return 0.0f;
+            return visibility(s, toLight, dist, count);
+        }
+        return 1.0f;
+    }
+
+    // The next direction of a path leaving s and the path weight's factor. A surface: cosine-weighted
+    // (pdf cos/pi: the albedo). A strand: Kajiya-Kay's diffuse lobe, (albedo / pi) sin(t, l) over the
+    // whole sphere, sampled uniformly (pdf 1 / 4 pi); its specular lobe is left out of bounces.
+    glm::vec3 scatter(const SurfacePoint& s, reference::Pcg32& rng, glm::vec3& dir) const {
+        const float u1 = rng.uniform(), u2 = rng.uniform();
+        if (s.strand < 0) {
+            dir = reference::cosineSample(s.shadingNormal, u1, u2);
+            return s.albedo;
+        }
+        const float z = 1.0f - 2.0f * u1, r = std::sqrt(std::max(0.0f, 1.0f - z * z)), phi = 2.0f * kPi * u2;
+        dir = glm::vec3(r * std::cos(phi), r * std::sin(phi), z);
+        const float tl = glm::dot(s.tangent, dir);
+        return 4.0f * s.albedo * std::sqrt(std::max(0.0f, 1.0f - tl * tl));
+    }
+
+    // Radiance reflected at s after at least one bounce; every vertex is lit by next-event estimation.
+    // In a scene with translucent surfaces each bounce ray draws its own seed for them.
     glm::vec3 indirect(SurfacePoint s, reference::Pcg32& rng, uint64_t& count) const {
         glm::vec3 sum(0.0f), throughput(1.0f);
         for (uint32_t b = 0; b < bounces; ++b) {
-            throughput *= s.albedo;
+            glm::vec3 dir;
+            throughput *= scatter(s, rng, dir);
             if (throughput == glm::vec3(0.0f)) break;
-            const float u1 = rng.uniform(), u2 = rng.uniform();
-            const glm::vec3 dir = reference::cosineSample(s.shadingNormal, u1, u2);
             const float eps = RayScene::epsilon(s.position);
-            const glm::vec3 origin = s.position + eps * (glm::dot(dir, s.geometricNormal) >= 0.0f
-                                                             ? s.geometricNormal : -s.geometricNormal);
+            const glm::vec3 origin =
+                s.strand >= 0 ? s.position
+                              : s.position + eps * (glm::dot(dir, s.geometricNormal) >= 0.0f ? s.geometricNormal
+                                                                                              : -s.geometricNormal);
+            const reference::RayQuery query{rays.translucent() ? rng.next() : 0u, s.strand, false};
             ++count;
-            const std::optional<Hit> hit = rays.intersect(origin, dir, 0.0f, std::numeric_limits<float>::infinity());
+            const std::optional<Hit> hit =
+                rays.intersect(origin, dir, 0.0f, std::numeric_limits<float>::infinity(), query);
             if (!hit) break;
             s = rays.surface(*hit, dir);
             sum += throughput * direct(s, count);
@@ -119,22 +175,33 @@ void renderPixel(const Tracer& tracer, const PinholeCamera& cam, const Reference
     const size_t index = size_t(y) * s.width + x;
     reference::Pcg32 rng(s.seed, index);
     Accumulator direct, indirect;
-    // Without anti-aliasing every path shares the centre ray and its direct light: trace them once.
-    const uint32_t primaries = s.antialias ? s.spp : 1;
+    double shadow = 0.0;
+    uint32_t strandHits = 0;
+    // Without anti-aliasing every path shares the centre ray and its direct light: trace them once,
+    // unless translucent surfaces make the camera ray itself random.
+    const bool translucent = tracer.rays.translucent();
+    const uint32_t primaries = s.antialias || translucent ? s.spp : 1;
     for (uint32_t p = 0; p < primaries; ++p) {
         const float jx = s.antialias ? rng.uniform() : 0.5f, jy = s.antialias ? rng.uniform() : 0.5f;
         const glm::vec3 dir = cam.direction(float(x) + jx, float(y) + jy, s.width, s.height);
         // The rasterizer clips at planes perpendicular to the view axis, not at spheres.
         const float along = glm::dot(dir, cam.forward);
+        const float tmin = cam.znear / along;
         const float tmax = cam.zfar > 0.0f ? cam.zfar / along : std::numeric_limits<float>::infinity();
         ++count;
-        const std::optional<Hit> hit = tracer.rays.intersect(cam.eye, dir, cam.znear / along, tmax);
-        const uint32_t paths = s.antialias ? 1 : s.spp;
+        const reference::RayQuery query{translucent ? rng.next() : 0u, -1, false};
+        const std::optional<Hit> hit = tracer.rays.intersect(cam.eye, dir, tmin, tmax, query);
+        // The shadow AOV is the opaque surface's, behind any translucent layers (as the renderer's).
+        const std::optional<Hit> opaque =
+            translucent ? tracer.rays.intersect(cam.eye, dir, tmin, tmax, {0u, -1, true}) : hit;
+        if (opaque) shadow += tracer.firstShadow(tracer.rays.surface(*opaque, dir), count);
+        const uint32_t paths = primaries == s.spp ? 1 : s.spp;
         if (!hit) {
             for (uint32_t k = 0; k < paths; ++k) direct.add(glm::vec3(0.0f)), indirect.add(glm::vec3(0.0f));
             continue;
         }
         out.covered[index] = 1;
+        strandHits += hit->strand >= 0;
         // The texture footprint of the pixel, as the rasterizer's derivatives see it.
         const float px = float(x) + jx, py = float(y) + jy;
         const reference::PixelFootprint footprint{cam.eye, cam.direction(px + 1.0f, py, s.width, s.height),
@@ -148,6 +215,8 @@ void renderPixel(const Tracer& tracer, const PinholeCamera& cam, const Reference
     }
     direct.finish(s.spp, out.direct[index], out.directVar[index]);
     indirect.finish(s.spp, out.indirect[index], out.indirectVar[index]);
+    out.shadow[index] = float(shadow / primaries);
+    out.hair[index] = float(strandHits) / float(primaries);
 }
 
 // "reference: [#######.............]  35%  12.4 s" on one line of stderr, redrawn with \r.
@@ -166,7 +235,9 @@ ReferenceAov parseReferenceAov(const std::string& name) {
     if (name == "direct") return ReferenceAov::Direct;
     if (name == "indirect") return ReferenceAov::Indirect;
     if (name == "mask") return ReferenceAov::Mask;
-    throw std::invalid_argument("--aov " + name + ": the reference writes final, direct, indirect or mask");
+    if (name == "shadow") return ReferenceAov::Shadow;
+    if (name == "hair") return ReferenceAov::Hair;
+    throw std::invalid_argument("--aov " + name + ": the reference writes final, direct, indirect, mask, shadow or hair");
 }
 
 std::vector<float> ReferenceImage::rgba(ReferenceAov aov) const {
@@ -175,16 +246,18 @@ std::vector<float> ReferenceImage::rgba(ReferenceAov aov) const {
         glm::vec3 v = aov == ReferenceAov::Direct     ? direct[i]
                       : aov == ReferenceAov::Indirect ? indirect[i]
                       : aov == ReferenceAov::Mask     ? glm::vec3(float(covered[i]))
+                      : aov == ReferenceAov::Shadow   ? glm::vec3(shadow[i])
+                      : aov == ReferenceAov::Hair     ? glm::vec3(hair[i])
                                                       : direct[i] + indirect[i];
         out[i * 4] = v.x, out[i * 4 + 1] = v.y, out[i * 4 + 2] = v.z, out[i * 4 + 3] = 1.0f;
     }
     return out;
 }
 
-double ReferenceImage::relativeNoise(ReferenceAov aov) const {
+double ReferenceImage::relativeNoise(ReferenceAov aov, const std::vector<uint8_t>& mask) const {
     double var = 0.0, sq = 0.0;
     for (size_t i = 0; i < covered.size(); ++i) {
-        if (!covered[i]) continue;
+        if (!(mask.empty() ? covered[i] : mask[i])) continue;
         const double d = aov != ReferenceAov::Indirect ? 1.0 : 0.0, in = aov != ReferenceAov::Direct ? 1.0 : 0.0;
         const glm::dvec3 v = d * glm::dvec3(directVar[i]) + in * glm::dvec3(indirectVar[i]);
         const glm::dvec3 m = d * glm::dvec3(direct[i]) + in * glm::dvec3(indirect[i]);
@@ -241,6 +314,8 @@ ReferenceImage renderReference(const Scene& scene, const Camera& camera, const R
     const size_t n = size_t(s.width) * s.height;
     out.direct.resize(n), out.indirect.resize(n), out.directVar.resize(n), out.indirectVar.resize(n);
     out.covered.assign(n, 0);
+    out.shadow.assign(n, 0.0f);
+    out.hair.assign(n, 0.0f);
 
     const uint32_t tilesX = (s.width + kTile - 1) / kTile, tilesY = (s.height + kTile - 1) / kTile;
     const uint32_t tiles = tilesX * tilesY;

@@ -4,9 +4,13 @@
 //  - a single-sided material is invisible from behind, both to rays from a viewer (camera, bounce)
 //    and as a shadow caster, which only blocks the light when its front faces the light (the shadow
 //    maps cull back faces; README "Shadows");
-//  - alpha MASK (and BLEND, which the G-buffer and shadow passes draw like MASK) texels under the
-//    cutoff are holes.
-// Hair strands are not traced (they are the deep-shadow-map module's business).
+//  - alpha MASK texels under the cutoff are holes.
+// Translucent surfaces, hair strands (Embree flat linear curves: ribbons facing the ray, of the
+// strand's width, as the GPU's ribbons face each viewer) and alpha BLEND triangles, let light through:
+//  - a ray from a viewer (camera, bounce) stops at one with probability alpha (the strand's opacity,
+//    the material's alpha), otherwise passes it: in expectation the over operator, front to back;
+//  - a shadow ray is not stopped by them but collects their transmittance, prod (1 - alpha) over
+//    every one it crosses (what a deep shadow map stores), through an Embree filter callback.
 #pragma once
 #include <cstdint>
 #include <optional>
@@ -29,8 +33,9 @@ struct PixelFootprint {
 
 struct Hit {
     float t = 0.0f;
-    uint32_t triangle = 0;  // index into Scene::indices / 3
-    float u = 0.0f, v = 0.0f;  // barycentrics of vertices 1 and 2
+    uint32_t triangle = 0;  // index into Scene::indices / 3 (a strand: its segment's first point)
+    float u = 0.0f, v = 0.0f;  // barycentrics of vertices 1 and 2 (a strand: u along the segment)
+    int32_t strand = -1;    // >= 0: the hit is on this Scene::strands entry
 };
 
 struct SurfacePoint {
@@ -38,8 +43,19 @@ struct SurfacePoint {
     glm::vec3 geometricNormal{0.0f};  // unit, on the side the ray came from
     glm::vec3 shadingNormal{0.0f};    // interpolated vertex normal, turned towards the ray's origin
     glm::vec3 albedo{0.0f};           // linear
+    int32_t strand = -1;              // >= 0: a hair strand (Kajiya-Kay, lit along its tangent)
+    glm::vec3 tangent{0.0f};          // a strand's unit direction at the hit (its segment's)
 };
 
+// What a ray may pass through. `seed` makes the stochastic choice at translucent surfaces (one
+// decision per primitive and seed, so a primitive Embree reports twice gets the same one);
+// `skipStrand` is the strand a ray leaves (a ribbon facing the ray would hit its own strand);
+// `opaqueOnly` looks through every translucent surface (the opaque surface behind them).
+struct RayQuery {
+    uint32_t seed = 0;
+    int32_t skipStrand = -1;
+    bool opaqueOnly = false;
+};
 class RayScene {
 public:
     explicit RayScene(const Scene& scene);
@@ -47,11 +63,18 @@ public:
     RayScene(const RayScene&) = delete;
     RayScene& operator=(const RayScene&) = delete;
 
-    // Nearest surface seen from `origin` along unit `dir` in (tmin, tmax).
-    std::optional<Hit> intersect(const glm::vec3& origin, const glm::vec3& dir, float tmin, float tmax) const;
-    // Whether a shadow caster lies on the segment from `origin` towards a light along unit `dir`, up
-    // to tmax. A single-sided surface blocks only when its front faces the light.
-    bool occluded(const glm::vec3& origin, const glm::vec3& dir, float tmax) const;
+    // Nearest surface seen from `origin` along unit `dir` in (tmin, tmax); a translucent one stops
+    // the ray with probability alpha (RayQuery).
+    std::optional<Hit> intersect(const glm::vec3& origin, const glm::vec3& dir, float tmin, float tmax,
+                                 const RayQuery& query = {}) const;
+    // Fraction of a light's radiance that reaches `origin` along unit `dir` from tmax: 0 behind an
+    // opaque caster, else prod (1 - alpha) over the translucent surfaces crossed, each counted once
+    // (0 once it falls below kOpaqueTransmittance). A single-sided surface casts only when its front
+    // faces the light. `skipStrand`: the strand the ray leaves.
+    float transmittance(const glm::vec3& origin, const glm::vec3& dir, float tmax, int32_t skipStrand = -1) const;
+    static constexpr float kOpaqueTransmittance = 1e-6f;
+    // The scene has strands or BLEND triangles: a pixel's paths must each trace their own camera ray.
+    bool translucent() const { return translucent_; }
     // The surface at a hit of a ray with direction `dir`. With a footprint (camera rays) the texture
     // is mip-mapped over it (texture.h says why); else bilinear at full resolution.
     SurfacePoint surface(const Hit& hit, const glm::vec3& dir, const PixelFootprint* footprint = nullptr) const;
@@ -66,20 +89,35 @@ public:
         std::vector<glm::vec3> normal;       // per triangle, unnormalised cross(v1 - v0, v2 - v0): the front
         std::vector<uint32_t> filteredToTriangle;  // primID of the filtered geometry -> triangle
     };
+    // Per strand segment (Embree curve primitive), for the strands' filter.
+    struct Strands {
+        const Scene* scene = nullptr;
+        std::vector<uint32_t> firstPoint;  // primID -> the segment's first point in Scene::strandPoints
+        std::vector<uint32_t> strand;      // primID -> Scene::strands index
+    };
 
 private:
     const Scene& scene_;
     Triangles tris_;
+    Strands strands_;
+    bool translucent_ = false;
+    // Embree ignores a curve's hits nearer than 2 radii to the ray origin (its self-intersection
+    // avoidance, a build option), which would lose the strands next to a ray leaving a strand: every
+    // ray starts this far behind its origin, with tmin moved as far.
+    float curveBack_ = 0.0f;
     std::vector<MipChain> mips_;              // per Scene::textures entry
     std::vector<uint32_t> opaqueToTriangle_;  // primID of the unfiltered geometry -> triangle
     RTCDevice device_ = nullptr;
     RTCScene rtcScene_ = nullptr;
     uint32_t opaqueGeometry_ = RTC_INVALID_GEOMETRY_ID, filteredGeometry_ = RTC_INVALID_GEOMETRY_ID;
+    uint32_t strandGeometry_ = RTC_INVALID_GEOMETRY_ID;
 
     uint32_t triangleOf(uint32_t geometry, uint32_t prim) const {
         return geometry == filteredGeometry_ ? tris_.filteredToTriangle[prim] : opaqueToTriangle_[prim];
     }
     void addGeometry(const std::vector<uint32_t>& triangles, bool filtered);
+    void addStrands();
+    SurfacePoint strandSurface(const Hit& hit, const glm::vec3& dir) const;
     std::optional<glm::vec2> planeUv(uint32_t triangle, const glm::vec3& o, const glm::vec3& d) const;
 };
 
