@@ -3,21 +3,48 @@
 // SORT_CAPACITY (size of the local array), `nodes` (uvec4: x = depth bits, z = next) and
 // `vec2 sortEntry(uint node)` (x = depth, y = the payload the includer keeps).
 
-vec2 sorted[SORT_CAPACITY];  // ascending x
+vec2 sorted[SORT_CAPACITY];  // after sortNearest: ascending x
 
-// Insertion into `sorted` while walking the list from `head`: O(length x maxCount), the lists being
-// short. Keeps the `maxCount` (<= SORT_CAPACITY) nearest; `guard` bounds a corrupt list. Returns the
-// list's full length; `count` receives how many entries were kept.
+// While the list is walked, `sorted` is a max-heap of the kept entries (the farthest at the root):
+// an entry costs O(log maxCount) moves, where an insertion into a sorted array cost O(maxCount).
+// Lists run to hundreds of nodes in dense hair (the H100's dsm.resolve spent most of its time
+// shifting). This restores the heap below entry i, of `count` entries.
+void heapSiftDown(uint i, uint count) {
+    vec2 e = sorted[i];
+    for (;;) {
+        uint c = 2u * i + 1u;
+        if (c >= count) break;
+        if (c + 1u < count && sorted[c + 1u].x > sorted[c].x) ++c;
+        if (sorted[c].x <= e.x) break;
+        sorted[i] = sorted[c];
+        i = c;
+    }
+    sorted[i] = e;
+}
+
+// Keeps the `maxCount` (<= SORT_CAPACITY) nearest entries of the list at `head`, sorted ascending;
+// `guard` bounds a corrupt list. Returns the list's full length; `count` receives how many entries
+// were kept.
 uint sortNearest(uint head, uint maxCount, uint guard, out uint count) {
     count = 0;
     uint length = 0;
     for (uint n = head; n != DSM_NONE && length < guard; n = nodes[n].z, ++length) {
         vec2 e = sortEntry(n);
-        if (count == maxCount && e.x >= sorted[count - 1].x) continue;  // behind every kept entry
-        uint i = min(count, maxCount - 1);  // when full, the farthest kept entry gives way
-        count = min(count + 1, maxCount);
-        for (; i > 0 && sorted[i - 1].x > e.x; --i) sorted[i] = sorted[i - 1];
-        sorted[i] = e;
+        if (count < maxCount) {  // sift the new entry up from the end
+            uint i = count++;
+            for (; i > 0u && sorted[(i - 1u) / 2u].x < e.x; i = (i - 1u) / 2u) sorted[i] = sorted[(i - 1u) / 2u];
+            sorted[i] = e;
+        } else if (e.x < sorted[0].x) {  // nearer than the farthest kept: it takes the root's place
+            sorted[0] = e;
+            heapSiftDown(0u, count);
+        }
+    }
+    // Heap sort: the farthest to the end, one by one.
+    for (uint end = count; end > 1u; --end) {
+        vec2 farthest = sorted[0];
+        sorted[0] = sorted[end - 1u];
+        sorted[end - 1u] = farthest;
+        heapSiftDown(0u, end - 1u);
     }
     return length;
 }

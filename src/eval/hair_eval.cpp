@@ -44,6 +44,12 @@ std::vector<EvalVariant> hairEvalVariants(const RenderSettings& base) {
     dsm.settings = fmt::format("DSM {}-node lists, {}-texel filter; pcf", dsm.render.dsm.maxList,
                                dsm.render.dsm.filterWidth);
     v.push_back(dsm);
+    // `--shadow dom`: deep opacity maps, the volumetric technique DSM is compared with.
+    EvalVariant dom = dsm;
+    dom.technique = "shadow dom";
+    dom.render.dsm.opacityMaps = true;
+    dom.settings = fmt::format("DOM {} layers, {}-texel filter; pcf", DOM_LAYERS, dom.render.dsm.filterWidth);
+    v.push_back(dom);
     return v;
 }
 
