@@ -355,3 +355,21 @@ TEST(DsmCli, SceneWithoutTranslucentCastersRenders) {
         EXPECT_NE(r.out.find("dsm: 1 map(s) of 64^2: 0 light-space fragments"), std::string::npos) << r.out;
     }
 }
+
+// Every pixel of the hair scene is finite at 1280x720 with camera translucency: lavapipe's raster
+// gave one fragment of a degenerate strip join non-finite interpolants (a NaN pixel at (587, 476),
+// found by `eval --hair`), which the list builds now drop.
+TEST_F(GpuTest, HairTranslucencyImageIsFinite) {
+    const Scene s = makeBuiltinScene("hair", BuiltinOptions{});
+    RenderSettings rs;
+    rs.width = 1280;
+    rs.height = 720;
+    rs.gi = GiMode::None;
+    rs.shadow.filter = ShadowFilter::Hard;
+    Renderer r(ctx(), s, rs);
+    r.render(s.cameras[0]);
+    const std::vector<float> img = r.readHdr();
+    size_t nonFinite = 0;
+    for (float v : img) nonFinite += !std::isfinite(v);
+    EXPECT_EQ(nonFinite, 0u);
+}

@@ -59,7 +59,7 @@ bool hiddenByOpaque(vec3 world) {
 }
 
 void dsmInsert(uvec2 texel, float depth, float alpha, vec3 world) {
-    if (alpha <= 0.0) return;  // nothing to cast
+    if (!(alpha > 0.0)) return;  // nothing to cast (NaN too: see oit_insert.glsl)
     if (hiddenByOpaque(world)) {
         atomicAdd(stats.build.y, 1u);
         return;

@@ -10,7 +10,9 @@ layout(set = 0, binding = 9) uniform sampler2D opaqueDepth;
 #include "dsm/octahedral.glsl"
 
 void oitInsert(ivec2 pixel, float depth, vec3 albedo, float alpha, vec3 normal, bool hair) {
-    if (alpha <= 0.0) return;
+    // Nothing to composite; NaN too: lavapipe's raster can give a fragment of a strip's degenerate
+    // join (dsm/hair.vert) non-finite interpolants (one pixel of the hair at 1280x720).
+    if (!(alpha > 0.0)) return;
     // Behind (or on) the opaque surface: hidden (a coplanar translucent surface loses to the opaque one).
     if (depth >= texelFetch(opaqueDepth, pixel, 0).r) return;
     uint node = atomicAdd(stats.counts.x, 1u);
