@@ -6,6 +6,7 @@
 
 #include "gpu_fixture.h"
 #include "readback.h"
+#include "scene/builders.h"
 
 using namespace penumbra;
 using namespace penumbra::test;
@@ -154,6 +155,54 @@ TEST_F(RsmTest, AllTexelsGatherEqualsBruteForceSum) {
         std::printf("[ rsm ] all-texels vs brute force: %zu pixels, %zu VPLs, max relative error %.2e\n", compared,
                     f.vpls.size(), maxRel);
     });
+}
+
+// Hair receivers (--translucency off: the G-buffer's normal target holds the strand's tangent t,
+// flagged SHADING_HAIR) gather with the Kajiya-Kay diffuse kernel sin(t, w) in place of a cosine:
+// E = sum_p phi_p / pi * max(0, n_p.v) * |v| sin(t, v) / max(d^2, footprint_p)^2, v = x - x_p, the
+// brute-force sum in double precision over every VPL of the RSM read back.
+TEST_F(RsmTest, HairReceiversGatherWithTheKajiyaKayKernel) {
+    Scene scene = makeBuiltinScene("cornell");
+    Strand style;
+    style.width = 0.03f;
+    for (int i = 0; i < 14; ++i) {  // slanted strands hanging in front of the boxes
+        const float x = -0.65f + 0.1f * float(i);
+        const std::vector<glm::vec3> points{{x, 1.7f, 0.6f}, {x + 0.15f, 1.2f, 0.7f}, {x + 0.05f, 0.7f, 0.8f}};
+        addStrand(scene, points, style);
+    }
+    scene.computeBounds();
+    RenderSettings s;
+    s.width = 48;
+    s.height = 36;
+    s.aov = Aov::Indirect;
+    s.gi = GiMode::Rsm;
+    s.rsm.resolution = 32;
+    s.rsm.mode = RsmMode::AllTexels;
+    s.translucency = false;
+    Renderer r(ctx(), scene, s);
+    r.render(scene.cameras[0]);
+    const Frame f = readFrame(r);
+    const auto normal = r.commands().readImage(r.gbuffer().normal, 8);
+    double maxRel = 0.0;
+    size_t hairPixels = 0;
+    for (size_t i = 0; i < f.position.size(); ++i) {
+        if (half(normal, i * 4 + 3) < 1.5 || f.normal[i] == dvec3(0.0)) continue;  // not hair
+        dvec3 e(0.0);
+        const dvec3 x = f.position[i], t = f.normal[i];
+        for (const Vpl& p : f.vpls) {
+            const dvec3 v = x - p.position;
+            const double len2 = glm::dot(v, v), d2 = std::max(len2, p.footprint);
+            const double receiver = std::sqrt(std::max(len2 - glm::dot(t, v) * glm::dot(t, v), 0.0));
+            e += p.flux * (std::max(glm::dot(p.normal, v), 0.0) * receiver / (d2 * d2) / kPi);
+        }
+        for (int c = 0; c < 3; ++c)
+            if (e[c] > 1e-6) maxRel = std::max(maxRel, std::abs(f.gpuIrradiance[i][c] - e[c]) / e[c]);
+        ++hairPixels;
+    }
+    std::printf("[ rsm ] hair receivers: %zu pixels, max relative error against the sin-kernel sum %.2e\n",
+                hairPixels, maxRel);
+    EXPECT_GT(hairPixels, 50u);
+    EXPECT_LT(maxRel, 1e-3);
 }
 
 TEST_F(RsmTest, SampledGatherConvergesToBruteForce) {

@@ -23,12 +23,12 @@ layout(push_constant) uniform Push { LpvPush pc; };
 #include "lpv/volume.glsl"
 
 // `half_` 0: the near half of the running sum (every step of cascade 0), 1: the far half (lpv.h).
-vec3 irradianceIn(uint k, uint half_, vec3 x, vec3 n) {
+vec3 irradianceIn(uint k, uint half_, vec3 x, vec3 n, bool hair) {
     uint offset = half_ * 3u * pc.grid.y * cellsPerVolume();
     vec3 g = gridCoord(k, x) - 0.5;
     ivec3 base = ivec3(floor(g));
     vec3 f = g - vec3(base);
-    vec4 lobe = cosineLobe(-n);
+    vec4 lobe = hair ? hairLobe() : cosineLobe(-n);
     vec3 e = vec3(0.0);
     for (int i = 0; i < 8; ++i) {
         ivec3 o = ivec3(i & 1, (i >> 1) & 1, i >> 2);
@@ -51,14 +51,15 @@ float insideWeight(uint k, vec3 x) {
 // Cascades add up: each coarser one carries only the light that has gone beyond the reach of the
 // finer one's steps (its far half), plus its near half where the finer one does not hold the
 // receiver (outside it, blended over the border band). The outermost holds whatever is left.
-vec3 lpvIrradiance(vec3 x, vec3 n) {
+// A hair receiver (`hair`, n its tangent) has no side to step towards: it reads the cells at x.
+vec3 lpvIrradiance(vec3 x, vec3 n, bool hair) {
     vec3 e = vec3(0.0);
     float finer = 0.0;  // how much the next finer cascade holds x
     for (uint k = 0; k < pc.grid.y; ++k) {
         float inside = k + 1u == pc.grid.y ? 1.0 : insideWeight(k, x);
-        vec3 p = x + pc.cascades[k].origin.w * n;
-        if (k > 0u && inside > 0.0) e += inside * irradianceIn(k, 1u, p, n);
-        if (finer < 1.0 && inside > 0.0) e += inside * (1.0 - finer) * irradianceIn(k, 0u, p, n);
+        vec3 p = hair ? x : x + pc.cascades[k].origin.w * n;
+        if (k > 0u && inside > 0.0) e += inside * irradianceIn(k, 1u, p, n, hair);
+        if (finer < 1.0 && inside > 0.0) e += inside * (1.0 - finer) * irradianceIn(k, 0u, p, n, hair);
         finer = inside;
     }
     return e;
@@ -86,9 +87,11 @@ void main() {
         float depth = texelFetch(gDepth, pixel, 0).r;
         if (depth < 1.0) {
             vec3 x = pixelWorldPosition(frame, pixel, depth);
-            vec3 n = normalize(texelFetch(gNormal, pixel, 0).xyz);
-            if (dot(n, frame.cameraPos.xyz - x) < 0.0) n = -n;
-            e = lpvIrradiance(x, n);
+            vec4 g = texelFetch(gNormal, pixel, 0);
+            vec3 n = normalize(g.xyz);
+            bool hair = g.w > 1.5;  // SHADING_HAIR (--translucency off): n is the strand's tangent
+            if (!hair && dot(n, frame.cameraPos.xyz - x) < 0.0) n = -n;
+            e = lpvIrradiance(x, n, hair);
         }
     }
     imageStore(outIrradiance, pixel, vec4(e, 1.0));

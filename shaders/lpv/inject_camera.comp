@@ -30,7 +30,11 @@ void main() {
     vec3 x = pixelWorldPosition(frame, pixel, depth);
     vec3 toEye = frame.cameraPos.xyz - x;
     float dist = length(toEye);
-    vec3 n = normalize(texelFetch(gNormal, pixel, 0).xyz);
+    vec4 g = texelFetch(gNormal, pixel, 0);
+    // Hair (SHADING_HAIR, --translucency off) is no surface: a strand blocks in proportion to its
+    // coverage of a cell, not with a facing side, and its normal target holds a tangent.
+    if (g.w > 1.5) return;
+    vec3 n = normalize(g.xyz);
     if (dot(n, toEye) < 0.0) n = -n;
     float side = dist * frame.lens.x * float(step);
     float area = side * side / max(dot(n, toEye / dist), 0.2);

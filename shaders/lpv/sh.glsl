@@ -10,5 +10,10 @@ vec4 shBasis(vec3 d) { return vec4(SH_C0, -SH_C1 * d.y, SH_C1 * d.z, -SH_C1 * d.
 // Projection of max(0, dot(n, w)): integrates to pi over the sphere.
 vec4 cosineLobe(vec3 n) { return vec4(LOBE_C0, -LOBE_C1 * n.y, LOBE_C1 * n.z, -LOBE_C1 * n.x); }
 
+// Projection of sin(t, w), a hair strand's Kajiya-Kay diffuse kernel around its tangent t: zonal and
+// even, so its L1 band vanishes and only pi^2 Y00 remains (the same for every tangent).
+const float HAIR_LOBE_C0 = 2.78416400;  // pi^2 * SH_C0
+vec4 hairLobe() { return vec4(HAIR_LOBE_C0, 0.0, 0.0, 0.0); }
+
 // Value of the L1 cosine lobe in its own direction (0.75): dividing by it makes a lobe peak at 1.
 const float LOBE_PEAK = LOBE_C0 * SH_C0 + LOBE_C1 * SH_C1;

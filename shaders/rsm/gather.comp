@@ -102,7 +102,7 @@ float farVisibility(GpuRsmLayer L, uint layer, ivec2 t, vec3 x) {
 
 // The four VPLs around RSM position uv, weighted bilinearly: the same expected light as the texel uv
 // falls in, but continuous in uv, so that it does not jump when the texel lattice moves under a sample.
-vec3 bilinearVplIrradiance(vec2 uv, int res, uint layer, vec3 x, vec3 n) {
+vec3 bilinearVplIrradiance(vec2 uv, int res, uint layer, vec3 x, vec3 n, bool hair) {
     const vec2 f = uv * float(res) - 0.5;
     const ivec2 t0 = ivec2(floor(f));
     const vec2 w = f - vec2(t0);
@@ -110,12 +110,12 @@ vec3 bilinearVplIrradiance(vec2 uv, int res, uint layer, vec3 x, vec3 n) {
     for (int k = 0; k < 4; ++k) {
         const ivec2 o = ivec2(k & 1, k >> 1);
         const float weight = (o.x == 1 ? w.x : 1.0 - w.x) * (o.y == 1 ? w.y : 1.0 - w.y);
-        e += weight * vplIrradiance(clamp(t0 + o, ivec2(0), ivec2(res - 1)), layer, x, n);
+        e += weight * vplIrradiance(clamp(t0 + o, ivec2(0), ivec2(res - 1)), layer, x, n, hair);
     }
     return e;
 }
 
-vec3 gather(vec3 x, vec3 n) {
+vec3 gather(vec3 x, vec3 n, bool hair) {
     vec3 e = vec3(0.0);
     const int res = int(pc.sizes.z);
     uint usedCascadeLight = 0xFFFFFFFFu;
@@ -130,7 +130,7 @@ vec3 gather(vec3 x, vec3 n) {
         }
         if (pc.mode.x == RSM_GATHER_ALL_TEXELS) {
             for (int ty = 0; ty < res; ++ty)
-                for (int tx = 0; tx < res; ++tx) e += vplIrradiance(ivec2(tx, ty), layer, x, n);
+                for (int tx = 0; tx < res; ++tx) e += vplIrradiance(ivec2(tx, ty), layer, x, n, hair);
             continue;
         }
         vec2 st;
@@ -141,7 +141,7 @@ vec3 gather(vec3 x, vec3 n) {
             vec2 uv = st + rotation * s.xy * scale;
             if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) continue;
             ivec2 t = ivec2(uv * float(res));
-            vec3 c = pc.sizes.w != 0u ? bilinearVplIrradiance(uv, res, layer, x, n) : vplIrradiance(t, layer, x, n);
+            vec3 c = pc.sizes.w != 0u ? bilinearVplIrradiance(uv, res, layer, x, n, hair) : vplIrradiance(t, layer, x, n, hair);
             if (s.w > 0.5 && any(greaterThan(c, vec3(0.0)))) c *= farVisibility(L, layer, t, x);
             e += (s.z * scale * scale) * c;
         }
@@ -165,9 +165,11 @@ void main() {
     vec3 e = vec3(0.0);
     if (depth < 1.0) {
         vec3 x = pixelWorldPosition(frame, pixel, depth);
-        vec3 n = normalize(texelFetch(gNormal, pixel, 0).xyz);
-        if (dot(n, frame.cameraPos.xyz - x) < 0.0) n = -n;
-        e = gather(x, n);
+        vec4 g = texelFetch(gNormal, pixel, 0);
+        vec3 n = normalize(g.xyz);
+        bool hair = g.w > 1.5;  // SHADING_HAIR (--translucency off): n is the strand's tangent
+        if (!hair && dot(n, frame.cameraPos.xyz - x) < 0.0) n = -n;
+        e = gather(x, n, hair);
     }
     imageStore(outIrradiance, out_, vec4(e, 1.0));
 }

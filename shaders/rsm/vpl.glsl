@@ -6,7 +6,9 @@
 // reflector of flux phi: radiant intensity phi / pi * cos, so E = phi / pi * cos_p * cos_x / d^2.
 // The seed's formula leaves out the 1/pi (its I_p = phi cos); keeping it makes RSM comparable with a
 // path-traced bounce. d^2 is clamped to the VPL's own footprint so that near VPLs stay finite.
-vec3 vplIrradiance(ivec2 t, uint layer, vec3 x, vec3 n) {
+// A hair receiver (`hair`: n is its tangent) takes sin(t, w) in place of the receiver's cosine: the
+// Kajiya-Kay diffuse term (dsm/kajiya_kay.glsl) of the light arriving from w.
+vec3 vplIrradiance(ivec2 t, uint layer, vec3 x, vec3 n, bool hair) {
     float depth = texelFetch(rsmDepth, ivec3(t, layer), 0).r;
     if (depth >= 1.0) return vec3(0.0);  // no surface in this texel
     GpuRsmLayer L = rsmLayers[layer];
@@ -21,7 +23,8 @@ vec3 vplIrradiance(ivec2 t, uint layer, vec3 x, vec3 n) {
         float z = abs((L.viewProj * vec4(xp, 1.0)).w);  // clip w = depth along the axis
         footprint *= z * z;
     }
+    float receiver = hair ? sqrt(max(d2 - dot(n, v) * dot(n, v), 0.0)) : max(dot(n, -v), 0.0);  // |v| cos or |v| sin
     d2 = max(d2, footprint);
-    float geometry = max(dot(np, v), 0.0) * max(dot(n, -v), 0.0) / (d2 * d2);
+    float geometry = max(dot(np, v), 0.0) * receiver / (d2 * d2);
     return phi * (geometry / PI);
 }
