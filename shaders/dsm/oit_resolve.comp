@@ -42,7 +42,16 @@ layout(push_constant) uniform Push { OitPush pc; };
 #include "dsm/octahedral.glsl"
 
 #define SORT_CAPACITY OIT_MAX_LIST
-vec2 sortEntry(uint n) { return vec2(uintBitsToFloat(nodes[n].x), uintBitsToFloat(n)); }  // (depth, node)
+// The walk that sorts a pixel's list also sums the log-transmittance of all its fragments, so that
+// the merged tail (the fragments beyond the kept ones) needs no second walk: its transmittance is
+// exp(all - kept). Clamped so that an opaque fragment (alpha 1) stays finite.
+float logTransmittanceAll;
+float logTransmittance(float alpha) { return log(max(1.0 - alpha, 1e-7)); }
+vec2 sortEntry(uint n) {  // (depth, node)
+    uvec4 node = nodes[n];
+    logTransmittanceAll += logTransmittance(abs(unpackHalf2x16(node.w).y));
+    return vec2(uintBitsToFloat(node.x), uintBitsToFloat(n));
+}
 #include "dsm/sort_nearest.glsl"
 
 shared uint groupKept, groupDropped, groupLongest;
@@ -76,6 +85,7 @@ void main() {
     uint head = all(lessThan(pixel, ivec2(pc.sizes.xy))) ? heads[pixel.y * pc.sizes.x + pixel.x] : DSM_NONE;
     if (head != DSM_NONE) {
         uint count;
+        logTransmittanceAll = 0.0;
         uint length = sortNearest(head, OIT_MAX_LIST, pc.sizes.z, count);
         atomicAdd(groupKept, count);
         atomicAdd(groupDropped, length - count);
@@ -84,7 +94,7 @@ void main() {
             vec3 irradiance = frame.options.x != 0u ? texelFetch(indirectIrradiance, pixel, 0).rgb : vec3(0.0);
             float angle = kernelAngle(pixel);
             vec3 sum = vec3(0.0), last = vec3(0.0);
-            float t = 1.0;
+            float t = 1.0, logKept = 0.0;
             for (uint i = 0; i < count; ++i) {
                 uint node = floatBitsToUint(sorted[i].y);
                 uvec4 data = nodes[node];
@@ -101,14 +111,13 @@ void main() {
                 if (aov != AOV_DIRECT) l += albedo / PI * irradiance;
                 sum += t * a * l;
                 t *= 1.0 - a;
+                logKept += logTransmittance(a);
                 last = l;
             }
             // Fragments beyond the cap (all behind the last kept one) are not dropped: they are
             // composited as one layer of their combined alpha with the last kept fragment's radiance.
             if (length > count) {
-                float far = sorted[count - 1].x, tail = 1.0;
-                for (uint n = head, i = 0; n != DSM_NONE && i < pc.sizes.z; n = nodes[n].z, ++i)
-                    if (uintBitsToFloat(nodes[n].x) > far) tail *= 1.0 - abs(unpackHalf2x16(nodes[n].w).y);
+                float tail = min(exp(logTransmittanceAll - logKept), 1.0);
                 sum += t * (1.0 - tail) * last;
                 t *= tail;
             }
