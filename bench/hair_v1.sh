@@ -12,6 +12,5 @@ bin=.device/penumbra
 run new_25k_notr $h --strands 25000 --translucency off
 run new_25k_pcf hair --shadow pcf --width 1920 --height 1080 --strands 25000
 run new_25k_dt $h --strands 25000 --dsm-depth-test on
-for f in $out/*.json; do python3 -c "
-import json,sys; d=json.load(open('$f')); print('$f'.split('/')[-1], round(d['frame_ms']['median'],2), ' '.join(f\"{p['name']}={p['median_ms']:.2f}\" for p in d['passes'] if p['median_ms']>0.05))"; done
+summarize
 tar -cf $OUT/r.tar -C $OUT r

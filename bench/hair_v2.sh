@@ -10,7 +10,6 @@ run new_25k $h --strands 25000
 run new_100k $h --strands 100000
 run new_25k_hw $h --strands 25000 --raster hardware
 run new_25k_notr $h --strands 25000 --translucency off
-for f in $out/*.json; do python3 -c "
-import json,sys; d=json.load(open('$f')); print('$f'.split('/')[-1], round(d['frame_ms']['median'],2), ' '.join(f\"{p['name']}={p['median_ms']:.2f}\" for p in d['passes'] if p['median_ms']>0.05))"; done
+summarize
 grep -h "translucency:\|dsm:" $out/new_25k.txt $out/new_100k.txt | head -4
 tar -cf $OUT/r.tar -C $OUT r

@@ -10,6 +10,5 @@ run maxlist16 $h --dsm-max-list 16
 run gi_none $h --gi none
 run notr $h --translucency off
 run point $h --light point,0.6,1.2,-0.4,3
-for f in $out/*.json; do python3 -c "
-import json,sys; d=json.load(open('$f')); print('$f'.split('/')[-1], round(d['frame_ms']['median'],2), ' '.join(f\"{p['name']}={p['median_ms']:.2f}\" for p in d['passes'] if p['median_ms']>0.05))"; done
+summarize
 tar -cf $OUT/r.tar -C $OUT r

@@ -11,3 +11,9 @@ run() {  # NAME ARGS...: `penumbra bench ARGS` into NAME.json and NAME.txt, its 
   "$bin" bench "$@" $frames --json "$out/$name.json" > "$out/$name.txt" 2>&1 || echo "FAILED $name"
   grep -E "frame \(GPU|warm frame" "$out/$name.txt" | sed "s/^/$name: /"
 }
+summarize() {  # one line per JSON of $out: name, median frame ms, the passes above 0.05 ms
+  for f in "$out"/*.json; do python3 -c "
+import json, sys; d = json.load(open(sys.argv[1]))
+print(sys.argv[1].split('/')[-1], round(d['frame_ms']['median'], 2),
+      ' '.join(f\"{p['name']}={p['median_ms']:.2f}\" for p in d['passes'] if p['median_ms'] > 0.05))" "$f"; done
+}

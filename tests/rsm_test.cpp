@@ -100,6 +100,18 @@ dvec3 bruteForce(const Frame& f, size_t pixel) {
 
 double luminance(const dvec3& c) { return 0.2126 * c.x + 0.7152 * c.y + 0.0722 * c.z; }
 
+// The indirect light of RSM GI alone, every RSM texel gathered: the exact sum a brute force checks.
+RenderSettings exactIndirect(uint32_t width, uint32_t height, uint32_t rsmResolution) {
+    RenderSettings s;
+    s.width = width;
+    s.height = height;
+    s.aov = Aov::Indirect;
+    s.gi = GiMode::Rsm;
+    s.rsm.resolution = rsmResolution;
+    s.rsm.mode = RsmMode::AllTexels;
+    return s;
+}
+
 class RsmTest : public GpuTest {
 protected:
     // Renders cornell with RSM GI and hands the frame to `check` while the renderer is alive.
@@ -171,13 +183,7 @@ TEST_F(RsmTest, HairReceiversGatherWithTheKajiyaKayKernel) {
         addStrand(scene, points, style);
     }
     scene.computeBounds();
-    RenderSettings s;
-    s.width = 48;
-    s.height = 36;
-    s.aov = Aov::Indirect;
-    s.gi = GiMode::Rsm;
-    s.rsm.resolution = 32;
-    s.rsm.mode = RsmMode::AllTexels;
+    RenderSettings s = exactIndirect(48, 36, 32);
     s.translucency = false;
     Renderer r(ctx(), scene, s);
     r.render(scene.cameras[0]);
@@ -316,13 +322,7 @@ TEST_F(RsmTest, CascadedSunCountsEachSurfaceOnce) {
     scene.lights = {sun};
     double mean[2] = {0, 0};
     for (int i = 0; i < 2; ++i) {
-        RenderSettings s;
-        s.width = 96;
-        s.height = 72;
-        s.aov = Aov::Indirect;
-        s.gi = GiMode::Rsm;
-        s.rsm.resolution = 64;
-        s.rsm.mode = RsmMode::AllTexels;
+        RenderSettings s = exactIndirect(96, 72, 64);
         s.shadow.cascades.count = i == 0 ? 1 : 4;
         s.rsm.perCascade = true;  // exercise the per-receiver cascade choice
         Renderer r(ctx(), scene, s);
