@@ -57,18 +57,6 @@ float domTransmittance(uint texel, float d, float thickness) {
     return exp(-sigma);
 }
 
-#ifdef DSM_TAP_CACHE
-// One pixel's translucent layers (dsm/oit_resolve.comp) look up nearby points one after another, and
-// most land on the same taps at a depth no nearer than the last: each tap keeps the node it found (at
-// or in front of that depth), where the next walk through its texel starts instead of at a
-// neighbour's link or the list's head.
-const int DSM_CACHE_SIDE = 3;  // kernels of up to 3x3 taps (--dsm-filter <= 1) are cached
-uint dsmCacheBase = DSM_NONE;  // the cached lookup's map (its first texel); DSM_NONE: nothing cached
-ivec2 dsmCacheLo;
-float dsmCacheDepth;
-uint dsmCacheNode[DSM_CACHE_SIDE * DSM_CACHE_SIDE];
-#endif
-
 // Filtered transmittance at p for light `lightIndex` (1 where it has no DSM). The receiver moves
 // `kernel.z` texels along its normal n (hair, whose n is a tangent: towards the light) and its depth
 // `kernel.y` texels towards the light, so that it does not shadow itself through its own nodes.
@@ -97,36 +85,19 @@ float deepShadowTransmittance(uint lightIndex, vec3 p, vec3 n, bool hair) {
                        (domTransmittance(base + uint(y * res + x), d, dsm.opacity.y) - 1.0);
         return clamp(1.0 + sum, 0.0, 1.0);  // taps outside the map cast nothing (1 - 1 = 0 there)
     }
-#ifdef DSM_TAP_CACHE
-    bool caching = all(lessThan(hi - lo, ivec2(DSM_CACHE_SIDE)));
-    bool cached = caching && dsmCacheBase == base && dsmCacheLo == lo && d >= dsmCacheDepth;
-#endif
     uint rowHint = DSM_NONE;  // the upper link of the previous row's first node
     for (int y = lo.y; y <= hi.y; ++y) {
         float wy = dsmTapWeight(s.y, width, y);
         uint hint = rowHint, rowStart = DSM_NONE;
         for (int x = lo.x; x <= hi.x; ++x) {
             bool inside = x >= 0 && y >= 0 && x < res && y < res;  // outside the map: nothing casts
-            uint start = hint;
-#ifdef DSM_TAP_CACHE
-            int tap = (y - lo.y) * DSM_CACHE_SIDE + (x - lo.x);
-            if (cached && dsmCacheNode[tap] != DSM_NONE) start = dsmCacheNode[tap];
-#endif
-            uint node = inside ? dsmFind(base + uint(y * res + x), d, start) : DSM_NONE;
-#ifdef DSM_TAP_CACHE
-            if (caching) dsmCacheNode[tap] = node;
-#endif
+            uint node = inside ? dsmFind(base + uint(y * res + x), d, hint) : DSM_NONE;
             sum += wy * dsmTapWeight(s.x, width, x) * dsmTransmittanceOf(node);
             if (x == lo.x) rowStart = node;
             hint = node == DSM_NONE ? DSM_NONE : dsmNodes[node].w;
         }
         rowHint = rowStart == DSM_NONE ? DSM_NONE : dsmUpLinks[rowStart];
     }
-#ifdef DSM_TAP_CACHE
-    dsmCacheBase = caching ? base : DSM_NONE;
-    dsmCacheLo = lo;
-    dsmCacheDepth = d;
-#endif
     return min(sum, 1.0);  // the weights sum to 1 up to rounding
 }
 

@@ -37,7 +37,6 @@ layout(push_constant) uniform Push { OitPush pc; };
 #include "shadow/moments.glsl"
 #include "shadow/pcf.glsl"
 #include "shadow/visibility.glsl"
-#define DSM_TAP_CACHE  // the layers of a pixel share their DSM walks (dsm/dsm_lookup.glsl)
 #include "dsm/dsm_lookup.glsl"
 #include "dsm/kajiya_kay.glsl"
 #include "dsm/octahedral.glsl"
