@@ -261,7 +261,9 @@ TEST(SettingsTable, SizesAndPassCountsAreNotPerFrame) {
     for (const char* flag : {"--shadow-res", "--rsm-res", "--lpv-res", "--dsm-res", "--cascades", "--width",
                              "--lpv-iterations", "--lpv-vpl-res", "--lpv-rsm-res"})
         for (const SettingsOption& o : settingsOptionTable())
-            if (std::string(o.flag) == flag) EXPECT_NE(o.change, SettingsChange::PerFrame) << flag;
+            if (std::string(o.flag) == flag) {
+                EXPECT_NE(o.change, SettingsChange::PerFrame) << flag;
+            }
 }
 
 }  // namespace

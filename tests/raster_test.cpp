@@ -94,7 +94,9 @@ protected:
             std::printf("[ raster ] %s layer %zu: %zu covered, coverage differs on %zu of %zu texels, depth by > 1e-6 on %zu, max depth diff %.3g\n",
                         what, k, d.bothCovered, d.coverageDiffers, d.texels, d.depthDiffers, d.maxDepthDiff);
             EXPECT_GT(d.bothCovered, 0u) << what;
-            if (strictDepth) EXPECT_LE(d.maxDepthDiff, 1e-6) << what << " layer " << k;
+            if (strictDepth) {
+                EXPECT_LE(d.maxDepthDiff, 1e-6) << what << " layer " << k;
+            }
             const size_t allowed = std::min(allowedCoverageDiffs, d.texels / 10000);  // 0.01%
             EXPECT_LE(d.coverageDiffers, allowed) << what << " layer " << k;
         }
@@ -220,7 +222,9 @@ protected:
             const DepthDiff d = compareDepth(hw.layers[k], cs.layers[k]);
             std::printf("[ raster ] %s map layer %zu: coverage differs on %zu of %zu texels, depth by > 1e-6 on %zu, max depth diff %.3g\n",
                         what, k, d.coverageDiffers, d.texels, d.depthDiffers, d.maxDepthDiff);
-            if (strictDepth) EXPECT_LE(d.maxDepthDiff, 1e-6) << what;
+            if (strictDepth) {
+                EXPECT_LE(d.maxDepthDiff, 1e-6) << what;
+            }
             EXPECT_LE(d.coverageDiffers, d.texels / 10000) << what;
         }
         size_t differ = 0;

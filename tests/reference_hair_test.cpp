@@ -155,6 +155,8 @@ TEST(ReferenceHair, StrandsNextToTheRayOriginCount) {
         for (uint32_t seed = 0; seed < 64; ++seed)
             if (auto hit = rays.intersect({0.1f, y, 0.1f}, {0.0f, 1.0f, 0.0f}, 0.0f, 100.0f, {seed, -1, false}))
                 nearest = std::min(nearest, hit->t);
-        if (above > 0) EXPECT_NEAR(nearest, std::fmod(0.2f + 4.0f - y, 0.4f), 1e-5f) << "from y = " << y;
+        if (above > 0) {
+            EXPECT_NEAR(nearest, std::fmod(0.2f + 4.0f - y, 0.4f), 1e-5f) << "from y = " << y;
+        }
     }
 }
