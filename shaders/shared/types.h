@@ -270,10 +270,14 @@ struct GpuHairPoint {
     vec4 tangent;   // xyz unit tangent, w = strand index (exact as a float up to 2^24)
 };
 
-// Push constants of every ribbon draw (camera G-buffer, shadow maps, DSM build) and of the DSM
-// build's mesh draws. Starts like DrawPush (views row, material) so that render/scene.vert reads it.
+// Push constants of every ribbon draw or compute raster (camera G-buffer and lists, shadow maps, DSM
+// and DOM builds) and of the DSM build's mesh draws. Starts like DrawPush (views row, material) so
+// that render/scene.vert reads it. ids.x = views row (the DSM layer in its builds), y = material
+// (DOM build: its step, 0 first depths, 1 layers), z = the DSM build's depth-test light (DSM_NONE:
+// none), the camera lists' image width, the DOM build's layer thickness (float bits), w = node
+// capacity of the lists.
 struct HairDrawPush {
-    uvec4 ids;        // x = views row, y = material, z = DSM layer, w = DSM node capacity
+    uvec4 ids;        // see above
     vec4 viewer;      // xyz = eye position (w = 1) or unit direction towards a directional light (w = 0)
     vec4 footprint;   // x = world size of a pixel/texel (orthographic) or per unit distance (perspective),
                       // y = perspective (1) or not (0), z = DSM resolution, w = min ribbon width in pixels

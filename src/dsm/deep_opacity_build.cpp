@@ -2,16 +2,12 @@
 
 #include <algorithm>
 
-#include <glm/gtc/type_ptr.hpp>
-
 namespace penumbra {
 
 DeepOpacityBuildPass::DeepOpacityBuildPass(vk::Allocator& alloc, const HairGpu& hair, DsmResources& res)
     : hair_(hair), res_(res) {
     const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    kernel_ = vk::ComputeKernel(alloc.context(), "dsm/opacity_build.comp",
-                                std::vector<vk::Binding>{{0, storage}, {3, storage}, {4, storage}, {5, storage}, {6, storage}},
-                                sizeof(gpu::HairDrawPush));
+    kernel_ = HairGpu::segmentKernel(alloc.context(), "dsm/opacity_build.comp", {{5, storage}, {6, storage}});
 }
 
 float DeepOpacityBuildPass::layerThickness(const Scene& scene) {

@@ -9,20 +9,19 @@ DeepShadowBuildPass::DeepShadowBuildPass(vk::Allocator& alloc, SceneGpu& scene, 
     : alloc_(alloc), scene_(scene), hair_(hair), res_(res), depthTest_(depthTest) {
     for (const Material& m : scene.scene().materials) hasBlended_ |= m.alphaMode == AlphaMode::Blend;
     // Set 0: the scene's draw set (views = the DSM views, materials; set 1 the textures), the hair buffers,
+    // then heads, nodes and counters, and for the depth test the lights, the shadow lights and layers
+    // and the opaque casters' shadow map (5-11: both builds, raster and compute, write the lists there).
+    std::vector<vk::Binding> lists;
+    for (uint32_t i = 5; i <= 10; ++i) lists.push_back({i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
+    lists.push_back({11, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
     std::vector<vk::Binding> b = SceneGpu::drawSetBindings();
     for (const vk::Binding& h : HairGpu::bindings()) b.push_back(h);
-    // then heads, nodes and counters, and for the depth test the lights, the shadow lights and layers
-    // and the opaque casters' shadow map.
-    for (uint32_t i = 5; i <= 10; ++i) b.push_back({i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
-    b.push_back({11, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
+    b.insert(b.end(), lists.begin(), lists.end());
     nearest_ = vk::Sampler(alloc.context(), {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
     vk::Context& ctx = alloc.context();
     layout_ = vk::DescriptorLayout(ctx, b);
     if (hair && computeHair) {
-        // The views, the hair buffers and bindings 5-11 as above (dsm/build_hair.comp).
-        std::vector<vk::Binding> k{{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
-        k.insert(k.end(), b.begin() + 3, b.end());
-        hairKernel_ = vk::ComputeKernel(ctx, "dsm/build_hair.comp", k, sizeof(gpu::HairDrawPush));
+        hairKernel_ = HairGpu::segmentKernel(ctx, "dsm/build_hair.comp", lists);
     } else if (hair) {
         hairPipeline_ = vk::Pipeline::graphics(ctx, HairGpu::pipelineDesc("dsm/build_hair.frag"), SceneGpu::drawLayouts(ctx, layout_.handle()),
                                                sizeof(gpu::HairDrawPush));

@@ -64,7 +64,7 @@ DsmResources::DsmResources(vk::Allocator& alloc, const DsmSettings& settings, ui
     if (!layers.empty()) checkFits(alloc.context(), capacity, texels * 4);  // an explicit --dsm-nodes may not fit
     heads = vk::Buffer(alloc, layers.empty() ? 4 : texels * 4, cleared, false, "dsm-heads");
     nodes = vk::Buffer(alloc, capacity * 16, cleared, false, "dsm-nodes");
-    upLinks = vk::Buffer(alloc, capacity * 4, cleared, false, "dsm-up-links");
+    upLinks = vk::Buffer(alloc, opacityMaps ? 4 : capacity * 4, cleared, false, "dsm-up-links");  // DOM: no links
     stats = vk::Buffer(alloc, sizeof(gpu::DsmStats), cleared, false, "dsm-stats");
 
     views = vk::BufferRing(alloc, std::max<size_t>(layers.size(), 1) * sizeof(glm::mat4), storage, "dsm-views");

@@ -50,7 +50,7 @@ struct DsmResources {
     uint32_t layerCount() const { return uint32_t(layers.size()); }
     // Writes frame slot `slot`'s tables from the layers' current projections.
     void writeTables(const DsmSettings& settings, uint32_t slot);
-    VkDeviceSize poolBytes() const { return VkDeviceSize(capacity) * kNodeBytes; }
+    VkDeviceSize poolBytes() const { return nodes.size() + upLinks.size(); }
     VkDeviceSize headBytes() const { return heads.size(); }
 };
 

@@ -84,6 +84,14 @@ void HairGpu::draw(VkCommandBuffer cmd, const vk::Pipeline& pipeline, const gpu:
     vkCmdDraw(cmd, vertexCount_, 1, 0, 0);
 }
 
+vk::ComputeKernel HairGpu::segmentKernel(vk::Context& ctx, const std::string& shader,
+                                         const std::vector<vk::Binding>& outputs) {
+    std::vector<vk::Binding> b{{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+    for (const vk::Binding& h : bindings()) b.push_back(h);
+    b.insert(b.end(), outputs.begin(), outputs.end());
+    return vk::ComputeKernel(ctx, shader, b, sizeof(gpu::HairDrawPush));
+}
+
 void HairGpu::dispatchSegments(VkCommandBuffer cmd, const vk::Pipeline& pipeline,
                                const gpu::HairDrawPush& push) const {
     pipeline.push(cmd, push);

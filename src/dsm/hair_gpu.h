@@ -33,6 +33,10 @@ public:
     static vk::GraphicsDesc pipelineDesc(const std::string& fragmentShader);
     // Every ribbon of the scene in one draw; `push` says which view.
     void draw(VkCommandBuffer cmd, const vk::Pipeline& pipeline, const gpu::HairDrawPush& push) const;
+    // A compute raster of the ribbons (dsm/ribbon_raster.glsl): set 0 holds the views (0) and the hair
+    // buffers (3, 4) that every such kernel reads, then the kernel's own `outputs`.
+    static vk::ComputeKernel segmentKernel(vk::Context& ctx, const std::string& shader,
+                                           const std::vector<vk::Binding>& outputs);
     // Every ribbon segment in one dispatch of a compute raster (dsm/ribbon_raster.glsl: 64 segments
     // per group, groups in 2D); `push` says which view.
     void dispatchSegments(VkCommandBuffer cmd, const vk::Pipeline& pipeline, const gpu::HairDrawPush& push) const;

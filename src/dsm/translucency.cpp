@@ -34,19 +34,19 @@ CameraTranslucency::CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, co
     normals_ = vk::Buffer(alloc, capacity_ * 4, usage, false, "oit-normals");
     stats_ = vk::Buffer(alloc, sizeof(gpu::OitStats), usage, false, "oit-stats");
 
-    // Build set: the scene's draw set (0, 1 and the instances; set 1 its textures), the hair buffers (3, 4), heads, nodes, normals, counters
-    // and the opaque depth (5-9).
+    // Build set: the scene's draw set (0, 1 and the instances; set 1 its textures), the hair buffers
+    // (3, 4), then heads, nodes, normals, counters and the opaque depth (5-9: both builds, raster and
+    // compute, write the lists there).
+    std::vector<vk::Binding> lists;
+    for (uint32_t i = 5; i <= 8; ++i) lists.push_back({i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
+    lists.push_back({9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
     std::vector<vk::Binding> b = SceneGpu::drawSetBindings();
     for (const vk::Binding& h : HairGpu::bindings()) b.push_back(h);
-    for (uint32_t i = 5; i <= 8; ++i) b.push_back({i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
-    b.push_back({9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
+    b.insert(b.end(), lists.begin(), lists.end());
     buildLayout_ = vk::DescriptorLayout(ctx, b);
-    if (hair_ && computeHair) {
-        // The views, the hair buffers and bindings 5-9 as above (dsm/oit_hair.comp).
-        std::vector<vk::Binding> k{{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
-        k.insert(k.end(), b.begin() + 3, b.end());
-        hairKernel_ = vk::ComputeKernel(ctx, "dsm/oit_hair.comp", k, sizeof(gpu::HairDrawPush));
-    } else if (hair_)
+    if (hair_ && computeHair)
+        hairKernel_ = HairGpu::segmentKernel(ctx, "dsm/oit_hair.comp", lists);
+    else if (hair_)
         hairPipeline_ = vk::Pipeline::graphics(ctx, HairGpu::pipelineDesc("dsm/oit_hair.frag"),
                                                SceneGpu::drawLayouts(ctx, buildLayout_.handle()), sizeof(gpu::HairDrawPush));
     if (hasBlended_) {
