@@ -20,4 +20,10 @@ inline float f32(const std::vector<uint8_t>& bytes, size_t index) {
     return f;
 }
 
+inline uint32_t u32(const std::vector<uint8_t>& bytes, size_t index) {
+    uint32_t v;
+    std::memcpy(&v, bytes.data() + index * 4, 4);
+    return v;
+}
+
 }  // namespace penumbra::test

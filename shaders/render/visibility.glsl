@@ -4,34 +4,7 @@
 // raster computes the index as the instance's base + the draw's first triangle in its mesh +
 // gl_PrimitiveID (visibilityIdBase). fetchTriangle applies the instance's transform.
 // The includer includes shared/types.h and render/material.glsl first.
-#include "render/instances.glsl"
-layout(set = 0, binding = 12, std430) readonly buffer VisVertices { float visVertex[]; };  // penumbra::Vertex
-layout(set = 0, binding = 13, std430) readonly buffer VisIndices { uint visIndex[]; };
-layout(set = 0, binding = 14, std430) readonly buffer VisTriangleMaterials { uint visTriangleMaterial[]; };
-layout(set = 0, binding = 16, std430) readonly buffer VisDrawnTriangles { uvec2 visDrawn[]; };  // (instance, triangle)
-
-struct VisTriangle {
-    vec3 p[3];   // world space
-    vec3 n[3];
-    vec2 uv[3];
-    uint material;
-};
-
-// Triangle `id` (non-zero) in world space.
-VisTriangle fetchTriangle(uint id) {
-    const uvec2 drawn = visDrawn[id - 1u];
-    const int instance = int(drawn.x);
-    const uint t = drawn.y;
-    VisTriangle tri;
-    for (int k = 0; k < 3; ++k) {
-        const uint v = visIndex[t * 3u + uint(k)] * 8u;  // 8 floats per vertex
-        tri.p[k] = instanceWorld(instance, vec3(visVertex[v], visVertex[v + 1u], visVertex[v + 2u]));
-        tri.n[k] = instanceNormal(instance, vec3(visVertex[v + 3u], visVertex[v + 4u], visVertex[v + 5u]));
-        tri.uv[k] = vec2(visVertex[v + 6u], visVertex[v + 7u]);
-    }
-    tri.material = visTriangleMaterial[t];
-    return tri;
-}
+#include "render/triangles.glsl"
 
 struct VisRay {
     vec3 origin, direction;

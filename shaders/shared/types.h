@@ -151,10 +151,31 @@ struct GpuRsmLayer {
 #define RSM_GATHER_LIST 2     // the pixels listed by the interpolation pass, sampled pattern
 #define RSM_GATHER_ALL_TEXELS 3  // every full-resolution pixel, every RSM texel (exact reference)
 
+// How the gather tests whether a VPL sees its receiver (--rsm-visibility).
+#define RSM_VISIBILITY_NONE 0    // every VPL lights every receiver it faces
+#define RSM_VISIBILITY_DEPTH 1   // far samples: two points of the segment against the RSM's depth
+#define RSM_VISIBILITY_VOXELS 2  // every sample: the segment marched through the occupancy volume
+
 struct RsmPush {
     uvec4 mode;    // x = RSM_GATHER_*, y = sample count, z = layer count, w = low-resolution factor
     uvec4 sizes;   // x,y = output size (low-res or full), z = RSM resolution, w = 1: bilinear VPLs
-    vec4 params;   // x = normal cos threshold, y = distance threshold in pixel footprints, zw unused
+    vec4 params;   // x = normal cos threshold, y = distance threshold in pixel footprints, z = r_max, w unused
+    uvec4 sampling;  // x = RSM_VISIBILITY_*, y = samples a pixel tests through the occupancy volume,
+                     // z = 1: the paper's single disc and xi1^2 weights (else the mixture), w unused
+};
+
+// The occupancy volume (src/voxel): one bit per voxel of a box around the scene, set where a surface
+// (opaque or alpha-masked; not blended, not hair) touches the voxel. Voxel (x, y, z) is bit
+// (x + dims.x (y + dims.y z)) of the bit words after this header.
+struct GpuOccupancyGrid {
+    vec4 origin;  // xyz = the world position of voxel (0, 0, 0)'s lower corner, w = voxel size (m)
+    uvec4 dims;   // xyz = voxels per axis, w unused
+};
+#define OCCUPANCY_GROUP 64          // voxelize.comp: threads (triangles) per workgroup
+#define OCCUPANCY_SMALL_COLUMNS 16  // a triangle over more columns is voxelized by its whole workgroup
+
+struct OccupancyPush {
+    uvec4 counts;  // x = drawn triangles, yzw unused
 };
 
 // render/gi_history.comp: temporal accumulation of the indirect irradiance.

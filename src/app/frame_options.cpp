@@ -53,6 +53,18 @@ void addGiOptions(CLI::App& cmd, RenderSettings& rs) {
     addChoice<bool>(cmd, "--rsm-vpls", rs.rsm.bilinearVpls, {{"nearest", false}, {"bilinear", true}},
                     "A gather sample's VPL: the texel it falls in, or the four around it weighted bilinearly "
                     "(4x the cost; steadier under moving lights)");
+    addChoice<RsmVisibility>(cmd, "--rsm-visibility", rs.rsm.visibility,
+                             {{"none", RsmVisibility::None}, {"depth", RsmVisibility::Depth},
+                              {"voxels", RsmVisibility::Voxels}},
+                             "Whether a VPL sees its receiver: not tested, far samples against the RSM's depth, "
+                             "or every sample through the scene's occupancy volume");
+    cmd.add_option("--rsm-voxel-res", rs.rsm.voxelResolution,
+                   "Occupancy volume (--rsm-visibility voxels): voxels along the scene's longest side")
+        ->check(CLI::Range(8, 1024));
+    cmd.add_option("--rsm-visibility-rays", rs.rsm.visibilityRays,
+                   "Voxel visibility: samples a pixel tests through the occupancy volume (the visible share "
+                   "of their light scales all samples' light)")
+        ->check(CLI::Range(1, 16384));
     cmd.add_flag("--rsm-per-cascade", rs.rsm.perCascade,
                  "A sun's RSM per cascade (the seed's way) instead of from its widest cascade only");
     addLpvOptions(cmd, rs.lpv);

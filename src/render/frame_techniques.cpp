@@ -131,6 +131,8 @@ RsmTechnique::RsmTechnique(vk::Allocator& alloc, vk::CommandContext& cmd, GpuSce
           return r;
       }(), s.shadow.resolution) {
     if (gather) gather_ = std::make_unique<RsmGather>(alloc, cmd, s.width, s.height, s.rsm);
+    if (gather && s.rsm.visibility == RsmVisibility::Voxels)
+        occupancy_ = std::make_unique<OccupancyVolume>(alloc, scene.meshes(), s.rsm.voxelResolution);
 }
 
 // The layers' projections change every frame (cascades follow the camera).
@@ -142,6 +144,7 @@ void RsmTechnique::update(const FrameContext& f) {
 
 void RsmTechnique::addPasses(const FrameContext& f) {
     pass_.addTo(f.graph);
+    if (occupancy_) occupancy_->addTo(f.graph);
     if (gather_) gather_->addTo(f.graph, pass_.layerCount(), f.slot);
 }
 

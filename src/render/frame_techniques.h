@@ -19,6 +19,7 @@
 #include "render/technique.h"
 #include "rsm/rsm_gather.h"
 #include "shadow/shadow_map_pass.h"
+#include "voxel/occupancy_volume.h"
 
 namespace penumbra {
 
@@ -90,11 +91,17 @@ public:
     void applyPerFrame(const RenderSettings& s) override;
     RsmPass& pass() { return pass_; }
     RsmGather* gather() { return gather_.get(); }
+    OccupancyVolume* occupancy() { return occupancy_.get(); }
+    // Instances moved: the occupancy volume is voxelized again.
+    void invalidate() {
+        if (occupancy_) occupancy_->invalidate();
+    }
 
 private:
     ShadowMapPass& shadow_;
     bool widestCascadeOnly_;
     RsmPass pass_;
+    std::unique_ptr<OccupancyVolume> occupancy_;  // --rsm-visibility voxels
     std::unique_ptr<RsmGather> gather_;
 };
 

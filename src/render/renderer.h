@@ -103,12 +103,14 @@ public:
     // casters move otherwise (edited geometry) or to time cold frames.
     void invalidateCaches() {
         if (shadow_) shadow_->pass().invalidate();
+        if (rsm_) rsm_->invalidate();
     }
     vk::CommandContext& commands() { return cmd_; }
     const gpu::FrameUniforms& frameUniforms() const { return frameConstants_; }
     // GI internals, for tests and statistics (null when that GI mode is off).
     RsmPass* rsm() { return rsm_ ? &rsm_->pass() : nullptr; }
     RsmGather* rsmGather() { return rsm_ ? rsm_->gather() : nullptr; }
+    OccupancyVolume* occupancy() { return rsm_ ? rsm_->occupancy() : nullptr; }  // --rsm-visibility voxels
     LightPropagationVolume* lpv() { return lpv_ ? &lpv_->volume() : nullptr; }
     // Deep shadow maps (always present; inactive unless --shadow dsm) and the hair (null without strands).
     DeepShadowMaps& deepShadows() { return dsm_->maps(); }

@@ -126,7 +126,11 @@ void SceneGpu::declareDrawSet(PassBuilder& pass, BufferHandle views) {
     std::vector<ImageHandle> textures;  // static after the upload: imported, only ever sampled
     for (vk::Image& t : textures_) textures.push_back(g.import(t));
     pass.descriptorSet(1, textureTable_.handle(), textures);
-    pass.storageBuffer(SCENE_INSTANCES_BINDING, g.hasBuffer("instances") ? g.buffer("instances") : g.import(restInstances_));
+    pass.storageBuffer(SCENE_INSTANCES_BINDING, instanceTable(g));
+}
+
+BufferHandle SceneGpu::instanceTable(FrameGraph& graph) const {
+    return graph.hasBuffer("instances") ? graph.buffer("instances") : graph.import(restInstances_);
 }
 
 void SceneGpu::setFrameInstances(const std::vector<glm::mat4>& transforms) {

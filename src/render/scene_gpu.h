@@ -49,6 +49,8 @@ public:
     // instance table (SCENE_INSTANCES_BINDING, the graph's "instances"); a pass may declare more
     // bindings of its own. Set 1: the texture table. Both are bound by declareDrawSet.
     void declareDrawSet(PassBuilder& pass, BufferHandle views);
+    // The frame's instance table ("instances"), or the table at rest in graphs without one (tests).
+    BufferHandle instanceTable(FrameGraph& graph) const;
     // The set layouts of such a pipeline: `set0` (made from drawSetBindings() and the pass's own),
     // then the texture table's.
     static std::vector<VkDescriptorSetLayout> drawLayouts(vk::Context& ctx, VkDescriptorSetLayout set0);

@@ -11,36 +11,23 @@ namespace {
 constexpr VkFormat kIrradianceFormat = VK_FORMAT_R32G32B32A32_SFLOAT;  // exact sums stay exact
 
 // The unbiased pattern is a mixture: half the samples on the r_max disc, half on a disc that reaches
-// every texel of the map from any receiver (the light's whole footprint, radius sqrt 2), each
-// weighted by the mixture's density. Near VPLs keep many samples, and far ones (the far walls of a
-// closed room) are no longer left out. --rsm-weights paper keeps the paper's single disc.
-constexpr double kWholeMapRadius = 1.41421356;
+// every texel of the map from any receiver (the light's whole footprint, radius sqrt 2). Near VPLs
+// keep many samples, and far ones (the far walls of a closed room) are no longer left out.
+// --rsm-weights paper keeps the paper's single disc. The gather places and weighs each sample
+// (rsm/gather.comp, patternSample), after shifting xi1 per receiver.
+constexpr float kWholeMapRadius = 1.41421356f;
 
 }  // namespace
 
 std::vector<glm::vec4> rsmSamplePattern(const RsmSettings& s) {
     std::mt19937 rng(s.seed);
     std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
-    const double texels = double(s.resolution) * s.resolution;
     std::vector<glm::vec4> out(s.samples);
-    if (s.weights == RsmWeights::Paper) {  // the paper's single disc, its xi1^2 weights (E[xi1^2] = 1/3)
-        const double norm = M_PI * double(s.radius) * s.radius * texels / s.samples * 3.0;
-        for (glm::vec4& p : out) {
-            const float xi1 = uniform(rng), angle = 2.0f * float(M_PI) * uniform(rng);
-            p = {s.radius * xi1 * std::sin(angle), s.radius * xi1 * std::cos(angle), float(norm * xi1 * xi1), 0.0f};
-        }
-        return out;
-    }
-    // Mixture of two polar discs (radius xi1 * R has area density 1 / (2 pi r R) on its disc): even
-    // samples on r_max, odd ones on the whole map; the weight is 1 / (N p_mix), in texels.
-    const double inner = s.radius, outer = std::max(double(s.radius), kWholeMapRadius);
+    const float outer = std::max(s.radius, kWholeMapRadius);
     for (size_t i = 0; i < out.size(); ++i) {
-        const double radius = i % 2 == 0 ? inner : outer;
-        const double xi1 = std::max(uniform(rng), 1e-6f), angle = 2.0 * M_PI * uniform(rng), r = xi1 * radius;
-        const double density = 0.5 / (2.0 * M_PI * r * outer) + (r < inner ? 0.5 / (2.0 * M_PI * r * inner) : 0.0);
-        // w = 1: a sample beyond r_max, whose VPL is tested for visibility (rsm/gather.comp).
-        out[i] = {float(r * std::sin(angle)), float(r * std::cos(angle)), float(texels / (s.samples * density)),
-                  r > inner ? 1.0f : 0.0f};
+        const float xi1 = uniform(rng), angle = 2.0f * float(M_PI) * uniform(rng);
+        const float disc = s.weights == RsmWeights::Paper || i % 2 == 0 ? s.radius : outer;
+        out[i] = {std::sin(angle), std::cos(angle), xi1, disc};
     }
     return out;
 }
@@ -51,7 +38,7 @@ RsmGather::RsmGather(vk::Allocator& alloc, vk::CommandContext& cmd, uint32_t wid
     vk::Context& ctx = alloc.context();
     const VkDescriptorType ubo = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, tex = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                            ssbo = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, img = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-    gather_ = vk::ComputeKernel(ctx, "rsm/gather.comp", {ubo, tex, tex, tex, tex, tex, ssbo, ssbo, img, ssbo},
+    gather_ = vk::ComputeKernel(ctx, "rsm/gather.comp", {ubo, tex, tex, tex, tex, tex, ssbo, ssbo, img, ssbo, ssbo},
                                 sizeof(gpu::RsmPush));
     interpolate_ = vk::ComputeKernel(ctx, "rsm/interpolate.comp", {ubo, tex, tex, tex, img, ssbo}, sizeof(gpu::RsmPush));
     args_ = vk::ComputeKernel(ctx, "rsm/list_args.comp", {ssbo, ssbo}, 0);
@@ -74,6 +61,15 @@ RsmGather::RsmGather(vk::Allocator& alloc, vk::CommandContext& cmd, uint32_t wid
     } else {
         pixelList_ = vk::Buffer(alloc, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false, "rsm-unused-list");
     }
+    // An empty grid (no voxels): bound when no occupancy volume is published.
+    noOccupancy_ = vk::Buffer(alloc, sizeof(gpu::GpuOccupancyGrid),
+                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, false,
+                              "no-occupancy");
+    cmd.submitAndWait([&](VkCommandBuffer c) {
+        vkCmdFillBuffer(c, noOccupancy_.handle(), 0, VK_WHOLE_SIZE, 0);
+        vk::memoryBarrier(c, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                          VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+    });
     // Sized for the largest sample count, so that --rsm-samples is a per-frame value.
     samples_ = vk::BufferRing(alloc, sizeof(glm::vec4) * kMaxRsmSamples, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                               "rsm-samples");
@@ -93,7 +89,17 @@ gpu::RsmPush RsmGather::constants(uint32_t mode, uint32_t layers) const {
     const bool low = mode == RSM_GATHER_LOWRES;
     return {{mode, settings_.samples, layers, std::max(1u, settings_.lowResFactor)},
             {low ? lowWidth_ : width_, low ? lowHeight_ : height_, settings_.resolution, settings_.bilinearVpls ? 1u : 0u},
-            {settings_.normalThreshold, settings_.distanceThreshold, settings_.radius, 0}};
+            {settings_.normalThreshold, settings_.distanceThreshold, settings_.radius, 0},
+            {visibilityMode(), settings_.visibilityRays, settings_.weights == RsmWeights::Paper ? 1u : 0u, 0}};
+}
+
+uint32_t RsmGather::visibilityMode() const {
+    switch (settings_.visibility) {
+        case RsmVisibility::None: return RSM_VISIBILITY_NONE;
+        case RsmVisibility::Depth: return RSM_VISIBILITY_DEPTH;
+        case RsmVisibility::Voxels: return RSM_VISIBILITY_VOXELS;
+    }
+    return RSM_VISIBILITY_NONE;
 }
 
 void RsmGather::addGather(FrameGraph& graph, const char* name, uint32_t mode, ImageHandle out, uint32_t layers) {
@@ -109,7 +115,8 @@ void RsmGather::addGather(FrameGraph& graph, const char* name, uint32_t mode, Im
         .storageBuffer(6, graph.buffer("rsm.layers"))
         .storageBuffer(7, graph.import(samples_.current()))
         .storageImage(8, out)
-        .storageBuffer(9, graph.import(pixelList_));
+        .storageBuffer(9, graph.import(pixelList_))
+        .storageBuffer(10, graph.hasBuffer("occupancy") ? graph.buffer("occupancy") : graph.import(noOccupancy_));
     const BufferHandle args = mode == RSM_GATHER_LIST ? graph.import(dispatchArgs_) : BufferHandle{};
     if (args) pass.use(args, Use::IndirectArgs);
     const gpu::RsmPush pc = constants(mode, layers);

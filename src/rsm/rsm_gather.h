@@ -28,6 +28,7 @@ public:
 
 private:
     gpu::RsmPush constants(uint32_t mode, uint32_t layers) const;
+    uint32_t visibilityMode() const;
     void addGather(FrameGraph& graph, const char* name, uint32_t mode, ImageHandle out, uint32_t layers);
     vk::Allocator& alloc_;
     vk::CommandContext& cmd_;
@@ -38,7 +39,7 @@ private:
     vk::Image irradiance_, low_;
     std::vector<glm::vec4> pattern_;
     vk::BufferRing samples_;  // the pattern, rewritten each frame into the frame slot's copy
-    vk::Buffer pixelList_, dispatchArgs_;
+    vk::Buffer pixelList_, dispatchArgs_, noOccupancy_;
 };
 
 }  // namespace penumbra

@@ -1,0 +1,139 @@
+#version 460
+// Conservative surface voxelization of every drawn triangle into the occupancy volume's bits
+// (src/voxel/occupancy_volume.h): exactly the voxels a triangle meets. A triangle is walked over the
+// voxel columns of its dominant axis (the axis its normal is closest to): a column whose square
+// overlaps the triangle's projection (2D separating axes) has at most three candidate voxels, where
+// the plane crosses above the square (its slope is <= 1 along both other axes); each candidate is
+// then tested in 3D (triangleMeetsVoxel).
+// A triangle over at most OCCUPANCY_SMALL_COLUMNS columns is walked by its own thread; larger ones
+// (a wall of two triangles covers tens of thousands) by the whole workgroup, one column per thread.
+#extension GL_GOOGLE_include_directive : require
+#include "shared/types.h"
+#include "render/triangles.glsl"
+
+layout(local_size_x = OCCUPANCY_GROUP) in;
+
+layout(set = 0, binding = 1, std430) readonly buffer Materials { GpuMaterial materials[]; };
+layout(set = 0, binding = 2, std430) buffer Occupancy { GpuOccupancyGrid grid; uint bits[]; } occupancy;
+layout(push_constant) uniform Push { OccupancyPush pc; };
+
+struct Walk {
+    vec3 v[3];        // the triangle in voxel units
+    ivec3 axes;       // u, v, w: w the dominant axis
+    vec3 normal;      // in (u, v, w) order
+    ivec2 lo, size;   // its columns' box on (u, v), clamped to the grid
+    vec2 wRange;      // its extent along w
+};
+
+// The triangle `drawn` (index into the drawn triangles) set up for the walk; false when it occupies
+// nothing (blended, degenerate, or outside the grid).
+bool setup(uint drawn, out Walk walk) {
+    const VisTriangle tri = fetchTriangle(drawn + 1u);
+    if (materials[tri.material].info.y == ALPHA_BLEND) return false;
+    const vec3 n3 = cross(tri.p[1] - tri.p[0], tri.p[2] - tri.p[0]);
+    const vec3 a = abs(n3);
+    if (max(a.x, max(a.y, a.z)) <= 0.0) return false;
+    walk.axes = a.z >= a.x && a.z >= a.y ? ivec3(0, 1, 2) : (a.y >= a.x ? ivec3(2, 0, 1) : ivec3(1, 2, 0));
+    const ivec3 dims = ivec3(occupancy.grid.dims.xyz);
+    vec3 lo = vec3(1e30), hi = vec3(-1e30);
+    for (int k = 0; k < 3; ++k) {
+        const vec3 p = (tri.p[k] - occupancy.grid.origin.xyz) / occupancy.grid.origin.w;
+        walk.v[k] = vec3(p[walk.axes.x], p[walk.axes.y], p[walk.axes.z]);
+        lo = min(lo, walk.v[k]);
+        hi = max(hi, walk.v[k]);
+    }
+    walk.normal = vec3(n3[walk.axes.x], n3[walk.axes.y], n3[walk.axes.z]);
+    const ivec3 gridUvw = ivec3(dims[walk.axes.x], dims[walk.axes.y], dims[walk.axes.z]);
+    const ivec3 first = max(ivec3(floor(lo)), ivec3(0)), last = min(ivec3(floor(hi)), gridUvw - 1);
+    if (any(greaterThan(first, last))) return false;
+    walk.lo = first.xy;
+    walk.size = last.xy - first.xy + 1;
+    walk.wRange = vec2(lo.z, hi.z);
+    return true;
+}
+
+void setVoxel(ivec3 uvw, ivec3 axes) {
+    ivec3 c;
+    c[axes.x] = uvw.x;
+    c[axes.y] = uvw.y;
+    c[axes.z] = uvw.z;
+    const uvec3 dims = occupancy.grid.dims.xyz;
+    const uint index = uint(c.x) + dims.x * (uint(c.y) + dims.y * uint(c.z));
+    atomicOr(occupancy.bits[index >> 5u], 1u << (index & 31u));
+}
+
+// Whether the triangle (voxel units) meets the unit voxel whose lower corner is `corner`: no
+// separating axis among the voxel's three, the triangle's normal and the nine cross products of the
+// edges with the voxel's axes (Akenine-Moller 2001). Touching counts as meeting.
+bool triangleMeetsVoxel(vec3 t0, vec3 t1, vec3 t2, vec3 corner) {
+    const vec3 c = corner + 0.5;
+    const vec3 v[3] = vec3[3](t0 - c, t1 - c, t2 - c);
+    if (any(greaterThan(min(v[0], min(v[1], v[2])), vec3(0.5))) || any(lessThan(max(v[0], max(v[1], v[2])), vec3(-0.5))))
+        return false;
+    const vec3 n = cross(v[1] - v[0], v[2] - v[0]);
+    if (abs(dot(n, v[0])) > 0.5 * (abs(n.x) + abs(n.y) + abs(n.z))) return false;
+    for (int e = 0; e < 3; ++e) {
+        const vec3 edge = v[(e + 1) % 3] - v[e];
+        for (int a = 0; a < 3; ++a) {
+            vec3 unit = vec3(0.0);
+            unit[a] = 1.0;
+            const vec3 axis = cross(unit, edge);
+            const float p0 = dot(axis, v[0]), p1 = dot(axis, v[1]), p2 = dot(axis, v[2]);
+            const float r = 0.5 * (abs(axis.x) + abs(axis.y) + abs(axis.z));
+            if (min(p0, min(p1, p2)) > r || max(p0, max(p1, p2)) < -r) return false;
+        }
+    }
+    return true;
+}
+
+// Column `column` (row-major in the walk's box): the voxels of the triangle above its square.
+void walkColumn(Walk walk, int column) {
+    const ivec2 cell = walk.lo + ivec2(column % walk.size.x, column / walk.size.x);
+    const vec2 centre = vec2(cell) + 0.5;
+    // The square meets the triangle's projection unless one of its edges separates them.
+    const float area = (walk.v[1].x - walk.v[0].x) * (walk.v[2].y - walk.v[0].y) -
+                       (walk.v[2].x - walk.v[0].x) * (walk.v[1].y - walk.v[0].y);
+    const float side = area >= 0.0 ? 1.0 : -1.0;
+    for (int k = 0; k < 3; ++k) {
+        const vec2 p = walk.v[k].xy, e = walk.v[(k + 1) % 3].xy - p;
+        const vec2 inward = side * vec2(-e.y, e.x);
+        if (dot(inward, centre - p) + 0.5 * (abs(inward.x) + abs(inward.y)) < 0.0) return;
+    }
+    // The plane's w over the square (the normal's w is the largest component: |slope| <= 1 per axis),
+    // within the triangle's own extent along w.
+    const vec3 n = walk.normal;
+    const float w = walk.v[0].z - (n.x * (centre.x - walk.v[0].x) + n.y * (centre.y - walk.v[0].y)) / n.z;
+    const float spread = 0.5 * (abs(n.x) + abs(n.y)) / abs(n.z);
+    const int gridW = int(occupancy.grid.dims[walk.axes.z]);
+    const int w0 = max(int(floor(max(w - spread, walk.wRange.x))), 0);
+    const int w1 = min(int(floor(min(w + spread, walk.wRange.y))), gridW - 1);
+    for (int k = w0; k <= w1; ++k)
+        if (triangleMeetsVoxel(walk.v[0], walk.v[1], walk.v[2], vec3(cell, k))) setVoxel(ivec3(cell, k), walk.axes);
+}
+
+shared uint largeTriangles[OCCUPANCY_GROUP];
+shared uint largeCount;
+
+void main() {
+    if (gl_LocalInvocationIndex == 0u) largeCount = 0u;
+    barrier();
+    const uint group = gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x;  // 2D beyond 65535 groups
+    const uint drawn = group * OCCUPANCY_GROUP + gl_LocalInvocationIndex;
+    Walk walk;
+    if (drawn < pc.counts.x && setup(drawn, walk)) {
+        const int columns = walk.size.x * walk.size.y;
+        if (columns <= OCCUPANCY_SMALL_COLUMNS) {
+            for (int c = 0; c < columns; ++c) walkColumn(walk, c);
+        } else {
+            largeTriangles[atomicAdd(largeCount, 1u)] = drawn;
+        }
+    }
+    barrier();
+    const uint count = largeCount;
+    for (uint k = 0u; k < count; ++k) {
+        Walk big;
+        setup(largeTriangles[k], big);  // true: it was listed
+        const int columns = big.size.x * big.size.y;
+        for (int c = int(gl_LocalInvocationIndex); c < columns; c += OCCUPANCY_GROUP) walkColumn(big, c);
+    }
+}

@@ -1,0 +1,40 @@
+// The occupancy volume: the scene's surfaces as one bit per voxel of a box around the scene, for
+// visibility rays that cost a few hundred bytes of reads instead of a BVH (the RSM gather's
+// VPL-to-receiver visibility: --rsm-visibility voxels). Opaque and alpha-masked triangles occupy the
+// voxels they touch (conservative: no ray passes between two voxels of one surface); blended ones
+// and hair do not, as they let light through.
+//   occupancy.clear     the grid header and zero bits (transfer)
+//   occupancy.voxelize  every drawn triangle into the bits (shaders/voxel/voxelize.comp)
+// Both run only when the volume is stale: at the first frame and after invalidate() (instances
+// moved: the Renderer calls it with its cached shadow layers). The buffer ("occupancy": a
+// GpuOccupancyGrid, then the bits) is read with shaders/voxel/occupancy.glsl.
+#pragma once
+#include "render/frame_graph.h"
+#include "render/scene_gpu.h"
+#include "shared/types.h"
+
+namespace penumbra {
+
+// The grid around `bounds`: cubic voxels, `resolution` along the box's longest side, one voxel of
+// margin on every side (so surfaces on the box's faces lie inside).
+gpu::GpuOccupancyGrid occupancyGrid(const Bounds& bounds, uint32_t resolution);
+
+class OccupancyVolume {
+public:
+    OccupancyVolume(vk::Allocator& alloc, SceneGpu& scene, uint32_t resolution);
+    void invalidate() { stale_ = true; }
+    // Declares the build when stale and publishes "occupancy".
+    void addTo(FrameGraph& graph);
+
+    const gpu::GpuOccupancyGrid& grid() const { return grid_; }
+    const vk::Buffer& buffer() const { return buffer_; }  // read-back for tests
+
+private:
+    SceneGpu& scene_;
+    gpu::GpuOccupancyGrid grid_;
+    vk::ComputeKernel voxelize_;
+    vk::Buffer buffer_;
+    bool stale_ = true;
+};
+
+}  // namespace penumbra

@@ -1,0 +1,146 @@
+// The occupancy volume (src/voxel) against a brute-force voxelization on the CPU in double precision:
+// every voxel that a triangle meets (separating-axis test), and no other.
+#include <array>
+#include <cmath>
+#include <random>
+
+#include "gpu_fixture.h"
+#include "readback.h"
+#include "voxel/occupancy_volume.h"
+
+using namespace penumbra;
+using namespace penumbra::test;
+
+namespace {
+
+using Tri = std::array<glm::dvec3, 3>;
+
+// Whether triangle t meets the axis-aligned box of centre c and half size h (Akenine-Moller 2001:
+// the box's axes, the triangle's normal, the nine edge x axis cross products); touching meets.
+bool triangleMeetsBox(const Tri& t, const glm::dvec3& c, double h) {
+    const Tri v{t[0] - c, t[1] - c, t[2] - c};
+    for (int a = 0; a < 3; ++a) {
+        const double lo = std::min({v[0][a], v[1][a], v[2][a]}), hi = std::max({v[0][a], v[1][a], v[2][a]});
+        if (lo > h || hi < -h) return false;
+    }
+    const glm::dvec3 n = glm::cross(v[1] - v[0], v[2] - v[0]);
+    if (std::abs(glm::dot(n, v[0])) > h * (std::abs(n.x) + std::abs(n.y) + std::abs(n.z))) return false;
+    for (int e = 0; e < 3; ++e) {
+        const glm::dvec3 edge = v[(e + 1) % 3] - v[e];
+        for (int a = 0; a < 3; ++a) {
+            glm::dvec3 unit(0.0);
+            unit[a] = 1.0;
+            const glm::dvec3 axis = glm::cross(unit, edge);
+            const double p0 = glm::dot(axis, v[0]), p1 = glm::dot(axis, v[1]), p2 = glm::dot(axis, v[2]);
+            const double r = h * (std::abs(axis.x) + std::abs(axis.y) + std::abs(axis.z));
+            if (std::min({p0, p1, p2}) > r || std::max({p0, p1, p2}) < -r) return false;
+        }
+    }
+    return true;
+}
+
+void addTriangle(Scene& s, glm::vec3 a, glm::vec3 b, glm::vec3 c, uint32_t material) {
+    const uint32_t first = uint32_t(s.vertices.size());
+    for (const glm::vec3& p : {a, b, c}) s.vertices.push_back({p, {0, 0, 1}, {0, 0}});
+    s.draws.push_back({uint32_t(s.indices.size()), 3, material});
+    for (uint32_t i = 0; i < 3; ++i) s.indices.push_back(first + i);
+}
+
+// Triangles of every size in a 2 m box: ordinary, slivers, tiny (inside one voxel), walls larger
+// than a workgroup's columns, axis-aligned ones, zero-area ones (they occupy nothing), and one
+// blended (it lets light through: it occupies nothing either).
+Scene randomTriangles(uint32_t seed) {
+    Scene s;
+    Material opaque, blended;
+    blended.alphaMode = AlphaMode::Blend;
+    s.materials = {opaque, blended};
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f), small(-0.01f, 0.01f);
+    auto point = [&] { return glm::vec3(u(rng), u(rng), u(rng)); };
+    for (int i = 0; i < 60; ++i) {
+        const glm::vec3 a = point();
+        switch (i % 5) {
+            case 0: addTriangle(s, a, point(), point(), 0); break;
+            case 1: addTriangle(s, a, a + glm::vec3(small(rng), small(rng), small(rng)), point(), 0); break;
+            case 2: addTriangle(s, a, a + glm::vec3(small(rng), 0.02f, 0), a + glm::vec3(0.02f, small(rng), 0), 0); break;
+            case 3: addTriangle(s, a, {a.x, u(rng), u(rng)}, {a.x, u(rng), u(rng)}, 0); break;  // in a plane x = const
+            default: addTriangle(s, a, a, point(), 0); break;  // zero area
+        }
+    }
+    addTriangle(s, {-1, -1, -1}, {1, -1, -1}, {1, 1, 1}, 0);  // larger than any workgroup's share
+    addTriangle(s, {-1, 0.3f, -1}, {1, 0.3f, -1}, {-1, 0.3f, 1}, 1);
+    s.computeBounds();
+    return s;
+}
+
+}  // namespace
+
+TEST(OccupancyGrid, CubicVoxelsWithAMarginAroundTheBounds) {
+    Bounds b;
+    b.extend({-2, 0, 1});
+    b.extend({6, 1, 3});
+    const gpu::GpuOccupancyGrid g = occupancyGrid(b, 34);
+    EXPECT_FLOAT_EQ(g.origin.w, 8.0f / 32.0f);
+    EXPECT_EQ(g.dims.x, 34u);
+    EXPECT_EQ(g.dims.y, 6u);   // ceil(1 / 0.25) + 2
+    EXPECT_EQ(g.dims.z, 10u);  // ceil(2 / 0.25) + 2
+    for (int a = 0; a < 3; ++a) {
+        EXPECT_LE(g.origin[a] + g.origin.w, b.min[a] + 1e-5f) << "axis " << a;
+        EXPECT_GE(g.origin[a] + g.origin.w * (float(g.dims[a]) - 1.0f), b.max[a] - 1e-5f) << "axis " << a;
+    }
+}
+
+class OccupancyTest : public GpuTest {};
+
+TEST_F(OccupancyTest, VoxelsAreExactlyThoseTheTrianglesMeet) {
+    for (uint32_t seed : {1u, 2u, 3u}) {
+        Scene scene = randomTriangles(seed);
+        vk::Allocator alloc(ctx());
+        vk::CommandContext cmd(alloc);
+        SceneGpu meshes(cmd, scene);
+        OccupancyVolume volume(alloc, meshes, 40);
+        FrameGraph graph(ctx());
+        volume.addTo(graph);
+        cmd.submitAndWait([&](VkCommandBuffer c) { graph.execute(c, nullptr); });
+        const gpu::GpuOccupancyGrid g = volume.grid();
+        const size_t voxels = size_t(g.dims.x) * g.dims.y * g.dims.z;
+        const std::vector<uint8_t> bytes = cmd.readBuffer(volume.buffer(), volume.buffer().size());
+        gpu::GpuOccupancyGrid header;
+        std::memcpy(&header, bytes.data(), sizeof(header));
+        EXPECT_EQ(header.dims, g.dims);
+        auto gpuBit = [&](size_t i) { return (u32(bytes, sizeof(header) / 4 + i / 32) >> (i % 32)) & 1u; };
+
+        // Each voxel the triangles meet with margin to spare (the box shrunk by 1e-3 voxel) must be set;
+        // none they miss by as much (the box grown by 1e-3) may be. Between the two lie the voxels a
+        // triangle only touches, where float and double may disagree.
+        std::vector<uint8_t> surely(voxels, 0), maybe(voxels, 0);
+        const double size = g.origin.w, half = 0.5 * size, slack = 1e-3 * size;
+        for (const Draw& d : scene.draws) {
+            if (scene.materials[d.material].alphaMode == AlphaMode::Blend) continue;
+            Tri t;
+            for (int k = 0; k < 3; ++k) t[k] = glm::dvec3(scene.vertices[scene.indices[d.firstIndex + k]].position);
+            if (glm::length(glm::cross(t[1] - t[0], t[2] - t[0])) == 0.0) continue;  // zero area: nothing
+            for (uint32_t z = 0; z < g.dims.z; ++z)
+                for (uint32_t y = 0; y < g.dims.y; ++y)
+                    for (uint32_t x = 0; x < g.dims.x; ++x) {
+                        const glm::dvec3 c = glm::dvec3(g.origin) + size * (glm::dvec3(x, y, z) + 0.5);
+                        const size_t i = x + g.dims.x * (y + size_t(g.dims.y) * z);
+                        surely[i] |= triangleMeetsBox(t, c, half - slack);
+                        maybe[i] |= triangleMeetsBox(t, c, half + slack);
+                    }
+        }
+        size_t set = 0, touched = 0, missing = 0, extra = 0;
+        for (size_t i = 0; i < voxels; ++i) {
+            set += surely[i];
+            touched += maybe[i] && !surely[i];
+            missing += surely[i] && !gpuBit(i);
+            extra += !maybe[i] && gpuBit(i);
+        }
+        std::printf("[ occupancy ] seed %u: %ux%ux%u voxels, %zu met, %zu touched, %zu missing, %zu extra\n", seed,
+                    g.dims.x, g.dims.y, g.dims.z, set, touched, missing, extra);
+        EXPECT_GT(set, 2000u);
+        EXPECT_EQ(missing, 0u) << "seed " << seed;
+        EXPECT_EQ(extra, 0u) << "seed " << seed;
+    }
+}
+
