@@ -91,12 +91,11 @@ TEST(GiSuite, AutoExposureMapsTheLogAverageToMiddleGrey) {
 }
 
 // Measured on lavapipe at 64x48 against a 1024-path reference (README, "GI evaluation suite"), RSM
-// with voxel visibility (32 of 400 samples tested) and the per-receiver radial shift: cornell
-// 0.240 / -3.9%, street 0.187 / -5.5%, room 0.087 / -2.7% (before: 0.199 / +0.8%, 0.169 / -3.7%,
-// 0.103 / -5.7%, when the missing occlusion made up for the fixed radii's dark bias); LPV (16^3 x 8,
-// 3 cascades) cornell 0.380 / +19.7%, street 0.294 / +17.4%, room 0.259 / -8.9% (before: 0.840 /
-// -67.6%, 1.095 / -20.5%, 0.895 / -40.5%). Bounds guard the accuracy reached, with a margin for the
-// reference's noise (0.05-0.08).
+// with the per-receiver radial shift (visibility: depth, the default): cornell 0.211 / +2.9%, street
+// 0.167 / +0.7%, room 0.085 / +2.1% (before the shift: 0.199 / +0.8%, 0.169 / -3.7%, 0.103 / -5.7%);
+// LPV (16^3 x 8, 3 cascades) cornell 0.380 / +19.7%, street 0.294 / +17.4%, room 0.259 / -8.9%
+// (before: 0.840 / -67.6%, 1.095 / -20.5%, 0.895 / -40.5%). Bounds guard the accuracy reached, with
+// a margin for the reference's noise (0.05-0.08).
 TEST_F(GiSuiteTest, CornellAtDefaults) { check({"cornell", 0.25, 0.05, 0.43, 0.26}); }
 TEST_F(GiSuiteTest, StreetAtDefaults) { check({"street", 0.25, 0.12, 0.35, 0.24}); }
 TEST_F(GiSuiteTest, RoomAtDefaults) { check({"room", 0.12, 0.06, 0.31, 0.16}); }

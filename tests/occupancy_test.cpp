@@ -75,15 +75,16 @@ Scene randomTriangles(uint32_t seed) {
 
 }  // namespace
 
-TEST(OccupancyGrid, CubicVoxelsWithAMarginAroundTheBounds) {
+TEST(OccupancyGrid, CubicVoxelsWithAMarginAroundTheBoundsInWholeBricks) {
     Bounds b;
     b.extend({-2, 0, 1});
     b.extend({6, 1, 3});
     const gpu::GpuOccupancyGrid g = occupancyGrid(b, 34);
     EXPECT_FLOAT_EQ(g.origin.w, 8.0f / 32.0f);
-    EXPECT_EQ(g.dims.x, 34u);
-    EXPECT_EQ(g.dims.y, 6u);   // ceil(1 / 0.25) + 2
-    EXPECT_EQ(g.dims.z, 10u);  // ceil(2 / 0.25) + 2
+    EXPECT_EQ(g.dims.x, 36u);  // 34 rounded up to bricks of 4
+    EXPECT_EQ(g.dims.y, 8u);   // ceil(1 / 0.25) + 2 = 6, rounded up
+    EXPECT_EQ(g.dims.z, 12u);  // ceil(2 / 0.25) + 2 = 10, rounded up
+    EXPECT_EQ(g.dims.w, 36u * 8u * 12u / 32u) << "the brick bits follow the voxels' words";
     for (int a = 0; a < 3; ++a) {
         EXPECT_LE(g.origin[a] + g.origin.w, b.min[a] + 1e-5f) << "axis " << a;
         EXPECT_GE(g.origin[a] + g.origin.w * (float(g.dims[a]) - 1.0f), b.max[a] - 1e-5f) << "axis " << a;
@@ -136,6 +137,21 @@ TEST_F(OccupancyTest, VoxelsAreExactlyThoseTheTrianglesMeet) {
             missing += surely[i] && !gpuBit(i);
             extra += !maybe[i] && gpuBit(i);
         }
+        // A brick's bit is set exactly where one of its voxels is.
+        size_t brickErrors = 0, bricksSet = 0;
+        const glm::uvec3 bricks = glm::uvec3(g.dims) / uint32_t(OCCUPANCY_BRICK);
+        for (uint32_t b = 0; b < bricks.x * bricks.y * bricks.z; ++b) {
+            const glm::uvec3 c(b % bricks.x, (b / bricks.x) % bricks.y, b / (bricks.x * bricks.y));
+            uint32_t any = 0;
+            for (uint32_t k = 0; k < 64; ++k) {
+                const glm::uvec3 v = c * 4u + glm::uvec3(k % 4, (k / 4) % 4, k / 16);
+                any |= gpuBit(v.x + g.dims.x * (v.y + size_t(g.dims.y) * v.z));
+            }
+            const uint32_t bit = (u32(bytes, sizeof(header) / 4 + g.dims.w + b / 32) >> (b % 32)) & 1u;
+            brickErrors += bit != any;
+            bricksSet += bit;
+        }
+        EXPECT_EQ(brickErrors, 0u) << "seed " << seed << ": " << bricksSet << " bricks set";
         std::printf("[ occupancy ] seed %u: %ux%ux%u voxels, %zu met, %zu touched, %zu missing, %zu extra\n", seed,
                     g.dims.x, g.dims.y, g.dims.z, set, touched, missing, extra);
         EXPECT_GT(set, 2000u);

@@ -63,7 +63,7 @@ float samplingDisc(GpuRsmLayer layer, vec3 x, out vec2 st) {
 // Per-receiver rotation and radial shift of the sample pattern, seeded by the receiver's world
 // position (quantised to RSM texels): neighbouring receivers see different VPLs, so the
 // interpolation's filter averages independent estimates, and the pattern of a surface point stays
-// put when the camera moves. `seed` picks the samples tested for visibility.
+// put when the camera moves.
 uint hash3(uvec3 v) {
     uint h = v.x * 0x8da6b343u ^ v.y * 0xd8163841u ^ v.z * 0xcb1ab31fu;
     h ^= h >> 16;
@@ -76,17 +76,16 @@ uint hash3(uvec3 v) {
 struct ReceiverPattern {
     mat2 rotation;
     float shift;  // added to xi1, modulo 1
-    uint seed;
 };
 
 ReceiverPattern receiverPattern(GpuRsmLayer L, vec3 x) {
     float texel = L.params.x;
     if (L.params.y > 0.5) texel *= max(abs((L.viewProj * vec4(x, 1.0)).w), 1e-3);
     ReceiverPattern p;
-    p.seed = hash3(uvec3(ivec3(floor(x / texel))));
-    const float angle = float(p.seed) * (6.28318531 / 4294967296.0), c = cos(angle), s = sin(angle);
+    const uint seed = hash3(uvec3(ivec3(floor(x / texel))));
+    const float angle = float(seed) * (6.28318531 / 4294967296.0), c = cos(angle), s = sin(angle);
     p.rotation = mat2(c, s, -s, c);
-    p.shift = float(hash3(uvec3(p.seed, 0x9e3779b9u, 1u))) * (1.0 / 4294967296.0);
+    p.shift = float(hash3(uvec3(seed, 0x9e3779b9u, 1u))) * (1.0 / 4294967296.0);
     return p;
 }
 
@@ -186,11 +185,12 @@ vec3 gather(vec3 x, vec3 n, bool hair) {
         vec2 st;
         float scale = samplingDisc(L, x, st) * L.cascade.z / pc.params.z;
         const ReceiverPattern pattern = receiverPattern(L, x);
-        // Voxel visibility: every stride-th sample (from a per-receiver phase) walks the occupancy
-        // volume; the visible share of those samples' light scales the layer's light.
+        // Voxel visibility: every stride-th sample walks the occupancy volume; the visible share of
+        // those samples' light scales the layer's light. The same samples for every receiver: the
+        // lanes of a subgroup walk together (a per-receiver choice made each walk wait for up to
+        // `stride` others': 4x the cost on the H100). The pattern's rotation and shift still differ.
         const bool voxels = pc.sampling.x == RSM_VISIBILITY_VOXELS;
-        const uint stride = max(pc.mode.y / max(pc.sampling.y, 1u), 1u);
-        const uint phase = hash3(uvec3(pattern.seed, 2u, 3u)) % stride;
+        const uint stride = max(pc.mode.y / max(pc.sampling.y, 1u), 1u) | 1u;  // odd: both discs' samples
         vec3 layerLight = vec3(0.0);
         vec2 tested = vec2(0.0);  // luminance of the tested samples' light: all of it, the visible part
         for (uint i = 0; i < pc.mode.y; ++i) {
@@ -202,7 +202,7 @@ vec3 gather(vec3 x, vec3 n, bool hair) {
             if (!any(greaterThan(c, vec3(0.0)))) continue;
             c *= s.z * scale * scale;
             if (pc.sampling.x == RSM_VISIBILITY_DEPTH && s.w > 0.5) c *= farVisibility(L, layer, t, x);
-            if (voxels && i % stride == phase) {
+            if (voxels && i % stride == 0u) {
                 const float lum = dot(c, vec3(0.2126, 0.7152, 0.0722));
                 tested += vec2(lum, lum * voxelVisibility(layer, t, x, n, hair));
             }

@@ -167,15 +167,19 @@ struct RsmPush {
 // The occupancy volume (src/voxel): one bit per voxel of a box around the scene, set where a surface
 // (opaque or alpha-masked; not blended, not hair) touches the voxel. Voxel (x, y, z) is bit
 // (x + dims.x (y + dims.y z)) of the bit words after this header.
+// Bricks of OCCUPANCY_BRICK^3 voxels have a bit each too (after the voxels' words: dims.w is the
+// first brick word), set where any of their voxels is: rays cross empty bricks in one step.
 struct GpuOccupancyGrid {
     vec4 origin;  // xyz = the world position of voxel (0, 0, 0)'s lower corner, w = voxel size (m)
-    uvec4 dims;   // xyz = voxels per axis, w unused
+    uvec4 dims;   // xyz = voxels per axis (multiples of OCCUPANCY_BRICK), w = index of the first brick word
 };
+#define OCCUPANCY_BRICK 4
 #define OCCUPANCY_GROUP 64          // voxelize.comp: threads (triangles) per workgroup
-#define OCCUPANCY_SMALL_COLUMNS 16  // a triangle over more columns is voxelized by its whole workgroup
+#define OCCUPANCY_SMALL_COLUMNS 16  // a triangle over more columns is cut into chunks of
+#define OCCUPANCY_CHUNK_COLUMNS 256 // this many, one workgroup each (a wall covers tens of thousands)
 
 struct OccupancyPush {
-    uvec4 counts;  // x = drawn triangles, yzw unused
+    uvec4 counts;  // x = drawn triangles, y = 1: walk the chunk list (else the triangles), z = chunk capacity
 };
 
 // render/gi_history.comp: temporal accumulation of the indirect irradiance.

@@ -16,35 +16,68 @@ bool voxelOccupied(ivec3 c) {
     return (occupancy.bits[index >> 5u] & (1u << (index & 31u))) != 0u;
 }
 
-// One step of a 3D DDA (Amanatides & Woo) walking a segment through the grid.
-struct VoxelWalk {
-    ivec3 cell, stepDir;
-    vec3 tNext, tDelta;  // t along the segment at each axis' next voxel boundary, and between boundaries
-    int stepsLeft;       // boundary crossings to the last voxel
-    bool clear;          // no occupied voxel met so far
+bool brickOccupied(ivec3 b) {
+    const ivec3 bricks = ivec3(occupancy.grid.dims.xyz) / OCCUPANCY_BRICK;
+    if (any(lessThan(b, ivec3(0))) || any(greaterThanEqual(b, bricks))) return false;
+    const uint index = uint(b.x) + uint(bricks.x) * (uint(b.y) + uint(bricks.y) * uint(b.z));
+    return (occupancy.bits[occupancy.grid.dims.w + (index >> 5u)] & (1u << (index & 31u))) != 0u;
+}
+
+// A segment p + t d, t in [0, 1] (voxel units), walked through the grid: empty bricks in one step
+// each, occupied ones voxel by voxel (a 3D DDA, Amanatides & Woo, visiting exactly the voxels the
+// segment passes through).
+struct VoxelRay {
+    vec3 p, d, invD;
+    bvec3 moves;     // the axes along which d is not 0
+    float t;         // where the walk stands
+    bool inBrick;    // walking the voxels of an occupied brick
+    ivec3 cell, brick;
+    vec3 tNext;      // inBrick: t at the next voxel boundary of each axis
+    bool clear, done;
 };
 
-void walkStep(inout VoxelWalk w) {
-    if (!w.clear || w.stepsLeft <= 0) return;
-    if (w.tNext.x <= w.tNext.y && w.tNext.x <= w.tNext.z) {
-        w.cell.x += w.stepDir.x;
-        w.tNext.x += w.tDelta.x;
-    } else if (w.tNext.y <= w.tNext.z) {
-        w.cell.y += w.stepDir.y;
-        w.tNext.y += w.tDelta.y;
-    } else {
-        w.cell.z += w.stepDir.z;
-        w.tNext.z += w.tDelta.z;
+const float kRayEpsilon = 1e-5;  // in t: past a boundary, into the next brick or voxel
+
+void rayStep(inout VoxelRay r) {
+    if (r.done) return;
+    const vec3 dirPositive = vec3(greaterThan(r.d, vec3(0.0)));
+    if (!r.inBrick) {
+        const vec3 at = r.p + r.d * (r.t + kRayEpsilon);
+        r.brick = ivec3(floor(at / float(OCCUPANCY_BRICK)));
+        if (brickOccupied(r.brick)) {
+            r.inBrick = true;
+            r.cell = ivec3(floor(at));
+            r.tNext = mix(vec3(2.0), (vec3(r.cell) + dirPositive - r.p) * r.invD, r.moves);
+            return;
+        }
+        const vec3 exits = (vec3(r.brick * OCCUPANCY_BRICK) + dirPositive * float(OCCUPANCY_BRICK) - r.p) * r.invD;
+        const vec3 t = mix(vec3(2.0), exits, r.moves);
+        r.t = max(min(t.x, min(t.y, t.z)), r.t + kRayEpsilon);  // forward, whatever the rounding
+        r.done = r.t >= 1.0;
+        return;
     }
-    --w.stepsLeft;
-    w.clear = !voxelOccupied(w.cell);
+    if (voxelOccupied(r.cell)) {
+        r.clear = false;
+        r.done = true;
+        return;
+    }
+    const float tExit = min(r.tNext.x, min(r.tNext.y, r.tNext.z));
+    if (tExit >= 1.0) {
+        r.done = true;
+        return;
+    }
+    const ivec3 stepAxis = tExit == r.tNext.x ? ivec3(1, 0, 0) : (tExit == r.tNext.y ? ivec3(0, 1, 0) : ivec3(0, 0, 1));
+    r.cell += stepAxis * ivec3(sign(r.d));
+    r.tNext += vec3(stepAxis) * abs(r.invD);
+    r.t = tExit;
+    r.inBrick = all(equal(r.cell / OCCUPANCY_BRICK, r.brick)) && all(greaterThanEqual(r.cell, ivec3(0)));
 }
 
 // Whether the segment from world point a to world point b crosses no occupied voxel, leaving out
 // `skip` voxels at each end (the shells of the surfaces the ends lie on or near: a surface occupies
-// every voxel it touches). The DDA visits exactly the voxels the rest of the segment passes through.
-// Eight steps per loop iteration: lavapipe ends a shader's loops silently after 65535 iterations in
-// all (llvmpipe's LP_MAX_TGSI_LOOP_ITERATIONS), which a gather's hundreds of walks would reach.
+// every voxel it touches). Four steps per loop iteration: lavapipe ends a shader's loops silently
+// after 65535 iterations in all (llvmpipe's LP_MAX_TGSI_LOOP_ITERATIONS), which a gather's hundreds
+// of walks would reach.
 bool segmentClear(vec3 a, vec3 b, float skip) {
     if (occupancy.grid.dims.x == 0u) return true;  // no volume bound
     const vec3 pa = (a - occupancy.grid.origin.xyz) / occupancy.grid.origin.w;
@@ -52,20 +85,18 @@ bool segmentClear(vec3 a, vec3 b, float skip) {
     const float len = length(pb - pa);
     if (len <= 2.0 * skip) return true;
     const vec3 dir = (pb - pa) / len;
-    const vec3 p = pa + skip * dir, q = pb - skip * dir, d = q - p;
-    VoxelWalk w;
-    w.cell = ivec3(floor(p));
-    w.stepDir = ivec3(sign(d));
-    w.tDelta = 1.0 / max(abs(d), vec3(1e-12));
-    w.tNext = mix(vec3(2.0), (vec3(w.cell) + vec3(greaterThan(d, vec3(0.0))) - p) * sign(d) * w.tDelta,
-                  notEqual(w.stepDir, ivec3(0)));
-    const ivec3 gap = abs(ivec3(floor(q)) - w.cell);
-    w.stepsLeft = gap.x + gap.y + gap.z;
-    w.clear = !voxelOccupied(w.cell);
-    while (w.clear && w.stepsLeft > 0) {
-        walkStep(w); walkStep(w); walkStep(w); walkStep(w);
-        walkStep(w); walkStep(w); walkStep(w); walkStep(w);
+    VoxelRay r;
+    r.p = pa + skip * dir;
+    r.d = (pb - skip * dir) - r.p;
+    r.moves = notEqual(r.d, vec3(0.0));
+    r.invD = 1.0 / mix(vec3(1.0), r.d, r.moves);
+    r.t = 0.0;
+    r.inBrick = false;
+    r.clear = true;
+    r.done = false;
+    for (int i = 0; i < 1024 && !r.done; ++i) {  // at most 4096 steps: ends even if rounding stalls it
+        rayStep(r); rayStep(r); rayStep(r); rayStep(r);
     }
-    return w.clear;
+    return r.clear;
 }
 #endif

@@ -6,7 +6,8 @@
 // the plane crosses above the square (its slope is <= 1 along both other axes); each candidate is
 // then tested in 3D (triangleMeetsVoxel).
 // A triangle over at most OCCUPANCY_SMALL_COLUMNS columns is walked by its own thread; larger ones
-// (a wall of two triangles covers tens of thousands) by the whole workgroup, one column per thread.
+// are cut into chunks of OCCUPANCY_CHUNK_COLUMNS columns, listed for a second, indirect dispatch
+// (pc.counts.y = 1) of one workgroup per chunk. A full list leaves the triangle to its own thread.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
 #include "render/triangles.glsl"
@@ -15,6 +16,8 @@ layout(local_size_x = OCCUPANCY_GROUP) in;
 
 layout(set = 0, binding = 1, std430) readonly buffer Materials { GpuMaterial materials[]; };
 layout(set = 0, binding = 2, std430) buffer Occupancy { GpuOccupancyGrid grid; uint bits[]; } occupancy;
+// x = chunks listed (the indirect dispatch's x; y = z = 1), then (triangle, first column) per chunk.
+layout(set = 0, binding = 3, std430) buffer Chunks { uvec4 args; uvec2 chunks[]; } list;
 layout(push_constant) uniform Push { OccupancyPush pc; };
 
 struct Walk {
@@ -111,29 +114,28 @@ void walkColumn(Walk walk, int column) {
         if (triangleMeetsVoxel(walk.v[0], walk.v[1], walk.v[2], vec3(cell, k))) setVoxel(ivec3(cell, k), walk.axes);
 }
 
-shared uint largeTriangles[OCCUPANCY_GROUP];
-shared uint largeCount;
-
 void main() {
-    if (gl_LocalInvocationIndex == 0u) largeCount = 0u;
-    barrier();
+    if (pc.counts.y == 1u) {  // one listed chunk per workgroup
+        const uvec2 chunk = list.chunks[gl_WorkGroupID.x];
+        Walk walk;
+        setup(chunk.x, walk);  // true: it was listed
+        const int end = min(int(chunk.y) + OCCUPANCY_CHUNK_COLUMNS, walk.size.x * walk.size.y);
+        for (int c = int(chunk.y + gl_LocalInvocationIndex); c < end; c += OCCUPANCY_GROUP) walkColumn(walk, c);
+        return;
+    }
     const uint group = gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x;  // 2D beyond 65535 groups
     const uint drawn = group * OCCUPANCY_GROUP + gl_LocalInvocationIndex;
     Walk walk;
-    if (drawn < pc.counts.x && setup(drawn, walk)) {
-        const int columns = walk.size.x * walk.size.y;
-        if (columns <= OCCUPANCY_SMALL_COLUMNS) {
-            for (int c = 0; c < columns; ++c) walkColumn(walk, c);
-        } else {
-            largeTriangles[atomicAdd(largeCount, 1u)] = drawn;
+    if (drawn >= pc.counts.x || !setup(drawn, walk)) return;
+    const int columns = walk.size.x * walk.size.y;
+    if (columns > OCCUPANCY_SMALL_COLUMNS) {
+        const uint count = uint(columns + OCCUPANCY_CHUNK_COLUMNS - 1) / OCCUPANCY_CHUNK_COLUMNS;
+        const uint first = atomicAdd(list.args.x, count);
+        if (first + count <= pc.counts.z) {
+            for (uint k = 0u; k < count; ++k) list.chunks[first + k] = uvec2(drawn, k * OCCUPANCY_CHUNK_COLUMNS);
+            return;
         }
+        atomicAdd(list.args.x, -count);  // no room: walked here
     }
-    barrier();
-    const uint count = largeCount;
-    for (uint k = 0u; k < count; ++k) {
-        Walk big;
-        setup(largeTriangles[k], big);  // true: it was listed
-        const int columns = big.size.x * big.size.y;
-        for (int c = int(gl_LocalInvocationIndex); c < columns; c += OCCUPANCY_GROUP) walkColumn(big, c);
-    }
+    for (int c = 0; c < columns; ++c) walkColumn(walk, c);
 }

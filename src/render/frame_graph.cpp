@@ -1,5 +1,7 @@
 #include "render/frame_graph.h"
 
+#include <algorithm>
+
 #include <fmt/format.h>
 
 namespace penumbra {
@@ -123,9 +125,22 @@ void FrameGraph::barriers(VkCommandBuffer cmd, const PassDesc& pass) {
     }
     VkMemoryBarrier2 mem{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
     bool needMem = false;
+    // A buffer the pass uses more than once (storage and indirect arguments) waits once, for all its uses.
+    std::vector<std::pair<VkBuffer, Sync>> uses;
     for (const auto& [handle, use] : pass.buffers) {
-        Sync s = syncFor(use, pass.kind, false);
-        BufferState& st = bufferStates_[bufferOf(handle).handle()];
+        const Sync s = syncFor(use, pass.kind, false);
+        const VkBuffer b = bufferOf(handle).handle();
+        auto same = std::find_if(uses.begin(), uses.end(), [b](const auto& u) { return u.first == b; });
+        if (same == uses.end()) {
+            uses.emplace_back(b, s);
+        } else {
+            same->second.stage |= s.stage;
+            same->second.access |= s.access;
+            same->second.writes |= s.writes;
+        }
+    }
+    for (const auto& [buffer, s] : uses) {
+        BufferState& st = bufferStates_[buffer];
         if (s.writes || (st.access & kWriteAccess)) {
             mem.srcStageMask |= st.stage ? st.stage : VK_PIPELINE_STAGE_2_TOP_OF_PIPE_BIT;
             mem.srcAccessMask |= st.access & kWriteAccess;

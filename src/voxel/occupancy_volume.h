@@ -3,9 +3,12 @@
 // VPL-to-receiver visibility: --rsm-visibility voxels). Opaque and alpha-masked triangles occupy the
 // voxels they touch (conservative: no ray passes between two voxels of one surface); blended ones
 // and hair do not, as they let light through.
-//   occupancy.clear     the grid header and zero bits (transfer)
-//   occupancy.voxelize  every drawn triangle into the bits (shaders/voxel/voxelize.comp)
-// Both run only when the volume is stale: at the first frame and after invalidate() (instances
+//   occupancy.clear           the grid header, zero bits, an empty chunk list (transfer)
+//   occupancy.voxelize        every drawn triangle into the bits (shaders/voxel/voxelize.comp); those
+//                             over many voxel columns listed as chunks of columns
+//   occupancy.voxelize-large  the listed chunks, one workgroup each (indirect)
+//   occupancy.bricks          a bit per 4^3 voxels where any is set (shaders/voxel/bricks.comp)
+// They run only when the volume is stale: at the first frame and after invalidate() (instances
 // moved: the Renderer calls it with its cached shadow layers). The buffer ("occupancy": a
 // GpuOccupancyGrid, then the bits) is read with shaders/voxel/occupancy.glsl.
 #pragma once
@@ -16,7 +19,8 @@
 namespace penumbra {
 
 // The grid around `bounds`: cubic voxels, `resolution` along the box's longest side, one voxel of
-// margin on every side (so surfaces on the box's faces lie inside).
+// margin on every side (so surfaces on the box's faces lie inside), each side rounded up to whole
+// bricks.
 gpu::GpuOccupancyGrid occupancyGrid(const Bounds& bounds, uint32_t resolution);
 
 class OccupancyVolume {
@@ -30,10 +34,13 @@ public:
     const vk::Buffer& buffer() const { return buffer_; }  // read-back for tests
 
 private:
+    void addVoxelize(FrameGraph& graph, const char* name, BufferHandle volume, BufferHandle chunks, bool listed);
+
     SceneGpu& scene_;
     gpu::GpuOccupancyGrid grid_;
-    vk::ComputeKernel voxelize_;
-    vk::Buffer buffer_;
+    uint32_t brickCount_ = 0;
+    vk::ComputeKernel voxelize_, bricks_;
+    vk::Buffer buffer_, chunks_;  // the bits; the large triangles' chunks (and their dispatch's arguments)
     bool stale_ = true;
 };
 
