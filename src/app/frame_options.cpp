@@ -61,6 +61,9 @@ void addGiOptions(CLI::App& cmd, RenderSettings& rs) {
     cmd.add_option("--rsm-voxel-res", rs.rsm.voxelResolution,
                    "Occupancy volume (--rsm-visibility voxels): voxels along the scene's longest side")
         ->check(CLI::Range(8, 1024));
+    addChoice<RsmRadii>(cmd, "--rsm-radii", rs.rsm.radii, {{"fixed", RsmRadii::Fixed}, {"shifted", RsmRadii::Shifted}},
+                        "The sample pattern's radii: the same for every receiver, or shifted per receiver "
+                        "(unbiased; always with --rsm-visibility voxels)");
     cmd.add_option("--rsm-visibility-rays", rs.rsm.visibilityRays,
                    "Voxel visibility: samples a pixel tests through the occupancy volume (the visible share "
                    "of their light scales all samples' light)")

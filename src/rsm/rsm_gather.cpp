@@ -14,20 +14,33 @@ constexpr VkFormat kIrradianceFormat = VK_FORMAT_R32G32B32A32_SFLOAT;  // exact 
 // every texel of the map from any receiver (the light's whole footprint, radius sqrt 2). Near VPLs
 // keep many samples, and far ones (the far walls of a closed room) are no longer left out.
 // --rsm-weights paper keeps the paper's single disc. The gather places and weighs each sample
-// (rsm/gather.comp, patternSample), after shifting xi1 per receiver.
+// (rsm/gather.glsl, patternSample), xi1 shifted per receiver with --rsm-radii shifted.
 constexpr float kWholeMapRadius = 1.41421356f;
 
 }  // namespace
 
+// Two vec4 per sample: its offset (uv, for r_max), weight (texels) and 1 beyond r_max with fixed
+// radii, read as they are by the gather; then (sin, cos) of its angle, xi1 and its disc's radius, from
+// which the gather places and weighs it with xi1 shifted per receiver (--rsm-radii shifted).
 std::vector<glm::vec4> rsmSamplePattern(const RsmSettings& s) {
     std::mt19937 rng(s.seed);
     std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
-    std::vector<glm::vec4> out(s.samples);
-    const float outer = std::max(s.radius, kWholeMapRadius);
-    for (size_t i = 0; i < out.size(); ++i) {
-        const float xi1 = uniform(rng), angle = 2.0f * float(M_PI) * uniform(rng);
-        const float disc = s.weights == RsmWeights::Paper || i % 2 == 0 ? s.radius : outer;
-        out[i] = {std::sin(angle), std::cos(angle), xi1, disc};
+    const double texels = double(s.resolution) * s.resolution, inner = s.radius;
+    const double outer = std::max(inner, double(kWholeMapRadius));
+    std::vector<glm::vec4> out(2 * size_t(s.samples));
+    for (size_t i = 0; i < s.samples; ++i) {
+        const float xi1 = std::max(uniform(rng), 1e-6f), angle = 2.0f * float(M_PI) * uniform(rng);
+        const bool paper = s.weights == RsmWeights::Paper;
+        const double disc = paper || i % 2 == 0 ? inner : outer, r = xi1 * disc;
+        double weight;
+        if (paper) {  // the paper's single disc, its xi1^2 weights (E[xi1^2] = 1/3)
+            weight = M_PI * inner * inner * texels / s.samples * 3.0 * xi1 * xi1;
+        } else {  // the mixture: 1 / (N density), density 1 / (2 pi r R) on each polar disc
+            const double density = 0.5 / (2.0 * M_PI * r * outer) + (r < inner ? 0.5 / (2.0 * M_PI * r * inner) : 0.0);
+            weight = texels / (s.samples * density);
+        }
+        out[2 * i] = {float(r * std::sin(angle)), float(r * std::cos(angle)), float(weight), r > inner ? 1.0f : 0.0f};
+        out[2 * i + 1] = {std::sin(angle), std::cos(angle), xi1, float(disc)};
     }
     return out;
 }
@@ -38,7 +51,9 @@ RsmGather::RsmGather(vk::Allocator& alloc, vk::CommandContext& cmd, uint32_t wid
     vk::Context& ctx = alloc.context();
     const VkDescriptorType ubo = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, tex = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                            ssbo = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, img = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-    gather_ = vk::ComputeKernel(ctx, "rsm/gather.comp", {ubo, tex, tex, tex, tex, tex, ssbo, ssbo, img, ssbo, ssbo},
+    const bool voxels = settings.visibility == RsmVisibility::Voxels;  // a pipeline of its own (gather_voxels.comp)
+    gather_ = vk::ComputeKernel(ctx, voxels ? "rsm/gather_voxels.comp" : "rsm/gather.comp",
+                                {ubo, tex, tex, tex, tex, tex, ssbo, ssbo, img, ssbo, ssbo},
                                 sizeof(gpu::RsmPush));
     interpolate_ = vk::ComputeKernel(ctx, "rsm/interpolate.comp", {ubo, tex, tex, tex, img, ssbo}, sizeof(gpu::RsmPush));
     args_ = vk::ComputeKernel(ctx, "rsm/list_args.comp", {ssbo, ssbo}, 0);
@@ -71,7 +86,7 @@ RsmGather::RsmGather(vk::Allocator& alloc, vk::CommandContext& cmd, uint32_t wid
                           VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
     });
     // Sized for the largest sample count, so that --rsm-samples is a per-frame value.
-    samples_ = vk::BufferRing(alloc, sizeof(glm::vec4) * kMaxRsmSamples, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+    samples_ = vk::BufferRing(alloc, 2 * sizeof(glm::vec4) * kMaxRsmSamples, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                               "rsm-samples");
     setSettings(settings);
 }
@@ -90,7 +105,8 @@ gpu::RsmPush RsmGather::constants(uint32_t mode, uint32_t layers) const {
     return {{mode, settings_.samples, layers, std::max(1u, settings_.lowResFactor)},
             {low ? lowWidth_ : width_, low ? lowHeight_ : height_, settings_.resolution, settings_.bilinearVpls ? 1u : 0u},
             {settings_.normalThreshold, settings_.distanceThreshold, settings_.radius, 0},
-            {visibilityMode(), settings_.visibilityRays, settings_.weights == RsmWeights::Paper ? 1u : 0u, 0}};
+            {visibilityMode(), settings_.visibilityRays, settings_.weights == RsmWeights::Paper ? 1u : 0u,
+             settings_.radii == RsmRadii::Shifted || settings_.visibility == RsmVisibility::Voxels ? 1u : 0u}};
 }
 
 uint32_t RsmGather::visibilityMode() const {
