@@ -6,6 +6,7 @@
 
 #include "gpu_fixture.h"
 #include "readback.h"
+#include "scene/builders.h"
 #include "voxel/occupancy_volume.h"
 
 using namespace penumbra;
@@ -39,11 +40,11 @@ bool triangleMeetsBox(const Tri& t, const glm::dvec3& c, double h) {
     return true;
 }
 
+// One draw per triangle: the brute force reads each draw's first triangle.
 void addTriangle(Scene& s, glm::vec3 a, glm::vec3 b, glm::vec3 c, uint32_t material) {
-    const uint32_t first = uint32_t(s.vertices.size());
-    for (const glm::vec3& p : {a, b, c}) s.vertices.push_back({p, {0, 0, 1}, {0, 0}});
-    s.draws.push_back({uint32_t(s.indices.size()), 3, material});
-    for (uint32_t i = 0; i < 3; ++i) s.indices.push_back(first + i);
+    const Vertex corners[3] = {{a, {0, 0, 1}, {0, 0}}, {b, {0, 0, 1}, {0, 0}}, {c, {0, 0, 1}, {0, 0}}};
+    const uint32_t order[3] = {0, 1, 2};
+    addTriangles(s, corners, order, material, false);
 }
 
 // Triangles of every size in a 2 m box: ordinary, slivers, tiny (inside one voxel), walls larger
