@@ -1,7 +1,9 @@
-// RSM indirect gather (rsm/gather.comp; rsm/gather_voxels.comp defines RSM_VOXEL_VISIBILITY): for a
-// receiver, sum the irradiance of VPLs around its projection into each RSM layer, at the polar sample offsets of Dachsbacher & Stamminger (r_max * xi1 * (sin, cos)(2 pi
+// RSM indirect gather: for a receiver, sum the irradiance of VPLs around its projection into each
+// RSM layer, at the polar sample offsets of Dachsbacher & Stamminger (r_max * xi1 * (sin, cos)(2 pi
 // xi2), generated once from a seed on the CPU with their density-compensating weights), or over
 // every texel (exact mode, for tests). Writes irradiance; lighting multiplies by albedo / pi.
+// Three pipelines, so that the default one stays lean: rsm/gather.comp, gather_shifted.comp
+// (RSM_SHIFTED_RADII) and gather_voxels.comp (that and RSM_VOXEL_VISIBILITY).
 #include "shared/types.h"
 #include "render/lights.glsl"
 #include "render/reconstruct.glsl"
@@ -119,7 +121,7 @@ float farVisibility(GpuRsmLayer L, uint layer, ivec2 t, vec3 x) {
 // near field, dark by 8% at 400 samples on cornell (15% at 100). The paper's disc keeps its xi1^2
 // weights (E[xi1^2] = 1/3).
 vec4 patternSample(uint i, float shift) {
-    const vec4 p = samples[2u * i + 1u];
+    const vec4 p = samples[pc.mode.y + i];
     const float rMax = pc.params.z, texels = float(pc.sizes.z * pc.sizes.z), n = float(pc.mode.y);
     if (pc.sampling.z != 0u) return vec4(p.z * rMax * p.xy, PI * rMax * rMax * texels / n * 3.0 * p.z * p.z, 0.0);
     const float whole = max(rMax, 1.41421356), r = max(fract(p.z + shift), 1e-6) * p.w;
@@ -139,11 +141,13 @@ const float kVisibilityLift = 1.8;
 const float kVisibilitySkip = 1.5;
 
 float voxelVisibility(uint layer, ivec2 t, vec3 x, vec3 n, bool hair) {
-    Vpl vpl;
-    if (!fetchVpl(t, layer, vpl)) return 1.0;
+    const float depth = texelFetch(rsmDepth, ivec3(t, layer), 0).r;
+    if (depth >= 1.0) return 1.0;
+    const vec3 position = vplPosition(t, layer, depth);
+    const vec3 normal = octDecode(texelFetch(rsmNormal, ivec3(t, layer), 0).xy);
     const float lift = kVisibilityLift * occupancyVoxelSize();
-    const vec3 a = x + lift * (hair ? normalize(vpl.position - x) : n);
-    return segmentClear(a, vpl.position + lift * vpl.normal, kVisibilitySkip) ? 1.0 : 0.0;
+    const vec3 a = x + lift * (hair ? normalize(position - x) : n);
+    return segmentClear(a, position + lift * normal, kVisibilitySkip) ? 1.0 : 0.0;
 }
 #endif
 
@@ -197,14 +201,17 @@ vec3 gather(vec3 x, vec3 n, bool hair) {
         vec3 layerLight = vec3(0.0);
         vec2 tested = vec2(0.0);  // luminance of the tested samples' light: all of it, the visible part
         for (uint i = 0; i < pc.mode.y; ++i) {
-            vec4 s = pc.sampling.w != 0u ? patternSample(i, pattern.shift) : samples[2u * i];
+#ifdef RSM_SHIFTED_RADII
+            vec4 s = patternSample(i, pattern.shift);
+#else
+            vec4 s = samples[i];
+#endif
             vec2 uv = st + pattern.rotation * s.xy * scale;
             if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) continue;
             ivec2 t = ivec2(uv * float(res));
             vec3 c = pc.sizes.w != 0u ? bilinearVplIrradiance(uv, res, layer, x, n, hair) : vplIrradiance(t, layer, x, n, hair);
-            if (!any(greaterThan(c, vec3(0.0)))) continue;
+            if (pc.sampling.x == RSM_VISIBILITY_DEPTH && s.w > 0.5 && any(greaterThan(c, vec3(0.0)))) c *= farVisibility(L, layer, t, x);
             c *= s.z * scale * scale;
-            if (pc.sampling.x == RSM_VISIBILITY_DEPTH && s.w > 0.5) c *= farVisibility(L, layer, t, x);
 #ifdef RSM_VOXEL_VISIBILITY
             if (i % stride == 0u) {
                 const float lum = dot(c, vec3(0.2126, 0.7152, 0.0722));

@@ -161,8 +161,7 @@ struct RsmPush {
     uvec4 sizes;   // x,y = output size (low-res or full), z = RSM resolution, w = 1: bilinear VPLs
     vec4 params;   // x = normal cos threshold, y = distance threshold in pixel footprints, z = r_max, w unused
     uvec4 sampling;  // x = RSM_VISIBILITY_*, y = samples a pixel tests through the occupancy volume,
-                     // z = 1: the paper's single disc and xi1^2 weights (else the mixture),
-                     // w = 1: xi1 shifted per receiver (--rsm-radii shifted)
+                     // z = 1: the paper's single disc and xi1^2 weights (else the mixture), w unused
 };
 
 // The occupancy volume (src/voxel): one bit per voxel of a box around the scene, set where a surface

@@ -19,9 +19,10 @@ constexpr float kWholeMapRadius = 1.41421356f;
 
 }  // namespace
 
-// Two vec4 per sample: its offset (uv, for r_max), weight (texels) and 1 beyond r_max with fixed
-// radii, read as they are by the gather; then (sin, cos) of its angle, xi1 and its disc's radius, from
-// which the gather places and weighs it with xi1 shifted per receiver (--rsm-radii shifted).
+// Two vec4 per sample, in two runs of N: first its offset (uv, for r_max), weight (texels) and 1
+// beyond r_max with fixed radii, read as they are by the gather; then (sin, cos) of its angle, xi1 and
+// its disc's radius, from which the gather places and weighs it with xi1 shifted per receiver
+// (--rsm-radii shifted).
 std::vector<glm::vec4> rsmSamplePattern(const RsmSettings& s) {
     std::mt19937 rng(s.seed);
     std::uniform_real_distribution<float> uniform(0.0f, 1.0f);
@@ -39,8 +40,8 @@ std::vector<glm::vec4> rsmSamplePattern(const RsmSettings& s) {
             const double density = 0.5 / (2.0 * M_PI * r * outer) + (r < inner ? 0.5 / (2.0 * M_PI * r * inner) : 0.0);
             weight = texels / (s.samples * density);
         }
-        out[2 * i] = {float(r * std::sin(angle)), float(r * std::cos(angle)), float(weight), r > inner ? 1.0f : 0.0f};
-        out[2 * i + 1] = {std::sin(angle), std::cos(angle), xi1, float(disc)};
+        out[i] = {float(r * std::sin(angle)), float(r * std::cos(angle)), float(weight), r > inner ? 1.0f : 0.0f};
+        out[s.samples + i] = {std::sin(angle), std::cos(angle), xi1, float(disc)};
     }
     return out;
 }
@@ -51,8 +52,10 @@ RsmGather::RsmGather(vk::Allocator& alloc, vk::CommandContext& cmd, uint32_t wid
     vk::Context& ctx = alloc.context();
     const VkDescriptorType ubo = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, tex = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                            ssbo = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, img = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-    const bool voxels = settings.visibility == RsmVisibility::Voxels;  // a pipeline of its own (gather_voxels.comp)
-    gather_ = vk::ComputeKernel(ctx, voxels ? "rsm/gather_voxels.comp" : "rsm/gather.comp",
+    const char* gather = settings.visibility == RsmVisibility::Voxels ? "rsm/gather_voxels.comp"
+                         : settings.radii == RsmRadii::Shifted        ? "rsm/gather_shifted.comp"
+                                                                      : "rsm/gather.comp";
+    gather_ = vk::ComputeKernel(ctx, gather,
                                 {ubo, tex, tex, tex, tex, tex, ssbo, ssbo, img, ssbo, ssbo},
                                 sizeof(gpu::RsmPush));
     interpolate_ = vk::ComputeKernel(ctx, "rsm/interpolate.comp", {ubo, tex, tex, tex, img, ssbo}, sizeof(gpu::RsmPush));
@@ -105,8 +108,7 @@ gpu::RsmPush RsmGather::constants(uint32_t mode, uint32_t layers) const {
     return {{mode, settings_.samples, layers, std::max(1u, settings_.lowResFactor)},
             {low ? lowWidth_ : width_, low ? lowHeight_ : height_, settings_.resolution, settings_.bilinearVpls ? 1u : 0u},
             {settings_.normalThreshold, settings_.distanceThreshold, settings_.radius, 0},
-            {visibilityMode(), settings_.visibilityRays, settings_.weights == RsmWeights::Paper ? 1u : 0u,
-             settings_.radii == RsmRadii::Shifted || settings_.visibility == RsmVisibility::Voxels ? 1u : 0u}};
+            {visibilityMode(), settings_.visibilityRays, settings_.weights == RsmWeights::Paper ? 1u : 0u, 0}};
 }
 
 uint32_t RsmGather::visibilityMode() const {

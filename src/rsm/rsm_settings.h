@@ -27,7 +27,7 @@ enum class RsmVisibility {
 // The pattern's radii: the same for every receiver (the seed's way), or shifted per receiver (xi1 +
 // a hash of its position, modulo 1). Fixed radii are a fixed quadrature of the near field, 8% dark at
 // 400 samples on cornell; on the GI suite that offsets the light depth visibility lets through, and
-// shifting costs 0.26-0.47 ms at 1080p on the H100 (scattered reads). Voxel visibility always shifts.
+// shifting costs 0.15-0.34 ms at 1080p on the H100. Voxel visibility always shifts.
 enum class RsmRadii { Fixed, Shifted };
 
 inline constexpr uint32_t kMaxRsmSamples = 16384;  // --rsm-samples' range: the pattern buffer's size
@@ -51,9 +51,9 @@ struct RsmSettings {
     // bilinearly: 4x the VPL evaluations, but a sample's light moves continuously as the light's
     // texel lattice moves under it (moving lights; README "Temporal stability").
     bool bilinearVpls = false;
-    // Voxels removes Sponza's and VC's light through walls (+37% and +49% energy -> +12% and +14%)
-    // but costs 2.5-3.2 ms at 1080p on the H100 with 16 rays, and its ratio's noise costs cornell
-    // and street 0.02-0.04 of rel L1 (README, "RSM visibility"): an expert's choice, not the default.
+    // Voxels removes most of Sponza's and VC's light through walls (+39% and +43% energy -> +12% and
+    // +14%) but costs 4-6 ms at 1080p on the H100 with 16 rays, and its ratio's noise costs cornell
+    // and street 0.03-0.05 of rel L1 (README, "RSM visibility"): an expert's choice, not the default.
     RsmVisibility visibility = RsmVisibility::Depth;
     RsmRadii radii = RsmRadii::Fixed;
     uint32_t voxelResolution = 128;  // occupancy volume: voxels along the scene's longest side
