@@ -25,12 +25,11 @@ layout(set = 0, binding = 5, std430) buffer Stats { OitStats stats; };
 layout(set = 0, binding = 6, rgba32f) uniform image2D hdr;
 layout(set = 0, binding = 7) uniform sampler2D indirectIrradiance;  // GI (frame.options.x != 0)
 // 8-11: the deep shadow maps (dsm/dsm_lookup.glsl)
-layout(set = 0, binding = 12) uniform sampler2DArrayShadow shadowCompare;
-layout(set = 0, binding = 13) uniform sampler2DArray shadowDepth;
-layout(set = 0, binding = 14) uniform sampler2DArray shadowMoments;
-layout(set = 0, binding = 15, std430) readonly buffer Layers { GpuShadowLayer shadowLayers[]; };
-layout(set = 0, binding = 16, std430) readonly buffer ShadowLights { GpuShadowLight shadowLights[]; };
-layout(set = 0, binding = 17) uniform Params { GpuShadowParams params; };
+layout(set = 0, binding = 12) uniform sampler2DArray shadowDepth;
+layout(set = 0, binding = 13) uniform sampler2DArray shadowMoments;
+layout(set = 0, binding = 14, std430) readonly buffer Layers { GpuShadowLayer shadowLayers[]; };
+layout(set = 0, binding = 15, std430) readonly buffer ShadowLights { GpuShadowLight shadowLights[]; };
+layout(set = 0, binding = 16) uniform Params { GpuShadowParams params; };
 layout(push_constant) uniform Push { OitPush pc; };
 
 #include "shadow/project.glsl"

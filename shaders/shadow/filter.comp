@@ -16,13 +16,12 @@ layout(set = 0, binding = 0) uniform Frame { FrameUniforms frame; };
 layout(set = 0, binding = 1, std430) readonly buffer Lights { GpuLight lights[]; };
 layout(set = 0, binding = 2) uniform sampler2D gDepth;
 layout(set = 0, binding = 3) uniform sampler2D gNormal;
-layout(set = 0, binding = 4) uniform sampler2DArrayShadow shadowCompare;
-layout(set = 0, binding = 5) uniform sampler2DArray shadowDepth;
-layout(set = 0, binding = 6) uniform sampler2DArray shadowMoments;
-layout(set = 0, binding = 7, std430) readonly buffer Layers { GpuShadowLayer shadowLayers[]; };
-layout(set = 0, binding = 8, std430) readonly buffer ShadowLights { GpuShadowLight shadowLights[]; };
-layout(set = 0, binding = 9) uniform Params { GpuShadowParams params; };
-layout(set = 0, binding = 10, rg16f) uniform writeonly image2DArray shadowMask;
+layout(set = 0, binding = 4) uniform sampler2DArray shadowDepth;
+layout(set = 0, binding = 5) uniform sampler2DArray shadowMoments;
+layout(set = 0, binding = 6, std430) readonly buffer Layers { GpuShadowLayer shadowLayers[]; };
+layout(set = 0, binding = 7, std430) readonly buffer ShadowLights { GpuShadowLight shadowLights[]; };
+layout(set = 0, binding = 8) uniform Params { GpuShadowParams params; };
+layout(set = 0, binding = 9, rg16f) uniform writeonly image2DArray shadowMask;
 
 #include "shadow/project.glsl"
 #include "shadow/moments.glsl"

@@ -1,6 +1,6 @@
 // Depth-compare filters: hard, PCF (Reeves et al. 1987) with a rotated Poisson disc, PCSS
-// (Fernando 2005). Needs `shadowCompare` (sampler2DArrayShadow), `shadowDepth` (sampler2DArray,
-// nearest), `params` and project.glsl. Loops are kept rolled and every filter has one call site:
+// (Fernando 2005). Needs `shadowDepth` (sampler2DArray, nearest,
+// border 1: lit), `params` and project.glsl. Loops are kept rolled and every filter has one call site:
 // lavapipe compiles shaders with LLVM at first use, and unrolled, inlined copies cost seconds there.
 //
 // Every tap is a world point: an offset from the receiver in the plane perpendicular to the light
@@ -29,16 +29,18 @@ struct ShadowReceiver {
     float angle;     // per-pixel rotation of the kernel
 };
 
-// Hardware bilinear PCF of one compare (2x2 texels), or the same by hand from a 4-texel gather when
-// the depth format cannot be filtered linearly (lavapipe's D32_SFLOAT): identical results.
+// Bilinear PCF of one compare (2x2 texels) from a 4-texel gather of the stored depths, compared here:
+// one path for every map format (the compute rasterizer's R32_SFLOAT maps cannot be sampled with a
+// compare sampler, and lavapipe's D32_SFLOAT cannot be filtered linearly) and float weights (the
+// hardware's bilinear compare quantises them, to 8 bits on NVIDIA).
 float compareBilinear(ShadowCoord c) {
     float ref = min(c.depth, 1.0);  // beyond the far plane: compare against the far plane
-    if (params.info.y != 0u) return texture(shadowCompare, vec4(c.uvLayer, ref));
     float res = float(params.info.x);
     vec2 t = c.uvLayer.xy * res - 0.5;
     vec2 f = fract(t);
     // Sample exactly at the corner shared by the 4 texels, so the gather picks the same 4 as floor(t).
-    vec4 g = textureGather(shadowCompare, vec3((floor(t) + 1.0) / res, c.uvLayer.z), ref);
+    vec4 d = textureGather(shadowDepth, vec3((floor(t) + 1.0) / res, c.uvLayer.z));
+    vec4 g = vec4(greaterThanEqual(d, vec4(ref)));  // lit where ref <= stored depth (LESS_OR_EQUAL)
     // Gather order: (i0, j1), (i1, j1), (i1, j0), (i0, j0).
     return mix(mix(g.w, g.z, f.x), mix(g.x, g.y, f.x), f.y);
 }

@@ -1,7 +1,7 @@
 // Filtered shadow visibility of a world point (hard, PCF, PCSS, VSM, EVSM, MSM; cascades with their
 // blend band, cube faces, paraboloids): shared by shadow/filter.comp (per G-buffer pixel) and the
 // camera translucency resolve (dsm/oit_resolve.comp, per translucent fragment). Needs `frame`,
-// `shadowLayers`, `shadowLights`, `params`, `shadowCompare`, `shadowDepth`, `shadowMoments`, and
+// `shadowLayers`, `shadowLights`, `params`, `shadowDepth`, `shadowMoments`, and
 // project.glsl, moments.glsl, pcf.glsl included before.
 
 ShadowReceiver makeReceiver(GpuShadowLight s, GpuLight light, uint layer, vec3 p, vec3 n, float angle) {

@@ -259,7 +259,7 @@ struct GpuShadowParams {
     vec4 kernel;   // x = PCF radius (texels), y = PCSS max search radius (texels), z = cascade blend band
                    // (fraction of a cascade), w unused
     vec4 moments;  // x = light-bleeding reduction, y = EVSM positive exponent, z = negative, w = MSM bias
-    uvec4 info;    // x = shadow-map resolution, y = 1: linear depth comparison in hardware,
+    uvec4 info;    // x = shadow-map resolution, y unused,
                    // z = moment blur radius (texels), w = shadowed light count
     vec4 poisson[16];  // 32 points of a progressive Poisson-disc set in the unit disc (xy, zw):
                        // any prefix is well spread, so PCF takes the first 16 and PCSS all 32

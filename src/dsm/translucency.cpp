@@ -64,17 +64,11 @@ CameraTranslucency::CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, co
     composite_ = vk::ComputeKernel(
         ctx, "dsm/oit_resolve.comp",
         {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, storage, storage, storage, storage, storage, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
-         sampled, storage, storage, storage, storage, sampled, sampled, sampled, storage, storage,
+         sampled, storage, storage, storage, storage, sampled, sampled, storage, storage,
          VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
         sizeof(gpu::OitPush));
-    // The shadow map's samplers as shadow.filter makes them (GpuShadowParams says whether the depth
-    // format filters linearly; the border reads as lit).
-    VkFormatProperties depth;
-    vkGetPhysicalDeviceFormatProperties(ctx.physicalDevice(), VK_FORMAT_D32_SFLOAT, &depth);
-    const bool linear = (depth.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT) != 0;
+    // The shadow map's samplers as shadow.filter makes them (the border reads as lit).
     nearest_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
-    compare_ = vk::Sampler(ctx, {linear ? VK_FILTER_LINEAR : VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER,
-                                 true, false});
     border_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER, false, false});
     moments_ = vk::Sampler(ctx, {VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
 }
@@ -160,12 +154,11 @@ void CameraTranslucency::addCompositeTo(FrameGraph& graph) {
         .storageBuffer(9, graph.buffer("dsm.heads"))
         .storageBuffer(10, graph.buffer("dsm.nodes"))
         .storageBuffer(11, graph.buffer("dsm.links"))
-        .sampled(12, map, compare_.handle())
-        .sampled(13, map, border_.handle())
-        .sampled(14, graph.image("shadow.moments"), moments_.handle())
-        .storageBuffer(15, graph.buffer("shadow.layers"))
-        .storageBuffer(16, graph.buffer("shadow.lights"))
-        .uniform(17, graph.buffer("shadow.params"))
+        .sampled(12, map, border_.handle())
+        .sampled(13, graph.image("shadow.moments"), moments_.handle())
+        .storageBuffer(14, graph.buffer("shadow.layers"))
+        .storageBuffer(15, graph.buffer("shadow.lights"))
+        .uniform(16, graph.buffer("shadow.params"))
         .record([this, push](PassContext& c) {
             composite_.pipeline.push(c.cmd, push);
             vkCmdDispatch(c.cmd, vk::divUp(width_, 8), vk::divUp(height_, 8), 1);

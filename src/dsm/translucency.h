@@ -57,7 +57,7 @@ private:
     vk::DescriptorLayout buildLayout_;
     vk::Pipeline hairPipeline_, meshPipeline_;  // the raster's (hairPipeline_ without computeHair)
     vk::ComputeKernel hairKernel_, composite_;
-    vk::Sampler nearest_, compare_, border_, moments_;
+    vk::Sampler nearest_, border_, moments_;
 };
 
 std::string describeTranslucency(const OitFrameStats& s);

@@ -4,20 +4,15 @@ namespace penumbra {
 
 ShadowFilterPass::ShadowFilterPass(vk::Allocator& alloc) : alloc_(alloc) {
     vk::Context& ctx = alloc.context();
-    VkFormatProperties depth;
-    vkGetPhysicalDeviceFormatProperties(ctx.physicalDevice(), VK_FORMAT_D32_SFLOAT, &depth);
-    linearCompare_ = (depth.optimalTilingFeatures & VK_FORMAT_FEATURE_SAMPLED_IMAGE_FILTER_LINEAR_BIT) != 0;
     const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     kernel_ = vk::ComputeKernel(ctx, "shadow/filter.comp",
                                 {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, storage, sampled, sampled, sampled, sampled,
-                                 sampled, storage, storage, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
+                                 storage, storage, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
                                  VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
                                 0);
     point_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
     // Outside a layer the border (depth 1) reads as lit: a point no layer covers casts and gets no shadow.
-    compare_ = vk::Sampler(ctx, {linearCompare_ ? VK_FILTER_LINEAR : VK_FILTER_NEAREST,
-                                 VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER, true, false});
     depth_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER, false, false});
     moments_ = vk::Sampler(ctx, {VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
 }
@@ -43,13 +38,12 @@ void ShadowFilterPass::addTo(FrameGraph& graph, uint32_t shadowedLights) {
         .storageBuffer(1, graph.buffer("lights"))
         .sampled(2, depth, point_.handle())
         .sampled(3, graph.image("gbuffer.normal"), point_.handle())
-        .sampled(4, map, compare_.handle())
-        .sampled(5, map, depth_.handle())
-        .sampled(6, graph.image("shadow.moments"), moments_.handle())
-        .storageBuffer(7, graph.buffer("shadow.layers"))
-        .storageBuffer(8, graph.buffer("shadow.lights"))
-        .uniform(9, graph.buffer("shadow.params"))
-        .storageImage(10, mask)
+        .sampled(4, map, depth_.handle())
+        .sampled(5, graph.image("shadow.moments"), moments_.handle())
+        .storageBuffer(6, graph.buffer("shadow.layers"))
+        .storageBuffer(7, graph.buffer("shadow.lights"))
+        .uniform(8, graph.buffer("shadow.params"))
+        .storageImage(9, mask)
         .record([this](PassContext& c) {
             vkCmdDispatch(c.cmd, vk::divUp(mask_.width(), 8), vk::divUp(mask_.height(), 8), 1);
         });

@@ -11,9 +11,6 @@ namespace penumbra {
 class ShadowFilterPass {
 public:
     explicit ShadowFilterPass(vk::Allocator& alloc);
-    // D32_SFLOAT can be filtered linearly on this device: PCF uses the hardware's bilinear compare.
-    // Otherwise (lavapipe) the shader does the same 2x2 bilinear from a compare gather.
-    bool linearCompare() const { return linearCompare_; }
     // Reads "frame", "lights", the G-buffer's depth and normal, "shadow.map", "shadow.moments",
     // "shadow.layers", "shadow.lights", "shadow.params"; publishes "shadow.mask".
     void addTo(FrameGraph& graph, uint32_t shadowedLights);
@@ -22,9 +19,8 @@ public:
 private:
     void ensureMask(uint32_t width, uint32_t height, uint32_t layers);
     vk::Allocator& alloc_;
-    bool linearCompare_ = false;
     vk::ComputeKernel kernel_;
-    vk::Sampler point_, compare_, depth_, moments_;
+    vk::Sampler point_, depth_, moments_;
     vk::Image mask_;
 };
 

@@ -131,11 +131,11 @@ std::vector<gpu::GpuShadowLayer> ShadowLayout::gpuLayers() const {
     return out;
 }
 
-gpu::GpuShadowParams ShadowLayout::gpuParams(bool linearDepthCompare) const {
+gpu::GpuShadowParams ShadowLayout::gpuParams() const {
     gpu::GpuShadowParams g{};
     g.kernel = {settings_.pcfRadius, settings_.pcssMaxRadius, settings_.cascades.blend, 0.0f};
     g.moments = {settings_.bleedReduction, settings_.evsmPositive, settings_.evsmNegative, settings_.msmBias};
-    g.info = {settings_.resolution, linearDepthCompare ? 1u : 0u, settings_.blurRadius, uint32_t(shadowed_.size())};
+    g.info = {settings_.resolution, 0u, settings_.blurRadius, uint32_t(shadowed_.size())};
     for (int i = 0; i < 16; ++i)
         g.poisson[i] = {kPoisson[2 * i][0], kPoisson[2 * i][1], kPoisson[2 * i + 1][0], kPoisson[2 * i + 1][1]};
     return g;

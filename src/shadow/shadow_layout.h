@@ -55,7 +55,7 @@ public:
 
     std::vector<gpu::GpuShadowLight> gpuLights() const;
     std::vector<gpu::GpuShadowLayer> gpuLayers() const;
-    gpu::GpuShadowParams gpuParams(bool linearDepthCompare) const;
+    gpu::GpuShadowParams gpuParams() const;
 
 private:
     ShadowSettings settings_;

@@ -75,7 +75,7 @@ void ShadowMapPass::update(const std::vector<Light>& lights, const Camera& camer
     layout_.update(lights_, camera, aspect, cameraFar, cascadeSnapTexels);
     const std::vector<gpu::GpuShadowLayer> layers = layout_.gpuLayers();
     const std::vector<gpu::GpuShadowLight> shadowed = layout_.gpuLights();
-    const gpu::GpuShadowParams params = layout_.gpuParams(filter_.linearCompare());
+    const gpu::GpuShadowParams params = layout_.gpuParams();
     if (!layers.empty()) layerTable_.write(layers.data(), layers.size() * sizeof(layers[0]));
     // A layer's depth depends on its projection only (the split distances only pick layers).
     const auto same = [](const gpu::GpuShadowLayer& a, const gpu::GpuShadowLayer& b) {

@@ -78,7 +78,6 @@ public:
     vk::Image& ids() { return ids_; }                // R32_UINT array, the last requested ID layers
     vk::Image& mask() { return filter_.mask(); }     // RG16F array, one layer per shadowed light
     vk::Image& moments() { return moments_.moments(); }
-    bool linearCompare() const { return filter_.linearCompare(); }
     // The compute rasterizer when it draws this pass's layers (null: the hardware does).
     const ComputeRaster* computeRaster() const { return compute_.get(); }
     const ShadowSettings& settings() const { return settings_; }
