@@ -1,5 +1,7 @@
 #include "dsm/hair_passes.h"
 
+#include <stdexcept>
+
 #include "render/raster.h"
 
 namespace penumbra {
@@ -60,6 +62,8 @@ HairShadowPass::HairShadowPass(vk::Allocator& alloc, const HairGpu& hair, float 
 void HairShadowPass::addTo(FrameGraph& graph, std::vector<HairShadowLayer> layers) {
     if (layers.empty()) return;
     const ImageHandle map = graph.image("shadow.map");
+    if (graph.imageOf(map).format() != VK_FORMAT_D32_SFLOAT)  // ShadowMapPass::setHardwareCasters was not told
+        throw std::logic_error("hair.shadow-map: the shadow map is not a depth image");
     PassBuilder pass = graph.pass("hair.shadow-map", PassKind::Raster);
     pass.pipeline(pipeline_).use(map, Use::DepthAttachment);
     declareRibbonSet(pass, hair_);

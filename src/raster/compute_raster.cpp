@@ -50,6 +50,7 @@ ComputeRaster::ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, VkExtent2D s
     args_ = vk::ComputeKernel(ctx, "raster/args.comp", {kBuffer, kBuffer}, pushBytes);
     idSplit_ = vk::ComputeKernel(ctx, kind == Views::Camera ? "raster/ids_2d.comp" : "raster/ids.comp",
                                  {kBuffer, kBuffer, kBuffer, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, pushBytes);
+    store_ = vk::ComputeKernel(ctx, "raster/store.comp", {kBuffer, kBuffer, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, pushBytes);
 
     const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     const VkBufferUsageFlags transfer = VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
@@ -165,6 +166,25 @@ void ComputeRaster::addTo(FrameGraph& graph, const std::string& name, ImageHandl
             });
     }
     if (idLayers_ > 0) addIdSplit(graph, name, ids, p);
+    addResolve(graph, name, target, p);
+}
+
+void ComputeRaster::addResolve(FrameGraph& graph, const std::string& name, ImageHandle target,
+                               const gpu::RasterPush& p) {
+    const BufferHandle depth = graph.import(depth_);
+    if (graph.imageOf(target).format() == VK_FORMAT_R32_SFLOAT) {
+        graph.pass(name + ".resolve")
+            .pipeline(store_.pipeline)
+            .storageBuffer(0, depth, Use::StorageRead)
+            .storageBuffer(1, graph.import(layerTable_.current()))
+            .storageImage(2, target)
+            .bytes(layerTexels() * layerRows_ * 8)
+            .record([this, p](PassContext& c) {
+                store_.pipeline.push(c.cmd, p);
+                vkCmdDispatch(c.cmd, vk::divUp(size_.width, 8), vk::divUp(size_.height, 8), layerRows_);
+            });
+        return;
+    }
     graph.pass(name + ".resolve", PassKind::Transfer)
         .use(depth, Use::TransferSrc)
         .use(target, Use::TransferDst)

@@ -8,7 +8,9 @@
 //   <name>.bin     one workgroup per large triangle: which tiles of its box its edges may cover
 //   <name>.tiles   one workgroup per (large triangle, tile) entry
 //   <name>.ids     layers with visibility IDs only: split depth << 32 | ID into depth and the ID image
-//   <name>.resolve copy of the depth buffer into the D32 target's layers (the filters read it as is)
+//   <name>.resolve the depth buffer into the target's layers: a compute store into an R32_SFLOAT
+//                  target (shadow maps), a copy into a D32_SFLOAT one (the camera's depth, which
+//                  raster passes test against afterwards)
 // Depth is a 32-bit atomicMin on the float bits in a storage buffer (depths in [0, 1] order like
 // their bits); layers with IDs (an RSM's, resolved from them) take a 64-bit atomicMin of
 // depth << 32 | ID, so one pass gives both, as the hardware's depth + R32_UINT colour pass does. When a bin list is full its triangle is rasterized by its setup thread: slower, never
@@ -49,7 +51,7 @@ public:
     // Per frame: the layers to draw into this frame slot's table.
     void setViews(const std::vector<RasterViews>& views, uint32_t slot);
     // The passes (see above) drawing the views set for this frame with the "views" rows of `views`
-    // into `target` (D32_SFLOAT array, TRANSFER_DST) and, for views with ID layers, `ids` (R32_UINT
+    // into `target` (an R32_SFLOAT array with STORAGE usage, or a D32_SFLOAT one with TRANSFER_DST) and, for views with ID layers, `ids` (R32_UINT
     // array, storage); `name` prefixes the pass names.
     void addTo(FrameGraph& graph, const std::string& name, ImageHandle target, BufferHandle viewRows, RasterBias bias,
                ImageHandle ids = {});
@@ -63,6 +65,7 @@ private:
     gpu::RasterPush push(RasterBias bias) const;
     void addSetup(FrameGraph& graph, const std::string& name, BufferHandle viewRows, const gpu::RasterPush& p);
     void addIdSplit(FrameGraph& graph, const std::string& name, ImageHandle ids, const gpu::RasterPush& p);
+    void addResolve(FrameGraph& graph, const std::string& name, ImageHandle target, const gpu::RasterPush& p);
     vk::Allocator& alloc_;
     SceneGpu& scene_;
     VkDeviceSize layerTexels() const { return VkDeviceSize(size_.width) * size_.height; }
@@ -70,7 +73,7 @@ private:
     Views kind_;
     uint32_t layers_, subpixelBits_;
     uint32_t recordCapacity_, entryCapacity_;
-    vk::ComputeKernel setup_, bin_, tiles_, args_, idSplit_;
+    vk::ComputeKernel setup_, bin_, tiles_, args_, idSplit_, store_;
     vk::Buffer depth_, records_, entries_, counters_, dispatchArgs_;
     vk::Buffer depthIds_;     // uint64 per texel of each ID layer, grown to the most requested
     uint32_t idLayers_ = 0;  // ID layers this frame's views write

@@ -62,6 +62,9 @@ ShadowTechnique::ShadowTechnique(vk::Allocator& alloc, GpuScene& scene, const Re
                                  std::function<bool(uint32_t)> coveredByDsm, std::vector<std::string>& warnings)
     : pass_(alloc, scene.meshes(), s.shadow, drawLayout), coveredByDsm_(std::move(coveredByDsm)),
       hairGpu_(scene.hair()) {
+    bool hairCasts = false;  // hair is rasterized into the map of a shadowed light without a DSM
+    for (uint32_t i = 0; i < lights.size() && hairGpu_; ++i) hairCasts |= lights[i].castsShadow && !coveredByDsm_(i);
+    pass_.setHardwareCasters(hairCasts);
     pass_.assign(lights);
     std::vector<uint32_t> deep;
     for (uint32_t i = 0; i < lights.size(); ++i)

@@ -30,13 +30,20 @@ void ShadowMapPass::assign(const std::vector<Light>& lights) {
     lights_ = lights;
     layout_.assign(lights);
     const uint32_t layers = std::max<uint32_t>(uint32_t(layout_.layers().size()), 1u);
-    const bool resized = !map_ || map_.layers() != layers;
+    // The compute rasterizer stores depth into an R32_SFLOAT map when it draws every layer: no copy
+    // into a depth format (see raster/store.comp). A raster pass into the map needs D32_SFLOAT.
+    const VkFormat format = useCompute_ && !hasParaboloid() && !hardwareCasters_ ? VK_FORMAT_R32_SFLOAT
+                                                                                : VK_FORMAT_D32_SFLOAT;
+    const bool resized = !map_ || map_.layers() != layers || map_.format() != format;
     invalidate();
-    if (resized)
-        map_ = vk::Image(alloc_, {VK_FORMAT_D32_SFLOAT, settings_.resolution, settings_.resolution, layers,
-                                  VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
-                                      VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+    if (resized) {
+        const VkImageUsageFlags target = format == VK_FORMAT_D32_SFLOAT ? VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT
+                                                                        : VK_IMAGE_USAGE_STORAGE_BIT;
+        map_ = vk::Image(alloc_, {format, settings_.resolution, settings_.resolution, layers,
+                                  target | VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                      VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                                   "shadow-map", 1, true});
+    }
     if (useCompute_ && (resized || !compute_))
         compute_ = std::make_unique<ComputeRaster>(alloc_, scene_, VkExtent2D{settings_.resolution, settings_.resolution},
                                                    layers);

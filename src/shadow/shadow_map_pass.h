@@ -1,7 +1,7 @@
-// Shadow maps (seed 004 and its family): the depth of every shadowed light in one D32 array image
-// (shadow.map, depth only), moments for VSM/EVSM/MSM (shadow.moments, shadow.blur, compute), and
-// the per-pixel filtered visibility of every shadowed light (shadow.filter, compute) that the
-// lighting pass reads. Layers: cascades for directional lights (refit to the camera every frame),
+// Shadow maps (seed 004 and its family): the depth of every shadowed light in one array image
+// (shadow.map: D32_SFLOAT, or R32_SFLOAT when the compute rasterizer draws every layer), moments
+// for VSM/EVSM/MSM (shadow.moments, shadow.blur, compute), and the per-pixel filtered visibility
+// of every shadowed light (shadow.filter, compute) that the lighting pass reads. Layers: cascades for directional lights (refit to the camera every frame),
 // one perspective layer per spot light, 6 cube faces or 2 paraboloid hemispheres per point light.
 // Bias: constant + slope-scaled rasterizer bias at render time, normal offset at lookup time.
 // ShadowSettings::raster picks who draws the depth: the hardware (shadow.map) or the compute
@@ -57,6 +57,9 @@ public:
     // hardware's depth + colour pass or the compute rasterizer's 64-bit depth << 32 | ID) and forgets
     // the request; every other layer stays depth only.
     void requestIds(std::vector<uint32_t> layers) { idLayers_ = std::move(layers); }
+    // Whether other modules rasterize casters into "shadow.map" (hair, src/dsm): the map then stays
+    // D32_SFLOAT under the compute rasterizer too. Takes effect at the next assign().
+    void setHardwareCasters(bool hardware) { hardwareCasters_ = hardware; }
     // Lights with a deep shadow map: their alphaMode BLEND casters stay out of the shadow map.
     void setDeepShadowLights(std::vector<uint32_t> lights) {
         raster_.setDeepShadowLights(std::move(lights));
@@ -74,7 +77,7 @@ public:
     // shadow.filter: reads the G-buffer, publishes "shadow.mask".
     void addFilterTo(FrameGraph& graph);
 
-    vk::Image& shadowMap() { return map_; }          // D32_SFLOAT array, one layer per ShadowLayer
+    vk::Image& shadowMap() { return map_; }  // D32_SFLOAT or R32_SFLOAT array, one layer per ShadowLayer
     vk::Image& ids() { return ids_; }                // R32_UINT array, the last requested ID layers
     vk::Image& mask() { return filter_.mask(); }     // RG16F array, one layer per shadowed light
     vk::Image& moments() { return moments_.moments(); }
@@ -90,6 +93,7 @@ private:
     std::vector<Light> lights_;
     ShadowRaster raster_;
     bool useCompute_;
+    bool hardwareCasters_ = false;
     std::unique_ptr<ComputeRaster> compute_;
     uint32_t slot_ = 0;
     ShadowMoments moments_;
