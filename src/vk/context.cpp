@@ -123,7 +123,7 @@ std::vector<FeatureCheck> checkRequiredFeatures(VkPhysicalDevice device) {
     VkPhysicalDeviceProperties2 props2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2, &p11};
     if (is13) vkGetPhysicalDeviceProperties2(device, &props2);
     const VkSubgroupFeatureFlags subgroupNeed =
-        VK_SUBGROUP_FEATURE_BASIC_BIT | VK_SUBGROUP_FEATURE_VOTE_BIT | VK_SUBGROUP_FEATURE_ARITHMETIC_BIT;
+        VK_SUBGROUP_FEATURE_BASIC_BIT | VK_SUBGROUP_FEATURE_BALLOT_BIT | VK_SUBGROUP_FEATURE_ARITHMETIC_BIT;
     VkFormatProperties depth;
     vkGetPhysicalDeviceFormatProperties(device, VK_FORMAT_D32_SFLOAT, &depth);
     const VkFormatFeatureFlags depthNeed =
@@ -157,8 +157,8 @@ std::vector<FeatureCheck> checkRequiredFeatures(VkPhysicalDevice device) {
         {"shaderStorageImageExtendedFormats", is13 && f.features.shaderStorageImageExtendedFormats},
         // LPV injection accumulates SH coefficients with float atomics (src/lpv).
         {"shaderBufferFloat32AtomicAdd (VK_EXT_shader_atomic_float)", is13 && af.shaderBufferFloat32AtomicAdd},
-        // and sums a subgroup's VPLs that land in one cell before its atomics (lpv/inject.comp).
-        {"subgroup basic, vote and arithmetic in compute",
+        // and sums a subgroup's VPLs per cell before its atomics (lpv/subgroup_add.glsl).
+        {"subgroup basic, ballot and arithmetic in compute",
          is13 && (p11.subgroupSupportedOperations & subgroupNeed) == subgroupNeed &&
              (p11.subgroupSupportedStages & VK_SHADER_STAGE_COMPUTE_BIT)},
     };
