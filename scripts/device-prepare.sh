@@ -10,12 +10,13 @@ if ! ls .gl/libvulkan1_*.deb >/dev/null 2>&1; then
   apt-get $o update -qq
   (cd .gl && apt-get $o download -qq libvulkan1 libegl1 libglvnd0 libopengl0 libgl1 libglx0 libgles2)
 fi
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DPENUMBRA_PORTABLE=ON >/dev/null
-cmake --build build -j"$(nproc)" --target penumbra
+# A build directory of its own (build-device), so that the portable flag does not rebuild build/.
+cmake -S . -B build-device -DCMAKE_BUILD_TYPE=Release -DPENUMBRA_PORTABLE=ON >/dev/null
+cmake --build build-device -j"$(nproc)" --target penumbra
 rm -rf .device && mkdir -p .device/lib .device/assets
-cp build/penumbra .device/
+cp build-device/penumbra .device/
 # Every shared library it links except the C runtime and the Vulkan loader (unpacked from .gl).
-ldd build/penumbra | awk '$3 ~ /^\// {print $3}' | grep -Ev '/(libc|libm|libvulkan|ld-linux[^/]*)\.so' |
+ldd build-device/penumbra | awk '$3 ~ /^\// {print $3}' | grep -Ev '/(libc|libm|libvulkan|ld-linux[^/]*)\.so' |
   while read -r lib; do cp -L "$lib" .device/lib/; done
 [ -d ../shared/assets ] && cp -r ../shared/assets/VC ../shared/assets/sponza .device/assets/
 # Packed: Embree alone is 44 MB, and the tree that travels to the GPU machine holds 64 MiB at most.
