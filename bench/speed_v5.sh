@@ -32,3 +32,4 @@ for scene in sponza vc; do
   echo "== $scene: new against old"; "$new" compare "$out/${scene}_new.exr" "$out/${scene}_old.exr"
 done
 rm -f "$out"/*.exr
+summarize
