@@ -25,7 +25,7 @@ done
 for side in old new; do
   bin=${!side}
   for scene in sponza vc; do
-    "$bin" render ${!scene} $full --width 960 --height 540 -o "$out/${scene}_$side.exr" > /dev/null 2>&1
+    "$bin" render ${!scene} $techniques --raster auto --width 960 --height 540 -o "$out/${scene}_$side.exr" > /dev/null 2>&1
   done
 done
 for scene in sponza vc; do
