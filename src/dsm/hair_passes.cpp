@@ -29,6 +29,8 @@ HairGBufferPass::HairGBufferPass(vk::Allocator& alloc, const HairGpu& hair, cons
     : alloc_(alloc), hair_(hair), layout_(ribbonLayout(alloc.context())) {
     vk::GraphicsDesc d = HairGpu::pipelineDesc("dsm/hair_gbuffer.frag");
     d.colorFormats = {g.albedo.format(), g.normal.format()};
+    if (g.depth.format() != VK_FORMAT_D32_SFLOAT)  // GBufferPass was not told `rasterAfter`
+        throw std::logic_error("hair.gbuffer: the camera's depth is not a depth image");
     d.depthFormat = g.depth.format();
     pipeline_ = vk::Pipeline::graphics(alloc.context(), d, {layout_.handle()}, sizeof(gpu::HairDrawPush));
 }

@@ -48,8 +48,12 @@ ComputeRaster::ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, VkExtent2D s
     for (uint32_t b = 7; b <= 11; ++b) setup.push_back({b, kBuffer});  // vertices, indices, materials, layers, drawn triangles
     setup_ = vk::ComputeKernel(ctx, "raster/setup.comp", setup, pushBytes, table);
     args_ = vk::ComputeKernel(ctx, "raster/args.comp", {kBuffer, kBuffer}, pushBytes);
-    idSplit_ = vk::ComputeKernel(ctx, kind == Views::Camera ? "raster/ids_2d.comp" : "raster/ids.comp",
+    const bool camera = kind == Views::Camera;
+    idSplit_ = vk::ComputeKernel(ctx, camera ? "raster/ids_2d.comp" : "raster/ids.comp",
                                  {kBuffer, kBuffer, kBuffer, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, pushBytes);
+    idStore_ = vk::ComputeKernel(ctx, camera ? "raster/ids_2d_image.comp" : "raster/ids_image.comp",
+                                 {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kBuffer, kBuffer, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+                                 pushBytes);
     store_ = vk::ComputeKernel(ctx, "raster/store.comp", {kBuffer, kBuffer, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, pushBytes);
 
     const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
@@ -165,7 +169,7 @@ void ComputeRaster::addTo(FrameGraph& graph, const std::string& name, ImageHandl
                 vkCmdDispatchIndirect(c.cmd, dispatchArgs_.handle(), binning ? sizeof(gpu::uvec4) : 0);
             });
     }
-    if (idLayers_ > 0) addIdSplit(graph, name, ids, p);
+    if (idLayers_ > 0) addIdSplit(graph, name, ids, target, p);
     addResolve(graph, name, target, p);
 }
 
@@ -173,6 +177,10 @@ void ComputeRaster::addResolve(FrameGraph& graph, const std::string& name, Image
                                const gpu::RasterPush& p) {
     const BufferHandle depth = graph.import(depth_);
     if (graph.imageOf(target).format() == VK_FORMAT_R32_SFLOAT) {
+        const auto depthOnly = std::count_if(views_.begin(), views_.end(), [](const RasterViews& v) {
+            return v.layerCount > 0 && v.firstIdLayer == RasterViews::kNoIds;
+        });
+        if (depthOnly == 0) return;  // the ID split stored every layer
         graph.pass(name + ".resolve")
             .pipeline(store_.pipeline)
             .storageBuffer(0, depth, Use::StorageRead)
@@ -204,16 +212,22 @@ void ComputeRaster::addResolve(FrameGraph& graph, const std::string& name, Image
         });
 }
 
-void ComputeRaster::addIdSplit(FrameGraph& graph, const std::string& name, ImageHandle ids, const gpu::RasterPush& p) {
-    graph.pass(name + ".ids")
-        .pipeline(idSplit_.pipeline)
-        .storageBuffer(0, graph.import(depth_), Use::StorageWrite)
-        .storageBuffer(1, graph.import(depthIds_), Use::StorageRead)
+void ComputeRaster::addIdSplit(FrameGraph& graph, const std::string& name, ImageHandle ids, ImageHandle target,
+                               const gpu::RasterPush& p) {
+    const bool intoTarget = graph.imageOf(target).format() == VK_FORMAT_R32_SFLOAT;
+    const vk::ComputeKernel& kernel = intoTarget ? idStore_ : idSplit_;
+    PassBuilder pass = graph.pass(name + ".ids");
+    pass.pipeline(kernel.pipeline);
+    if (intoTarget)
+        pass.storageImage(0, target);
+    else
+        pass.storageBuffer(0, graph.import(depth_), Use::StorageWrite);
+    pass.storageBuffer(1, graph.import(depthIds_), Use::StorageRead)
         .storageBuffer(2, graph.import(layerTable_.current()))
         .storageImage(3, ids)
         .bytes(layerTexels() * idLayers_ * 16)
-        .record([this, p](PassContext& c) {
-            idSplit_.pipeline.push(c.cmd, p);
+        .record([this, &kernel, p](PassContext& c) {
+            kernel.pipeline.push(c.cmd, p);
             vkCmdDispatch(c.cmd, vk::divUp(size_.width, 8), vk::divUp(size_.height, 8), layerRows_);
         });
 }

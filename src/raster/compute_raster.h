@@ -7,9 +7,10 @@
 //   <name>.args    the bin and tile passes' indirect dispatch sizes
 //   <name>.bin     one workgroup per large triangle: which tiles of its box its edges may cover
 //   <name>.tiles   one workgroup per (large triangle, tile) entry
-//   <name>.ids     layers with visibility IDs only: split depth << 32 | ID into depth and the ID image
-//   <name>.resolve the depth buffer into the target's layers: a compute store into an R32_SFLOAT
-//                  target (shadow maps), a copy into a D32_SFLOAT one (the camera's depth, which
+//   <name>.ids     layers with visibility IDs only: split depth << 32 | ID into the ID image and depth
+//                  (into an R32_SFLOAT target itself, else into the depth buffer)
+//   <name>.resolve the depth-only layers into an R32_SFLOAT target (a compute store; none when every
+//                  layer has IDs), or every layer into a D32_SFLOAT one (a copy) (the camera's depth, which
 //                  raster passes test against afterwards)
 // Depth is a 32-bit atomicMin on the float bits in a storage buffer (depths in [0, 1] order like
 // their bits); layers with IDs (an RSM's, resolved from them) take a 64-bit atomicMin of
@@ -64,7 +65,8 @@ public:
 private:
     gpu::RasterPush push(RasterBias bias) const;
     void addSetup(FrameGraph& graph, const std::string& name, BufferHandle viewRows, const gpu::RasterPush& p);
-    void addIdSplit(FrameGraph& graph, const std::string& name, ImageHandle ids, const gpu::RasterPush& p);
+    void addIdSplit(FrameGraph& graph, const std::string& name, ImageHandle ids, ImageHandle target,
+                    const gpu::RasterPush& p);
     void addResolve(FrameGraph& graph, const std::string& name, ImageHandle target, const gpu::RasterPush& p);
     vk::Allocator& alloc_;
     SceneGpu& scene_;
@@ -73,7 +75,7 @@ private:
     Views kind_;
     uint32_t layers_, subpixelBits_;
     uint32_t recordCapacity_, entryCapacity_;
-    vk::ComputeKernel setup_, bin_, tiles_, args_, idSplit_, store_;
+    vk::ComputeKernel setup_, bin_, tiles_, args_, idSplit_, idStore_, store_;
     vk::Buffer depth_, records_, entries_, counters_, dispatchArgs_;
     vk::Buffer depthIds_;     // uint64 per texel of each ID layer, grown to the most requested
     uint32_t idLayers_ = 0;  // ID layers this frame's views write

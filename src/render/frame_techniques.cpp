@@ -38,7 +38,8 @@ std::vector<RsmLayerSource> rsmLayersOf(const ShadowMapPass& shadow, bool widest
 CameraTechnique::CameraTechnique(vk::Allocator& alloc, GpuScene& scene, const RenderSettings& s,
                                  VkDescriptorSetLayout drawLayout)
     : gbuffer_(alloc, scene.meshes(), s.width, s.height, drawLayout, s.cameraPath, !s.translucency,
-               computeRasterFor(s.shadow.raster, alloc.context().properties())) {
+               computeRasterFor(s.shadow.raster, alloc.context().properties()),
+               !s.translucency && scene.hair()) {  // HairGBufferPass below draws into the depth
     if (s.translucency) {
         translucency_ = std::make_unique<CameraTranslucency>(alloc, scene.meshes(), scene.hair(), s.width, s.height,
                                                              computeRasterFor(s.shadow.raster, alloc.context().properties()));

@@ -5,10 +5,12 @@
 namespace penumbra {
 
 GBufferPass::GBufferPass(vk::Allocator& alloc, SceneGpu& scene, uint32_t width, uint32_t height,
-                         VkDescriptorSetLayout drawLayout, CameraPath path, bool drawBlended, bool computeRaster)
+                         VkDescriptorSetLayout drawLayout, CameraPath path, bool drawBlended, bool computeRaster,
+                         bool rasterAfter)
     : alloc_(alloc), scene_(scene), path_(path), drawBlended_(drawBlended) {
     vk::Context& ctx = alloc.context();
     const bool visibility = path == CameraPath::Visibility;
+    const bool computeDepth = visibility && computeRaster && !rasterAfter;
     // Hair ribbons are drawn into albedo and normal after either path (src/dsm): both stay attachments.
     const VkImageUsageFlags target = VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
                                      VK_IMAGE_USAGE_TRANSFER_SRC_BIT | (visibility ? VK_IMAGE_USAGE_STORAGE_BIT : 0);
@@ -16,14 +18,15 @@ GBufferPass::GBufferPass(vk::Allocator& alloc, SceneGpu& scene, uint32_t width, 
     albedo = vk::Image(alloc, {visibility ? VK_FORMAT_R16G16B16A16_SFLOAT : VK_FORMAT_R8G8B8A8_SRGB, width, height,
                                1, target, "gbuffer-albedo"});
     normal = vk::Image(alloc, {VK_FORMAT_R16G16B16A16_SFLOAT, width, height, 1, target, "gbuffer-normal"});
-    depth = vk::Image(alloc, {VK_FORMAT_D32_SFLOAT, width, height, 1,
-                              VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
-                                  VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT,
+    depth = vk::Image(alloc, {computeDepth ? VK_FORMAT_R32_SFLOAT : VK_FORMAT_D32_SFLOAT, width, height, 1,
+                              (computeDepth ? VK_IMAGE_USAGE_STORAGE_BIT : VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT) |
+                                  VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
+                                  VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                               "gbuffer-depth"});
     vk::GraphicsDesc d;
     d.vertexShader = "render/scene.vert";
     d.fragmentShader = visibility ? "render/visibility.frag" : "render/gbuffer.frag";
-    d.depthFormat = depth.format();
+    d.depthFormat = VK_FORMAT_D32_SFLOAT;
     d.vertexStride = SceneGpu::vertexStride();
     d.vertexAttributes = SceneGpu::vertexAttributes();
     d.dynamicCullMode = true;

@@ -20,8 +20,11 @@ namespace penumbra {
 class GBufferPass {
 public:
     // `drawBlended`: alphaMode BLEND materials are drawn opaque (no camera translucency).
+    // `rasterAfter`: raster passes test and write the depth afterwards (opaque hair ribbons), so it
+    // stays D32_SFLOAT; else the compute rasterizer stores it as R32_SFLOAT (no copy, src/raster).
     GBufferPass(vk::Allocator& alloc, SceneGpu& scene, uint32_t width, uint32_t height,
-                VkDescriptorSetLayout drawLayout, CameraPath path, bool drawBlended = true, bool computeRaster = false);
+                VkDescriptorSetLayout drawLayout, CameraPath path, bool drawBlended = true, bool computeRaster = false,
+                bool rasterAfter = false);
     // Reads "views" (and "frame"); publishes "gbuffer.albedo", "gbuffer.normal", "gbuffer.depth"
     // (and "gbuffer.ids" on the visibility path). `slot`: the frame in flight.
     void addTo(FrameGraph& graph, uint32_t slot = 0);
