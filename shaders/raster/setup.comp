@@ -78,12 +78,34 @@ vec4 plane(vec3 a, vec2 p0, vec2 p1, vec2 p2, float invDet) {
     return vec4(a.x, (d1 * e2.y - d2 * e1.y) * invDet, (e1.x * d2 - e2.x * d1) * invDet, 0.0);
 }
 
-// Vulkan's depth bias for a float depth buffer: r = 2^(exponent of the largest z - 23 mantissa bits).
-float depthBias(float maxZ, float slope) {
-    int e;
-    frexp(maxZ, e);  // maxZ = m 2^e, m in [0.5, 1): the IEEE exponent is e - 1
-    const float r = maxZ > 0.0 ? ldexp(1.0, e - 24) : 0.0;
-    return push.bias.x * r + push.bias.y * slope;
+// Vulkan's depth bias of a D32_SFLOAT buffer, r * constant + m * slope, with lavapipe's choices
+// (llvmpipe's triangle setup) where the spec leaves them open: m = max(|dz/dx|, |dz/dy|) from the
+// unsnapped window vertices (cross products times 1/area), r = 2^(e - 23) with e the exponent of the
+// largest |z| (0 below the smallest normal), no clamp (the passes set depthBiasClamp 0).
+float depthBias(vec3 p0, vec3 p1, vec3 p2, vec3 d01, vec3 d20, float ooa) {
+    if (push.bias.x == 0.0 && push.bias.y == 0.0) return 0.0;  // no bias: no 0 * inf on degenerate planes
+    precise const float dzdx = abs((d20.z * d01.y - d20.y * d01.z) * ooa);
+    precise const float dzdy = abs((d20.x * d01.z - d20.z * d01.x) * ooa);
+    const float maxZ = max(abs(p2.z), max(abs(p0.z), abs(p1.z)));
+    const float r = intBitsToFloat(max((floatBitsToInt(maxZ) & 0x7F800000) - (23 << 23), 0));
+    precise const float bias = r * push.bias.x + max(dzdx, dzdy) * push.bias.y;  // unclamped
+    return bias;
+}
+
+// Depth plane (x: value at integer pixel coordinates (0, 0), y: d/dx, z: d/dy; w: depth bias) in the
+// arithmetic of lavapipe's triangle setup (llvmpipe lp_state_setup.c): float, unfused, gradients
+// from the unsnapped window vertices in its order, extrapolated from v0 (centres at + 0.5). The
+// sample then evaluates fma(dz/dy, y, fma(dz/dx, x, a0)) + bias at the pixel's integer (x, y), as
+// the reference's interpolator does. Following its order (not a better-conditioned one) is what
+// keeps steep and huge triangles within float rounding of the hardware.
+vec4 depthPlane(vec3 p0, vec3 p1, vec3 p2) {
+    precise const vec3 d01 = p0 - p1, d20 = p2 - p0;
+    precise const float ooa = 1.0 / (d01.x * d20.y - d01.y * d20.x);
+    precise const vec2 d20ooa = d20.xy * ooa, d01ooa = d01.xy * ooa;
+    precise const float dzdx = d01.z * d20ooa.y - d20.z * d01ooa.y;
+    precise const float dzdy = d20.z * d01ooa.x - d01.z * d20ooa.x;
+    precise const float a0 = p0.z - (dzdx * (p0.x - 0.5) + dzdy * (p0.y - 0.5));
+    return vec4(a0, dzdx, dzdy, depthBias(p0, p1, p2, d01, d20, ooa));
 }
 
 // Stores a large triangle and reserves one tile entry per tile of its box (the bin pass fills them
@@ -126,6 +148,8 @@ void emitTriangle(ClipVertex c0, ClipVertex c1, ClipVertex c2, Caster caster) {
     // Fronts are clockwise in light views, counter-clockwise where the projection flips y (the camera).
     const bool back = caster.flipped ? area > 0l : area < 0l;
     if (area == 0l || (back && caster.singleSided)) return;  // empty, or a culled back face
+    // lavapipe sets up (v0, v1, v2) when its area (the negative of this one) is positive, else (v0, v2, v1).
+    const vec4 depth = area > 0l ? depthPlane(w0.xyz, w2.xyz, w1.xyz) : depthPlane(w0.xyz, w1.xyz, w2.xyz);
     if (area < 0l) {  // reorder to the positive winding the edges expect
         ClipVertex ct = c1; c1 = c2; c2 = ct;
         vec4 wt = w1; w1 = w2; w2 = wt;
@@ -140,8 +164,7 @@ void emitTriangle(ClipVertex c0, ClipVertex c1, ClipVertex c2, Caster caster) {
     t.xy01 = uvec4(ivec4(s0, s1));
     t.xy2 = uvec4(uvec2(ivec2(s2)), caster.layer, caster.material);
     t.origin = vec4(w0.xy, caster.alphaTested ? 1.0 : 0.0, 0.0);
-    t.depth = plane(vec3(w0.z, w1.z, w2.z), w0.xy, w1.xy, w2.xy, invDet);
-    t.depth.w = depthBias(max(w0.z, max(w1.z, w2.z)), max(abs(t.depth.y), abs(t.depth.z)));
+    t.depth = depth;
     const vec3 iw = vec3(w0.w, w1.w, w2.w);
     t.invW = plane(iw, w0.xy, w1.xy, w2.xy, invDet);
     t.uOverW = plane(vec3(c0.uv.x, c1.uv.x, c2.uv.x) * iw, w0.xy, w1.xy, w2.xy, invDet);
