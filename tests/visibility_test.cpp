@@ -113,10 +113,10 @@ TEST_F(VisibilityTest, CornellEqualsTheClassicGBuffer) {
 // The visibility buffer drawn by the compute rasterizer (`--raster compute`: 64-bit depth << 32 | ID
 // atomics, src/raster) against the raster hardware's: coverage identical but for 0.01% (edge-rule
 // ties); the same triangle, depth within 1e-6 and so the same albedo and normal but for 0.02%.
-// Measured: cornell 0 pixels of each; VC (19200 pixels) 0 coverage, 2 triangles: at (16, 30) two
-// nearly coplanar far triangles whose depths differ by 1.2e-7 (the depth-precision gap of the
-// DISABLED_ raster tests decides which is in front) and at (4, 103) a triangle edge hidden behind
-// another whose pixel the two rules give to different sides (3.4e-5 apart in depth).
+// Measured: cornell 0 pixels of each; VC (19200 pixels) 0 coverage, 1 triangle: at (96, 42) two far
+// triangles at exactly the same depth (0.998118937), where the hardware's LESS_OR_EQUAL keeps the
+// later one and the compute rasterizer's 64-bit atomicMin the smaller ID. (Before its depth followed
+// lavapipe's, 2 others: a 1.2e-7 depth gap between nearly coplanar triangles, a hidden edge.)
 TEST_F(VisibilityTest, ComputeRasterizedVisibilityEqualsTheHardware) {
     const fs::path vcPath = fs::path(PENUMBRA_SOURCE_DIR) / ".." / "shared" / "assets" / "VC" / "glTF" / "VC.gltf";
     Camera vcCamera;

@@ -3,9 +3,10 @@
 // The rules are the hardware's (Vulkan rasterization of a D32_SFLOAT depth-only view):
 //  - sample at the pixel centre; vertices snapped to subPixelPrecisionBits; edge functions exact in
 //    64-bit integers; a sample on an edge is covered only by a top or left edge (top-left rule);
-//  - depth = the plane of z/w through the three window-space vertices, evaluated at the sample;
-//  - depth bias of a float depth buffer: constant * 2^(exponent(max z) - 23) + slope * max(|dz/dx|, |dz/dy|),
-//    then clamped to [0, 1];
+//  - depth = the plane of z/w through the three unsnapped window-space vertices, evaluated at the
+//    sample, in the arithmetic of lavapipe's setup and interpolator (setup.comp's depthPlane);
+//  - depth bias of a float depth buffer: constant * 2^(exponent(max |z|) - 23) + slope * max(|dz/dx|,
+//    |dz/dy|), then clamped to [0, 1];
 //  - alpha-masked casters sample the base-colour alpha (perspective-correct uv, analytic gradients
 //    for the texture LOD) and drop samples below the material's cutoff.
 // The depth test is a 32-bit atomicMin on the float bits: depths in [0, 1] order like their bits.
@@ -108,21 +109,22 @@ bool alphaDiscarded(RasterTriangle t, vec2 offset) {
     return alpha < m.params.x;
 }
 
-// Depth test and write of one covered sample.
+// Depth test and write of one covered sample. Depth as lavapipe's interpolator takes it (setup.comp's
+// depthPlane): the plane's value at the pixel's integer coordinates, two fused multiply-adds, then the bias.
 void shadeSample(RasterTriangle t, ivec2 p, ivec2 size) {
-    const vec2 offset = vec2(p) + 0.5 - t.origin.xy;
-    float z = clamp(planeAt(t.depth, offset) + t.depth.w, 0.0, 1.0);
+    const vec2 xy = vec2(p);
+    precise const float z = clamp(fma(t.depth.z, xy.y, fma(t.depth.y, xy.x, t.depth.x)) + t.depth.w, 0.0, 1.0);
     const uint bits = floatBitsToUint(z) & 0x7FFFFFFFu;  // -0 -> +0
     if (t.ids.y != 0u) {
         const uint index = ((t.ids.y - 1u) * uint(size.y) + uint(p.y)) * uint(size.x) + uint(p.x);
         if (bits >= uint(depthIds[index] >> 32)) return;  // cleared above 1.0: the far plane writes too
-        if (t.origin.z != 0.0 && alphaDiscarded(t, offset)) return;
+        if (t.origin.z != 0.0 && alphaDiscarded(t, xy + 0.5 - t.origin.xy)) return;
         atomicMin(depthIds[index], uint64_t(bits) << 32 | uint64_t(t.ids.x));
         return;
     }
     const uint index = (t.xy2.z * uint(size.y) + uint(p.y)) * uint(size.x) + uint(p.x);
     if (bits >= depthBits[index]) return;  // cheap early reject before the atomic and the texture
-    if (t.origin.z != 0.0 && alphaDiscarded(t, offset)) return;
+    if (t.origin.z != 0.0 && alphaDiscarded(t, xy + 0.5 - t.origin.xy)) return;
     atomicMin(depthBits[index], bits);
 }
 

@@ -370,9 +370,10 @@ struct OitPush {
 struct RasterTriangle {
     uvec4 xy01;      // snapped vertices 0 and 1 (int bits, subpixel units): x0, y0, x1, y1
     uvec4 xy2;       // x2, y2 (int bits), z = target layer, w = material
-    vec4 origin;     // xy = float window position of vertex 0 (origin of the planes), z = 1: alpha-tested,
+    vec4 origin;     // xy = float window position of vertex 0 (origin of the uv planes), z = 1: alpha-tested,
                      // w = its first tile entry (-1: the lists were full)
-    vec4 depth;      // plane of z: value at the origin, d/dx, d/dy; w = depth bias of the triangle
+    vec4 depth;      // plane of z: value at pixel (0, 0) (integer pixel coordinates, as lavapipe), d/dx, d/dy;
+                     // w = depth bias of the triangle
     vec4 uOverW;     // planes of u/w, v/w and 1/w (perspective-correct uv): value at origin, d/dx, d/dy
     vec4 vOverW;
     vec4 invW;
