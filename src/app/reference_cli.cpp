@@ -122,7 +122,7 @@ int runCompareCommand(const CompareCliOptions& o, bool dryRun) {
                          {"rel_l1", jsonNumber(m.relL1)}, {"rel_l2", jsonNumber(m.relL2)},
                          {"mean_bias", jsonNumber(m.meanBias)},
                          {"relative_bias", jsonNumber(m.refMean > 0.0 ? m.meanBias / m.refMean : NAN)},
-                         {"max_error", jsonNumber(m.maxError)},
+                         {"max_error", jsonNumber(m.maxError)}, {"differing_pixels", m.differing},
                          {"ssim", jsonNumber(m.ssim)}, {"ssim_range", jsonNumber(m.ssimRange)},
                          {"ssim_window", fmt::format("{0}x{0} Gaussian, sigma {1}", kSsimWindow, kSsimSigma)}};
         if (!o.mask.empty()) j["mask"] = o.mask;
@@ -135,6 +135,8 @@ int runCompareCommand(const CompareCliOptions& o, bool dryRun) {
                "  max error   {}\n",
                fmtMetric(m.rmse), fmtMetric(m.relL1), fmtMetric(m.relL2), fmtMetric(m.meanBias),
                fmtMetric(m.refMean > 0.0 ? m.meanBias / m.refMean : NAN), fmtMetric(m.maxError));
+    fmt::print("  differing   {} pixels ({:.4f}%) off by more than {} in a channel\n", m.differing,
+               100.0 * double(m.differing) / double(m.pixels), kDifferingError);
     fmt::print("  SSIM        {} (luminance, {}x{} Gaussian window, sigma {}, L = {})\n", fmtMetric(m.ssim),
                kSsimWindow, kSsimWindow, kSsimSigma, fmtMetric(m.ssimRange));
     if (!o.heatMap.empty())

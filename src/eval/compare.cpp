@@ -111,12 +111,15 @@ ImageMetrics compareImages(const ImageF& a, const ImageF& b, const std::vector<u
         if (!mask.empty() && !mask[i]) continue;
         ++m.pixels;
         refLum.push_back(luminance(&b.rgba[i * 4]));
+        double pixelMax = 0.0;
         for (int c = 0; c < 3; ++c) {
             const double va = a.rgba[i * 4 + c], vb = b.rgba[i * 4 + c], d = va - vb;
             sumAbs += std::abs(d), sumSq += d * d, sumDiff += d;
             sumRefAbs += std::abs(vb), sumRefSq += vb * vb;
-            m.maxError = std::max(m.maxError, std::abs(d));
+            pixelMax = std::max(pixelMax, std::abs(d));
         }
+        m.maxError = std::max(m.maxError, pixelMax);
+        m.differing += pixelMax > kDifferingError;
     }
     if (m.pixels == 0) throw std::invalid_argument("the mask selects no pixel");
     const double count = 3.0 * double(m.pixels);

@@ -18,10 +18,12 @@ struct ImageMetrics {
     double meanBias = 0.0;   // mean d: > 0 when A is brighter on average
     double refMean = 0.0;    // mean B (meanBias / refMean is the relative bias)
     double maxError = 0.0;   // max |d|
+    size_t differing = 0;    // pixels with some channel's |d| > kDifferingError (e.g. a shadow AOV's flips)
     double ssim = 1.0;       // mean SSIM of the luminance over compared pixels (kSsimWindow, kSsimSigma)
     double ssimRange = 0.0;  // the dynamic range L of SSIM's constants (see compareImages)
 };
 
+constexpr double kDifferingError = 1e-3;
 constexpr int kSsimWindow = 11;      // Gaussian window side (Wang et al. 2004)
 constexpr double kSsimSigma = 1.5;   // and its standard deviation, pixels
 
