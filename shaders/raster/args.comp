@@ -1,7 +1,7 @@
 #version 460
-// Indirect dispatch arguments from the setup pass's counts (src/raster): the tile pass, one workgroup
-// per tile entry, and the bin pass, one per large-triangle record; at most 65535 each (the
-// workgroups stride over the rest).
+// Indirect dispatch arguments from the setup pass's counts (src/raster): the scatter pass, one thread
+// per tile entry, and the bin pass, one workgroup per large-triangle record; at most 65535 workgroups
+// each (they stride over the rest).
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
 
@@ -12,6 +12,6 @@ layout(push_constant) uniform Push { RasterPush push; };
 
 void main() {
     const uint entries = min(counters.counts.y, push.capacity.y);
-    dispatchArgs[0] = uvec4(min(entries, 65535u), 1u, 1u, 0u);
+    dispatchArgs[0] = uvec4(min((entries + RASTER_SCATTER_GROUP - 1u) / RASTER_SCATTER_GROUP, 65535u), 1u, 1u, 0u);
     dispatchArgs[1] = uvec4(min(min(counters.counts.x, push.capacity.x), 65535u), 1u, 1u, 0u);
 }

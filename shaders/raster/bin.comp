@@ -1,8 +1,8 @@
 #version 460
 // Binning of large triangles (src/raster): one workgroup per record, its threads over the tiles of the
 // triangle's box (the entries the setup pass reserved): an entry names the record where no edge
-// excludes the tile, else RASTER_NO_RECORD (the tile pass skips it). The coarse stage of Laine &
-// Karras (2011), in parallel per triangle.
+// excludes the tile, else RASTER_NO_RECORD, and counts it in the tile's bin. The coarse stage of
+// Laine & Karras (2011), in parallel per triangle.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
 #include "raster/raster.glsl"
@@ -27,6 +27,7 @@ void main() {
             const ivec2 tile = tiles.xy + ivec2(int(i) % w, int(i) / w);
             const bool may = tileMayCover(e, tileRect(tile, e.bbox), bits);
             tileEntries[first + i] = uvec2(may ? r : RASTER_NO_RECORD, uint(tile.x) | (uint(tile.y) << 16));
+            if (may) atomicAdd(tileBins[tileIndex(t.xy2.z, tile, size)].x, 1u);
         }
     }
 }

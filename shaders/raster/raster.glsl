@@ -24,6 +24,17 @@ layout(set = 0, binding = 4, std430) buffer Records { RasterTriangle records[]; 
 layout(set = 0, binding = 5, std430) buffer TileEntries { uvec2 tileEntries[]; };
 layout(set = 0, binding = 6, std430) buffer Counters { RasterCounters counters; };
 layout(set = 0, binding = 16, std430) buffer DepthIds { uint64_t depthIds[]; };  // per texel of the ID layers
+// Per tile of every target layer (layer-major, rows of tiles): the bin pass counts its triangles
+// (count), the scan pass turns the counts into list offsets (offset), the scatter pass fills the
+// tile's list (cursor: its fill so far). Lists hold record indices (raster/tiles.comp).
+layout(set = 0, binding = 12, std430) buffer TileBins { uvec4 tileBins[]; };  // x count, y offset, z cursor
+layout(set = 0, binding = 13, std430) buffer TileLists { uint tileLists[]; };
+
+uint tilesAcross(ivec2 size) { return uint((size.x + RASTER_TILE_SIZE - 1) / RASTER_TILE_SIZE); }
+uint tilesDown(ivec2 size) { return uint((size.y + RASTER_TILE_SIZE - 1) / RASTER_TILE_SIZE); }
+uint tileIndex(uint layer, ivec2 tile, ivec2 size) {
+    return (layer * tilesDown(size) + uint(tile.y)) * tilesAcross(size) + uint(tile.x);
+}
 
 // Edge functions of a triangle with positive area: E_i(p) = d_i x (p - a_i) > 0 inside.
 struct Edges {
@@ -111,10 +122,15 @@ bool alphaDiscarded(RasterTriangle t, vec2 offset) {
 
 // Depth test and write of one covered sample. Depth as lavapipe's interpolator takes it (setup.comp's
 // depthPlane): the plane's value at the pixel's integer coordinates, two fused multiply-adds, then the bias.
-void shadeSample(RasterTriangle t, ivec2 p, ivec2 size) {
+uint sampleDepthBits(RasterTriangle t, ivec2 p) {
     const vec2 xy = vec2(p);
     precise const float z = clamp(fma(t.depth.z, xy.y, fma(t.depth.y, xy.x, t.depth.x)) + t.depth.w, 0.0, 1.0);
-    const uint bits = floatBitsToUint(z) & 0x7FFFFFFFu;  // -0 -> +0
+    return floatBitsToUint(z) & 0x7FFFFFFFu;  // -0 -> +0
+}
+
+void shadeSample(RasterTriangle t, ivec2 p, ivec2 size) {
+    const vec2 xy = vec2(p);
+    const uint bits = sampleDepthBits(t, p);
     if (t.ids.y != 0u) {
         const uint index = ((t.ids.y - 1u) * uint(size.y) + uint(p.y)) * uint(size.x) + uint(p.x);
         if (bits >= uint(depthIds[index] >> 32)) return;  // cleared above 1.0: the far plane writes too

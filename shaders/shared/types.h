@@ -357,12 +357,14 @@ struct OitPush {
 
 // ---- Compute rasterizer for depth-only views (src/raster, shaders/raster) ----
 // Triangles whose pixel bounding box fits RASTER_SMALL_EXTENT on both sides are rasterized by the
-// thread that set them up; larger ones are binned into RASTER_TILE_SIZE tiles, one workgroup each.
+// thread that set them up; larger ones are binned into RASTER_TILE_SIZE tiles, one workgroup per tile.
 #define RASTER_SMALL_EXTENT 16
 #define RASTER_TILE_SIZE 32
 #define RASTER_SETUP_GROUP 64
 #define RASTER_TILE_GROUP 256
 #define RASTER_BIN_GROUP 64
+#define RASTER_SCAN_GROUP 256
+#define RASTER_SCATTER_GROUP 256
 #define RASTER_NO_RECORD 0xFFFFFFFFu   // a tile entry whose triangle went the inline path (lists full)
 
 // One triangle after setup (clipped, snapped, front-facing or double-sided, non-empty), in window

@@ -40,10 +40,13 @@ ComputeRaster::ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, VkExtent2D s
     // The scene's draw set (bindings 0-1 and the instance table; set 1 its texture table); 3-6: depth, records, tile entries,
     // counters (raster.glsl).
     std::vector<vk::Binding> tiles = SceneGpu::drawSetBindings();
-    for (uint32_t b : {3u, 4u, 5u, 6u, 16u}) tiles.push_back({b, kBuffer});  // 16: depth << 32 | ID
+    // 12-13: tile bins and lists; 16: depth << 32 | ID.
+    for (uint32_t b : {3u, 4u, 5u, 6u, 12u, 13u, 16u}) tiles.push_back({b, kBuffer});
     const std::vector<VkDescriptorSetLayout> table{SceneGpu::textureTableLayout(ctx)};
     tiles_ = vk::ComputeKernel(ctx, "raster/tiles.comp", tiles, pushBytes, table);
     bin_ = vk::ComputeKernel(ctx, "raster/bin.comp", tiles, pushBytes, table);
+    scatter_ = vk::ComputeKernel(ctx, "raster/scatter.comp", tiles, pushBytes, table);
+    scan_ = vk::ComputeKernel(ctx, "raster/scan.comp", std::vector<vk::Binding>{{0, kBuffer}}, sizeof(gpu::uvec4));
     std::vector<vk::Binding> setup = tiles;
     for (uint32_t b = 7; b <= 11; ++b) setup.push_back({b, kBuffer});  // vertices, indices, materials, layers, drawn triangles
     setup_ = vk::ComputeKernel(ctx, "raster/setup.comp", setup, pushBytes, table);
@@ -63,6 +66,9 @@ ComputeRaster::ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, VkExtent2D s
     records_ = vk::Buffer(alloc, VkDeviceSize(recordCapacity_) * sizeof(gpu::RasterTriangle), storage, false,
                           "raster-triangles");
     entries_ = vk::Buffer(alloc, VkDeviceSize(entryCapacity_) * 8, storage, false, "raster-tile-entries");
+    tileBins_ = vk::Buffer(alloc, VkDeviceSize(binCount()) * sizeof(gpu::uvec4), storage | transfer, false,
+                           "raster-tile-bins");
+    tileLists_ = vk::Buffer(alloc, VkDeviceSize(entryCapacity_) * 4, storage, false, "raster-tile-lists");
     counters_ = vk::Buffer(alloc, sizeof(gpu::RasterCounters), storage | transfer, false, "raster-counters");
     dispatchArgs_ = vk::Buffer(alloc, 2 * sizeof(gpu::uvec4), storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, false,
                                "raster-dispatch");
@@ -116,6 +122,8 @@ void ComputeRaster::addSetup(FrameGraph& graph, const std::string& name, BufferH
         .storageBuffer(9, graph.import(scene_.triangleMaterials()))
         .storageBuffer(10, graph.import(layerTable_.current()))
         .storageBuffer(11, graph.import(scene_.drawnTriangles()))
+        .storageBuffer(12, graph.import(tileBins_), Use::StorageRead)  // in the layout, not used by setup
+        .storageBuffer(13, graph.import(tileLists_), Use::StorageRead)
         .record([this, p](PassContext& c) {
             setup_.pipeline.push(c.cmd, p);
             const uint32_t groups = std::min(vk::divUp(p.target.z, RASTER_SETUP_GROUP), kMaxGroups);
@@ -133,9 +141,11 @@ void ComputeRaster::addTo(FrameGraph& graph, const std::string& name, ImageHandl
         .use(depth, Use::TransferDst)
         .use(counters, Use::TransferDst)
         .use(depthIds, Use::TransferDst)
+        .use(graph.import(tileBins_), Use::TransferDst)
         .record([this](PassContext& c) {
             vkCmdFillBuffer(c.cmd, depth_.handle(), 0, VK_WHOLE_SIZE, 0x3F800000u);  // 1.0f: far
             vkCmdFillBuffer(c.cmd, counters_.handle(), 0, VK_WHOLE_SIZE, 0u);
+            vkCmdFillBuffer(c.cmd, tileBins_.handle(), 0, VK_WHOLE_SIZE, 0u);
             // Just above 1.0 in the high half (a triangle at 1.0 still writes its ID: the hardware's
             // test is LESS_OR_EQUAL), which the split pass reads as far and no ID.
             const VkDeviceSize idBytes = layerTexels() * idLayers_ * 8;
@@ -152,25 +162,60 @@ void ComputeRaster::addTo(FrameGraph& graph, const std::string& name, ImageHandl
             args_.pipeline.push(c.cmd, p);
             vkCmdDispatch(c.cmd, 1, 1, 1);
         });
-    // Bin (one workgroup per large triangle), then fine rasterization (one per tile entry).
-    for (const vk::ComputeKernel* k : {&bin_, &tiles_}) {
+    addTileLists(graph, name, viewRows, p);
+    // Fine rasterization: one workgroup per tile of every layer (empty tiles return at once).
+    PassBuilder tiles = graph.pass(name + ".tiles");
+    tiles.pipeline(tiles_.pipeline);
+    declareRasterSet(tiles, graph, viewRows, Use::StorageRead);
+    tiles.storageBuffer(3, depth, Use::StorageWrite).storageBuffer(16, depthIds, Use::StorageWrite);
+    tiles.record([this, p](PassContext& c) {
+        tiles_.pipeline.push(c.cmd, p);
+        vkCmdDispatch(c.cmd, vk::divUp(size_.width, RASTER_TILE_SIZE), vk::divUp(size_.height, RASTER_TILE_SIZE),
+                      layers_);
+    });
+    if (idLayers_ > 0) addIdSplit(graph, name, ids, target, p);
+    addResolve(graph, name, target, p);
+}
+
+// The bindings every pass over the triangle records declares (raster.glsl), `lists` being how it uses
+// the tile entries, bins and lists; depth (3, 16) is declared by each pass itself.
+void ComputeRaster::declareRasterSet(PassBuilder& pass, FrameGraph& graph, BufferHandle viewRows, Use lists) const {
+    scene_.declareDrawSet(pass, viewRows);
+    pass.storageBuffer(4, graph.import(records_), Use::StorageRead)
+        .storageBuffer(5, graph.import(entries_), lists)
+        .storageBuffer(6, graph.import(counters_), Use::StorageRead)
+        .storageBuffer(12, graph.import(tileBins_), lists)
+        .storageBuffer(13, graph.import(tileLists_), lists);
+}
+
+// Bin (one workgroup per large triangle: its tile entries and the tiles' counts), scan (the counts into
+// offsets), scatter (each entry's record into its tile's list).
+void ComputeRaster::addTileLists(FrameGraph& graph, const std::string& name, BufferHandle viewRows,
+                                 const gpu::RasterPush& p) {
+    const BufferHandle args = graph.import(dispatchArgs_), depth = graph.import(depth_),
+                       depthIds = graph.import(depthIds_);
+    for (const vk::ComputeKernel* k : {&bin_, &scatter_}) {
         const bool binning = k == &bin_;
-        PassBuilder pass = graph.pass(name + (binning ? ".bin" : ".tiles"));
+        PassBuilder pass = graph.pass(name + (binning ? ".bin" : ".scatter"));
         pass.pipeline(k->pipeline);
-        scene_.declareDrawSet(pass, viewRows);
-        pass.storageBuffer(3, depth, binning ? Use::StorageRead : Use::StorageWrite)
-            .storageBuffer(16, depthIds, binning ? Use::StorageRead : Use::StorageWrite)
-            .storageBuffer(4, records, Use::StorageRead)
-            .storageBuffer(5, entries, binning ? Use::StorageWrite : Use::StorageRead)
-            .storageBuffer(6, counters, Use::StorageRead)
+        declareRasterSet(pass, graph, viewRows, Use::StorageWrite);
+        pass.storageBuffer(3, depth, Use::StorageRead)
+            .storageBuffer(16, depthIds, Use::StorageRead)
             .use(args, Use::IndirectArgs)
             .record([this, k, p, binning](PassContext& c) {
                 k->pipeline.push(c.cmd, p);
                 vkCmdDispatchIndirect(c.cmd, dispatchArgs_.handle(), binning ? sizeof(gpu::uvec4) : 0);
             });
+        if (!binning) continue;
+        const gpu::uvec4 bins{binCount(), 0, 0, 0};
+        graph.pass(name + ".scan")
+            .pipeline(scan_.pipeline)
+            .storageBuffer(0, graph.import(tileBins_), Use::StorageWrite)
+            .record([this, bins](PassContext& c) {
+                scan_.pipeline.push(c.cmd, bins);
+                vkCmdDispatch(c.cmd, 1, 1, 1);
+            });
     }
-    if (idLayers_ > 0) addIdSplit(graph, name, ids, target, p);
-    addResolve(graph, name, target, p);
 }
 
 void ComputeRaster::addResolve(FrameGraph& graph, const std::string& name, ImageHandle target,

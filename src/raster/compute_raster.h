@@ -4,9 +4,12 @@
 //   <name>.clear   fill the depth buffer with 1.0 and the bin counters with 0 (transfer)
 //   <name>.setup   one thread per (triangle, layer), all layers in one dispatch: transform, clip,
 //                  cull, snap; small triangles rasterized right there, large ones binned into tiles
-//   <name>.args    the bin and tile passes' indirect dispatch sizes
-//   <name>.bin     one workgroup per large triangle: which tiles of its box its edges may cover
-//   <name>.tiles   one workgroup per (large triangle, tile) entry
+//   <name>.args    the bin and scatter passes' indirect dispatch sizes
+//   <name>.bin     one workgroup per large triangle: which tiles of its box its edges may cover (an
+//                  entry per tile), and a count per tile
+//   <name>.scan    the tiles' counts into offsets of their lists
+//   <name>.scatter one thread per entry: its triangle into its tile's list
+//   <name>.tiles   one workgroup per tile of each layer: its list against depth kept in registers
 //   <name>.ids     layers with visibility IDs only: split depth << 32 | ID into the ID image and depth
 //                  (into an R32_SFLOAT target itself, else into the depth buffer)
 //   <name>.resolve the depth-only layers into an R32_SFLOAT target (a compute store; none when every
@@ -68,6 +71,12 @@ private:
     void addIdSplit(FrameGraph& graph, const std::string& name, ImageHandle ids, ImageHandle target,
                     const gpu::RasterPush& p);
     void addResolve(FrameGraph& graph, const std::string& name, ImageHandle target, const gpu::RasterPush& p);
+    void addTileLists(FrameGraph& graph, const std::string& name, BufferHandle viewRows, const gpu::RasterPush& p);
+    void declareRasterSet(PassBuilder& pass, FrameGraph& graph, BufferHandle viewRows, Use lists) const;
+    // Tile bins: one per tile of every layer the targets have.
+    uint32_t binCount() const {
+        return vk::divUp(size_.width, RASTER_TILE_SIZE) * vk::divUp(size_.height, RASTER_TILE_SIZE) * layers_;
+    }
     vk::Allocator& alloc_;
     SceneGpu& scene_;
     VkDeviceSize layerTexels() const { return VkDeviceSize(size_.width) * size_.height; }
@@ -75,8 +84,8 @@ private:
     Views kind_;
     uint32_t layers_, subpixelBits_;
     uint32_t recordCapacity_, entryCapacity_;
-    vk::ComputeKernel setup_, bin_, tiles_, args_, idSplit_, idStore_, store_;
-    vk::Buffer depth_, records_, entries_, counters_, dispatchArgs_;
+    vk::ComputeKernel setup_, bin_, scan_, scatter_, tiles_, args_, idSplit_, idStore_, store_;
+    vk::Buffer depth_, records_, entries_, tileBins_, tileLists_, counters_, dispatchArgs_;
     vk::Buffer depthIds_;     // uint64 per texel of each ID layer, grown to the most requested
     uint32_t idLayers_ = 0;  // ID layers this frame's views write
     vk::BufferRing layerTable_;

@@ -1,0 +1,26 @@
+#version 460
+// Tile lists of the compute rasterizer (src/raster): each (triangle, tile) entry of the bin pass puts
+// its record into its tile's list, at the tile's offset (scan pass) plus a slot from the tile's cursor.
+// One thread per entry; the workgroups stride over the rest. Entries of triangles whose lists did
+// not fit were never written (their setup thread rasterized them): a stale one still names a record
+// of this frame in a tile of its layer (the tile pass tests its edges), and none writes past its
+// tile's count.
+#extension GL_GOOGLE_include_directive : require
+#include "shared/types.h"
+#include "raster/raster.glsl"
+
+layout(local_size_x = RASTER_SCATTER_GROUP) in;
+layout(push_constant) uniform Push { RasterPush push; };
+
+void main() {
+    const ivec2 size = ivec2(push.target.x, push.capacity.w);
+    const uint entries = min(counters.counts.y, push.capacity.y);
+    const uint recordCount = min(counters.counts.x, push.capacity.x);
+    for (uint k = gl_GlobalInvocationID.x; k < entries; k += gl_NumWorkGroups.x * RASTER_SCATTER_GROUP) {
+        const uvec2 entry = tileEntries[k];
+        if (entry.x >= recordCount) continue;  // RASTER_NO_RECORD, or stale
+        const uint bin = tileIndex(records[entry.x].xy2.z, ivec2(entry.y & 0xFFFFu, entry.y >> 16), size);
+        const uint slot = atomicAdd(tileBins[bin].z, 1u);
+        if (slot < tileBins[bin].x) tileLists[tileBins[bin].y + slot] = entry.x;
+    }
+}
