@@ -123,6 +123,17 @@ bool bin(RasterTriangle t, Edges e) {
     return fits;
 }
 
+// Marks the tiles of a box that this thread draws into (RASTER_TILE_TOUCHED): the tile pass reads
+// the depth of marked tiles only, and starts the others from the cleared value.
+void markTiles(uint layer, ivec4 box, ivec2 size) {
+    const ivec4 tiles = box / RASTER_TILE_SIZE;
+    for (int y = tiles.y; y <= tiles.w; ++y)
+        for (int x = tiles.x; x <= tiles.z; ++x) {
+            const uint bin = tileIndex(layer, ivec2(x, y), size);
+            if ((tileBins[bin].w & RASTER_TILE_TOUCHED) == 0u) atomicOr(tileBins[bin].w, RASTER_TILE_TOUCHED);
+        }
+}
+
 // What the setup of one triangle needs besides its vertices.
 struct Caster {
     uint layer, material;
@@ -174,6 +185,7 @@ void emitTriangle(ClipVertex c0, ClipVertex c1, ClipVertex c2, Caster caster) {
     const bool small = e.bbox.z - e.bbox.x < smallExtent && e.bbox.w - e.bbox.y < smallExtent;
     if (small || !bin(t, e)) {
         if (!small) atomicAdd(counters.counts.z, 1u);
+        markTiles(caster.layer, e.bbox, size);
         rasterizeRect(t, e, e.bbox, bits, size);
     }
 }

@@ -16,6 +16,27 @@ layout(push_constant) uniform Push { RasterPush push; };
 
 const int kRowsPerPass = RASTER_TILE_GROUP / RASTER_TILE_SIZE;
 const int kPixels = RASTER_TILE_SIZE / kRowsPerPass;  // per thread
+// The list is walked in batches: the workgroup loads a batch's records into shared memory together
+// (one vec4 per thread), so a triangle costs no dependent global load in the walk.
+const uint kVec4sPerRecord = 8u;  // sizeof(RasterTriangle) / 16
+const uint kBatch = RASTER_TILE_GROUP / kVec4sPerRecord;
+shared RasterTriangle batch[kBatch];
+
+void loadBatch(uint first, uint n) {
+    const uint r = gl_LocalInvocationIndex / kVec4sPerRecord;
+    if (r >= n) return;
+    const uint record = tileLists[first + r];
+    switch (gl_LocalInvocationIndex % kVec4sPerRecord) {  // one vec4 of the record per thread
+        case 0u: batch[r].xy01 = records[record].xy01; break;
+        case 1u: batch[r].xy2 = records[record].xy2; break;
+        case 2u: batch[r].origin = records[record].origin; break;
+        case 3u: batch[r].depth = records[record].depth; break;
+        case 4u: batch[r].uOverW = records[record].uOverW; break;
+        case 5u: batch[r].vOverW = records[record].vOverW; break;
+        case 6u: batch[r].invW = records[record].invW; break;
+        default: batch[r].ids = records[record].ids; break;
+    }
+}
 
 void main() {
     const ivec2 size = ivec2(push.target.x, push.capacity.w);
@@ -28,25 +49,33 @@ void main() {
     const ivec2 lane = ivec2(int(gl_LocalInvocationIndex) % RASTER_TILE_SIZE,
                              int(gl_LocalInvocationIndex) / RASTER_TILE_SIZE);
     const ivec2 origin = tile * RASTER_TILE_SIZE + lane;
-    // A layer either has IDs (every triangle of it carries the same ID layer) or is depth only.
-    const uint idLayer = records[tileLists[bin.y]].ids.y;
+    const uint idLayer = bin.w & ~RASTER_TILE_TOUCHED;  // ID layer + 1, or 0: depth only
+    const bool touched = (bin.w & RASTER_TILE_TOUCHED) != 0u;
+    // The clear values (ComputeRaster::addTo): 1.0, and just above 1.0 in both halves with IDs.
+    const uint64_t cleared = idLayer != 0u ? 0x3F8000013F800001ul : uint64_t(0x3F800000u) << 32;
     uint64_t nearest[kPixels];
     uint index[kPixels];
     for (int k = 0; k < kPixels; ++k) {
         const ivec2 p = min(origin + ivec2(0, k * kRowsPerPass), size - 1);
         index[k] = ((idLayer != 0u ? idLayer - 1u : layer) * uint(size.y) + uint(p.y)) * uint(size.x) + uint(p.x);
-        nearest[k] = idLayer != 0u ? depthIds[index[k]] : uint64_t(depthBits[index[k]]) << 32;
+        nearest[k] = !touched ? cleared : idLayer != 0u ? depthIds[index[k]] : uint64_t(depthBits[index[k]]) << 32;
     }
     const uint64_t first[kPixels] = nearest;
-    for (uint i = 0u; i < count; ++i) {
-        const RasterTriangle t = records[tileLists[bin.y + i]];
-        const Edges e = edgesOf(t, bits, size);
-        for (int k = 0; k < kPixels; ++k) {
-            const ivec2 p = origin + ivec2(0, k * kRowsPerPass);
-            if (any(lessThan(p, e.bbox.xy)) || any(greaterThan(p, e.bbox.zw)) || !covers(e, p, bits)) continue;
-            const uint64_t v = uint64_t(sampleDepthBits(t, p)) << 32 | uint64_t(idLayer != 0u ? t.ids.x : 0u);
-            if (v < nearest[k] && !(t.origin.z != 0.0 && alphaDiscarded(t, vec2(p) + 0.5 - t.origin.xy)))
-                nearest[k] = v;
+    for (uint start = 0u; start < count; start += kBatch) {
+        const uint n = min(count - start, kBatch);
+        barrier();  // the previous batch is walked
+        loadBatch(bin.y + start, n);
+        barrier();
+        for (uint i = 0u; i < n; ++i) {
+            const RasterTriangle t = batch[i];
+            const Edges e = edgesOf(t, bits, size);
+            for (int k = 0; k < kPixels; ++k) {
+                const ivec2 p = origin + ivec2(0, k * kRowsPerPass);
+                if (any(lessThan(p, e.bbox.xy)) || any(greaterThan(p, e.bbox.zw)) || !covers(e, p, bits)) continue;
+                const uint64_t v = uint64_t(sampleDepthBits(t, p)) << 32 | uint64_t(idLayer != 0u ? t.ids.x : 0u);
+                if (v < nearest[k] && !(t.origin.z != 0.0 && alphaDiscarded(t, vec2(p) + 0.5 - t.origin.xy)))
+                    nearest[k] = v;
+            }
         }
     }
     for (int k = 0; k < kPixels; ++k) {

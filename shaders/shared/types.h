@@ -364,6 +364,7 @@ struct OitPush {
 #define RASTER_TILE_GROUP 256
 #define RASTER_BIN_GROUP 64
 #define RASTER_SCAN_GROUP 256
+#define RASTER_TILE_TOUCHED 0x80000000u  // tile bin flag: a setup thread drew into the tile
 #define RASTER_SCATTER_GROUP 256
 #define RASTER_NO_RECORD 0xFFFFFFFFu   // a tile entry whose triangle went the inline path (lists full)
 
@@ -400,7 +401,7 @@ struct RasterPush {
 // Counters of one frame's binning (cleared before setup).
 struct RasterCounters {
     uvec4 counts;    // x = triangle records taken, y = tile entries taken, z = triangles rasterized inline
-                     // because a list was full, w unused
+                     // because a list was full, w = tile-list entries placed (raster/scan.comp)
 };
 
 #ifdef __cplusplus

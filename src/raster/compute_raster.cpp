@@ -46,7 +46,7 @@ ComputeRaster::ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, VkExtent2D s
     tiles_ = vk::ComputeKernel(ctx, "raster/tiles.comp", tiles, pushBytes, table);
     bin_ = vk::ComputeKernel(ctx, "raster/bin.comp", tiles, pushBytes, table);
     scatter_ = vk::ComputeKernel(ctx, "raster/scatter.comp", tiles, pushBytes, table);
-    scan_ = vk::ComputeKernel(ctx, "raster/scan.comp", std::vector<vk::Binding>{{0, kBuffer}}, sizeof(gpu::uvec4));
+    scan_ = vk::ComputeKernel(ctx, "raster/scan.comp", {kBuffer, kBuffer}, sizeof(gpu::uvec4));
     std::vector<vk::Binding> setup = tiles;
     for (uint32_t b = 7; b <= 11; ++b) setup.push_back({b, kBuffer});  // vertices, indices, materials, layers, drawn triangles
     setup_ = vk::ComputeKernel(ctx, "raster/setup.comp", setup, pushBytes, table);
@@ -122,8 +122,8 @@ void ComputeRaster::addSetup(FrameGraph& graph, const std::string& name, BufferH
         .storageBuffer(9, graph.import(scene_.triangleMaterials()))
         .storageBuffer(10, graph.import(layerTable_.current()))
         .storageBuffer(11, graph.import(scene_.drawnTriangles()))
-        .storageBuffer(12, graph.import(tileBins_), Use::StorageRead)  // in the layout, not used by setup
-        .storageBuffer(13, graph.import(tileLists_), Use::StorageRead)
+        .storageBuffer(12, graph.import(tileBins_), Use::StorageWrite)  // marks the tiles it draws into
+        .storageBuffer(13, graph.import(tileLists_), Use::StorageRead)   // in the layout, not used by setup
         .record([this, p](PassContext& c) {
             setup_.pipeline.push(c.cmd, p);
             const uint32_t groups = std::min(vk::divUp(p.target.z, RASTER_SETUP_GROUP), kMaxGroups);
@@ -188,8 +188,8 @@ void ComputeRaster::declareRasterSet(PassBuilder& pass, FrameGraph& graph, Buffe
         .storageBuffer(13, graph.import(tileLists_), lists);
 }
 
-// Bin (one workgroup per large triangle: its tile entries and the tiles' counts), scan (the counts into
-// offsets), scatter (each entry's record into its tile's list).
+// Bin (one workgroup per large triangle: its tile entries and the tiles' counts), scan (each tile's
+// list placed in the list buffer), scatter (each entry's record into its tile's list).
 void ComputeRaster::addTileLists(FrameGraph& graph, const std::string& name, BufferHandle viewRows,
                                  const gpu::RasterPush& p) {
     const BufferHandle args = graph.import(dispatchArgs_), depth = graph.import(depth_),
@@ -211,9 +211,10 @@ void ComputeRaster::addTileLists(FrameGraph& graph, const std::string& name, Buf
         graph.pass(name + ".scan")
             .pipeline(scan_.pipeline)
             .storageBuffer(0, graph.import(tileBins_), Use::StorageWrite)
+            .storageBuffer(1, graph.import(counters_), Use::StorageWrite)
             .record([this, bins](PassContext& c) {
                 scan_.pipeline.push(c.cmd, bins);
-                vkCmdDispatch(c.cmd, 1, 1, 1);
+                vkCmdDispatch(c.cmd, vk::divUp(bins.x, RASTER_SCAN_GROUP), 1, 1);
             });
     }
 }

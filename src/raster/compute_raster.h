@@ -7,7 +7,7 @@
 //   <name>.args    the bin and scatter passes' indirect dispatch sizes
 //   <name>.bin     one workgroup per large triangle: which tiles of its box its edges may cover (an
 //                  entry per tile), and a count per tile
-//   <name>.scan    the tiles' counts into offsets of their lists
+//   <name>.scan    each tile's list placed in the list buffer (its offset)
 //   <name>.scatter one thread per entry: its triangle into its tile's list
 //   <name>.tiles   one workgroup per tile of each layer: its list against depth kept in registers
 //   <name>.ids     layers with visibility IDs only: split depth << 32 | ID into the ID image and depth
