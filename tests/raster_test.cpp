@@ -2,11 +2,13 @@
 // pass drawn both ways must give the same depth where both cover (within 1e-6) and the same
 // coverage except on at most 0.01% of texels; the shadow AOV of whole scenes may differ on at most
 // 0.1% of pixels. The hardware is the independent answer: nothing here shares the compute path's code.
+#include <algorithm>
 #include <filesystem>
 #include <random>
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "app/cli_parse.h"
 #include "gpu_fixture.h"
 #include "render/scene_gpu.h"
 #include "scene/builders.h"
@@ -189,11 +191,11 @@ TEST_F(RasterTest, EdgesThroughPixelCentresFollowTheFillRule) {
 
 // ---- whole scenes through the renderer ----
 
-RenderSettings sceneSettings(RasterMode mode, uint32_t w, uint32_t h) {
+RenderSettings sceneSettings(RasterMode mode, uint32_t w, uint32_t h, uint32_t shadowRes = 512) {
     RenderSettings s;
     s.width = w, s.height = h;
     s.aov = Aov::Shadow;
-    s.shadow.resolution = 512;
+    s.shadow.resolution = shadowRes;
     s.shadow.raster = mode;
     return s;
 }
@@ -205,27 +207,29 @@ struct SceneRun {
 
 class RasterSceneTest : public GpuTest {
 protected:
-    SceneRun run(const Scene& scene, const Camera& camera, RasterMode mode, uint32_t w, uint32_t h) {
-        Renderer r(ctx(), scene, sceneSettings(mode, w, h));
+    SceneRun run(const Scene& scene, const Camera& camera, RasterMode mode, uint32_t shadowRes) {
+        const RenderSettings s = sceneSettings(mode, 160, 120, shadowRes);
+        Renderer r(ctx(), scene, s);
         r.render(camera);
-        SceneRun out{{w, h, r.readHdr()}, {}};
+        SceneRun out{{s.width, s.height, r.readHdr()}, {}};
         for (uint32_t k = 0; k < r.shadow().layers().size(); ++k)
             out.layers.push_back(floats(r.commands().readImage(r.shadow().shadowMap(), 4, k)));
         return out;
     }
 
-    void expectSameShadows(const Scene& scene, const Camera& camera, const char* what, bool strictDepth) {
-        const SceneRun hw = run(scene, camera, RasterMode::Hardware, 160, 120);
-        const SceneRun cs = run(scene, camera, RasterMode::Compute, 160, 120);
+    // Every layer: depth within 1e-6 where both cover, coverage within 0.01%; the AOV (160x120)
+    // within 0.1%.
+    void expectSameShadows(const Scene& scene, const Camera& camera, const char* what, uint32_t shadowRes = 512) {
+        const SceneRun hw = run(scene, camera, RasterMode::Hardware, shadowRes);
+        const SceneRun cs = run(scene, camera, RasterMode::Compute, shadowRes);
         ASSERT_EQ(hw.layers.size(), cs.layers.size());
         for (size_t k = 0; k < hw.layers.size(); ++k) {
             const DepthDiff d = compareDepth(hw.layers[k], cs.layers[k]);
-            std::printf("[ raster ] %s map layer %zu: coverage differs on %zu of %zu texels, depth by > 1e-6 on %zu, max depth diff %.3g\n",
-                        what, k, d.coverageDiffers, d.texels, d.depthDiffers, d.maxDepthDiff);
-            if (strictDepth) {
-                EXPECT_LE(d.maxDepthDiff, 1e-6) << what;
-            }
-            EXPECT_LE(d.coverageDiffers, d.texels / 10000) << what;
+            std::printf("[ raster ] %s map layer %zu: %zu covered, coverage differs on %zu of %zu texels, depth by > 1e-6 on %zu, max depth diff %.3g\n",
+                        what, k, d.bothCovered, d.coverageDiffers, d.texels, d.depthDiffers, d.maxDepthDiff);
+            EXPECT_GT(d.bothCovered, 0u) << what << " layer " << k;
+            EXPECT_LE(d.maxDepthDiff, 1e-6) << what << " layer " << k;
+            EXPECT_LE(d.coverageDiffers, d.texels / 10000) << what << " layer " << k;
         }
         size_t differ = 0;
         const size_t pixels = size_t(hw.shadow.width) * hw.shadow.height;
@@ -237,22 +241,49 @@ protected:
 
 TEST_F(RasterSceneTest, CornellEqualsTheHardware) {
     const Scene scene = makeBuiltinScene("cornell");
-    expectSameShadows(scene, scene.cameras[0], "cornell", true);
+    expectSameShadows(scene, scene.cameras[0], "cornell");
+}
+
+// A model of ../shared/assets next to the source tree; empty when absent (its tests skip).
+Scene assetScene(const char* path) {
+    const fs::path file = fs::path(PENUMBRA_SOURCE_DIR) / ".." / "shared" / "assets" / path;
+    return fs::exists(file) ? loadScene(file.string()) : Scene{};
 }
 
 Scene vcScene(Camera& camera) {
-    const fs::path vc = fs::path(PENUMBRA_SOURCE_DIR) / ".." / "shared" / "assets" / "VC" / "glTF" / "VC.gltf";
-    if (!fs::exists(vc)) return {};
     camera.eye = {14, 9, 16}, camera.target = {0, 1.5f, 0}, camera.fovy = glm::radians(50.0f);
-    return loadScene(vc.string());
+    return assetScene("VC/glTF/VC.gltf");
 }
 
-// VC: coverage identical and the shadow AOV equal (the depth: VcDepthWithin1e6).
-TEST_F(RasterSceneTest, VcShadowsEqualTheHardware) {
+// The GI suite's view and sun (src/eval/suite.cpp), as the CLI parses them.
+Scene sponzaScene(Camera& camera) {
+    Scene s = assetScene("sponza/glTF/Sponza.gltf");
+    camera = parseCamera("-9,1.7,0.3,6,4.5,0,0,1,0,70");
+    s.lights = {parseLight("directional,0.1,-1,0.2,20")};
+    return s;
+}
+
+// VC's 4 cascades with the slope-scaled bias: depth within 1e-6 (measured max 5.4e-7; 4.3e-3 on steep
+// texels before the setup followed lavapipe's), coverage and the shadow AOV as the hardware's.
+TEST_F(RasterSceneTest, VcEqualsTheHardware) {
     Camera camera;
     const Scene scene = vcScene(camera);
     if (scene.indices.empty()) GTEST_SKIP() << "no ../shared/assets/VC next to the source tree";
-    expectSameShadows(scene, camera, "VC", false);
+    expectSameShadows(scene, camera, "VC");
+}
+
+// Sponza's 4 cascades: 262k triangles, the alpha-masked leaves, plants and chains among them (alpha-
+// tested in both rasterizers). 256^2: each of the three is nearest on some texels (the chains on
+// none at 128^2), in half the time of 512^2 on lavapipe. The same bounds as VC.
+TEST_F(RasterSceneTest, SponzaEqualsTheHardware) {
+    Camera camera;
+    const Scene scene = sponzaScene(camera);
+    if (scene.indices.empty()) GTEST_SKIP() << "no ../shared/assets/sponza next to the source tree";
+    const size_t masked = std::count_if(scene.draws.begin(), scene.draws.end(), [&](const Draw& d) {
+        return scene.materials[d.material].alphaMode == AlphaMode::Mask;
+    });
+    EXPECT_EQ(masked, 3u) << "Sponza's leaves, plants and chains as alpha-masked draws";
+    expectSameShadows(scene, camera, "Sponza", 256);
 }
 
 // The RSM's shadow layers drawn with visibility IDs (render/visibility.glsl) by both rasterizers:
@@ -300,15 +331,6 @@ TEST_F(RasterSceneTest, VisibilityIdsEqualTheHardware) {
             EXPECT_LE(triangle, texels / 10000);
         }
     }
-}
-
-// VC's 4 cascades with the slope-scaled bias: depth within 1e-6 (measured max 5.4e-7; 4.3e-3 on steep
-// texels before the setup followed lavapipe's).
-TEST_F(RasterSceneTest, VcDepthWithin1e6) {
-    Camera camera;
-    const Scene scene = vcScene(camera);
-    if (scene.indices.empty()) GTEST_SKIP() << "no ../shared/assets/VC next to the source tree";
-    expectSameShadows(scene, camera, "VC", true);
 }
 
 }  // namespace

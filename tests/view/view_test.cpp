@@ -1,7 +1,6 @@
-// The viewer (`penumbra view`) under xvfb-run on lavapipe with validation on: a scripted session
-// whose every screenshot equals the headless `penumbra render` of the same options, script errors
-// and the missing display as one error line; and, in process, the session's settings cycled 30
-// times without the renderer's memory or the host's RSS growing.
+// The viewer (`penumbra view`) on an Xvfb of the test's own (x_server.h) on lavapipe with validation
+// on: a scripted session whose every screenshot equals the headless `penumbra render` of the same
+// options, script errors and the missing display as one error line (penumbra's stderr alone).
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
@@ -16,9 +15,11 @@
 #include <fmt/format.h>
 #include <stb_image.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include "view/script.h"
 #include "view/session.h"
+#include "x_server.h"
 
 namespace fs = std::filesystem;
 
@@ -44,21 +45,30 @@ ShellResult shell(const std::string& command, const fs::path& dir) {
     return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, slurp(out), slurp(err)};
 }
 
-// Under scripts/sanitize.sh the sanitizer runtime is preloaded for penumbra alone
-// (PENUMBRA_SANITIZE_PRELOAD): preloaded into xvfb-run and its X server, LeakSanitizer fails them.
-std::string viewCommand(const fs::path& script, const std::string& extra = "") {
-    const char* preload = std::getenv("PENUMBRA_SANITIZE_PRELOAD");
-    const std::string xvfb = preload ? "env -u LD_PRELOAD xvfb-run" : "xvfb-run";
-    const std::string bin = preload ? "env LD_PRELOAD='" + std::string(preload) + "' " + PENUMBRA_BIN : PENUMBRA_BIN;
-    return xvfb + " -a -s '-screen 0 640x480x24' " + bin + " view --validate --script " + script.string() + " " + extra;
+::testing::AssertionResult haveDisplay() {
+    const XServer& x = XServer::instance();
+    return x.error().empty() ? ::testing::AssertionSuccess() : ::testing::AssertionFailure() << x.error();
 }
 
-fs::path scratch(const std::string& name) {
-    const fs::path dir = fs::temp_directory_path() / ("penumbra_view_test_" + name);
-    fs::remove_all(dir);
-    fs::create_directories(dir);
-    return dir;
+// penumbra alone on the test's X server: its stderr is all that the tests read.
+std::string viewCommand(const fs::path& script, const std::string& extra = "") {
+    return "env DISPLAY=" + XServer::instance().display() + " " + PENUMBRA_BIN + " view --validate --script " +
+           script.string() + " " + extra;
 }
+
+// A directory per process (a second checkout's tests may run at the same time), removed when the
+// test passed and kept with a failure's files.
+struct Scratch {
+    fs::path dir;
+    explicit Scratch(const std::string& name)
+        : dir(fs::temp_directory_path() / fmt::format("penumbra_view_test_{}_{}", name, getpid())) {
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+    }
+    ~Scratch() {
+        if (!::testing::Test::HasFailure()) fs::remove_all(dir);
+    }
+};
 
 // Largest per-channel difference between two PNGs of the same size (RGB), in 1/255 steps.
 int maxDifference(const fs::path& a, const fs::path& b, std::string& why) {
@@ -86,7 +96,8 @@ struct State {
 };
 
 TEST(ViewScript, EveryScreenshotEqualsTheHeadlessRender) {
-    const fs::path dir = scratch("session");
+    const Scratch scratch("session");
+    const fs::path& dir = scratch.dir;
     const std::string camera = "0.3,1.2,3.2,0,0.9,0,0,1,0,50";
     const std::string light = "spot,0.2,1.9,0.1,0,-1,0,4,50";
     const std::vector<State> states = {
@@ -134,6 +145,7 @@ TEST(ViewScript, EveryScreenshotEqualsTheHeadlessRender) {
         renderArgs.push_back(args);
     }
     std::ofstream(dir / "session.txt") << script;
+    ASSERT_TRUE(haveDisplay());
     const ShellResult view = shell(viewCommand(dir / "session.txt", "--shadow-res 512 --pcf-radius 1"), dir);
     ASSERT_EQ(view.status, 0) << view.out << view.err;
 
@@ -150,7 +162,8 @@ TEST(ViewScript, EveryScreenshotEqualsTheHeadlessRender) {
 
 // A bad line stops the viewer with one error line naming the file and the line.
 TEST(ViewScript, BadLineIsOneErrorWithFileAndLine) {
-    const fs::path dir = scratch("bad");
+    const Scratch scratch("bad");
+    const fs::path& dir = scratch.dir;
     const std::vector<std::pair<std::string, std::string>> cases = {
         {"set shadow bogus", "--shadow"},
         {"set aov lpv-slice", "need --gi lpv"},  // a cross-option rule, checked when the set applies
@@ -159,6 +172,7 @@ TEST(ViewScript, BadLineIsOneErrorWithFileAndLine) {
         {"set rsm-per-cascade maybe", "on or off"},
         {"probe 12", "probe X Y"},
     };
+    ASSERT_TRUE(haveDisplay());
     for (const auto& [line, expected] : cases) {
         const fs::path script = dir / "bad.txt";
         std::ofstream(script) << "set width 64\nset height 48\n" << line << "\nscreenshot " << (dir / "x.png").string()
@@ -173,7 +187,8 @@ TEST(ViewScript, BadLineIsOneErrorWithFileAndLine) {
 }
 
 TEST(ViewScript, NoDisplayIsOneError) {
-    const fs::path dir = scratch("nodisplay");
+    const Scratch scratch("nodisplay");
+    const fs::path& dir = scratch.dir;
     const ShellResult r = shell(std::string("env -u DISPLAY -u WAYLAND_DISPLAY ") + PENUMBRA_BIN + " view", dir);
     EXPECT_NE(r.status, 0);
     EXPECT_EQ(r.err.rfind("penumbra: error: no display", 0), 0u) << r.err;
