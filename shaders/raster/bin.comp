@@ -27,10 +27,7 @@ void main() {
             const ivec2 tile = tiles.xy + ivec2(int(i) % w, int(i) / w);
             const bool may = tileMayCover(e, tileRect(tile, e.bbox), bits);
             tileEntries[first + i] = uvec2(may ? r : RASTER_NO_RECORD, uint(tile.x) | (uint(tile.y) << 16));
-            if (!may) continue;
-            const uint bin = tileIndex(t.xy2.z, tile, size);
-            atomicAdd(tileBins[bin].x, 1u);
-            atomicOr(tileBins[bin].w, t.ids.y);  // the layer's ID layer + 1: the same for all its triangles
+            if (may) atomicAdd(tileBins[tileIndex(t.xy2.z, tile, size)].x, 1u);
         }
     }
 }

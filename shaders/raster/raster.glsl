@@ -27,8 +27,7 @@ layout(set = 0, binding = 16, std430) buffer DepthIds { uint64_t depthIds[]; }; 
 // Per tile of every target layer (layer-major, rows of tiles): the bin pass counts its triangles
 // (count), the scan pass places its list in the list buffer (offset), the scatter pass fills the
 // tile's list (cursor: its fill so far). Lists hold record indices (raster/tiles.comp).
-// w: the layer's ID layer + 1 (0: depth only), so that the tile pass reads its depth at once, and
-// RASTER_TILE_TOUCHED where a setup thread drew into the tile (else its depth is the cleared value).
+// w: RASTER_TILE_TOUCHED where a setup thread drew into the tile (else its depth is the cleared value).
 layout(set = 0, binding = 12, std430) buffer TileBins { uvec4 tileBins[]; };  // x count, y offset, z cursor
 layout(set = 0, binding = 13, std430) buffer TileLists { uint tileLists[]; };
 

@@ -43,7 +43,13 @@ ComputeRaster::ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, VkExtent2D s
     // 12-13: tile bins and lists; 16: depth << 32 | ID.
     for (uint32_t b : {3u, 4u, 5u, 6u, 12u, 13u, 16u}) tiles.push_back({b, kBuffer});
     const std::vector<VkDescriptorSetLayout> table{SceneGpu::textureTableLayout(ctx)};
-    tiles_ = vk::ComputeKernel(ctx, "raster/tiles.comp", tiles, pushBytes, table);
+    const bool camera = kind == Views::Camera;
+    std::vector<vk::Binding> fine = tiles;  // 10: the layer table; 17, 18: the target and ID images
+    fine.push_back({10, kBuffer});
+    tiles_ = vk::ComputeKernel(ctx, "raster/tiles.comp", fine, pushBytes, table);
+    for (uint32_t b : {17u, 18u}) fine.push_back({b, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
+    tilesImage_ = vk::ComputeKernel(ctx, camera ? "raster/tiles_image_2d.comp" : "raster/tiles_image.comp", fine,
+                                    pushBytes, table);
     bin_ = vk::ComputeKernel(ctx, "raster/bin.comp", tiles, pushBytes, table);
     scatter_ = vk::ComputeKernel(ctx, "raster/scatter.comp", tiles, pushBytes, table);
     scan_ = vk::ComputeKernel(ctx, "raster/scan.comp", {kBuffer, kBuffer}, sizeof(gpu::uvec4));
@@ -51,13 +57,10 @@ ComputeRaster::ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, VkExtent2D s
     for (uint32_t b = 7; b <= 11; ++b) setup.push_back({b, kBuffer});  // vertices, indices, materials, layers, drawn triangles
     setup_ = vk::ComputeKernel(ctx, "raster/setup.comp", setup, pushBytes, table);
     args_ = vk::ComputeKernel(ctx, "raster/args.comp", {kBuffer, kBuffer}, pushBytes);
-    const bool camera = kind == Views::Camera;
     idSplit_ = vk::ComputeKernel(ctx, camera ? "raster/ids_2d.comp" : "raster/ids.comp",
                                  {kBuffer, kBuffer, kBuffer, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, pushBytes);
-    idStore_ = vk::ComputeKernel(ctx, camera ? "raster/ids_2d_image.comp" : "raster/ids_image.comp",
-                                 {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kBuffer, kBuffer, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
-                                 pushBytes);
-    store_ = vk::ComputeKernel(ctx, "raster/store.comp", {kBuffer, kBuffer, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, pushBytes);
+    // Bound as the ID image where a frame draws no layer with IDs into an R32_SFLOAT target.
+    noIds_ = vk::Image(alloc, {VK_FORMAT_R32_UINT, 1, 1, 1, VK_IMAGE_USAGE_STORAGE_BIT, "raster-no-ids", 1, !camera});
 
     const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     const VkBufferUsageFlags transfer = VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
@@ -163,18 +166,30 @@ void ComputeRaster::addTo(FrameGraph& graph, const std::string& name, ImageHandl
             vkCmdDispatch(c.cmd, 1, 1, 1);
         });
     addTileLists(graph, name, viewRows, p);
-    // Fine rasterization: one workgroup per tile of every layer (empty tiles return at once).
+    addFineRaster(graph, name, viewRows, target, ids, p);
+}
+
+// One workgroup per tile of every layer drawn: straight into an R32_SFLOAT target and its ID image,
+// or into the depth buffers, which the ID split and a copy into a D32_SFLOAT target then take.
+void ComputeRaster::addFineRaster(FrameGraph& graph, const std::string& name, BufferHandle viewRows,
+                                  ImageHandle target, ImageHandle ids, const gpu::RasterPush& p) {
+    const bool intoTarget = graph.imageOf(target).format() == VK_FORMAT_R32_SFLOAT;
+    const vk::ComputeKernel& kernel = intoTarget ? tilesImage_ : tiles_;
     PassBuilder tiles = graph.pass(name + ".tiles");
-    tiles.pipeline(tiles_.pipeline);
+    tiles.pipeline(kernel.pipeline);
     declareRasterSet(tiles, graph, viewRows, Use::StorageRead);
-    tiles.storageBuffer(3, depth, Use::StorageWrite).storageBuffer(16, depthIds, Use::StorageWrite);
-    tiles.record([this, p](PassContext& c) {
-        tiles_.pipeline.push(c.cmd, p);
+    tiles.storageBuffer(3, graph.import(depth_), intoTarget ? Use::StorageRead : Use::StorageWrite)
+        .storageBuffer(16, graph.import(depthIds_), intoTarget ? Use::StorageRead : Use::StorageWrite)
+        .storageBuffer(10, graph.import(layerTable_.current()));
+    if (intoTarget) tiles.storageImage(17, target).storageImage(18, ids ? ids : graph.import(noIds_));
+    tiles.record([this, &kernel, p](PassContext& c) {
+        kernel.pipeline.push(c.cmd, p);
         vkCmdDispatch(c.cmd, vk::divUp(size_.width, RASTER_TILE_SIZE), vk::divUp(size_.height, RASTER_TILE_SIZE),
-                      layers_);
+                      layerRows_);
     });
-    if (idLayers_ > 0) addIdSplit(graph, name, ids, target, p);
-    addResolve(graph, name, target, p);
+    if (intoTarget) return;
+    if (idLayers_ > 0) addIdSplit(graph, name, ids, p);
+    addResolve(graph, name, target);
 }
 
 // The bindings every pass over the triangle records declares (raster.glsl), `lists` being how it uses
@@ -219,26 +234,8 @@ void ComputeRaster::addTileLists(FrameGraph& graph, const std::string& name, Buf
     }
 }
 
-void ComputeRaster::addResolve(FrameGraph& graph, const std::string& name, ImageHandle target,
-                               const gpu::RasterPush& p) {
+void ComputeRaster::addResolve(FrameGraph& graph, const std::string& name, ImageHandle target) {
     const BufferHandle depth = graph.import(depth_);
-    if (graph.imageOf(target).format() == VK_FORMAT_R32_SFLOAT) {
-        const auto depthOnly = std::count_if(views_.begin(), views_.end(), [](const RasterViews& v) {
-            return v.layerCount > 0 && v.firstIdLayer == RasterViews::kNoIds;
-        });
-        if (depthOnly == 0) return;  // the ID split stored every layer
-        graph.pass(name + ".resolve")
-            .pipeline(store_.pipeline)
-            .storageBuffer(0, depth, Use::StorageRead)
-            .storageBuffer(1, graph.import(layerTable_.current()))
-            .storageImage(2, target)
-            .bytes(layerTexels() * layerRows_ * 8)
-            .record([this, p](PassContext& c) {
-                store_.pipeline.push(c.cmd, p);
-                vkCmdDispatch(c.cmd, vk::divUp(size_.width, 8), vk::divUp(size_.height, 8), layerRows_);
-            });
-        return;
-    }
     graph.pass(name + ".resolve", PassKind::Transfer)
         .use(depth, Use::TransferSrc)
         .use(target, Use::TransferDst)
@@ -258,22 +255,16 @@ void ComputeRaster::addResolve(FrameGraph& graph, const std::string& name, Image
         });
 }
 
-void ComputeRaster::addIdSplit(FrameGraph& graph, const std::string& name, ImageHandle ids, ImageHandle target,
-                               const gpu::RasterPush& p) {
-    const bool intoTarget = graph.imageOf(target).format() == VK_FORMAT_R32_SFLOAT;
-    const vk::ComputeKernel& kernel = intoTarget ? idStore_ : idSplit_;
-    PassBuilder pass = graph.pass(name + ".ids");
-    pass.pipeline(kernel.pipeline);
-    if (intoTarget)
-        pass.storageImage(0, target);
-    else
-        pass.storageBuffer(0, graph.import(depth_), Use::StorageWrite);
-    pass.storageBuffer(1, graph.import(depthIds_), Use::StorageRead)
+void ComputeRaster::addIdSplit(FrameGraph& graph, const std::string& name, ImageHandle ids, const gpu::RasterPush& p) {
+    graph.pass(name + ".ids")
+        .pipeline(idSplit_.pipeline)
+        .storageBuffer(0, graph.import(depth_), Use::StorageWrite)
+        .storageBuffer(1, graph.import(depthIds_), Use::StorageRead)
         .storageBuffer(2, graph.import(layerTable_.current()))
         .storageImage(3, ids)
         .bytes(layerTexels() * idLayers_ * 16)
-        .record([this, &kernel, p](PassContext& c) {
-            kernel.pipeline.push(c.cmd, p);
+        .record([this, p](PassContext& c) {
+            idSplit_.pipeline.push(c.cmd, p);
             vkCmdDispatch(c.cmd, vk::divUp(size_.width, 8), vk::divUp(size_.height, 8), layerRows_);
         });
 }

@@ -9,11 +9,12 @@
 //                  entry per tile), and a count per tile
 //   <name>.scan    each tile's list placed in the list buffer (its offset)
 //   <name>.scatter one thread per entry: its triangle into its tile's list
-//   <name>.tiles   one workgroup per tile of each layer: its list against depth kept in registers
+//   <name>.tiles   one workgroup per tile of each layer: its list against depth kept in registers,
+//                  written straight into an R32_SFLOAT target and the ID image (shadow maps, and the
+//                  camera's depth unless a raster pass draws into it later); for a D32_SFLOAT target
+//                  back into the depth buffers, then:
 //   <name>.ids     layers with visibility IDs only: split depth << 32 | ID into the ID image and depth
-//                  (into an R32_SFLOAT target itself, else into the depth buffer)
-//   <name>.resolve the depth-only layers into an R32_SFLOAT target (a compute store; none when every
-//                  layer has IDs), or every layer into a D32_SFLOAT one (a copy) (the camera's depth, which
+//   <name>.resolve a copy of the depth buffer into the D32_SFLOAT target (the camera's depth, which
 //                  raster passes test against afterwards)
 // Depth is a 32-bit atomicMin on the float bits in a storage buffer (depths in [0, 1] order like
 // their bits); layers with IDs (an RSM's, resolved from them) take a 64-bit atomicMin of
@@ -68,9 +69,10 @@ public:
 private:
     gpu::RasterPush push(RasterBias bias) const;
     void addSetup(FrameGraph& graph, const std::string& name, BufferHandle viewRows, const gpu::RasterPush& p);
-    void addIdSplit(FrameGraph& graph, const std::string& name, ImageHandle ids, ImageHandle target,
-                    const gpu::RasterPush& p);
-    void addResolve(FrameGraph& graph, const std::string& name, ImageHandle target, const gpu::RasterPush& p);
+    void addFineRaster(FrameGraph& graph, const std::string& name, BufferHandle viewRows, ImageHandle target,
+                       ImageHandle ids, const gpu::RasterPush& p);
+    void addIdSplit(FrameGraph& graph, const std::string& name, ImageHandle ids, const gpu::RasterPush& p);
+    void addResolve(FrameGraph& graph, const std::string& name, ImageHandle target);
     void addTileLists(FrameGraph& graph, const std::string& name, BufferHandle viewRows, const gpu::RasterPush& p);
     void declareRasterSet(PassBuilder& pass, FrameGraph& graph, BufferHandle viewRows, Use lists) const;
     // Tile bins: one per tile of every layer the targets have.
@@ -84,8 +86,9 @@ private:
     Views kind_;
     uint32_t layers_, subpixelBits_;
     uint32_t recordCapacity_, entryCapacity_;
-    vk::ComputeKernel setup_, bin_, scan_, scatter_, tiles_, args_, idSplit_, idStore_, store_;
+    vk::ComputeKernel setup_, bin_, scan_, scatter_, tiles_, tilesImage_, args_, idSplit_;
     vk::Buffer depth_, records_, entries_, tileBins_, tileLists_, counters_, dispatchArgs_;
+    vk::Image noIds_;       // the ID image of frames without ID layers (R32_SFLOAT targets)
     vk::Buffer depthIds_;     // uint64 per texel of each ID layer, grown to the most requested
     uint32_t idLayers_ = 0;  // ID layers this frame's views write
     vk::BufferRing layerTable_;

@@ -1,8 +1,0 @@
-#version 460
-// raster/ids_2d.comp with depth stored into the R32_SFLOAT camera depth itself (src/raster).
-#extension GL_GOOGLE_include_directive : require
-#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
-#define RASTER_ID_IMAGE_2D
-#define RASTER_DEPTH_IMAGE
-#include "shared/types.h"
-#include "raster/ids.glsl"

@@ -1,0 +1,116 @@
+// The body of raster/tiles*.comp. Fine rasterization of large triangles (src/raster): one workgroup
+// per tile of each layer drawn (z = row of the layer table), over the tile's list of triangles (bin,
+// scan and scatter passes). Each thread owns RASTER_TILE_SIZE^2 / RASTER_TILE_GROUP pixels of the
+// tile (a column, every kRowsPerPass-th row): it reads their depth once where a setup thread drew
+// into the tile (small triangles), keeps the nearest depth << 32 | ID of each in registers while it
+// walks the list, and writes them once. No atomics, no depth traffic per triangle (the tiled depth
+// test of Laine & Karras 2011); the result equals the atomicMin of every covered sample (ties: the
+// smaller ID). RASTER_TARGET_IMAGE: every pixel of every tile goes straight into the R32_SFLOAT
+// target (and the ID image), so no split or store pass follows (RASTER_ID_IMAGE_2D: the camera's
+// 2D images); else changed pixels go back into the depth buffers (a copy then fills a D32 target).
+layout(local_size_x = RASTER_TILE_GROUP) in;
+layout(set = 0, binding = 10, std430) readonly buffer Layers { RasterLayer rasterLayers[]; };
+#ifdef RASTER_TARGET_IMAGE
+#ifdef RASTER_ID_IMAGE_2D
+layout(set = 0, binding = 17, r32f) uniform writeonly image2D depthMap;
+layout(set = 0, binding = 18, r32ui) uniform writeonly uimage2D idMap;
+#define TARGET_TEXEL(p, layer) ivec2(p)
+#else
+layout(set = 0, binding = 17, r32f) uniform writeonly image2DArray depthMap;
+layout(set = 0, binding = 18, r32ui) uniform writeonly uimage2DArray idMap;
+#define TARGET_TEXEL(p, layer) ivec3(p, layer)
+#endif
+#endif
+
+layout(push_constant) uniform Push { RasterPush push; };
+
+const int kRowsPerPass = RASTER_TILE_GROUP / RASTER_TILE_SIZE;
+const int kPixels = RASTER_TILE_SIZE / kRowsPerPass;  // per thread
+// The list is walked in batches: the workgroup loads a batch's records into shared memory together
+// (one vec4 per thread), so a triangle costs no dependent global load in the walk.
+const uint kVec4sPerRecord = 8u;  // sizeof(RasterTriangle) / 16
+const uint kBatch = RASTER_TILE_GROUP / kVec4sPerRecord;
+shared RasterTriangle batch[kBatch];
+
+void loadBatch(uint first, uint n) {
+    const uint r = gl_LocalInvocationIndex / kVec4sPerRecord;
+    if (r >= n) return;
+    const uint record = tileLists[first + r];
+    switch (gl_LocalInvocationIndex % kVec4sPerRecord) {  // one vec4 of the record per thread
+        case 0u: batch[r].xy01 = records[record].xy01; break;
+        case 1u: batch[r].xy2 = records[record].xy2; break;
+        case 2u: batch[r].origin = records[record].origin; break;
+        case 3u: batch[r].depth = records[record].depth; break;
+        case 4u: batch[r].uOverW = records[record].uOverW; break;
+        case 5u: batch[r].vOverW = records[record].vOverW; break;
+        case 6u: batch[r].invW = records[record].invW; break;
+        default: batch[r].ids = records[record].ids; break;
+    }
+}
+
+// Writes a thread's pixels: into the target images (every pixel in the target), or the changed
+// ones back into the depth buffers.
+void storePixels(uint64_t nearest[kPixels], uint64_t first[kPixels], uint index[kPixels], ivec2 origin, ivec2 size,
+                 uint layer, uint idLayer) {
+    const uint kFar = 0x3F800000u;  // 1.0: an ID layer is cleared just above it (ComputeRaster::addTo)
+    for (int k = 0; k < kPixels; ++k) {
+        const ivec2 p = origin + ivec2(0, k * kRowsPerPass);
+        if (p.y >= size.y || p.x >= size.x) continue;
+#ifdef RASTER_TARGET_IMAGE
+        const uint bits = uint(nearest[k] >> 32);
+        imageStore(depthMap, TARGET_TEXEL(p, layer), vec4(uintBitsToFloat(min(bits, kFar))));
+        if (idLayer != 0u) imageStore(idMap, TARGET_TEXEL(p, idLayer - 1u), uvec4(bits > kFar ? 0u : uint(nearest[k])));
+#else
+        if (nearest[k] == first[k]) continue;
+        if (idLayer != 0u)
+            depthIds[index[k]] = nearest[k];
+        else
+            depthBits[index[k]] = uint(nearest[k] >> 32);
+#endif
+    }
+}
+
+void main() {
+    const ivec2 size = ivec2(push.target.x, push.capacity.w);
+    const int bits = int(push.target.y);
+    const RasterLayer row = rasterLayers[gl_WorkGroupID.z];
+    const uint layer = row.info.y, idLayer = row.info.w;  // ID layer + 1, or 0: depth only
+    const ivec2 tile = ivec2(gl_WorkGroupID.xy);
+    const uvec4 bin = tileBins[tileIndex(layer, tile, size)];
+    const uint count = min(bin.x, bin.z);
+    const bool touched = (bin.w & RASTER_TILE_TOUCHED) != 0u;
+#ifndef RASTER_TARGET_IMAGE
+    if (count == 0u) return;  // the buffers hold what the setup threads drew
+#endif
+    const ivec2 lane = ivec2(int(gl_LocalInvocationIndex) % RASTER_TILE_SIZE,
+                             int(gl_LocalInvocationIndex) / RASTER_TILE_SIZE);
+    const ivec2 origin = tile * RASTER_TILE_SIZE + lane;
+    // The clear values (ComputeRaster::addTo): 1.0, and just above 1.0 in both halves with IDs.
+    const uint64_t cleared = idLayer != 0u ? 0x3F8000013F800001ul : uint64_t(0x3F800000u) << 32;
+    uint64_t nearest[kPixels];
+    uint index[kPixels];
+    for (int k = 0; k < kPixels; ++k) {
+        const ivec2 p = min(origin + ivec2(0, k * kRowsPerPass), size - 1);
+        index[k] = ((idLayer != 0u ? idLayer - 1u : layer) * uint(size.y) + uint(p.y)) * uint(size.x) + uint(p.x);
+        nearest[k] = !touched ? cleared : idLayer != 0u ? depthIds[index[k]] : uint64_t(depthBits[index[k]]) << 32;
+    }
+    const uint64_t first[kPixels] = nearest;
+    for (uint start = 0u; start < count; start += kBatch) {
+        const uint n = min(count - start, kBatch);
+        barrier();  // the previous batch is walked
+        loadBatch(bin.y + start, n);
+        barrier();
+        for (uint i = 0u; i < n; ++i) {
+            const RasterTriangle t = batch[i];
+            const Edges e = edgesOf(t, bits, size);
+            for (int k = 0; k < kPixels; ++k) {
+                const ivec2 p = origin + ivec2(0, k * kRowsPerPass);
+                if (any(lessThan(p, e.bbox.xy)) || any(greaterThan(p, e.bbox.zw)) || !covers(e, p, bits)) continue;
+                const uint64_t v = uint64_t(sampleDepthBits(t, p)) << 32 | uint64_t(idLayer != 0u ? t.ids.x : 0u);
+                if (v < nearest[k] && !(t.origin.z != 0.0 && alphaDiscarded(t, vec2(p) + 0.5 - t.origin.xy)))
+                    nearest[k] = v;
+            }
+        }
+    }
+    storePixels(nearest, first, index, origin, size, layer, idLayer);
+}
