@@ -145,6 +145,35 @@ void shadeSample(RasterTriangle t, ivec2 p, ivec2 size) {
     atomicMin(depthBits[index], bits);
 }
 
+// Every covered sample of a small triangle, in 32-bit edge functions stepped along each row (the
+// setup pass's small triangles: 64-bit products per sample cost several instructions each). With
+// |d_i| < 2^13 subpixels (smallEnough) and q within the triangle's box, |E| < 2^27: exact, as the
+// 64-bit evaluation (covers) is.
+void rasterizeSmall(RasterTriangle t, Edges e, int subpixelBits, ivec2 size) {
+    const int one = 1 << subpixelBits, centre = one >> 1;
+    ivec3 rowStart, stepX, stepY, bias;
+    for (int i = 0; i < 3; ++i) {
+        const ivec2 d = ivec2(e.d[i]), q = (e.bbox.xy << subpixelBits) + centre - ivec2(e.a[i]);
+        rowStart[i] = d.x * q.y - d.y * q.x;
+        stepX[i] = -d.y * one;
+        stepY[i] = d.x * one;
+        bias[i] = int(e.bias[i]);
+    }
+    for (int y = e.bbox.y; y <= e.bbox.w; ++y, rowStart += stepY) {
+        ivec3 edge = rowStart + bias;
+        for (int x = e.bbox.x; x <= e.bbox.z; ++x, edge += stepX)
+            if (all(greaterThanEqual(edge, ivec3(0)))) shadeSample(t, ivec2(x, y), size);
+    }
+}
+
+// Whether rasterizeSmall's 32-bit arithmetic holds for `e` (vertices within 2^13 subpixels of one
+// another on both axes).
+bool smallEnough(Edges e) {
+    for (int i = 0; i < 3; ++i)
+        if (abs(e.d[i].x) >= 8192l || abs(e.d[i].y) >= 8192l) return false;
+    return true;
+}
+
 // Every covered sample of `t` inside the pixel rectangle r (inclusive).
 void rasterizeRect(RasterTriangle t, Edges e, ivec4 r, int subpixelBits, ivec2 size) {
     for (int y = r.y; y <= r.w; ++y)

@@ -186,7 +186,10 @@ void emitTriangle(ClipVertex c0, ClipVertex c1, ClipVertex c2, Caster caster) {
     if (small || !bin(t, e)) {
         if (!small) atomicAdd(counters.counts.z, 1u);
         markTiles(caster.layer, e.bbox, size);
-        rasterizeRect(t, e, e.bbox, bits, size);
+        if (small && bits <= 8 && smallEnough(e))
+            rasterizeSmall(t, e, bits, size);
+        else
+            rasterizeRect(t, e, e.bbox, bits, size);
     }
 }
 
