@@ -103,9 +103,18 @@ void main() {
         for (uint i = 0u; i < n; ++i) {
             const RasterTriangle t = batch[i];
             const Edges e = edgesOf(t, bits, size);
-            for (int k = 0; k < kPixels; ++k) {
+            // The edge functions at the thread's first pixel, then one 64-bit add per pixel below it.
+            i64vec3 edge, step;
+            for (int j = 0; j < 3; ++j) {
+                const i64vec2 q = i64vec2((origin << bits) + (1 << (bits - 1))) - e.a[j];
+                edge[j] = e.d[j].x * q.y - e.d[j].y * q.x + e.bias[j];
+                step[j] = e.d[j].x * int64_t(kRowsPerPass << bits);
+            }
+            for (int k = 0; k < kPixels; ++k, edge += step) {
                 const ivec2 p = origin + ivec2(0, k * kRowsPerPass);
-                if (any(lessThan(p, e.bbox.xy)) || any(greaterThan(p, e.bbox.zw)) || !covers(e, p, bits)) continue;
+                if (any(lessThan(p, e.bbox.xy)) || any(greaterThan(p, e.bbox.zw)) ||
+                    any(lessThan(edge, i64vec3(0l))))
+                    continue;
                 const uint64_t v = uint64_t(sampleDepthBits(t, p)) << 32 | uint64_t(idLayer != 0u ? t.ids.x : 0u);
                 if (v < nearest[k] && !(t.origin.z != 0.0 && alphaDiscarded(t, vec2(p) + 0.5 - t.origin.xy)))
                     nearest[k] = v;
