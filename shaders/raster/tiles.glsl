@@ -110,11 +110,11 @@ void main() {
                 edge[j] = e.d[j].x * q.y - e.d[j].y * q.x + e.bias[j];
                 step[j] = e.d[j].x * int64_t(kRowsPerPass << bits);
             }
+            // A covered centre lies in the triangle's box, so the edges alone decide (pixels beyond
+            // the target, in its last row or column of tiles, are never stored).
             for (int k = 0; k < kPixels; ++k, edge += step) {
                 const ivec2 p = origin + ivec2(0, k * kRowsPerPass);
-                if (any(lessThan(p, e.bbox.xy)) || any(greaterThan(p, e.bbox.zw)) ||
-                    any(lessThan(edge, i64vec3(0l))))
-                    continue;
+                if (any(lessThan(edge, i64vec3(0l)))) continue;
                 const uint64_t v = uint64_t(sampleDepthBits(t, p)) << 32 | uint64_t(idLayer != 0u ? t.ids.x : 0u);
                 if (v < nearest[k] && !(t.origin.z != 0.0 && alphaDiscarded(t, vec2(p) + 0.5 - t.origin.xy)))
                     nearest[k] = v;
