@@ -282,30 +282,34 @@ TEST_F(GpuTest, CachedCascadesRedrawOnlyWhatMovedAndMatchColdFrames) {
         for (const ShadowLayer& l : r.shadow().layers()) m.push_back(l.projection.viewProj);
         return m;
     };
-    Camera cam = scene.cameras[0];
-    Renderer r(ctx(), scene, s);
-    r.render(cam);
-    const uint32_t layers = uint32_t(r.shadow().layers().size());
-    EXPECT_EQ(r.shadow().layersDrawn(), layers);
-    r.render(cam);
-    EXPECT_EQ(r.shadow().layersDrawn(), 0u);
-    EXPECT_TRUE(r.readHdr() == cold(cam));
-    const std::vector<glm::mat4> before = projections(r);
-    Camera moved = cam;
-    moved.eye += glm::vec3(0.3f, 0.0f, -0.2f);
-    moved.target += glm::vec3(0.3f, 0.0f, -0.2f);
-    r.render(moved);
-    const std::vector<glm::mat4> after = projections(r);
-    uint32_t changed = 0;
-    for (size_t k = 0; k < after.size(); ++k) changed += after[k] != before[k];
-    std::printf("[ cache ] %u layers, %u moved with the camera, %u drawn\n", layers, changed,
-                r.shadow().layersDrawn());
-    EXPECT_GT(changed, 0u);
-    EXPECT_EQ(r.shadow().layersDrawn(), changed);
-    EXPECT_TRUE(r.readHdr() == cold(moved));
-    r.invalidateCaches();
-    r.render(moved);
-    EXPECT_EQ(r.shadow().layersDrawn(), layers);
+    for (RasterMode mode : {RasterMode::Hardware, RasterMode::Compute}) {  // both cache their layers
+        SCOPED_TRACE(mode == RasterMode::Compute ? "compute rasterizer" : "hardware rasterizer");
+        s.shadow.raster = mode;
+        Camera cam = scene.cameras[0];
+        Renderer r(ctx(), scene, s);
+        r.render(cam);
+        const uint32_t layers = uint32_t(r.shadow().layers().size());
+        EXPECT_EQ(r.shadow().layersDrawn(), layers);
+        r.render(cam);
+        EXPECT_EQ(r.shadow().layersDrawn(), 0u);
+        EXPECT_TRUE(r.readHdr() == cold(cam));
+        const std::vector<glm::mat4> before = projections(r);
+        Camera moved = cam;
+        moved.eye += glm::vec3(0.3f, 0.0f, -0.2f);
+        moved.target += glm::vec3(0.3f, 0.0f, -0.2f);
+        r.render(moved);
+        const std::vector<glm::mat4> after = projections(r);
+        uint32_t changed = 0;
+        for (size_t k = 0; k < after.size(); ++k) changed += after[k] != before[k];
+        std::printf("[ cache ] %u layers, %u moved with the camera, %u drawn\n", layers, changed,
+                    r.shadow().layersDrawn());
+        EXPECT_GT(changed, 0u);
+        EXPECT_EQ(r.shadow().layersDrawn(), changed);
+        EXPECT_TRUE(r.readHdr() == cold(moved));
+        r.invalidateCaches();
+        r.render(moved);
+        EXPECT_EQ(r.shadow().layersDrawn(), layers);
+    }
 }
 
 }  // namespace

@@ -140,6 +140,7 @@ void ComputeRaster::addTo(FrameGraph& graph, const std::string& name, ImageHandl
     const BufferHandle depth = graph.import(depth_), counters = graph.import(counters_),
                        args = graph.import(dispatchArgs_), records = graph.import(records_),
                        entries = graph.import(entries_), depthIds = graph.import(depthIds_);
+    if (layerRows_ == 0) return;  // every layer cached (ShadowMapPass): nothing to clear or draw
     graph.pass(name + ".clear", PassKind::Transfer)
         .use(depth, Use::TransferDst)
         .use(counters, Use::TransferDst)
@@ -154,7 +155,6 @@ void ComputeRaster::addTo(FrameGraph& graph, const std::string& name, ImageHandl
             const VkDeviceSize idBytes = layerTexels() * idLayers_ * 8;
             if (idBytes) vkCmdFillBuffer(c.cmd, depthIds_.handle(), 0, idBytes, 0x3F800001u);
         });
-    if (layerRows_ == 0) return;
     const gpu::RasterPush p = push(bias);
     addSetup(graph, name, viewRows, p);
     graph.pass(name + ".args")

@@ -89,7 +89,7 @@ void ShadowMapPass::update(const std::vector<Light>& lights, const Camera& camer
         return a.viewProj == b.viewProj && a.params == b.params;
     };
     dirty_.assign(layers.size(), true);
-    for (size_t k = 0; k < layers.size() && k < held_.size() && !compute_; ++k) dirty_[k] = !same(layers[k], held_[k]);
+    for (size_t k = 0; k < layers.size() && k < held_.size(); ++k) dirty_[k] = !same(layers[k], held_[k]);
     held_ = layers;
     if (!shadowed.empty()) lightTable_.write(shadowed.data(), shadowed.size() * sizeof(shadowed[0]));
     params_.write(&params, sizeof(params));
@@ -134,9 +134,13 @@ void ShadowMapPass::addTo(FrameGraph& graph, uint32_t firstView,
             });
         }
         if (compute_) {
-            compute_->setViews(computeViews(firstView), slot_);
+            const ImageHandle ids = importIds(graph);  // first: a new ID image holds no layer
+            const std::vector<RasterViews> views = computeViews(firstView);
+            for (const RasterViews& v : views) layersDrawn_ += v.layerCount;
+            heldIds_ = idLayers_;
+            compute_->setViews(views, slot_);
             compute_->addTo(graph, "shadow.raster", map, graph.buffer("views"),
-                            {settings_.depthBiasConstant, settings_.depthBiasSlope}, importIds(graph));
+                            {settings_.depthBiasConstant, settings_.depthBiasSlope}, ids);
         } else {
             addIdPass(graph, map, firstView);
         }
@@ -188,9 +192,10 @@ bool ShadowMapPass::hasParaboloid() const {
     return false;
 }
 
-// Every layer of every light but paraboloid ones (their edges bend: hardware tessellation), in runs
-// of consecutive depth-only layers; a layer with IDs (an RSM's: directional and spot lights only) is
-// a run of its own.
+// The layers of every light but paraboloid ones (their edges bend: hardware tessellation) that must
+// be drawn this frame (their projection changed, or a layer with IDs that the ID image does not hold:
+// the others keep what they hold, as the hardware pass's cached layers do), in runs of consecutive
+// depth-only layers; a layer with IDs (an RSM's: directional and spot lights only) is a run of its own.
 std::vector<RasterViews> ShadowMapPass::computeViews(uint32_t firstView) const {
     std::vector<RasterViews> views;
     for (const ShadowedLight& s : layout_.shadowed()) {
@@ -200,6 +205,7 @@ std::vector<RasterViews> ShadowMapPass::computeViews(uint32_t firstView) const {
             const uint32_t l = s.firstLayer + k;
             const auto id = std::find(idLayers_.begin(), idLayers_.end(), l);
             const uint32_t idLayer = id == idLayers_.end() ? RasterViews::kNoIds : uint32_t(id - idLayers_.begin());
+            if (!dirty_[l] && (idLayer == RasterViews::kNoIds || heldIds_ == idLayers_)) continue;
             const bool extends = !views.empty() && views.back().firstLayer + views.back().layerCount == l &&
                                  views.back().skipBlended == skipBlended &&
                                  views.back().firstIdLayer == RasterViews::kNoIds;

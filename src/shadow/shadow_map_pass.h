@@ -65,9 +65,9 @@ public:
         raster_.setDeepShadowLights(std::move(lights));
         invalidate();
     }
-    // Cached layers (hardware raster): a layer is drawn again only when its projection changed (a
+    // Cached layers (both rasterizers): a layer is drawn again only when its projection changed (a
     // cascade's snapped origin, the light, the depth range), after invalidate() (casters moved, or a
-    // cold frame: bench) or a bias change; the compute rasterizer draws every layer every frame.
+    // cold frame: bench) or a bias change.
     void invalidate() {
         held_.clear();
         heldIds_.clear();
