@@ -410,6 +410,12 @@ INSTANTIATE_TEST_SUITE_P(
                  "the largest --width that fits"},
         BadInput{"VsmMapBeyondAllocation", {"render", "cornell", "-o", "{out}", "--shadow", "vsm", "--shadow-res", "16384"},
                  "the largest --shadow-res that fits"},
+        // A point light's 6 RSM layers at 2048^2 in the compute rasterizer's 64-bit depth-and-ID buffer:
+        // 192 MiB, beyond lavapipe's 128 MiB storage-buffer range (it rendered with a validation error).
+        BadInput{"ComputeRasterIdsBeyondStorageBuffer",
+                 {"render", "cornell", "-o", "{out}", "--light", "point,0.75,0.9,0.6,2", "--gi", "lpv", "--raster",
+                  "compute"},
+                 "the largest --shadow-res that fits"},
         BadInput{"StrandsBeyondStorageBuffer",
                  {"render", "hair", "-o", "{out}", "--strands", "2000000", "--shadow", "dsm"},
                  "the largest --strands that fits"},

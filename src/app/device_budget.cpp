@@ -10,6 +10,7 @@
 
 #include "app/option_checks.h"
 #include "lpv/lpv.h"
+#include "raster/raster_mode.h"
 #include "render/scene_gpu.h"
 #include "render/texture_upload.h"
 #include "shadow/shadow_layout.h"
@@ -207,11 +208,30 @@ uint64_t hairBytesPerStrand() {
     return (BuiltinOptions::kHairPointsPerStrand + 2) * kHairPointBytes + kStrandRecordBytes;
 }
 
-void checkDeviceBudget(const vk::DeviceLimits& limits, const RenderSettings& settings, const Scene& scene) {
+void checkDeviceBudget(const vk::DeviceLimits& limits, const RenderSettings& settings, const Scene& scene,
+                       bool computeRaster) {
     SceneGpu::checkTextureTable(limits);
     const LayerCounts layers = layerCounts(settings, scene);
     checkDimensions(limits, settings, layers);
-    checkEach(limits, frameDemands(settings, scene, layers));
+    std::vector<Demand> demands = frameDemands(settings, scene, layers);
+    if (computeRaster) {
+        // Its depth buffer (4 bytes per texel of every layer) and, for the RSM's layers, depth << 32 |
+        // ID (8 bytes): storage buffers bound whole (src/raster; 6 cube faces at 2048^2 are 192 MiB).
+        const uint64_t shadowLayers = std::max(layers.shadow, 1u), idLayers = std::max(layers.rsm, 1u);
+        demands.push_back({"--shadow-res", settings.shadow.resolution, 16,
+                           fmt::format("the compute rasterizer's depth buffer ({} layer(s))", shadowLayers),
+                           [=](uint64_t r) { return r * r * 4 * shadowLayers; }, true});
+        if (settings.gi != GiMode::None)
+            demands.push_back({"--shadow-res", settings.shadow.resolution, 16,
+                               fmt::format("the compute rasterizer's depth and visibility IDs ({} layer(s), 8 bytes "
+                                           "per texel)", idLayers),
+                               [=](uint64_t r) { return r * r * 8 * idLayers; }, true});
+    }
+    checkEach(limits, demands);
+}
+
+void checkDeviceBudget(const vk::Context& ctx, const RenderSettings& settings, const Scene& scene) {
+    checkDeviceBudget(ctx.limits(), settings, scene, computeRasterFor(settings.shadow.raster, ctx.properties()));
 }
 
 void checkBuiltinSceneBudget(const vk::DeviceLimits& limits, const FrameOptions& frame) {

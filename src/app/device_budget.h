@@ -14,10 +14,10 @@
 namespace penumbra {
 
 // Throws std::invalid_argument. The memory check allows 90% of the largest device-local heap.
-void checkDeviceBudget(const vk::DeviceLimits& limits, const RenderSettings& settings, const Scene& scene);
-inline void checkDeviceBudget(const vk::Context& ctx, const RenderSettings& settings, const Scene& scene) {
-    checkDeviceBudget(ctx.limits(), settings, scene);
-}
+// `computeRaster`: the compute rasterizer draws the shadow layers (its depth buffers are bound whole).
+void checkDeviceBudget(const vk::DeviceLimits& limits, const RenderSettings& settings, const Scene& scene,
+                       bool computeRaster = false);
+void checkDeviceBudget(const vk::Context& ctx, const RenderSettings& settings, const Scene& scene);
 
 // The built-in hair scene's `--strands`, checked before the strands are grown: their ribbon points
 // must fit one storage buffer and the device's memory.
