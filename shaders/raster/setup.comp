@@ -1,6 +1,6 @@
 #version 460
-// Triangle setup of the compute rasterizer (src/raster): one thread per (triangle, layer) of the
-// (cluster, layer) pairs that the cull pass kept, every layer of every light in one dispatch.
+// Triangle setup of the compute rasterizer (src/raster): one thread per (triangle, layer), every
+// layer of every light in one dispatch (y = row of the layer table).
 // Transforms with the layer's views row (the shadow pass's matrices), rejects triangles outside the
 // view, clips the rest against the view volume (the viewport, near and far planes, as lavapipe's
 // clipper does: the depth planes of clipped triangles then come from the same vertices), culls back
@@ -20,7 +20,6 @@ layout(set = 0, binding = 8, std430) readonly buffer Indices { uint indices[]; }
 layout(set = 0, binding = 9, std430) readonly buffer TriangleMaterials { uint triangleMaterials[]; };
 layout(set = 0, binding = 10, std430) readonly buffer Layers { RasterLayer rasterLayers[]; };
 layout(set = 0, binding = 11, std430) readonly buffer DrawnTriangles { uvec2 drawnTriangles[]; };  // (instance, triangle)
-layout(set = 0, binding = 19, std430) readonly buffer ClusterList { uint clusterList[]; };  // raster/cull.comp
 layout(push_constant) uniform Push { RasterPush push; };
 
 const int kVertexFloats = 8;  // position xyz, normal xyz, uv
@@ -248,12 +247,8 @@ void setupTriangle(uint drawn, RasterLayer target) {
         clipAndEmit(v, c0 | c1 | c2, caster);
 }
 
-// One workgroup per (cluster, layer row) pair that the cull pass kept, a thread per triangle of the
-// cluster; the workgroups stride over the pairs.
 void main() {
-    const uint pairs = counters.clusters.x;
-    for (uint k = gl_WorkGroupID.x; k < pairs; k += gl_NumWorkGroups.x) {
-        const uint pair = clusterList[k], drawn = (pair & 0xFFFFFFu) * RASTER_SETUP_GROUP + gl_LocalInvocationID.x;
-        if (drawn < push.target.z) setupTriangle(drawn, rasterLayers[pair >> 24]);
-    }
+    const uint stride = gl_NumWorkGroups.x * RASTER_SETUP_GROUP;
+    const RasterLayer target = rasterLayers[gl_GlobalInvocationID.y];
+    for (uint t = gl_GlobalInvocationID.x; t < push.target.z; t += stride) setupTriangle(t, target);
 }

@@ -402,7 +402,6 @@ struct RasterPush {
 struct RasterCounters {
     uvec4 counts;    // x = triangle records taken, y = tile entries taken, z = triangles rasterized inline
                      // because a list was full, w = tile-list entries placed (raster/scan.comp)
-    uvec4 clusters;  // x = (cluster, layer row) pairs that the cull pass kept, yzw unused
 };
 
 #ifdef __cplusplus

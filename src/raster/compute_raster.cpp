@@ -55,11 +55,7 @@ ComputeRaster::ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, VkExtent2D s
     scan_ = vk::ComputeKernel(ctx, "raster/scan.comp", {kBuffer, kBuffer}, sizeof(gpu::uvec4));
     std::vector<vk::Binding> setup = tiles;
     for (uint32_t b = 7; b <= 11; ++b) setup.push_back({b, kBuffer});  // vertices, indices, materials, layers, drawn triangles
-    setup.push_back({19, kBuffer});                                      // the kept (cluster, layer) pairs
     setup_ = vk::ComputeKernel(ctx, "raster/setup.comp", setup, pushBytes, table);
-    std::vector<vk::Binding> cull = SceneGpu::drawSetBindings();
-    for (uint32_t b : {6u, 7u, 8u, 10u, 11u, 19u}) cull.push_back({b, kBuffer});
-    cull_ = vk::ComputeKernel(ctx, "raster/cull.comp", cull, pushBytes, table);  // the draw set binds set 1 too
     args_ = vk::ComputeKernel(ctx, "raster/args.comp", {kBuffer, kBuffer}, pushBytes);
     idSplit_ = vk::ComputeKernel(ctx, camera ? "raster/ids_2d.comp" : "raster/ids.comp",
                                  {kBuffer, kBuffer, kBuffer, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, pushBytes);
@@ -76,8 +72,6 @@ ComputeRaster::ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, VkExtent2D s
     tileBins_ = vk::Buffer(alloc, VkDeviceSize(binCount()) * sizeof(gpu::uvec4), storage | transfer, false,
                            "raster-tile-bins");
     tileLists_ = vk::Buffer(alloc, VkDeviceSize(entryCapacity_) * 4, storage, false, "raster-tile-lists");
-    const VkDeviceSize pairs = VkDeviceSize(vk::divUp(std::max(scene.drawnTriangleCount(), 1u), RASTER_SETUP_GROUP)) * layers_;
-    clusterList_ = vk::Buffer(alloc, pairs * 4, storage, false, "raster-cluster-list");
     counters_ = vk::Buffer(alloc, sizeof(gpu::RasterCounters), storage | transfer, false, "raster-counters");
     dispatchArgs_ = vk::Buffer(alloc, 2 * sizeof(gpu::uvec4), storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, false,
                                "raster-dispatch");
@@ -115,26 +109,9 @@ gpu::RasterPush ComputeRaster::push(RasterBias bias) const {
             {bias.constant, bias.slope, kind_ == Views::Camera ? 1.0f : 0.0f, 0.0f}};
 }
 
-// Cull (one workgroup per cluster of triangles: its box against every layer drawn), then set up the
-// triangles of the kept (cluster, layer) pairs.
 void ComputeRaster::addSetup(FrameGraph& graph, const std::string& name, BufferHandle viewRows,
                              const gpu::RasterPush& p) {
-    const BufferHandle depth = graph.import(depth_), counters = graph.import(counters_),
-                       clusterList = graph.import(clusterList_);
-    const uint32_t clusters = vk::divUp(p.target.z, RASTER_SETUP_GROUP);
-    PassBuilder cull = graph.pass(name + ".cull");
-    cull.pipeline(cull_.pipeline);
-    scene_.declareDrawSet(cull, viewRows);
-    cull.storageBuffer(6, counters, Use::StorageWrite)
-        .storageBuffer(7, graph.import(scene_.vertices()))
-        .storageBuffer(8, graph.import(scene_.indices()))
-        .storageBuffer(10, graph.import(layerTable_.current()))
-        .storageBuffer(11, graph.import(scene_.drawnTriangles()))
-        .storageBuffer(19, clusterList, Use::StorageWrite)
-        .record([this, p, clusters](PassContext& c) {
-            cull_.pipeline.push(c.cmd, p);
-            vkCmdDispatch(c.cmd, std::min(clusters, kMaxGroups), 1, 1);
-        });
+    const BufferHandle depth = graph.import(depth_), counters = graph.import(counters_);
     PassBuilder setup = graph.pass(name + ".setup");
     setup.pipeline(setup_.pipeline);
     scene_.declareDrawSet(setup, viewRows);
@@ -150,11 +127,10 @@ void ComputeRaster::addSetup(FrameGraph& graph, const std::string& name, BufferH
         .storageBuffer(11, graph.import(scene_.drawnTriangles()))
         .storageBuffer(12, graph.import(tileBins_), Use::StorageWrite)  // marks the tiles it draws into
         .storageBuffer(13, graph.import(tileLists_), Use::StorageRead)   // in the layout, not used by setup
-        .storageBuffer(19, clusterList, Use::StorageRead)
-        .record([this, p, clusters](PassContext& c) {
+        .record([this, p](PassContext& c) {
             setup_.pipeline.push(c.cmd, p);
-            // Enough workgroups for every pair; those beyond the kept ones return at once.
-            vkCmdDispatch(c.cmd, std::min(clusters * layerRows_, kMaxGroups), 1, 1);
+            const uint32_t groups = std::min(vk::divUp(p.target.z, RASTER_SETUP_GROUP), kMaxGroups);
+            vkCmdDispatch(c.cmd, groups, layerRows_, 1);
         });
 }
 

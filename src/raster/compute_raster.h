@@ -2,10 +2,8 @@
 // hardware, equal to it (same matrices, clipping, winding and culling, pixel centres, subpixel
 // snapping, top-left rule, z/w plane, Vulkan's float depth bias, alpha-masked casters).
 //   <name>.clear   fill the depth buffer with 1.0 and the bin counters with 0 (transfer)
-//   <name>.cull    one workgroup per cluster of 64 drawn triangles: its world box this frame against
-//                  every layer drawn; the kept (cluster, layer) pairs go to the setup pass
-//   <name>.setup   one thread per triangle of a kept pair, all layers in one dispatch: transform,
-//                  clip, cull, snap; small triangles rasterized right there, large ones binned into tiles
+//   <name>.setup   one thread per (triangle, layer), all layers in one dispatch: transform, clip,
+//                  cull, snap; small triangles rasterized right there, large ones binned into tiles
 //   <name>.args    the bin and scatter passes' indirect dispatch sizes
 //   <name>.bin     one workgroup per large triangle: which tiles of its box its edges may cover (an
 //                  entry per tile), and a count per tile
@@ -88,8 +86,8 @@ private:
     Views kind_;
     uint32_t layers_, subpixelBits_;
     uint32_t recordCapacity_, entryCapacity_;
-    vk::ComputeKernel cull_, setup_, bin_, scan_, scatter_, tiles_, tilesImage_, args_, idSplit_;
-    vk::Buffer depth_, records_, entries_, tileBins_, tileLists_, clusterList_, counters_, dispatchArgs_;
+    vk::ComputeKernel setup_, bin_, scan_, scatter_, tiles_, tilesImage_, args_, idSplit_;
+    vk::Buffer depth_, records_, entries_, tileBins_, tileLists_, counters_, dispatchArgs_;
     vk::Image noIds_;       // the ID image of frames without ID layers (R32_SFLOAT targets)
     vk::Buffer depthIds_;     // uint64 per texel of each ID layer, grown to the most requested
     uint32_t idLayers_ = 0;  // ID layers this frame's views write
