@@ -99,16 +99,16 @@ struct LayerCounts {
 
 // The shadow layers (ShadowLayout) and the RSM layers the renderer takes from them: a sun's widest
 // cascade (or every cascade with --rsm-per-cascade and RSM GI), every spot and cube face; no paraboloid.
-LayerCounts layerCounts(const RenderSettings& s, const Scene& scene) {
+LayerCounts layerCounts(const RenderSettings& s, const Scene& scene, const std::vector<Light>& lights) {
     ShadowLayout layout(s.shadow, scene.bounds);
-    layout.assign(scene.lights);
+    layout.assign(lights);
     LayerCounts c;
     c.shadow = uint32_t(layout.layers().size());
     c.moments = layout.momentLayerCount();
     c.shadowedLights = uint32_t(layout.shadowed().size());
     const bool everyCascade = s.gi == GiMode::Rsm && s.rsm.perCascade;
     for (const ShadowedLight& l : layout.shadowed()) {
-        const Light& light = scene.lights[l.light];
+        const Light& light = lights[l.light];
         if (light.type == LightType::Point) c.rsm += s.shadow.pointMode == PointShadowMode::Cube ? l.layerCount : 0;
         else if (light.type == LightType::Directional) c.rsm += everyCascade ? l.layerCount : 1;
         else c.rsm += 1;
@@ -209,9 +209,9 @@ uint64_t hairBytesPerStrand() {
 }
 
 void checkDeviceBudget(const vk::DeviceLimits& limits, const RenderSettings& settings, const Scene& scene,
-                       bool computeRaster) {
+                       const std::vector<Light>& lights, bool computeRaster) {
     SceneGpu::checkTextureTable(limits);
-    const LayerCounts layers = layerCounts(settings, scene);
+    const LayerCounts layers = layerCounts(settings, scene, lights);
     checkDimensions(limits, settings, layers);
     std::vector<Demand> demands = frameDemands(settings, scene, layers);
     if (computeRaster) {
@@ -230,8 +230,9 @@ void checkDeviceBudget(const vk::DeviceLimits& limits, const RenderSettings& set
     checkEach(limits, demands);
 }
 
-void checkDeviceBudget(const vk::Context& ctx, const RenderSettings& settings, const Scene& scene) {
-    checkDeviceBudget(ctx.limits(), settings, scene, computeRasterFor(settings.shadow.raster, ctx.properties()));
+void checkDeviceBudget(const vk::Context& ctx, const RenderSettings& settings, const Scene& scene,
+                       const std::vector<Light>& lights) {
+    checkDeviceBudget(ctx.limits(), settings, scene, lights, computeRasterFor(settings.shadow.raster, ctx.properties()));
 }
 
 void checkBuiltinSceneBudget(const vk::DeviceLimits& limits, const FrameOptions& frame) {

@@ -15,9 +15,14 @@ namespace penumbra {
 
 // Throws std::invalid_argument. The memory check allows 90% of the largest device-local heap.
 // `computeRaster`: the compute rasterizer draws the shadow layers (its depth buffers are bound whole).
+// `lights`: the frame's lights (the scene's own, or those --light and the viewer give it).
 void checkDeviceBudget(const vk::DeviceLimits& limits, const RenderSettings& settings, const Scene& scene,
-                       bool computeRaster = false);
-void checkDeviceBudget(const vk::Context& ctx, const RenderSettings& settings, const Scene& scene);
+                       const std::vector<Light>& lights, bool computeRaster = false);
+void checkDeviceBudget(const vk::Context& ctx, const RenderSettings& settings, const Scene& scene,
+                       const std::vector<Light>& lights);
+inline void checkDeviceBudget(const vk::Context& ctx, const RenderSettings& settings, const Scene& scene) {
+    checkDeviceBudget(ctx, settings, scene, scene.lights);
+}
 
 // The built-in hair scene's `--strands`, checked before the strands are grown: their ribbon points
 // must fit one storage buffer and the device's memory.

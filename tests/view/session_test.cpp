@@ -47,6 +47,10 @@ TEST(ViewSession, SetUsesTheRenderParserAndRules) {
     EXPECT_THROW(s.set("aov", "lpv-slice"), std::invalid_argument);  // needs --gi lpv
     EXPECT_EQ(s.settings().aov, Aov::Final);                          // and nothing changed
     EXPECT_THROW(s.set("shadow-res", "8"), std::invalid_argument);    // the CLI's range
+    s.set("shadow", "vsm");
+    // The device budget, as `render` checks it: the moment maps beyond the device's allocation size.
+    EXPECT_THROW(s.set("shadow-res", "16384"), std::invalid_argument);
+    EXPECT_EQ(s.settings().shadow.resolution, 2048u);
     EXPECT_THROW(s.set("no-such-option", "1"), std::invalid_argument);
     s.set("shadow", "pcf,dsm");
     EXPECT_TRUE(s.settings().dsm.enabled);
