@@ -14,13 +14,13 @@
 //                  camera's depth unless a raster pass draws into it later); for a D32_SFLOAT target
 //                  back into the depth buffers, then:
 //   <name>.ids     layers with visibility IDs only: split depth << 32 | ID into the ID image and depth
-//   <name>.resolve a copy of the depth buffer into the D32_SFLOAT target (the camera's depth, which
-//                  raster passes test against afterwards)
-// Depth is a 32-bit atomicMin on the float bits in a storage buffer (depths in [0, 1] order like
-// their bits); layers with IDs (an RSM's, resolved from them) take a 64-bit atomicMin of
-// depth << 32 | ID, so one pass gives both, as the hardware's depth + R32_UINT colour pass does. When a bin list is full its triangle is rasterized by its setup thread: slower, never
-// wrong. See shaders/raster/*.comp; Laine & Karras (HPG 2011) for the binning, Nanite for the
-// small-triangle path.
+//   <name>.resolve a copy of the depth buffer into the D32_SFLOAT target
+// Small triangles (setup) take a 32-bit atomicMin on the float bits in a storage buffer (depths in
+// [0, 1] order like their bits); layers with IDs (an RSM's, resolved from them) a 64-bit atomicMin of
+// depth << 32 | ID, so one pass gives both, as the hardware's depth + R32_UINT colour pass does. The
+// tile pass keeps the same minimum per pixel in registers. When a bin list is full its triangle is
+// rasterized by its setup thread: slower, never wrong. See shaders/raster/; Laine & Karras (HPG 2011)
+// for the binning and the tiled fine stage, Nanite for the small-triangle path.
 #pragma once
 #include <vector>
 
