@@ -25,7 +25,7 @@ layout(set = 0, binding = 5, std430) buffer TileEntries { uvec2 tileEntries[]; }
 layout(set = 0, binding = 6, std430) buffer Counters { RasterCounters counters; };
 layout(set = 0, binding = 16, std430) buffer DepthIds { uint64_t depthIds[]; };  // per texel of the ID layers
 // Per tile of every target layer (layer-major, rows of tiles): the bin pass counts its triangles
-// (count), the scan pass places its list in the list buffer (offset), the scatter pass fills the
+// (count), the place pass puts its list in the list buffer (offset), the scatter pass fills the
 // tile's list (cursor: its fill so far). Lists hold record indices (raster/tiles.comp).
 // w: RASTER_TILE_TOUCHED where a setup thread drew into the tile (else its depth is the cleared value).
 layout(set = 0, binding = 12, std430) buffer TileBins { uvec4 tileBins[]; };  // x count, y offset, z cursor

@@ -1,6 +1,6 @@
 #version 460
 // Tile lists of the compute rasterizer (src/raster): each (triangle, tile) entry of the bin pass puts
-// its record into its tile's list, at the tile's offset (scan pass) plus a slot from the tile's cursor.
+// its record into its tile's list, at the tile's offset (place pass) plus a slot from the tile's cursor.
 // One thread per entry; the workgroups stride over the rest. Entries of triangles whose lists did
 // not fit were never written (their setup thread rasterized them): a stale one still names a record
 // of this frame in a tile of its layer (the tile pass tests its edges), and none writes past its

@@ -1,6 +1,6 @@
 // The body of raster/tiles*.comp. Fine rasterization of large triangles (src/raster): one workgroup
 // per tile of each layer drawn (z = row of the layer table), over the tile's list of triangles (bin,
-// scan and scatter passes). Each thread owns RASTER_TILE_SIZE^2 / RASTER_TILE_GROUP pixels of the
+// place and scatter passes). Each thread owns RASTER_TILE_SIZE^2 / RASTER_TILE_GROUP pixels of the
 // tile (a column, every kRowsPerPass-th row): it reads their depth once where a setup thread drew
 // into the tile (small triangles), keeps the nearest depth << 32 | ID of each in registers while it
 // walks the list, and writes them once. No atomics, no depth traffic per triangle (the tiled depth
@@ -52,7 +52,7 @@ void loadBatch(uint first, uint n) {
 // ones back into the depth buffers.
 void storePixels(uint64_t nearest[kPixels], uint64_t first[kPixels], uint index[kPixels], ivec2 origin, ivec2 size,
                  uint layer, uint idLayer) {
-    const uint kFar = 0x3F800000u;  // 1.0: an ID layer is cleared just above it (ComputeRaster::addTo)
+    const uint kFar = RASTER_FAR_BITS;  // an ID layer is cleared just above it (RASTER_ID_CLEAR_BITS)
     for (int k = 0; k < kPixels; ++k) {
         const ivec2 p = origin + ivec2(0, k * kRowsPerPass);
         if (p.y >= size.y || p.x >= size.x) continue;
@@ -85,8 +85,9 @@ void main() {
     const ivec2 lane = ivec2(int(gl_LocalInvocationIndex) % RASTER_TILE_SIZE,
                              int(gl_LocalInvocationIndex) / RASTER_TILE_SIZE);
     const ivec2 origin = tile * RASTER_TILE_SIZE + lane;
-    // The clear values (ComputeRaster::addTo): 1.0, and just above 1.0 in both halves with IDs.
-    const uint64_t cleared = idLayer != 0u ? 0x3F8000013F800001ul : uint64_t(0x3F800000u) << 32;
+    // The clear values (ComputeRaster::addTo).
+    const uint64_t cleared = idLayer != 0u ? uint64_t(RASTER_ID_CLEAR_BITS) << 32 | RASTER_ID_CLEAR_BITS
+                                           : uint64_t(RASTER_FAR_BITS) << 32;
     uint64_t nearest[kPixels];
     uint index[kPixels];
     for (int k = 0; k < kPixels; ++k) {

@@ -363,8 +363,13 @@ struct OitPush {
 #define RASTER_SETUP_GROUP 64
 #define RASTER_TILE_GROUP 256
 #define RASTER_BIN_GROUP 64
-#define RASTER_SCAN_GROUP 256
+#define RASTER_PLACE_GROUP 256
 #define RASTER_TILE_TOUCHED 0x80000000u  // tile bin flag: a setup thread drew into the tile
+// The depth buffers' clear values: 1.0 (far) in a depth layer; in each 32-bit half of an ID layer's
+// depth << 32 | ID just above 1.0, so that a triangle at exactly the far plane still writes its ID
+// (the hardware's test is LESS_OR_EQUAL) and the split reads an untouched texel as far and no ID.
+#define RASTER_FAR_BITS 0x3F800000u
+#define RASTER_ID_CLEAR_BITS 0x3F800001u
 #define RASTER_SCATTER_GROUP 256
 #define RASTER_NO_RECORD 0xFFFFFFFFu   // a tile entry whose triangle went the inline path (lists full)
 
@@ -401,7 +406,7 @@ struct RasterPush {
 // Counters of one frame's binning (cleared before setup).
 struct RasterCounters {
     uvec4 counts;    // x = triangle records taken, y = tile entries taken, z = triangles rasterized inline
-                     // because a list was full, w = tile-list entries placed (raster/scan.comp)
+                     // because a list was full, w = tile-list entries placed (raster/place.comp)
 };
 
 #ifdef __cplusplus

@@ -52,7 +52,7 @@ ComputeRaster::ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, VkExtent2D s
                                     pushBytes, table);
     bin_ = vk::ComputeKernel(ctx, "raster/bin.comp", tiles, pushBytes, table);
     scatter_ = vk::ComputeKernel(ctx, "raster/scatter.comp", tiles, pushBytes, table);
-    scan_ = vk::ComputeKernel(ctx, "raster/scan.comp", {kBuffer, kBuffer}, sizeof(gpu::uvec4));
+    place_ = vk::ComputeKernel(ctx, "raster/place.comp", {kBuffer, kBuffer}, sizeof(gpu::uvec4));
     std::vector<vk::Binding> setup = tiles;
     for (uint32_t b = 7; b <= 11; ++b) setup.push_back({b, kBuffer});  // vertices, indices, materials, layers, drawn triangles
     setup_ = vk::ComputeKernel(ctx, "raster/setup.comp", setup, pushBytes, table);
@@ -137,23 +137,20 @@ void ComputeRaster::addSetup(FrameGraph& graph, const std::string& name, BufferH
 void ComputeRaster::addTo(FrameGraph& graph, const std::string& name, ImageHandle target, BufferHandle viewRows,
                           RasterBias bias, ImageHandle ids) {
     if (idLayers_ > 0 && !ids) throw std::invalid_argument("compute raster: views with ID layers but no ID image");
-    const BufferHandle depth = graph.import(depth_), counters = graph.import(counters_),
-                       args = graph.import(dispatchArgs_), records = graph.import(records_),
-                       entries = graph.import(entries_), depthIds = graph.import(depthIds_);
     if (layerRows_ == 0) return;  // every layer cached (ShadowMapPass): nothing to clear or draw
+    const BufferHandle depth = graph.import(depth_), counters = graph.import(counters_),
+                       args = graph.import(dispatchArgs_), depthIds = graph.import(depthIds_);
     graph.pass(name + ".clear", PassKind::Transfer)
         .use(depth, Use::TransferDst)
         .use(counters, Use::TransferDst)
         .use(depthIds, Use::TransferDst)
         .use(graph.import(tileBins_), Use::TransferDst)
         .record([this](PassContext& c) {
-            vkCmdFillBuffer(c.cmd, depth_.handle(), 0, VK_WHOLE_SIZE, 0x3F800000u);  // 1.0f: far
+            vkCmdFillBuffer(c.cmd, depth_.handle(), 0, VK_WHOLE_SIZE, RASTER_FAR_BITS);
             vkCmdFillBuffer(c.cmd, counters_.handle(), 0, VK_WHOLE_SIZE, 0u);
             vkCmdFillBuffer(c.cmd, tileBins_.handle(), 0, VK_WHOLE_SIZE, 0u);
-            // Just above 1.0 in the high half (a triangle at 1.0 still writes its ID: the hardware's
-            // test is LESS_OR_EQUAL), which the split pass reads as far and no ID.
             const VkDeviceSize idBytes = layerTexels() * idLayers_ * 8;
-            if (idBytes) vkCmdFillBuffer(c.cmd, depthIds_.handle(), 0, idBytes, 0x3F800001u);
+            if (idBytes) vkCmdFillBuffer(c.cmd, depthIds_.handle(), 0, idBytes, RASTER_ID_CLEAR_BITS);
         });
     const gpu::RasterPush p = push(bias);
     addSetup(graph, name, viewRows, p);
@@ -203,7 +200,7 @@ void ComputeRaster::declareRasterSet(PassBuilder& pass, FrameGraph& graph, Buffe
         .storageBuffer(13, graph.import(tileLists_), lists);
 }
 
-// Bin (one workgroup per large triangle: its tile entries and the tiles' counts), scan (each tile's
+// Bin (one workgroup per large triangle: its tile entries and the tiles' counts), place (each tile's
 // list placed in the list buffer), scatter (each entry's record into its tile's list).
 void ComputeRaster::addTileLists(FrameGraph& graph, const std::string& name, BufferHandle viewRows,
                                  const gpu::RasterPush& p) {
@@ -223,13 +220,13 @@ void ComputeRaster::addTileLists(FrameGraph& graph, const std::string& name, Buf
             });
         if (!binning) continue;
         const gpu::uvec4 bins{binCount(), 0, 0, 0};
-        graph.pass(name + ".scan")
-            .pipeline(scan_.pipeline)
+        graph.pass(name + ".place")
+            .pipeline(place_.pipeline)
             .storageBuffer(0, graph.import(tileBins_), Use::StorageWrite)
             .storageBuffer(1, graph.import(counters_), Use::StorageWrite)
             .record([this, bins](PassContext& c) {
-                scan_.pipeline.push(c.cmd, bins);
-                vkCmdDispatch(c.cmd, vk::divUp(bins.x, RASTER_SCAN_GROUP), 1, 1);
+                place_.pipeline.push(c.cmd, bins);
+                vkCmdDispatch(c.cmd, vk::divUp(bins.x, RASTER_PLACE_GROUP), 1, 1);
             });
     }
 }

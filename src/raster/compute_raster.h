@@ -7,7 +7,7 @@
 //   <name>.args    the bin and scatter passes' indirect dispatch sizes
 //   <name>.bin     one workgroup per large triangle: which tiles of its box its edges may cover (an
 //                  entry per tile), and a count per tile
-//   <name>.scan    each tile's list placed in the list buffer (its offset)
+//   <name>.place   each tile's list placed in the list buffer (its offset)
 //   <name>.scatter one thread per entry: its triangle into its tile's list
 //   <name>.tiles   one workgroup per tile of each layer: its list against depth kept in registers,
 //                  written straight into an R32_SFLOAT target and the ID image (shadow maps, and the
@@ -86,7 +86,7 @@ private:
     Views kind_;
     uint32_t layers_, subpixelBits_;
     uint32_t recordCapacity_, entryCapacity_;
-    vk::ComputeKernel setup_, bin_, scan_, scatter_, tiles_, tilesImage_, args_, idSplit_;
+    vk::ComputeKernel setup_, bin_, place_, scatter_, tiles_, tilesImage_, args_, idSplit_;
     vk::Buffer depth_, records_, entries_, tileBins_, tileLists_, counters_, dispatchArgs_;
     vk::Image noIds_;       // the ID image of frames without ID layers (R32_SFLOAT targets)
     vk::Buffer depthIds_;     // uint64 per texel of each ID layer, grown to the most requested

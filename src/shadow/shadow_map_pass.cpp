@@ -30,8 +30,8 @@ void ShadowMapPass::assign(const std::vector<Light>& lights) {
     lights_ = lights;
     layout_.assign(lights);
     const uint32_t layers = std::max<uint32_t>(uint32_t(layout_.layers().size()), 1u);
-    // The compute rasterizer stores depth into an R32_SFLOAT map when it draws every layer: no copy
-    // into a depth format (see raster/store.comp). A raster pass into the map needs D32_SFLOAT.
+    // The compute rasterizer writes an R32_SFLOAT map itself when it draws every layer: no copy into
+    // a depth format (raster/tiles.glsl). A raster pass into the map needs D32_SFLOAT.
     const VkFormat format = useCompute_ && !hasParaboloid() && !hardwareCasters_ ? VK_FORMAT_R32_SFLOAT
                                                                                 : VK_FORMAT_D32_SFLOAT;
     const bool resized = !map_ || map_.layers() != layers || map_.format() != format;

@@ -9,7 +9,7 @@
 #extension GL_KHR_shader_subgroup_arithmetic : require
 #include "shared/types.h"
 
-layout(local_size_x = RASTER_SCAN_GROUP) in;
+layout(local_size_x = RASTER_PLACE_GROUP) in;
 layout(set = 0, binding = 0, std430) buffer TileBins { uvec4 tileBins[]; };  // x count, y offset
 layout(set = 0, binding = 1, std430) buffer Counters { RasterCounters counters; };  // w: list entries placed
 layout(push_constant) uniform Push { uvec4 bins; };                                // x = number of bins
