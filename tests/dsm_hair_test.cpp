@@ -139,8 +139,9 @@ TEST_F(GpuTest, HairOnlyGltfRenders) {
 }
 
 // After a frame of the hair scene: every list is sorted by depth, packed in consecutive nodes, at
-// most maxList long, its transmittance falls from node to node, and every neighbour link points at
-// the node of the neighbour's list with the largest depth <= the node's own.
+// most maxList long, its length stored for the binary search, its transmittance falls from node to
+// node, and (`--dsm-lookup links`) every neighbour link points at the node of the neighbour's list
+// with the largest depth <= the node's own.
 TEST_F(GpuTest, DsmListsAndLinksAreConsistent) {
     BuiltinOptions options;
     options.hairStrands = 2000;
@@ -151,13 +152,14 @@ TEST_F(GpuTest, DsmListsAndLinksAreConsistent) {
     rs.shadow.resolution = 128;
     rs.dsm.enabled = true;
     rs.dsm.maxList = 12;
+    rs.dsm.lookup = DsmLookup::Links;
     Renderer r(ctx(), s, rs);
     r.render(s.cameras[0]);
     const DsmResources& res = r.deepShadows().resources();
     const DsmFrameStats st = r.deepShadows().readStats(r.commands());
     ASSERT_EQ(st.overflow, 0u);
     const uint32_t n = res.resolution;
-    auto heads = r.commands().readBuffer(res.heads, VkDeviceSize(n) * n * 4);
+    auto heads = r.commands().readBuffer(res.heads, VkDeviceSize(n) * n * 8);  // heads, then lengths
     // The resolve packs the sorted lists after the build's nodes (dsm/resolve.comp).
     const uint64_t used = std::min<uint64_t>(st.fragments + st.kept, res.capacity);
     auto nodeBytes = r.commands().readBuffer(res.nodes, used * 16);
@@ -168,7 +170,7 @@ TEST_F(GpuTest, DsmListsAndLinksAreConsistent) {
     auto depth = [&](uint32_t i) { return glm::uintBitsToFloat(node[i].x); };
     std::vector<int64_t> owner(used, -1);
     uint64_t kept = 0;
-    size_t unsorted = 0, rising = 0, tooLong = 0, scattered = 0;
+    size_t unsorted = 0, rising = 0, tooLong = 0, scattered = 0, wrongLength = 0;
     for (uint32_t t = 0; t < n * n; ++t) {
         uint32_t len = 0;
         float lastDepth = -1e30f, lastT = 1.0f;
@@ -181,6 +183,7 @@ TEST_F(GpuTest, DsmListsAndLinksAreConsistent) {
             lastT = glm::uintBitsToFloat(node[i].y);
         }
         tooLong += len > rs.dsm.maxList;
+        wrongLength += head[n * n + t] != (head[t] == DSM_NONE ? head[n * n + t] : len);
         kept += len;
     }
     // A link from node i of texel t to texel u (DSM_NONE: u has nothing at or in front of i).
@@ -198,16 +201,74 @@ TEST_F(GpuTest, DsmListsAndLinksAreConsistent) {
         if (y + 1 < n) checkLink(i, up[i], t + n);
     }
     std::printf("[dsm lists] %llu nodes in %llu lists (longest %u before the cap of %u): %zu unsorted, %zu "
-                "transmittance rises, %zu too long, %zu nodes not followed by their list's next; %zu of %zu links "
-                "wrong\n",
+                "transmittance rises, %zu too long, %zu wrong lengths, %zu nodes not followed by their list's next; "
+                "%zu of %zu links wrong\n",
                 (unsigned long long)kept, (unsigned long long)st.lists, st.longest, rs.dsm.maxList, unsorted, rising,
-                tooLong, scattered, badLinks, links);
+                tooLong, wrongLength, scattered, badLinks, links);
     EXPECT_EQ(kept, st.kept);
     EXPECT_GT(st.longest, rs.dsm.maxList);  // the cap was exercised
-    EXPECT_EQ(unsorted + rising + tooLong, 0u);
+    EXPECT_EQ(unsorted + rising + tooLong + wrongLength, 0u);
     EXPECT_EQ(scattered, 0u);
     EXPECT_GT(links, 1000u);
     EXPECT_EQ(badLinks, 0u);
+}
+
+// The binary-search lookup (default) finds the same node in every tap as the walk through the
+// neighbour links: bit-equal images from the lighting pass (hair opaque in the G-buffer) and the
+// translucency composite, for bilinear taps, the default 3x3 and a 5x5 kernel (searched tap after
+// tap), with the pool roomy (every list packed) and tight (some lists left in place and walked).
+TEST_F(GpuTest, DsmSearchLookupEqualsTheLinkWalk) {
+    BuiltinOptions options;
+    options.hairStrands = 2000;
+    const Scene s = makeBuiltinScene("hair", options);
+    size_t inPlace = 0;  // lists the resolve left in place (length 0: not packed)
+    auto render = [&](DsmLookup lookup, float width, uint64_t pool, bool translucency, DsmFrameStats* stats) {
+        RenderSettings rs;
+        rs.width = 96;
+        rs.height = 72;
+        rs.shadow.resolution = 128;
+        rs.gi = GiMode::None;
+        rs.dsm.enabled = true;
+        rs.dsm.maxList = 24;
+        rs.dsm.lookup = lookup;
+        rs.dsm.filterWidth = width;
+        rs.dsm.poolNodes = pool;
+        rs.translucency = translucency;
+        rs.aov = translucency ? Aov::Final : Aov::Direct;
+        Renderer r(ctx(), s, rs);
+        r.render(s.cameras[0]);
+        if (stats) *stats = r.deepShadows().readStats(r.commands());
+        const DsmResources& res = r.deepShadows().resources();
+        const uint32_t texels = res.resolution * res.resolution;
+        const std::vector<uint8_t> bytes = r.commands().readBuffer(res.heads, VkDeviceSize(texels) * 8);
+        const auto* heads = reinterpret_cast<const uint32_t*>(bytes.data());
+        for (uint32_t t = 0; t < texels; ++t) inPlace += heads[t] != DSM_NONE && heads[texels + t] == 0;
+        return r.readHdr();
+    };
+    DsmFrameStats roomy;
+    render(DsmLookup::Links, 1.0f, 0, false, &roomy);
+    const uint64_t tight = roomy.fragments + roomy.kept / 2;  // room for about half the packed lists
+    size_t compared = 0, differing = 0, lit = 0;
+    for (uint64_t pool : {uint64_t(0), tight})
+        for (float width : {0.0f, 1.0f, 3.0f})
+            for (bool translucency : {false, true}) {
+                DsmFrameStats st;
+                const std::vector<float> links = render(DsmLookup::Links, width, pool, translucency, &st);
+                const std::vector<float> search = render(DsmLookup::Search, width, pool, translucency, nullptr);
+                ASSERT_EQ(st.overflow, 0u);
+                ASSERT_EQ(links.size(), search.size());
+                for (size_t i = 0; i < links.size(); ++i) {
+                    differing += links[i] != search[i];
+                    lit += links[i] > 0.0f;
+                }
+                compared += links.size();
+            }
+    std::printf("[dsm search] %zu values compared (%zu lit), %zu differ; tight pool %llu nodes for %llu fragments, "
+                "%zu lists walked in place\n",
+                compared, lit, differing, (unsigned long long)tight, (unsigned long long)roomy.fragments, inPlace);
+    EXPECT_GT(lit, compared / 8);
+    EXPECT_GT(inPlace, 100u);
+    EXPECT_EQ(differing, 0u);
 }
 
 // Shadow visibility (opaque map x DSM transmittance) of the hair's own pixels: with a DSM a large

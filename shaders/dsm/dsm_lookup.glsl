@@ -44,6 +44,75 @@ float dsmTapWeight(float s, float width, int i) {
     return (dsmTentCdf(s + 0.5 * width - c) - dsmTentCdf(s - 0.5 * width - c)) / width;
 }
 
+// Binary search (--dsm-lookup search): each tap finds its place in its texel's packed list on its
+// own, all taps of the kernel in lockstep, so that their reads are in flight together (a walk through
+// the neighbour links chains every tap's reads behind the previous tap's). At most
+// DSM_SEARCH_TAPS taps (a 4x4 kernel: widths up to 2 texels); wider kernels search tap after tap.
+#define DSM_SEARCH_TAPS 16
+
+// Transmittance in front of depth d in the list of `texel` (1 for an empty list).
+float dsmSearchOne(uint texel, uint lengths, float d) {
+    uint first = dsmHeads[texel];
+    if (first == DSM_NONE) return 1.0;
+    uint length = dsmHeads[lengths + texel];
+    if (length == 0u) return dsmTransmittanceOf(dsmFind(texel, d, DSM_NONE));  // not packed: walk it
+    uint before = 0u;  // nodes with depth <= d
+    while (length > 0u) {
+        uint half_ = length / 2u;
+        bool ahead = dsmNodeDepth(first + before + half_) <= d;
+        before = ahead ? before + half_ + 1u : before;
+        length = ahead ? length - half_ - 1u : half_;
+    }
+    return before == 0u ? 1.0 : uintBitsToFloat(dsmNodes[first + before - 1u].y);
+}
+
+// The weighted sum of the taps' transmittance over [lo, hi] (taps outside the map cast nothing).
+float dsmSearchKernel(uint base, uint lengths, int res, ivec2 lo, ivec2 hi, vec2 s, float width, float d) {
+    const int nx = hi.x - lo.x + 1, taps = nx * (hi.y - lo.y + 1);
+    float sum = 0.0;
+    if (taps > DSM_SEARCH_TAPS) {
+        for (int y = lo.y; y <= hi.y; ++y)
+            for (int x = lo.x; x <= hi.x; ++x) {
+                bool inside = x >= 0 && y >= 0 && x < res && y < res;
+                float t = inside ? dsmSearchOne(base + uint(y * res + x), lengths, d) : 1.0;
+                sum += dsmTapWeight(s.y, width, y) * dsmTapWeight(s.x, width, x) * t;
+            }
+        return sum;
+    }
+    uint first[DSM_SEARCH_TAPS], length[DSM_SEARCH_TAPS], before[DSM_SEARCH_TAPS];
+    [[unroll]] for (int k = 0; k < DSM_SEARCH_TAPS; ++k) {
+        const ivec2 t = lo + ivec2(k % nx, k / nx);
+        const bool inside = k < taps && all(greaterThanEqual(t, ivec2(0))) && all(lessThan(t, ivec2(res)));
+        const uint texel = base + uint(t.y * res + t.x);
+        first[k] = inside ? dsmHeads[texel] : DSM_NONE;
+        length[k] = first[k] != DSM_NONE ? dsmHeads[lengths + texel] : 0u;
+        before[k] = 0u;
+        if (first[k] != DSM_NONE && length[k] == 0u) {  // not packed (pool full): walk it
+            uint n = dsmFind(texel, d, DSM_NONE);
+            first[k] = n;
+            before[k] = n == DSM_NONE ? 0u : 1u;
+        }
+    }
+    for (bool searching = true; searching;) {
+        searching = false;
+        [[unroll]] for (int k = 0; k < DSM_SEARCH_TAPS; ++k) {
+            if (length[k] == 0u) continue;
+            const uint half_ = length[k] / 2u;
+            const bool ahead = dsmNodeDepth(first[k] + before[k] + half_) <= d;
+            before[k] = ahead ? before[k] + half_ + 1u : before[k];
+            length[k] = ahead ? length[k] - half_ - 1u : half_;
+            searching = searching || length[k] > 0u;
+        }
+    }
+    [[unroll]] for (int k = 0; k < DSM_SEARCH_TAPS; ++k) {
+        if (k >= taps) break;
+        const ivec2 t = lo + ivec2(k % nx, k / nx);
+        const float tk = before[k] == 0u ? 1.0 : uintBitsToFloat(dsmNodes[first[k] + before[k] - 1u].y);
+        sum += dsmTapWeight(s.y, width, t.y) * dsmTapWeight(s.x, width, t.x) * tk;
+    }
+    return sum;
+}
+
 // Deep opacity map (--shadow dom): transmittance at depth d in `texel`: exp of minus the optical
 // depth of the layers in front of d, the layer d lies in counted in proportion (the linear
 // interpolation between layer boundaries of Yuksel & Keyser 2008).
@@ -85,6 +154,7 @@ float deepShadowTransmittance(uint lightIndex, vec3 p, vec3 n, bool hair) {
                        (domTransmittance(base + uint(y * res + x), d, dsm.opacity.y) - 1.0);
         return clamp(1.0 + sum, 0.0, 1.0);  // taps outside the map cast nothing (1 - 1 = 0 there)
     }
+    if (dsm.opacity.w > 0.5) return min(dsmSearchKernel(base, floatBitsToUint(dsm.opacity.z), res, lo, hi, s, width, d), 1.0);
     uint rowHint = DSM_NONE;  // the upper link of the previous row's first node
     for (int y = lo.y; y <= hi.y; ++y) {
         float wy = dsmTapWeight(s.y, width, y);

@@ -7,8 +7,10 @@
 // The sorted nodes are written packed: a workgroup's lists (an 8x8 tile of texels) side by side in
 // the pool after the build's nodes, each list in consecutive nodes, so that the link pass and every
 // lookup walk memory in order (the lookups of the camera's hair layers walked scattered nodes: most
-// of oit.composite on the H100). The head then points at the packed list. When the pool has no room
-// left for a tile, its lists are written back in place into their own first nodes instead.
+// of oit.composite on the H100). The head then points at the packed list, and the list's length goes
+// to the second half of the heads buffer (heads[texels + texel]) for the lookups' binary search.
+// When the pool has no room left for a tile, its lists are written back in place into their own
+// first nodes instead, with length 0 (not packed: a lookup walks them).
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
 
@@ -64,6 +66,7 @@ void main() {
     barrier();
     if (head != DSM_NONE) {
         writeList(texel, head, count, groupPacked == DSM_NONE ? DSM_NONE : groupPacked + offset);
+        heads[res * res * pc.sizes.y + texel] = groupPacked == DSM_NONE ? 0u : count;
         atomicAdd(groupDropped, length - count);
         atomicMax(groupLongest, length);
         atomicAdd(groupLists, 1u);

@@ -2,6 +2,7 @@
 // Deferred direct lighting: one thread per pixel, every light, shadow visibility from the mask.
 // Lambertian: L_o = albedo / pi * sum_lights E_light * max(0, n.l) * visibility.
 #extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_control_flow_attributes : require
 #include "shared/types.h"
 #include "render/lights.glsl"
 #include "render/reconstruct.glsl"

@@ -21,6 +21,9 @@ void addDsmOptions(CLI::App& cmd, DsmSettings& dsm, BuiltinOptions& scene) {
     cmd.add_option("--dsm-filter", dsm.filterWidth, "DSM PCF box width in texels (default 1; 0 = bilinear)")
         ->check(finiteRange(0.0, 8.0));
     cmd.add_option("--dsm-depth-test", dsm.depthTest, "Skip DSM fragments hidden behind opaque casters on/off");
+    addChoice<DsmLookup>(cmd, "--dsm-lookup", dsm.lookup, {{"search", DsmLookup::Search}, {"links", DsmLookup::Links}},
+                         "How a DSM lookup finds its place in each filter tap's list: binary search in the packed "
+                         "list, every tap at once, or a walk through the neighbour links from the previous tap");
     cmd.add_option("--dsm-bias", dsm.depthBias, "DSM receiver depth bias in texels")
         ->check(finiteRange(0.0, 64.0));
 }

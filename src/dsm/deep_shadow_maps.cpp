@@ -74,7 +74,7 @@ DeepShadowMaps::DeepShadowMaps(vk::Allocator& alloc, SceneGpu& scene, const Hair
         return;
     }
     build_ = std::make_unique<DeepShadowBuildPass>(alloc, scene, hair, *res_, settings.depthTest, computeHair);
-    resolve_ = std::make_unique<DeepShadowResolvePass>(alloc, *res_);
+    resolve_ = std::make_unique<DeepShadowResolvePass>(alloc, *res_, settings.lookup == DsmLookup::Links);
 }
 
 void DeepShadowMaps::update(const std::vector<Light>& lights, const Bounds& bounds, uint32_t slot) {

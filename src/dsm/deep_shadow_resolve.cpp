@@ -2,7 +2,8 @@
 
 namespace penumbra {
 
-DeepShadowResolvePass::DeepShadowResolvePass(vk::Allocator& alloc, DsmResources& res) : alloc_(alloc), res_(res) {
+DeepShadowResolvePass::DeepShadowResolvePass(vk::Allocator& alloc, DsmResources& res, bool links)
+    : alloc_(alloc), res_(res), links_(links) {
     const std::vector<VkDescriptorType> three(3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER);
     resolve_ = vk::ComputeKernel(alloc.context(), "dsm/resolve.comp", three, sizeof(gpu::DsmPush));
     link_ = vk::ComputeKernel(alloc.context(), "dsm/link.comp", three, sizeof(gpu::DsmPush));
@@ -26,7 +27,7 @@ void DeepShadowResolvePass::addDispatch(FrameGraph& graph, const char* name, con
 
 void DeepShadowResolvePass::addTo(FrameGraph& graph) {
     addDispatch(graph, "dsm.resolve", resolve_, res_.stats);
-    addDispatch(graph, "dsm.link", link_, res_.upLinks);
+    if (links_) addDispatch(graph, "dsm.link", link_, res_.upLinks);
 }
 
 }  // namespace penumbra

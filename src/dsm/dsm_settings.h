@@ -5,6 +5,11 @@
 
 namespace penumbra {
 
+// How a lookup finds a receiver's place in a texel's sorted list: by binary search in the packed
+// list (each tap on its own), or by walking from the neighbouring tap's node through the resolve's
+// neighbour links (Lokovic & Veach's lists as GPU Pro 4 links them; needs the dsm.link pass).
+enum class DsmLookup { Search, Links };
+
 struct DsmSettings {
     bool enabled = false;          // `--shadow dsm` or `dom`: hair and blended meshes cast through a DSM
     // `--shadow dom`: Deep Opacity Maps (Yuksel & Keyser 2008) instead of the lists, for comparison:
@@ -23,6 +28,7 @@ struct DsmSettings {
     // conservative neighbourhood test costs more build time (+8.7 ms at 25k strands) than the 27%
     // fewer nodes save in the resolve (-0.8 ms); README, "Depth-tested build".
     bool depthTest = false;
+    DsmLookup lookup = DsmLookup::Search;  // `--dsm-lookup`
 
     // 16 per texel: 100k strands of the hair scene make 29M light-space fragments at 2048^2 (7 per
     // texel) before the depth test; 67M nodes are 1.3 GiB, which an H100 holds easily. Smaller devices

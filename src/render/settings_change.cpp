@@ -78,6 +78,7 @@ std::vector<SettingsOption> makeTable() {
         // The DSM's lookup table is written once when its buffers are made: these rebuild it.
         option("--dsm-max-list", kStructure, kPartDsm, [](S s) { return s.dsm.maxList; }),
         option("--dsm-filter", kStructure, kPartDsm, [](S s) { return s.dsm.filterWidth; }),
+        option("--dsm-lookup", kStructure, kPartDsm, [](S s) { return s.dsm.lookup; }),
         option("--dsm-bias", kStructure, kPartDsm,
                [](S s) { return std::make_pair(s.dsm.depthBias, s.dsm.normalOffset); }),
     };
