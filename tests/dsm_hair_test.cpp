@@ -163,7 +163,7 @@ TEST_F(GpuTest, DsmListsAndLinksAreConsistent) {
     // The resolve packs the sorted lists after the build's nodes (dsm/resolve.comp).
     const uint64_t used = std::min<uint64_t>(st.fragments + st.kept, res.capacity);
     auto nodeBytes = r.commands().readBuffer(res.nodes, used * 16);
-    auto upBytes = r.commands().readBuffer(res.upLinks, used * 4);
+    auto upBytes = r.commands().readBuffer(res.side, used * 4);
     const auto* head = reinterpret_cast<const uint32_t*>(heads.data());
     const auto* node = reinterpret_cast<const glm::uvec4*>(nodeBytes.data());
     const auto* up = reinterpret_cast<const uint32_t*>(upBytes.data());

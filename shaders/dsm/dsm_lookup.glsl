@@ -9,7 +9,8 @@
 layout(set = 0, binding = 8, std430) readonly buffer DsmLights { GpuDsmLight dsmLights[]; };
 layout(set = 0, binding = 9, std430) readonly buffer DsmHeads { uint dsmHeads[]; };
 layout(set = 0, binding = 10, std430) readonly buffer DsmNodes { uvec4 dsmNodes[]; };
-layout(set = 0, binding = 11, std430) readonly buffer DsmUpLinks { uint dsmUpLinks[]; };
+// The side buffer: per node its upper link (--dsm-lookup links) or, packed, its depth (search).
+layout(set = 0, binding = 11, std430) readonly buffer DsmSide { uint dsmSide[]; };
 
 float dsmNodeDepth(uint n) { return uintBitsToFloat(dsmNodes[n].x); }
 float dsmTransmittanceOf(uint n) { return n == DSM_NONE ? 1.0 : uintBitsToFloat(dsmNodes[n].y); }
@@ -59,7 +60,7 @@ float dsmSearchOne(uint texel, uint lengths, float d) {
     uint before = 0u;  // nodes with depth <= d
     while (length > 0u) {
         uint half_ = length / 2u;
-        bool ahead = dsmNodeDepth(first + before + half_) <= d;
+        bool ahead = uintBitsToFloat(dsmSide[first + before + half_]) <= d;
         before = ahead ? before + half_ + 1u : before;
         length = ahead ? length - half_ - 1u : half_;
     }
@@ -98,7 +99,7 @@ float dsmSearchKernel(uint base, uint lengths, int res, ivec2 lo, ivec2 hi, vec2
         [[unroll]] for (int k = 0; k < DSM_SEARCH_TAPS; ++k) {
             if (length[k] == 0u) continue;
             const uint half_ = length[k] / 2u;
-            const bool ahead = dsmNodeDepth(first[k] + before[k] + half_) <= d;
+            const bool ahead = uintBitsToFloat(dsmSide[first[k] + before[k] + half_]) <= d;
             before[k] = ahead ? before[k] + half_ + 1u : before[k];
             length[k] = ahead ? length[k] - half_ - 1u : half_;
             searching = searching || length[k] > 0u;
@@ -166,7 +167,7 @@ float deepShadowTransmittance(uint lightIndex, vec3 p, vec3 n, bool hair) {
             if (x == lo.x) rowStart = node;
             hint = node == DSM_NONE ? DSM_NONE : dsmNodes[node].w;
         }
-        rowHint = rowStart == DSM_NONE ? DSM_NONE : dsmUpLinks[rowStart];
+        rowHint = rowStart == DSM_NONE ? DSM_NONE : dsmSide[rowStart];
     }
     return min(sum, 1.0);  // the weights sum to 1 up to rounding
 }

@@ -10,7 +10,7 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = 0, std430) readonly buffer Heads { uint heads[]; };
 layout(set = 0, binding = 1, std430) buffer Nodes { uvec4 nodes[]; };
-layout(set = 0, binding = 2, std430) writeonly buffer UpLinks { uint upLinks[]; };
+layout(set = 0, binding = 2, std430) writeonly buffer UpLinks { uint upLinks[]; };  // the side buffer
 layout(push_constant) uniform Push { DsmPush pc; };
 
 float depthOf(uint n) { return uintBitsToFloat(nodes[n].x); }

@@ -8,7 +8,8 @@
 // the pool after the build's nodes, each list in consecutive nodes, so that the link pass and every
 // lookup walk memory in order (the lookups of the camera's hair layers walked scattered nodes: most
 // of oit.composite on the H100). The head then points at the packed list, and the list's length goes
-// to the second half of the heads buffer (heads[texels + texel]) for the lookups' binary search.
+// to the second half of the heads buffer (heads[texels + texel]) and its depths to the side buffer
+// (one uint per node, the depths alone: a binary search touches 4 bytes a step, not a node's 16).
 // When the pool has no room left for a tile, its lists are written back in place into their own
 // first nodes instead, with length 0 (not packed: a lookup walks them).
 #extension GL_GOOGLE_include_directive : require
@@ -18,6 +19,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = 0, std430) buffer Heads { uint heads[]; };
 layout(set = 0, binding = 1, std430) buffer Nodes { uvec4 nodes[]; };
 layout(set = 0, binding = 2, std430) buffer Stats { DsmStats stats; };
+layout(set = 0, binding = 3, std430) writeonly buffer Keys { uint keys[]; };  // the side buffer
 layout(push_constant) uniform Push { DsmPush pc; };
 
 shared uint groupKept, groupDropped, groupLongest, groupLists, groupPacked;
@@ -36,6 +38,7 @@ void writeList(uint texel, uint head, uint count, uint first) {
         uint next = first == DSM_NONE ? nodes[n].z : n + 1;
         t *= 1.0 - clamp(sorted[i].y, 0.0, 1.0);
         nodes[n] = uvec4(floatBitsToUint(sorted[i].x), floatBitsToUint(t), i + 1 < count ? next : DSM_NONE, DSM_NONE);
+        if (first != DSM_NONE) keys[n] = floatBitsToUint(sorted[i].x);
         n = next;
     }
 }

@@ -94,7 +94,7 @@ void DeepShadowMaps::addTo(FrameGraph& graph) {
     graph.publish("dsm.lights", graph.import(res_->lightTable.current()));
     graph.publish("dsm.heads", graph.import(res_->heads));
     graph.publish("dsm.nodes", graph.import(res_->nodes));
-    graph.publish("dsm.links", graph.import(res_->upLinks));
+    graph.publish("dsm.side", graph.import(res_->side));
     if (!active()) return;
     if (opacity_) {
         opacity_->addTo(graph);

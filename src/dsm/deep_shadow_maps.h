@@ -46,7 +46,7 @@ public:
     // Whether light `light` has a DSM: its translucent casters then stay out of its ordinary map.
     bool covers(uint32_t light) const;
     // The build and resolve passes (when active), and the lookup's inputs by name (placeholders when
-    // inactive): "dsm.lights", "dsm.heads", "dsm.nodes", "dsm.links".
+    // inactive): "dsm.lights", "dsm.heads", "dsm.nodes", "dsm.side".
     void addTo(FrameGraph& graph);
 
     DsmFrameStats readStats(vk::CommandContext& cmd) const;

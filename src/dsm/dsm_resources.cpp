@@ -66,7 +66,7 @@ DsmResources::DsmResources(vk::Allocator& alloc, const DsmSettings& settings, ui
     if (!layers.empty()) checkFits(alloc.context(), capacity, texels * 8);  // an explicit --dsm-nodes may not fit
     heads = vk::Buffer(alloc, layers.empty() ? 4 : texels * 8, cleared, false, "dsm-heads");  // heads, then lengths
     nodes = vk::Buffer(alloc, capacity * 16, cleared, false, "dsm-nodes");
-    upLinks = vk::Buffer(alloc, opacityMaps ? 4 : capacity * 4, cleared, false, "dsm-up-links");  // DOM: no links
+    side = vk::Buffer(alloc, opacityMaps ? 4 : capacity * 4, cleared, false, "dsm-side");  // DOM: unused
     stats = vk::Buffer(alloc, sizeof(gpu::DsmStats), cleared, false, "dsm-stats");
 
     views = vk::BufferRing(alloc, std::max<size_t>(layers.size(), 1) * sizeof(glm::mat4), storage, "dsm-views");

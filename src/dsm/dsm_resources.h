@@ -1,9 +1,10 @@
 // The GPU memory the deep-shadow-map passes and the lookup share, and how it is sized.
 //
 // Layout: a head pointer per texel (uint, DSM_NONE = empty list) for every DSM layer (one layer per
-// light with a DSM); one node pool for all layers, a uvec4 per node (depth, alpha -> transmittance,
-// next, right-neighbour link: see shared/types.h) plus a uint per node for the upper-neighbour link;
-// one atomic counter that allocates nodes. The pool is allocated once at its full capacity; a frame
+// light with a DSM), then each texel's packed list length; one node pool for all layers, a uvec4 per
+// node (depth, alpha -> transmittance, next, right-neighbour link: see shared/types.h) plus a side
+// uint per node: its depth again, packed, as the binary search's key (`--dsm-lookup search`), or its
+// upper-neighbour link (`links`); one atomic counter that allocates nodes. The pool is allocated once at its full capacity; a frame
 // uses the first `fragments` nodes.
 #pragma once
 #include <string>
@@ -36,10 +37,10 @@ struct DsmResources {
     vk::BufferRing lightTable;  // GpuDsmLight per scene light, then per cube face, per frame slot
     vk::Buffer heads;       // uint per texel and layer
     vk::Buffer nodes;       // uvec4 per node
-    vk::Buffer upLinks;     // uint per node
+    vk::Buffer side;        // uint per node: search key (depth bits) or upper link
     vk::Buffer stats;       // DsmStats
 
-    static constexpr VkDeviceSize kNodeBytes = 16 + 4;  // node + upper link
+    static constexpr VkDeviceSize kNodeBytes = 16 + 4;  // node + side
     size_t lightCount_ = 1;
 
     // Allocates every buffer and writes the tables of every slot. Throws vk::VulkanError with a clear message
@@ -50,7 +51,7 @@ struct DsmResources {
     uint32_t layerCount() const { return uint32_t(layers.size()); }
     // Writes frame slot `slot`'s tables from the layers' current projections.
     void writeTables(const DsmSettings& settings, uint32_t slot);
-    VkDeviceSize poolBytes() const { return nodes.size() + upLinks.size(); }
+    VkDeviceSize poolBytes() const { return nodes.size() + side.size(); }
     VkDeviceSize headBytes() const { return heads.size(); }
 };
 

@@ -46,7 +46,7 @@ void LightingPass::addTo(FrameGraph& graph) {
         .storageBuffer(8, graph.buffer("dsm.lights"))
         .storageBuffer(9, graph.buffer("dsm.heads"))
         .storageBuffer(10, graph.buffer("dsm.nodes"))
-        .storageBuffer(11, graph.buffer("dsm.links"))
+        .storageBuffer(11, graph.buffer("dsm.side"))
         .storageBuffer(12, graph.buffer("probe"), Use::StorageWrite)
         .record([out](PassContext& c) {
             const vk::Image& image = c.image(out);
