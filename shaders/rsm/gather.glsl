@@ -166,7 +166,9 @@ vec3 bilinearVplIrradiance(vec2 uv, int res, uint layer, vec3 x, vec3 n, bool ha
     return e;
 }
 
-vec3 gather(vec3 x, vec3 n, bool hair) {
+// `lane` of `lanes` invocations that share the receiver: each sums its share of the samples (or
+// texels) and main() adds the lanes' sums.
+vec3 gather(vec3 x, vec3 n, bool hair, uint lane, uint lanes) {
     vec3 e = vec3(0.0);
     const int res = int(pc.sizes.z);
     uint usedCascadeLight = 0xFFFFFFFFu;
@@ -180,14 +182,14 @@ vec3 gather(vec3 x, vec3 n, bool hair) {
             usedCascadeLight = uint(L.params.z);
         }
         if (pc.mode.x == RSM_GATHER_ALL_TEXELS) {
-            for (int ty = 0; ty < res; ++ty)
-                for (int tx = 0; tx < res; ++tx) {
-                    vec3 c = vplIrradiance(ivec2(tx, ty), layer, x, n, hair);
+            for (uint k = lane; k < uint(res * res); k += lanes) {
+                const ivec2 t = ivec2(k % uint(res), k / uint(res));
+                vec3 c = vplIrradiance(t, layer, x, n, hair);
 #ifdef RSM_VOXEL_VISIBILITY
-                    if (any(greaterThan(c, vec3(0.0)))) c *= voxelVisibility(layer, ivec2(tx, ty), x, n, hair);
+                if (any(greaterThan(c, vec3(0.0)))) c *= voxelVisibility(layer, t, x, n, hair);
 #endif
-                    e += c;
-                }
+                e += c;
+            }
             continue;
         }
         vec2 st;
@@ -200,7 +202,11 @@ vec3 gather(vec3 x, vec3 n, bool hair) {
         const uint stride = max(pc.mode.y / max(pc.sampling.y, 1u), 1u) | 1u;  // odd: both discs' samples
         vec3 layerLight = vec3(0.0);
         vec2 tested = vec2(0.0);  // luminance of the tested samples' light: all of it, the visible part
-        for (uint i = 0; i < pc.mode.y; ++i) {
+        // A lane takes a run of consecutive samples, of even length: the pattern alternates its two
+        // discs, and lanes that stepped by `lanes` would split a warp between near samples and far
+        // ones (which alone test visibility) at every step.
+        const uint run = (pc.mode.y + 2u * lanes - 1u) / (2u * lanes) * 2u;
+        for (uint i = lane * run, end = min(i + run, pc.mode.y); i < end; ++i) {
 #ifdef RSM_SHIFTED_RADII
             vec4 s = patternSample(i, pattern.shift);
 #else
@@ -225,27 +231,48 @@ vec3 gather(vec3 x, vec3 n, bool hair) {
     return e;
 }
 
+// Receivers share out their samples: `lanes` (push sampling.w: 1, 2, 4 or 8) invocations of a
+// workgroup per receiver, each summing every lanes-th sample, their sums added in shared memory. The
+// fallback list is a few percent of the pixels: one invocation each left most of the H100's SMs
+// waiting on memory (its per-pixel cost was 4x the low-res pass's). The voxel pipeline keeps one lane:
+// its visible share is a ratio per receiver and layer.
+shared vec3 laneSums[64];
+
 void main() {
-    ivec2 out_ = ivec2(gl_GlobalInvocationID.xy);
-    ivec2 pixel = out_;
+    const uint lanes = max(pc.sampling.w, 1u), local = gl_LocalInvocationIndex, lane = local % lanes;
+    const uint receiver = local / lanes, perGroup = 64u / lanes;
+    ivec2 out_;
+    bool valid;
     if (pc.mode.x == RSM_GATHER_LIST) {
-        uint index = gl_GlobalInvocationID.x + gl_GlobalInvocationID.y * gl_NumWorkGroups.x * 8u;
-        if (index >= list.header.x) return;
-        pixel = out_ = ivec2(list.pixels[index]);
-    } else {
-        if (any(greaterThanEqual(out_, ivec2(pc.sizes.xy)))) return;
-        if (pc.mode.x == RSM_GATHER_LOWRES)  // the cell's representative (centre) full-res pixel
-            pixel = min(out_ * int(pc.mode.w) + int(pc.mode.w) / 2, ivec2(frame.size.xy) - 1);
+        const uint group = gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x;
+        const uint index = group * perGroup + receiver;
+        valid = index < list.header.x;
+        out_ = valid ? ivec2(list.pixels[index]) : ivec2(0);
+    } else {  // a workgroup covers 8 x (8 / lanes) receivers
+        out_ = ivec2(gl_WorkGroupID.xy) * ivec2(8, perGroup / 8u) + ivec2(receiver % 8u, receiver / 8u);
+        valid = all(lessThan(out_, ivec2(pc.sizes.xy)));
     }
-    float depth = texelFetch(gDepth, pixel, 0).r;
+    ivec2 pixel = out_;
+    if (pc.mode.x == RSM_GATHER_LOWRES)  // the cell's representative (centre) full-res pixel
+        pixel = min(out_ * int(pc.mode.w) + int(pc.mode.w) / 2, ivec2(frame.size.xy) - 1);
     vec3 e = vec3(0.0);
+    float depth = valid ? texelFetch(gDepth, pixel, 0).r : 1.0;
     if (depth < 1.0) {
         vec3 x = pixelWorldPosition(frame, pixel, depth);
         vec4 g = texelFetch(gNormal, pixel, 0);
         vec3 n = normalize(g.xyz);
         bool hair = g.w > 1.5;  // SHADING_HAIR (--translucency off): n is the strand's tangent
         if (!hair && dot(n, frame.cameraPos.xyz - x) < 0.0) n = -n;
-        e = gather(x, n, hair);
+        e = gather(x, n, hair, lane, lanes);
     }
-    imageStore(outIrradiance, out_, vec4(e, 1.0));
+    if (lanes > 1u) {
+        laneSums[local] = e;
+        barrier();
+        for (uint step = lanes / 2u; step > 0u; step /= 2u) {
+            if (lane < step) laneSums[local] += laneSums[local + step];
+            barrier();
+        }
+        e = laneSums[local];
+    }
+    if (valid && lane == 0u) imageStore(outIrradiance, out_, vec4(e, 1.0));
 }

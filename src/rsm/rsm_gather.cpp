@@ -17,6 +17,16 @@ constexpr VkFormat kIrradianceFormat = VK_FORMAT_R32G32B32A32_SFLOAT;  // exact 
 // (rsm/gather.glsl, patternSample), xi1 shifted per receiver with --rsm-radii shifted.
 constexpr float kWholeMapRadius = 1.41421356f;
 
+// Invocations per receiver (rsm/gather.glsl main). The low-resolution grid (130k receivers at 1080p)
+// and the fallback list (a few percent of the pixels) are too few threads, one per receiver, to hide
+// the samples' memory latency on a large GPU. H100, 1080p, 4 lanes against 1 (bench/hair_v11.sh):
+// low-res 0.60 -> 0.43 ms (cornell), 0.53 -> 0.46 (Sponza), 0.50 -> 0.48 (VC); fallback 0.35 -> 0.19,
+// 0.90 -> 0.83, 0.70 -> 0.63. 8 lanes: no better (VC, Sponza) or little (cornell). The full-resolution
+// gather has receivers enough.
+uint32_t lanesPerReceiver(uint32_t mode) {
+    return mode == RSM_GATHER_LIST || mode == RSM_GATHER_LOWRES ? 4u : 1u;
+}
+
 }  // namespace
 
 // Two vec4 per sample, in two runs of N: first its offset (uv, for r_max), weight (texels) and 1
@@ -59,7 +69,7 @@ RsmGather::RsmGather(vk::Allocator& alloc, vk::CommandContext& cmd, uint32_t wid
                                 {ubo, tex, tex, tex, tex, tex, ssbo, ssbo, img, ssbo, ssbo},
                                 sizeof(gpu::RsmPush));
     interpolate_ = vk::ComputeKernel(ctx, "rsm/interpolate.comp", {ubo, tex, tex, tex, img, ssbo}, sizeof(gpu::RsmPush));
-    args_ = vk::ComputeKernel(ctx, "rsm/list_args.comp", {ssbo, ssbo}, 0);
+    args_ = vk::ComputeKernel(ctx, "rsm/list_args.comp", {ssbo, ssbo}, sizeof(uint32_t));
     pointSampler_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
 
     const uint32_t f = std::max(1u, settings.lowResFactor);
@@ -105,10 +115,11 @@ void RsmGather::setSettings(const RsmSettings& s) {
 // for RSM_GATHER_LOWRES (which the interpolation reads), the full image's otherwise.
 gpu::RsmPush RsmGather::constants(uint32_t mode, uint32_t layers) const {
     const bool low = mode == RSM_GATHER_LOWRES;
+    const uint32_t lanes = settings_.visibility == RsmVisibility::Voxels ? 1u : lanesPerReceiver(mode);
     return {{mode, settings_.samples, layers, std::max(1u, settings_.lowResFactor)},
             {low ? lowWidth_ : width_, low ? lowHeight_ : height_, settings_.resolution, settings_.bilinearVpls ? 1u : 0u},
             {settings_.normalThreshold, settings_.distanceThreshold, settings_.radius, 0},
-            {visibilityMode(), settings_.visibilityRays, settings_.weights == RsmWeights::Paper ? 1u : 0u, 0}};
+            {visibilityMode(), settings_.visibilityRays, settings_.weights == RsmWeights::Paper ? 1u : 0u, lanes}};
 }
 
 uint32_t RsmGather::visibilityMode() const {
@@ -141,7 +152,7 @@ void RsmGather::addGather(FrameGraph& graph, const char* name, uint32_t mode, Im
     pass.record([this, pc, args](PassContext& c) {
         gather_.pipeline.push(c.cmd, pc);
         if (args) vkCmdDispatchIndirect(c.cmd, c.buffer(args).handle(), 0);
-        else vkCmdDispatch(c.cmd, vk::divUp(pc.sizes.x, 8), vk::divUp(pc.sizes.y, 8), 1);
+        else vkCmdDispatch(c.cmd, vk::divUp(pc.sizes.x, 8), vk::divUp(pc.sizes.y, 8 / pc.sampling.w), 1);
     });
 }
 
@@ -182,7 +193,11 @@ void RsmGather::addTo(FrameGraph& graph, uint32_t layers, uint32_t slot) {
         .pipeline(args_.pipeline)
         .storageBuffer(0, list, Use::StorageRead)
         .storageBuffer(1, args, Use::StorageWrite)
-        .record([](PassContext& c) { vkCmdDispatch(c.cmd, 1, 1, 1); });
+        .record([this, layers](PassContext& c) {
+            const uint32_t receiversPerGroup = 64 / constants(RSM_GATHER_LIST, layers).sampling.w;
+            args_.pipeline.push(c.cmd, receiversPerGroup);
+            vkCmdDispatch(c.cmd, 1, 1, 1);
+        });
     addGather(graph, "rsm.gather-fallback", RSM_GATHER_LIST, irradiance, layers);
 }
 
