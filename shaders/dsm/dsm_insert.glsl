@@ -1,5 +1,5 @@
 // The DSM build's one job per light-space fragment (raster or compute, dsm/ribbon_raster.glsl): allocate a node from the pool (one atomic add)
-// and push it onto the texel's list (one atomic exchange, one store). Needs `draw` (HairDrawPush:
+// and push it onto one of the texel's DSM_CHAINS lists (one atomic exchange, one store). Needs `draw` (HairDrawPush:
 // ids.x = DSM layer, ids.z = the scene light, or DSM_NONE for no depth test, ids.w = capacity).
 // A full pool drops the fragment; the counter keeps counting, so the overflow is known exactly and
 // no list ever points at a node that was not written.
@@ -67,6 +67,7 @@ void dsmInsert(uvec2 texel, float depth, float alpha, vec3 world) {
     uint node = atomicAdd(stats.build.x, 1u);
     if (node >= draw.ids.w) return;
     uint res = uint(draw.footprint.z);
-    uint previous = atomicExchange(heads[(draw.ids.x * res + texel.y) * res + texel.x], node);
+    uint chain = node % DSM_CHAINS;  // spread over the texel's chains (shared/types.h)
+    uint previous = atomicExchange(heads[((draw.ids.x * res + texel.y) * res + texel.x) * DSM_CHAINS + chain], node);
     nodes[node] = uvec4(floatBitsToUint(depth), floatBitsToUint(min(alpha, 1.0)), previous, DSM_NONE);
 }

@@ -20,7 +20,7 @@ float dsmTransmittanceOf(uint n) { return n == DSM_NONE ? 1.0 : uintBitsToFloat(
 uint dsmFind(uint texel, float d, uint hint) {
     uint n = hint;
     if (n == DSM_NONE) {
-        n = dsmHeads[texel];
+        n = dsmHeads[texel * DSM_CHAINS];
         if (n == DSM_NONE || dsmNodeDepth(n) > d) return DSM_NONE;
     }
     for (uint i = 0; i < DSM_MAX_LIST_CAP; ++i) {  // resolved lists are never longer
@@ -52,10 +52,10 @@ float dsmTapWeight(float s, float width, int i) {
 #define DSM_SEARCH_TAPS 16
 
 // Transmittance in front of depth d in the list of `texel` (1 for an empty list).
-float dsmSearchOne(uint texel, uint lengths, float d) {
-    uint first = dsmHeads[texel];
+float dsmSearchOne(uint texel, float d) {
+    uint first = dsmHeads[texel * DSM_CHAINS];
     if (first == DSM_NONE) return 1.0;
-    uint length = dsmHeads[lengths + texel];
+    uint length = dsmHeads[texel * DSM_CHAINS + 1u];
     if (length == 0u) return dsmTransmittanceOf(dsmFind(texel, d, DSM_NONE));  // not packed: walk it
     uint before = 0u;  // nodes with depth <= d
     while (length > 0u) {
@@ -68,14 +68,14 @@ float dsmSearchOne(uint texel, uint lengths, float d) {
 }
 
 // The weighted sum of the taps' transmittance over [lo, hi] (taps outside the map cast nothing).
-float dsmSearchKernel(uint base, uint lengths, int res, ivec2 lo, ivec2 hi, vec2 s, float width, float d) {
+float dsmSearchKernel(uint base, int res, ivec2 lo, ivec2 hi, vec2 s, float width, float d) {
     const int nx = hi.x - lo.x + 1, taps = nx * (hi.y - lo.y + 1);
     float sum = 0.0;
     if (taps > DSM_SEARCH_TAPS) {
         for (int y = lo.y; y <= hi.y; ++y)
             for (int x = lo.x; x <= hi.x; ++x) {
                 bool inside = x >= 0 && y >= 0 && x < res && y < res;
-                float t = inside ? dsmSearchOne(base + uint(y * res + x), lengths, d) : 1.0;
+                float t = inside ? dsmSearchOne(base + uint(y * res + x), d) : 1.0;
                 sum += dsmTapWeight(s.y, width, y) * dsmTapWeight(s.x, width, x) * t;
             }
         return sum;
@@ -85,8 +85,8 @@ float dsmSearchKernel(uint base, uint lengths, int res, ivec2 lo, ivec2 hi, vec2
         const ivec2 t = lo + ivec2(k % nx, k / nx);
         const bool inside = k < taps && all(greaterThanEqual(t, ivec2(0))) && all(lessThan(t, ivec2(res)));
         const uint texel = base + uint(t.y * res + t.x);
-        first[k] = inside ? dsmHeads[texel] : DSM_NONE;
-        length[k] = first[k] != DSM_NONE ? dsmHeads[lengths + texel] : 0u;
+        first[k] = inside ? dsmHeads[texel * DSM_CHAINS] : DSM_NONE;
+        length[k] = first[k] != DSM_NONE ? dsmHeads[texel * DSM_CHAINS + 1u] : 0u;
         before[k] = 0u;
         if (first[k] != DSM_NONE && length[k] == 0u) {  // not packed (pool full): walk it
             uint n = dsmFind(texel, d, DSM_NONE);
@@ -155,7 +155,7 @@ float deepShadowTransmittance(uint lightIndex, vec3 p, vec3 n, bool hair) {
                        (domTransmittance(base + uint(y * res + x), d, dsm.opacity.y) - 1.0);
         return clamp(1.0 + sum, 0.0, 1.0);  // taps outside the map cast nothing (1 - 1 = 0 there)
     }
-    if (dsm.opacity.w > 0.5) return min(dsmSearchKernel(base, floatBitsToUint(dsm.opacity.z), res, lo, hi, s, width, d), 1.0);
+    if (dsm.opacity.w > 0.5) return min(dsmSearchKernel(base, res, lo, hi, s, width, d), 1.0);
     uint rowHint = DSM_NONE;  // the upper link of the previous row's first node
     for (int y = lo.y; y <= hi.y; ++y) {
         float wy = dsmTapWeight(s.y, width, y);
@@ -193,7 +193,7 @@ float dsmListLengthAov(ivec2 pixel, uvec2 size, uint lightCount) {
             vec4 layers = uintBitsToFloat(dsmNodes[index]);
             return float(dsmHeads[index] != DSM_NONE) * dot(vec4(greaterThan(layers, vec4(0.0))), vec4(1.0));
         }
-        uint n = dsmHeads[index];
+        uint n = dsmHeads[index * DSM_CHAINS];
         uint length = 0;
         for (; n != DSM_NONE && length < DSM_MAX_LIST_CAP; n = dsmNodes[n].z) ++length;
         return float(length);

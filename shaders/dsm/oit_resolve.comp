@@ -41,13 +41,13 @@ layout(push_constant) uniform Push { OitPush pc; };
 #include "dsm/octahedral.glsl"
 
 #define SORT_CAPACITY OIT_MAX_LIST
+#define SORT_CHAINS DSM_CHAINS
 // The walk that sorts a pixel's list also sums the log-transmittance of all its fragments, so that
 // the merged tail (the fragments beyond the kept ones) needs no second walk: its transmittance is
 // exp(all - kept). Clamped so that an opaque fragment (alpha 1) stays finite.
 float logTransmittanceAll;
 float logTransmittance(float alpha) { return log(max(1.0 - alpha, 1e-7)); }
-vec2 sortEntry(uint n) {  // (depth, node)
-    uvec4 node = nodes[n];
+vec2 sortEntry(uint n, uvec4 node) {  // (depth, node)
     logTransmittanceAll += logTransmittance(abs(unpackHalf2x16(node.w).y));
     return vec2(uintBitsToFloat(node.x), uintBitsToFloat(n));
 }
@@ -81,11 +81,16 @@ void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     uint aov = frame.size.w;
     bool radianceAov = aov == AOV_FINAL || aov == AOV_DIRECT || aov == AOV_INDIRECT;
-    uint head = all(lessThan(pixel, ivec2(pc.sizes.xy))) ? heads[pixel.y * pc.sizes.x + pixel.x] : DSM_NONE;
-    if (head != DSM_NONE) {
+    uint chains[DSM_CHAINS];
+    bool listed = false;
+    [[unroll]] for (int k = 0; k < DSM_CHAINS; ++k) {
+        chains[k] = all(lessThan(pixel, ivec2(pc.sizes.xy))) ? heads[(pixel.y * pc.sizes.x + pixel.x) * DSM_CHAINS + k] : DSM_NONE;
+        listed = listed || chains[k] != DSM_NONE;
+    }
+    if (listed) {
         uint count;
         logTransmittanceAll = 0.0;
-        uint length = sortNearest(head, OIT_MAX_LIST, pc.sizes.z, count);
+        uint length = sortNearest(chains, OIT_MAX_LIST, pc.sizes.z, count);
         atomicAdd(groupKept, count);
         atomicAdd(groupDropped, length - count);
         atomicMax(groupLongest, length);

@@ -7,12 +7,14 @@
 // The sorted nodes are written packed: a workgroup's lists (an 8x8 tile of texels) side by side in
 // the pool after the build's nodes, each list in consecutive nodes, so that the link pass and every
 // lookup walk memory in order (the lookups of the camera's hair layers walked scattered nodes: most
-// of oit.composite on the H100). The head then points at the packed list, and the list's length goes
-// to the second half of the heads buffer (heads[texels + texel]) and its depths to the side buffer
-// (one uint per node, the depths alone: a binary search touches 4 bytes a step, not a node's 16).
-// When the pool has no room left for a tile, its lists are written back in place into their own
-// first nodes instead, with length 0 (not packed: a lookup walks them).
+// of oit.composite on the H100). The texel's first head slot then points at the packed list, its
+// second holds the list's length, and the side buffer its depths (one uint per node, the depths
+// alone: a binary search touches 4 bytes a step, not a node's 16). When the pool has no room left
+// for a tile, its lists are written back in place into their own first nodes instead, with length
+// 0 (not packed: a lookup walks them). The build's nodes of a texel are on DSM_CHAINS lists
+// (shared/types.h), walked side by side.
 #extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_control_flow_attributes : require
 #include "shared/types.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -25,17 +27,30 @@ layout(push_constant) uniform Push { DsmPush pc; };
 shared uint groupKept, groupDropped, groupLongest, groupLists, groupPacked;
 
 #define SORT_CAPACITY DSM_MAX_LIST_CAP
-vec2 sortEntry(uint n) { return vec2(uintBitsToFloat(nodes[n].x), uintBitsToFloat(nodes[n].y)); }  // (depth, alpha)
+#define SORT_CHAINS DSM_CHAINS
+vec2 sortEntry(uint n, uvec4 node) { return vec2(uintBitsToFloat(node.x), uintBitsToFloat(node.y)); }  // (depth, alpha)
 #include "dsm/sort_nearest.glsl"
 
-// Writes the `count` sorted entries as a list: at `first` onwards (packed), or, with first ==
-// DSM_NONE, into the list's own first nodes (in place).
-void writeList(uint texel, uint head, uint count, uint first) {
+// The node after n when the texel's chains are read one after the other (chain c holds n).
+uint nextInChains(uint n, uint chains[DSM_CHAINS], inout uint c) {
+    uint next = nodes[n].z;
+    while (next == DSM_NONE && ++c < DSM_CHAINS) next = chains[c];
+    return next;
+}
+
+// Writes the `count` sorted entries as one list: at `first` onwards (packed), or, with first ==
+// DSM_NONE, into the texel's own first nodes (in place, over its chains one after the other).
+// Either way the texel's first head slot then holds the list's head, the second its length (0 in
+// place: not packed).
+void writeList(uint texel, uint chains[DSM_CHAINS], uint count, uint first) {
     float t = 1.0;
-    uint n = first == DSM_NONE ? head : first;
-    if (first != DSM_NONE) heads[texel] = first;
+    uint c = 0u;
+    while (chains[c] == DSM_NONE) ++c;  // a texel with a list has a chain that is not empty
+    uint n = first == DSM_NONE ? chains[c] : first;
+    heads[texel * DSM_CHAINS] = n;
+    heads[texel * DSM_CHAINS + 1u] = first == DSM_NONE ? 0u : count;
     for (uint i = 0; i < count; ++i) {
-        uint next = first == DSM_NONE ? nodes[n].z : n + 1;
+        uint next = first == DSM_NONE ? nextInChains(n, chains, c) : n + 1;
         t *= 1.0 - clamp(sorted[i].y, 0.0, 1.0);
         nodes[n] = uvec4(floatBitsToUint(sorted[i].x), floatBitsToUint(t), i + 1 < count ? next : DSM_NONE, DSM_NONE);
         if (first != DSM_NONE) keys[n] = floatBitsToUint(sorted[i].x);
@@ -54,9 +69,14 @@ void main() {
     const uint res = pc.sizes.x;
     uvec3 id = gl_GlobalInvocationID;
     uint texel = (id.z * res + id.y) * res + id.x;
-    uint head = id.x < res && id.y < res ? heads[texel] : DSM_NONE;
+    uint chains[DSM_CHAINS];
+    bool listed = false;
+    [[unroll]] for (int k = 0; k < DSM_CHAINS; ++k) {
+        chains[k] = id.x < res && id.y < res ? heads[texel * DSM_CHAINS + k] : DSM_NONE;
+        listed = listed || chains[k] != DSM_NONE;
+    }
     uint count = 0u, length = 0u;
-    if (head != DSM_NONE) length = sortNearest(head, pc.sizes.w, pc.sizes.z, count);  // the pool bounds a list
+    if (listed) length = sortNearest(chains, pc.sizes.w, pc.sizes.z, count);  // the pool bounds a list
     // This texel's place among the tile's packed lists, then the tile's place in the pool (one
     // global atomic per tile, on a counter of its own: build.z).
     uint offset = atomicAdd(groupKept, count);
@@ -67,9 +87,8 @@ void main() {
         groupPacked = groupKept > 0u && start + groupKept <= pc.sizes.z ? start : DSM_NONE;
     }
     barrier();
-    if (head != DSM_NONE) {
-        writeList(texel, head, count, groupPacked == DSM_NONE ? DSM_NONE : groupPacked + offset);
-        heads[res * res * pc.sizes.y + texel] = groupPacked == DSM_NONE ? 0u : count;
+    if (listed) {
+        writeList(texel, chains, count, groupPacked == DSM_NONE ? DSM_NONE : groupPacked + offset);
         atomicAdd(groupDropped, length - count);
         atomicMax(groupLongest, length);
         atomicAdd(groupLists, 1u);

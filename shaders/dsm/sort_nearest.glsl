@@ -1,7 +1,11 @@
 // The nearest entries of a linked list, sorted by depth: shared by the DSM resolve (light-space
 // lists) and the camera translucency resolve (per-pixel lists). The includer defines
-// SORT_CAPACITY (size of the local array), `nodes` (uvec4: x = depth bits, z = next) and
-// `vec2 sortEntry(uint node)` (x = depth, y = the payload the includer keeps).
+// SORT_CAPACITY (size of the local array), SORT_CHAINS (how many lists hold one texel's or pixel's
+// entries; 1 if not defined), `nodes` (uvec4: x = depth bits, z = next) and
+// `vec2 sortEntry(uint index, uvec4 node)` (x = depth, y = the payload the includer keeps).
+#ifndef SORT_CHAINS
+#define SORT_CHAINS 1
+#endif
 
 vec2 sorted[SORT_CAPACITY];  // after sortNearest: ascending x
 
@@ -22,21 +26,41 @@ void heapSiftDown(uint i, uint count) {
     sorted[i] = e;
 }
 
-// Keeps the `maxCount` (<= SORT_CAPACITY) nearest entries of the list at `head`, sorted ascending;
-// `guard` bounds a corrupt list. Returns the list's full length; `count` receives how many entries
-// were kept.
-uint sortNearest(uint head, uint maxCount, uint guard, out uint count) {
+// Adds entry e to the heap of `count` entries, which keeps the `maxCount` nearest.
+void heapPush(vec2 e, uint maxCount, inout uint count) {
+    if (count < maxCount) {  // sift the new entry up from the end
+        uint i = count++;
+        for (; i > 0u && sorted[(i - 1u) / 2u].x < e.x; i = (i - 1u) / 2u) sorted[i] = sorted[(i - 1u) / 2u];
+        sorted[i] = e;
+    } else if (e.x < sorted[0].x) {  // nearer than the farthest kept: it takes the root's place
+        sorted[0] = e;
+        heapSiftDown(0u, count);
+    }
+}
+
+// Keeps the `maxCount` (<= SORT_CAPACITY) nearest entries of the lists at `heads`, sorted ascending;
+// `guard` bounds corrupt lists. Returns the lists' full length; `count` receives how many entries
+// were kept. The chains are walked side by side: each step loads the next node of every chain
+// before it sorts any, so that SORT_CHAINS independent reads are in flight at once.
+uint sortNearest(uint heads[SORT_CHAINS], uint maxCount, uint guard, out uint count) {
     count = 0;
     uint length = 0;
-    for (uint n = head; n != DSM_NONE && length < guard; n = nodes[n].z, ++length) {
-        vec2 e = sortEntry(n);
-        if (count < maxCount) {  // sift the new entry up from the end
-            uint i = count++;
-            for (; i > 0u && sorted[(i - 1u) / 2u].x < e.x; i = (i - 1u) / 2u) sorted[i] = sorted[(i - 1u) / 2u];
-            sorted[i] = e;
-        } else if (e.x < sorted[0].x) {  // nearer than the farthest kept: it takes the root's place
-            sorted[0] = e;
-            heapSiftDown(0u, count);
+    uint n[SORT_CHAINS] = heads;
+    for (bool walking = true; walking;) {
+        uvec4 node[SORT_CHAINS];
+        [[unroll]] for (int k = 0; k < SORT_CHAINS; ++k)
+            if (n[k] != DSM_NONE) node[k] = nodes[n[k]];
+        walking = false;
+        [[unroll]] for (int k = 0; k < SORT_CHAINS; ++k) {
+            if (n[k] == DSM_NONE) continue;
+            if (length == guard) {  // a cycle: a corrupt list
+                walking = false;
+                break;
+            }
+            ++length;
+            heapPush(sortEntry(n[k], node[k]), maxCount, count);
+            n[k] = node[k].z;
+            walking = walking || n[k] != DSM_NONE;
         }
     }
     // Heap sort: the farthest to the end, one by one.

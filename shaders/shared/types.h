@@ -283,6 +283,11 @@ struct ShadowDrawPush {
 
 #define DSM_NONE 0xFFFFFFFFu   // no node: empty list, end of a list, no neighbour link
 #define DSM_MAX_LIST_CAP 128   // size of the resolve's sort array: the largest allowed --dsm-max-list
+// The build pushes a texel's fragments onto DSM_CHAINS lists (by node index), which the resolve walks
+// side by side, so that its reads of the unsorted nodes are DSM_CHAINS at a time, not one after
+// another. A texel's DSM_CHAINS heads are consecutive; after the resolve the first holds the head of
+// its sorted list and the second that list's length (0: not packed, written in place).
+#define DSM_CHAINS 4
 
 // A DSM node is a uvec4 in the node pool: x = depth (float bits: distance from a spot light, depth
 // along a directional light), y = alpha (build) then the transmittance behind the node (resolve),
@@ -319,7 +324,8 @@ struct GpuDsmLight {
                     // w = a cube's first face entry (faces +x, -x, +y, -y, +z, -z follow the lights' entries)
     vec4 opacity;   // x = 1: deep opacity maps (--shadow dom; heads hold each texel's first depth, the node
                     // at the texel's index its DOM_LAYERS optical depths), 0: lists; y = layer thickness
-                    // (world units); zw unused
+                    // (world units); z unused; w = 1: lists looked up by binary search (--dsm-lookup
+                    // search), 0: through the neighbour links (links)
 };
 #define DOM_LAYERS 4  // opacity layers of a deep opacity map texel (one vec4)
 

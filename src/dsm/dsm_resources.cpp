@@ -1,7 +1,6 @@
 #include "dsm/dsm_resources.h"
 
 #include <algorithm>
-#include <bit>
 
 #include <fmt/format.h>
 
@@ -38,15 +37,14 @@ uint64_t maxNodes(vk::Context& ctx, VkDeviceSize headBytes) {
 }
 
 gpu::GpuDsmLight tableEntry(const DsmLayer& layer, int index, uint32_t resolution, const DsmSettings& s,
-                            float opacityLayer, uint32_t texels) {
+                            float opacityLayer) {
     gpu::GpuDsmLight g{};
     g.viewProj = layer.projection.viewProj;
     g.viewer = layer.view.viewer;
     g.params = {layer.projection.texelSize, layer.projection.perspective ? 1.0f : 0.0f, float(index),
                 float(resolution)};
     g.kernel = {s.filterWidth, s.depthBias, s.normalOffset, 0.0f};
-    g.opacity = {s.opacityMaps ? 1.0f : 0.0f, opacityLayer, std::bit_cast<float>(texels),
-                 s.lookup == DsmLookup::Search ? 1.0f : 0.0f};
+    g.opacity = {s.opacityMaps ? 1.0f : 0.0f, opacityLayer, 0.0f, s.lookup == DsmLookup::Search ? 1.0f : 0.0f};
     return g;
 }
 
@@ -60,11 +58,12 @@ DsmResources::DsmResources(vk::Allocator& alloc, const DsmSettings& settings, ui
     const VkBufferUsageFlags cleared = storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
     const uint64_t texels = uint64_t(res) * res * std::max<size_t>(layers.size(), 1);
     const uint64_t automatic = std::min({texels * DsmSettings::kAutoNodesPerTexel, DsmSettings::kMaxPoolNodes - 1,
-                                         maxNodes(alloc.context(), texels * 8)});
+                                         maxNodes(alloc.context(), texels * 4 * DSM_CHAINS)});
     capacity = layers.empty() ? 1 : opacityMaps ? texels : settings.poolNodes ? settings.poolNodes : automatic;
     deviceLimited = !layers.empty() && !opacityMaps && !settings.poolNodes && automatic < texels * DsmSettings::kAutoNodesPerTexel;
-    if (!layers.empty()) checkFits(alloc.context(), capacity, texels * 8);  // an explicit --dsm-nodes may not fit
-    heads = vk::Buffer(alloc, layers.empty() ? 4 : texels * 8, cleared, false, "dsm-heads");  // heads, then lengths
+    const uint64_t headBytes = texels * 4 * (opacityMaps ? 1 : DSM_CHAINS);
+    if (!layers.empty()) checkFits(alloc.context(), capacity, headBytes);  // an explicit --dsm-nodes may not fit
+    heads = vk::Buffer(alloc, layers.empty() ? 4 : headBytes, cleared, false, "dsm-heads");
     nodes = vk::Buffer(alloc, capacity * 16, cleared, false, "dsm-nodes");
     side = vk::Buffer(alloc, opacityMaps ? 4 : capacity * 4, cleared, false, "dsm-side");  // DOM: unused
     stats = vk::Buffer(alloc, sizeof(gpu::DsmStats), cleared, false, "dsm-stats");
@@ -82,8 +81,7 @@ void DsmResources::writeTables(const DsmSettings& settings, uint32_t slot) {
     std::vector<gpu::GpuDsmLight> table(lightCount_);
     for (gpu::GpuDsmLight& g : table) g.params = {0.0f, 0.0f, -1.0f, float(resolution)};  // no DSM
     for (size_t i = 0; i < layers.size(); ++i) {
-        const gpu::GpuDsmLight entry =
-            tableEntry(layers[i], int(i), resolution, settings, opacityLayer, resolution * resolution * layerCount());
+        const gpu::GpuDsmLight entry = tableEntry(layers[i], int(i), resolution, settings, opacityLayer);
         if (!layers[i].cube) {
             table.at(layers[i].light) = entry;
         } else {

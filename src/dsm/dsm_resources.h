@@ -1,7 +1,8 @@
 // The GPU memory the deep-shadow-map passes and the lookup share, and how it is sized.
 //
-// Layout: a head pointer per texel (uint, DSM_NONE = empty list) for every DSM layer (one layer per
-// light with a DSM), then each texel's packed list length; one node pool for all layers, a uvec4 per
+// Layout: DSM_CHAINS head pointers per texel (uint, DSM_NONE = empty list; after the resolve the
+// sorted list's head and length) for every DSM layer (one layer per light with a DSM; deep opacity
+// maps: one uint per texel); one node pool for all layers, a uvec4 per
 // node (depth, alpha -> transmittance, next, right-neighbour link: see shared/types.h) plus a side
 // uint per node: its depth again, packed, as the binary search's key (`--dsm-lookup search`), or its
 // upper-neighbour link (`links`); one atomic counter that allocates nodes. The pool is allocated once at its full capacity; a frame
@@ -35,7 +36,7 @@ struct DsmResources {
     std::vector<DsmLayer> layers;
     vk::BufferRing views;       // row k: layer k's viewProj (binding 0 of the build), per frame slot
     vk::BufferRing lightTable;  // GpuDsmLight per scene light, then per cube face, per frame slot
-    vk::Buffer heads;       // uint per texel and layer
+    vk::Buffer heads;       // DSM_CHAINS uints per texel and layer
     vk::Buffer nodes;       // uvec4 per node
     vk::Buffer side;        // uint per node: search key (depth bits) or upper link
     vk::Buffer stats;       // DsmStats
