@@ -51,6 +51,11 @@ vec2 sortEntry(uint n, uvec4 node) {  // (depth, node)
     logTransmittanceAll += logTransmittance(abs(unpackHalf2x16(node.w).y));
     return vec2(uintBitsToFloat(node.x), uintBitsToFloat(n));
 }
+// Equal depths (read only then): by the fragment's tangent or normal, colour and alpha.
+uint sortTieKey(vec2 e) {
+    uint n = floatBitsToUint(e.y);
+    return normals[n] ^ (nodes[n].w * 0x9E3779B9u) ^ (nodes[n].y * 0x85EBCA6Bu);
+}
 #include "dsm/sort_nearest.glsl"
 
 shared uint groupKept, groupDropped, groupLongest;

@@ -29,6 +29,7 @@ shared uint groupKept, groupDropped, groupLongest, groupLists, groupPacked;
 #define SORT_CAPACITY DSM_MAX_LIST_CAP
 #define SORT_CHAINS DSM_CHAINS
 vec2 sortEntry(uint n, uvec4 node) { return vec2(uintBitsToFloat(node.x), uintBitsToFloat(node.y)); }  // (depth, alpha)
+uint sortTieKey(vec2 e) { return floatBitsToUint(e.y); }
 #include "dsm/sort_nearest.glsl"
 
 // The node after n when the texel's chains are read one after the other (chain c holds n).

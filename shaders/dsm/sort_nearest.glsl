@@ -1,13 +1,19 @@
 // The nearest entries of a linked list, sorted by depth: shared by the DSM resolve (light-space
 // lists) and the camera translucency resolve (per-pixel lists). The includer defines
 // SORT_CAPACITY (size of the local array), SORT_CHAINS (how many lists hold one texel's or pixel's
-// entries; 1 if not defined), `nodes` (uvec4: x = depth bits, z = next) and
-// `vec2 sortEntry(uint index, uvec4 node)` (x = depth, y = the payload the includer keeps).
+// entries; 1 if not defined), `nodes` (uvec4: x = depth bits, z = next),
+// `vec2 sortEntry(uint index, uvec4 node)` (x = depth, y = the payload the includer keeps) and
+// `uint sortTieKey(vec2 entry)`, which orders entries of equal depth by what they hold, not by where
+// the build's atomics happened to put them: the result does not change from run to run (strands'
+// consecutive segments meet at a point of equal depth, so ties are common at the cap).
 #ifndef SORT_CHAINS
 #define SORT_CHAINS 1
 #endif
 
 vec2 sorted[SORT_CAPACITY];  // after sortNearest: ascending x
+
+// Whether a lies farther than b (depth, then the tie key).
+bool sortFarther(vec2 a, vec2 b) { return a.x > b.x || (a.x == b.x && sortTieKey(a) > sortTieKey(b)); }
 
 // While the list is walked, `sorted` is a max-heap of the kept entries (the farthest at the root):
 // an entry costs O(log maxCount) moves, where an insertion into a sorted array cost O(maxCount).
@@ -18,8 +24,8 @@ void heapSiftDown(uint i, uint count) {
     for (;;) {
         uint c = 2u * i + 1u;
         if (c >= count) break;
-        if (c + 1u < count && sorted[c + 1u].x > sorted[c].x) ++c;
-        if (sorted[c].x <= e.x) break;
+        if (c + 1u < count && sortFarther(sorted[c + 1u], sorted[c])) ++c;
+        if (!sortFarther(sorted[c], e)) break;
         sorted[i] = sorted[c];
         i = c;
     }
@@ -30,9 +36,9 @@ void heapSiftDown(uint i, uint count) {
 void heapPush(vec2 e, uint maxCount, inout uint count) {
     if (count < maxCount) {  // sift the new entry up from the end
         uint i = count++;
-        for (; i > 0u && sorted[(i - 1u) / 2u].x < e.x; i = (i - 1u) / 2u) sorted[i] = sorted[(i - 1u) / 2u];
+        for (; i > 0u && sortFarther(e, sorted[(i - 1u) / 2u]); i = (i - 1u) / 2u) sorted[i] = sorted[(i - 1u) / 2u];
         sorted[i] = e;
-    } else if (e.x < sorted[0].x) {  // nearer than the farthest kept: it takes the root's place
+    } else if (sortFarther(sorted[0], e)) {  // nearer than the farthest kept: it takes the root's place
         sorted[0] = e;
         heapSiftDown(0u, count);
     }
