@@ -81,6 +81,23 @@ Cli runCli(const ScratchDir& dir, const std::string& args) {
     return {WIFEXITED(rc) ? WEXITSTATUS(rc) : -1, readText(out), readText(err)};
 }
 
+Scene hairScene(uint32_t strands) {
+    BuiltinOptions options;
+    options.hairStrands = strands;
+    return makeBuiltinScene("hair", options);
+}
+
+// A small frame with deep shadow maps keeping `maxList` nodes a texel.
+RenderSettings dsmFrame(uint32_t width, uint32_t height, uint32_t shadowResolution, uint32_t maxList) {
+    RenderSettings rs;
+    rs.width = width;
+    rs.height = height;
+    rs.shadow.resolution = shadowResolution;
+    rs.dsm.enabled = true;
+    rs.dsm.maxList = maxList;
+    return rs;
+}
+
 }  // namespace
 
 TEST(HairScene, GrowsTheRequestedStrandsOutsideTheHead) {
@@ -143,15 +160,8 @@ TEST_F(GpuTest, HairOnlyGltfRenders) {
 // node, and (`--dsm-lookup links`) every neighbour link points at the node of the neighbour's list
 // with the largest depth <= the node's own.
 TEST_F(GpuTest, DsmListsAndLinksAreConsistent) {
-    BuiltinOptions options;
-    options.hairStrands = 2000;
-    const Scene s = makeBuiltinScene("hair", options);
-    RenderSettings rs;
-    rs.width = 64;
-    rs.height = 48;
-    rs.shadow.resolution = 128;
-    rs.dsm.enabled = true;
-    rs.dsm.maxList = 12;
+    const Scene s = hairScene(2000);
+    RenderSettings rs = dsmFrame(64, 48, 128, 12);
     rs.dsm.lookup = DsmLookup::Links;
     Renderer r(ctx(), s, rs);
     r.render(s.cameras[0]);
@@ -218,18 +228,11 @@ TEST_F(GpuTest, DsmListsAndLinksAreConsistent) {
 // translucency composite, for bilinear taps, the default 3x3 and a 5x5 kernel (searched tap after
 // tap), with the pool roomy (every list packed) and tight (some lists left in place and walked).
 TEST_F(GpuTest, DsmSearchLookupEqualsTheLinkWalk) {
-    BuiltinOptions options;
-    options.hairStrands = 2000;
-    const Scene s = makeBuiltinScene("hair", options);
+    const Scene s = hairScene(2000);
     size_t inPlace = 0;  // lists the resolve left in place (length 0: not packed)
     auto render = [&](DsmLookup lookup, float width, uint64_t pool, bool translucency, DsmFrameStats* stats) {
-        RenderSettings rs;
-        rs.width = 96;
-        rs.height = 72;
-        rs.shadow.resolution = 128;
+        RenderSettings rs = dsmFrame(96, 72, 128, 24);
         rs.gi = GiMode::None;
-        rs.dsm.enabled = true;
-        rs.dsm.maxList = 24;
         rs.dsm.lookup = lookup;
         rs.dsm.filterWidth = width;
         rs.dsm.poolNodes = pool;
@@ -360,12 +363,8 @@ TEST_F(GpuTest, HairComputeRasterEqualsTheHardware) {
     for (RasterMode mode : {RasterMode::Hardware, RasterMode::Compute}) {
         Result& out = results[mode];
         for (bool translucency : {false, true}) {
-            RenderSettings rs;
-            rs.width = 160;
-            rs.height = 120;
-            rs.shadow.resolution = 512;
+            RenderSettings rs = dsmFrame(160, 120, 512, DsmSettings{}.maxList);
             rs.shadow.raster = mode;
-            rs.dsm.enabled = true;
             rs.translucency = translucency;
             rs.aov = translucency ? Aov::Final : Aov::Direct;
             Renderer r(ctx(), s, rs);
@@ -412,16 +411,9 @@ TEST_F(GpuTest, HairComputeRasterEqualsTheHardware) {
 // pixel's merged tail takes another layer's radiance (up to 0.9 in a run at 480x270 before the tie
 // key, dsm/sort_nearest.glsl). Left: float rounding of the tail's summed log-transmittance.
 TEST_F(GpuTest, HairCompositeIsTheSameFromRunToRun) {
-    BuiltinOptions options;
-    options.hairStrands = 5000;
-    const Scene s = makeBuiltinScene("hair", options);
-    RenderSettings rs;
-    rs.width = 160;
-    rs.height = 120;
-    rs.shadow.resolution = 512;
+    const Scene s = hairScene(5000);
+    RenderSettings rs = dsmFrame(160, 120, 512, 12);
     rs.shadow.raster = RasterMode::Compute;
-    rs.dsm.enabled = true;
-    rs.dsm.maxList = 12;
     std::vector<float> first;
     double worst = 0.0;
     uint64_t merged = 0;
