@@ -52,9 +52,9 @@ void writeList(uint texel, uint chains[DSM_CHAINS], uint count, uint first) {
     heads[texel * DSM_CHAINS + 1u] = first == DSM_NONE ? 0u : count;
     for (uint i = 0; i < count; ++i) {
         uint next = first == DSM_NONE ? nextInChains(n, chains, c) : n + 1;
-        t *= 1.0 - clamp(sorted[i].y, 0.0, 1.0);
-        nodes[n] = uvec4(floatBitsToUint(sorted[i].x), floatBitsToUint(t), i + 1 < count ? next : DSM_NONE, DSM_NONE);
-        if (first != DSM_NONE) keys[n] = floatBitsToUint(sorted[i].x);
+        t *= 1.0 - clamp(sorted(i).y, 0.0, 1.0);
+        nodes[n] = uvec4(floatBitsToUint(sorted(i).x), floatBitsToUint(t), i + 1 < count ? next : DSM_NONE, DSM_NONE);
+        if (first != DSM_NONE) keys[n] = floatBitsToUint(sorted(i).x);
         n = next;
     }
 }

@@ -1,6 +1,6 @@
 // Filtered shadow visibility of a world point (hard, PCF, PCSS, VSM, EVSM, MSM; cascades with their
 // blend band, cube faces, paraboloids): shared by shadow/filter.comp (per G-buffer pixel) and the
-// camera translucency resolve (dsm/oit_resolve.comp, per translucent fragment). Needs `frame`,
+// camera translucency (dsm/oit_shade.comp, per translucent fragment). Needs `frame`,
 // `shadowLayers`, `shadowLights`, `params`, `shadowDepth`, `shadowMoments`, and
 // project.glsl, moments.glsl, pcf.glsl included before.
 

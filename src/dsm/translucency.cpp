@@ -33,6 +33,9 @@ CameraTranslucency::CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, co
     nodes_ = vk::Buffer(alloc, capacity_ * 16, usage, false, "oit-nodes");
     normals_ = vk::Buffer(alloc, capacity_ * 4, usage, false, "oit-normals");
     stats_ = vk::Buffer(alloc, sizeof(gpu::OitStats), usage, false, "oit-stats");
+    layers_ = vk::Buffer(alloc, 16 + 8 * capacity_, usage, false, "oit-kept-layers");  // kept <= stored nodes
+    shadeArgs_ = vk::Buffer(alloc, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, false,
+                            "oit-shade-args");
 
     // Build set: the scene's draw set (0, 1 and the instances; set 1 its textures), the hair buffers
     // (3, 4), then heads, nodes, normals, counters and the opaque depth (5-9: both builds, raster and
@@ -60,13 +63,16 @@ CameraTranslucency::CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, co
         meshPipeline_ = vk::Pipeline::graphics(ctx, d, SceneGpu::drawLayouts(ctx, buildLayout_.handle()), sizeof(gpu::HairDrawPush));
     }
 
-    const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    composite_ = vk::ComputeKernel(
-        ctx, "dsm/oit_resolve.comp",
-        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, storage, storage, storage, storage, storage, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
-         sampled, storage, storage, storage, storage, sampled, sampled, storage, storage,
-         VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
-        sizeof(gpu::OitPush));
+    const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                           uniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    sort_ = vk::ComputeKernel(ctx, "dsm/oit_sort.comp", {storage, storage, storage, storage, storage}, sizeof(gpu::OitPush));
+    args_ = vk::ComputeKernel(ctx, "render/indirect_args.comp", {storage, storage}, sizeof(uint32_t));
+    shade_ = vk::ComputeKernel(ctx, "dsm/oit_shade.comp",
+                               {uniform, storage, storage, storage, storage, sampled, uniform, storage, storage, storage,
+                                storage, storage, sampled, sampled, storage},
+                               0);
+    blend_ = vk::ComputeKernel(ctx, "dsm/oit_blend.comp",
+                               {uniform, storage, storage, storage, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, sizeof(gpu::OitPush));
     // The shadow map's samplers as shadow.filter makes them (the border reads as lit).
     nearest_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
     border_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER, false, false});
@@ -100,14 +106,16 @@ void CameraTranslucency::recordBuild(VkCommandBuffer cmd, const RibbonView& came
 void CameraTranslucency::addBuildTo(FrameGraph& graph, const RibbonView& camera) {
     if (!active()) return;
     const BufferHandle heads = graph.import(heads_), nodes = graph.import(nodes_), normals = graph.import(normals_),
-                       stats = graph.import(stats_);
+                       stats = graph.import(stats_), layers = graph.import(layers_);
     graph.pass("oit.clear", PassKind::Transfer)
         .use(heads, Use::TransferDst)
         .use(stats, Use::TransferDst)
+        .use(layers, Use::TransferDst)
         .bytes(heads_.size())
-        .record([heads, stats](PassContext& c) {
+        .record([heads, stats, layers](PassContext& c) {
             vkCmdFillBuffer(c.cmd, c.buffer(heads).handle(), 0, VK_WHOLE_SIZE, DSM_NONE);
             vkCmdFillBuffer(c.cmd, c.buffer(stats).handle(), 0, VK_WHOLE_SIZE, 0);
+            vkCmdFillBuffer(c.cmd, c.buffer(layers).handle(), 0, 16, 0);  // the kept layers' count
         });
     lists_ = {heads, nodes, normals, stats};
     if (hasBlended_ || hairPipeline_.handle()) {
@@ -136,32 +144,61 @@ PassBuilder& CameraTranslucency::declareLists(PassBuilder& pass) const {
         .sampled(9, pass.graph().image("gbuffer.depth"), nearest_.handle());
 }
 
+// oit.sort (per pixel) -> oit.shade-args -> oit.shade (per kept layer, indirect) -> oit.blend (per pixel).
 void CameraTranslucency::addCompositeTo(FrameGraph& graph) {
     if (!active()) return;
-    const ImageHandle hdr = graph.image("hdr"), map = graph.image("shadow.map");
+    const BufferHandle heads = graph.import(heads_), nodes = graph.import(nodes_), normals = graph.import(normals_),
+                       layers = graph.import(layers_), args = graph.import(shadeArgs_);
     const gpu::OitPush push{{width_, height_, uint32_t(capacity_), 0}};
-    graph.pass("oit.composite")
-        .pipeline(composite_.pipeline)
+    const uint32_t groupsX = vk::divUp(width_, 8), groupsY = vk::divUp(height_, 8);
+    graph.pass("oit.sort")
+        .pipeline(sort_.pipeline)
+        .storageBuffer(0, heads, Use::StorageWrite)
+        .storageBuffer(1, nodes, Use::StorageRead)
+        .storageBuffer(2, normals, Use::StorageRead)
+        .storageBuffer(3, graph.import(stats_), Use::StorageWrite)
+        .storageBuffer(4, layers, Use::StorageWrite)
+        .record([this, push, groupsX, groupsY](PassContext& c) {
+            sort_.pipeline.push(c.cmd, push);
+            vkCmdDispatch(c.cmd, groupsX, groupsY, 1);
+        });
+    graph.pass("oit.shade-args")
+        .pipeline(args_.pipeline)
+        .storageBuffer(0, layers, Use::StorageRead)
+        .storageBuffer(1, args, Use::StorageWrite)
+        .record([this](PassContext& c) {
+            args_.pipeline.push(c.cmd, uint32_t(64));  // oit_shade.comp's workgroup
+            vkCmdDispatch(c.cmd, 1, 1, 1);
+        });
+    graph.pass("oit.shade")
+        .pipeline(shade_.pipeline)
+        .use(args, Use::IndirectArgs)
         .uniform(0, graph.buffer("frame"))
         .storageBuffer(1, graph.buffer("lights"))
-        .storageBuffer(2, graph.import(heads_), Use::StorageRead)
-        .storageBuffer(3, graph.import(nodes_), Use::StorageRead)
-        .storageBuffer(4, graph.import(normals_), Use::StorageRead)
-        .storageBuffer(5, graph.import(stats_), Use::StorageWrite)
-        .storageImage(6, hdr)
-        .sampled(7, graph.image("gi.irradiance"), nearest_.handle())
+        .storageBuffer(2, layers, Use::StorageRead)
+        .storageBuffer(3, nodes, Use::StorageWrite)
+        .storageBuffer(4, normals, Use::StorageRead)
+        .sampled(5, graph.image("gi.irradiance"), nearest_.handle())
+        .uniform(6, graph.buffer("shadow.params"))
+        .storageBuffer(7, graph.buffer("shadow.layers"))
         .storageBuffer(8, graph.buffer("dsm.lights"))
         .storageBuffer(9, graph.buffer("dsm.heads"))
         .storageBuffer(10, graph.buffer("dsm.nodes"))
         .storageBuffer(11, graph.buffer("dsm.side"))
-        .sampled(12, map, border_.handle())
+        .sampled(12, graph.image("shadow.map"), border_.handle())
         .sampled(13, graph.image("shadow.moments"), moments_.handle())
-        .storageBuffer(14, graph.buffer("shadow.layers"))
-        .storageBuffer(15, graph.buffer("shadow.lights"))
-        .uniform(16, graph.buffer("shadow.params"))
-        .record([this, push](PassContext& c) {
-            composite_.pipeline.push(c.cmd, push);
-            vkCmdDispatch(c.cmd, vk::divUp(width_, 8), vk::divUp(height_, 8), 1);
+        .storageBuffer(14, graph.buffer("shadow.lights"))
+        .record([args](PassContext& c) { vkCmdDispatchIndirect(c.cmd, c.buffer(args).handle(), 0); });
+    graph.pass("oit.blend")
+        .pipeline(blend_.pipeline)
+        .uniform(0, graph.buffer("frame"))
+        .storageBuffer(1, heads, Use::StorageRead)
+        .storageBuffer(2, layers, Use::StorageRead)
+        .storageBuffer(3, nodes, Use::StorageRead)
+        .storageImage(4, graph.image("hdr"))
+        .record([this, push, groupsX, groupsY](PassContext& c) {
+            blend_.pipeline.push(c.cmd, push);
+            vkCmdDispatch(c.cmd, groupsX, groupsY, 1);
         });
 }
 

@@ -6,7 +6,8 @@
 // indirect irradiance ("gi.irradiance"), so it works behind any camera path that publishes them.
 //
 // Frame: oit.clear -> oit.build (raster; hair in compute, oit.build.hair, with `computeHair`: see
-// dsm/ribbon_raster.glsl) -> ... lighting ... -> oit.composite (compute).
+// dsm/ribbon_raster.glsl) -> ... lighting ... -> oit.sort (per pixel: its nearest layers) ->
+// oit.shade (per kept layer: its light) -> oit.blend (per pixel: front to back over "hdr").
 #pragma once
 #include <array>
 #include <string>
@@ -35,7 +36,7 @@ public:
     bool active() const { return hair_ || hasBlended_; }
     // oit.clear and oit.build (after the G-buffer).
     void addBuildTo(FrameGraph& graph, const RibbonView& camera);
-    // oit.composite (after lighting, before the tone mapper).
+    // oit.sort, oit.shade and oit.blend (after lighting, before the tone mapper).
     void addCompositeTo(FrameGraph& graph);
     OitFrameStats readStats(vk::CommandContext& cmd) const;
 
@@ -55,10 +56,11 @@ private:
     uint32_t width_, height_;
     uint64_t capacity_ = 0;
     vk::Buffer heads_, nodes_, normals_, stats_;
+    vk::Buffer layers_, shadeArgs_;  // the kept layers (node, pixel) in pixel order, and their dispatch
     std::array<BufferHandle, 4> lists_;  // this frame's heads, nodes, normals and stats (addBuildTo)
     vk::DescriptorLayout buildLayout_;
     vk::Pipeline hairPipeline_, meshPipeline_;  // the raster's (hairPipeline_ without computeHair)
-    vk::ComputeKernel hairKernel_, composite_;
+    vk::ComputeKernel hairKernel_, sort_, args_, shade_, blend_;
     vk::Sampler nearest_, border_, moments_;
 };
 

@@ -69,7 +69,7 @@ RsmGather::RsmGather(vk::Allocator& alloc, vk::CommandContext& cmd, uint32_t wid
                                 {ubo, tex, tex, tex, tex, tex, ssbo, ssbo, img, ssbo, ssbo},
                                 sizeof(gpu::RsmPush));
     interpolate_ = vk::ComputeKernel(ctx, "rsm/interpolate.comp", {ubo, tex, tex, tex, img, ssbo}, sizeof(gpu::RsmPush));
-    args_ = vk::ComputeKernel(ctx, "rsm/list_args.comp", {ssbo, ssbo}, sizeof(uint32_t));
+    args_ = vk::ComputeKernel(ctx, "render/indirect_args.comp", {ssbo, ssbo}, sizeof(uint32_t));
     pointSampler_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
 
     const uint32_t f = std::max(1u, settings.lowResFactor);

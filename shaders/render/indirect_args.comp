@@ -1,7 +1,7 @@
 #version 460
-// Turns the fallback-pixel count into the workgroup count of the indirect dispatch that gathers them
-// (`receiversPerGroup` pixels per 8x8 group, laid out over x and y to stay inside
-// maxComputeWorkGroupCount).
+// Turns a list's item count (the RSM's fallback pixels, the camera translucency's kept layers) into the
+// workgroup count of the indirect dispatch that works through it (`receiversPerGroup` items per group,
+// laid out over x and y to stay inside maxComputeWorkGroupCount).
 layout(local_size_x = 1) in;
 layout(set = 0, binding = 0, std430) readonly buffer PixelList { uvec4 header; } list;
 layout(set = 0, binding = 1, std430) writeonly buffer Args { uvec4 dispatch; } args;

@@ -1,0 +1,75 @@
+#version 460
+// Camera translucency, second pass (src/dsm/translucency.h): one thread per kept layer of any pixel
+// (oit_sort.comp's list, an indirect dispatch), so that every thread does one layer's lighting: the
+// per-pixel pass lit a pixel's up to OIT_MAX_LIST layers one after another, its lanes idle wherever
+// a neighbour had more. The layer is lit like an opaque surface (every light with its shadow-map
+// filter and its deep shadow map, Lambert or Kajiya-Kay, plus the indirect irradiance gathered at
+// the pixel's opaque receiver: the GI techniques gather per G-buffer pixel, not per layer); its
+// radiance (per unit alpha, of the frame's radiance AOV) replaces the node's depth and colour:
+// node = (L.r, L.g, L.b, alpha as before).
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_control_flow_attributes : require
+#include "shared/types.h"
+#include "render/lights.glsl"
+#include "render/reconstruct.glsl"
+
+layout(local_size_x = 64) in;
+
+layout(set = 0, binding = 0) uniform Frame { FrameUniforms frame; };
+layout(set = 0, binding = 1, std430) readonly buffer Lights { GpuLight lights[]; };
+layout(set = 0, binding = 2, std430) readonly buffer Layers { uvec4 header; uvec2 entries[]; } layers;
+layout(set = 0, binding = 3, std430) buffer Nodes { uvec4 nodes[]; };
+layout(set = 0, binding = 4, std430) readonly buffer Normals { uint normals[]; };
+layout(set = 0, binding = 5) uniform sampler2D indirectIrradiance;  // GI (frame.options.x != 0)
+layout(set = 0, binding = 6) uniform Params { GpuShadowParams params; };
+layout(set = 0, binding = 7, std430) readonly buffer ShadowLayers { GpuShadowLayer shadowLayers[]; };
+// 8-11: the deep shadow maps (dsm/dsm_lookup.glsl)
+layout(set = 0, binding = 12) uniform sampler2DArray shadowDepth;
+layout(set = 0, binding = 13) uniform sampler2DArray shadowMoments;
+layout(set = 0, binding = 14, std430) readonly buffer ShadowLights { GpuShadowLight shadowLights[]; };
+
+#include "shadow/project.glsl"
+#include "shadow/moments.glsl"
+#include "shadow/pcf.glsl"
+#include "shadow/visibility.glsl"
+#include "dsm/dsm_lookup.glsl"
+#include "dsm/kajiya_kay.glsl"
+#include "dsm/octahedral.glsl"
+
+// Direct radiance towards the eye of one translucent fragment (per unit alpha).
+vec3 directRadiance(vec3 p, vec3 n, bool hair, vec3 albedo, float angle) {
+    vec3 toEye = normalize(frame.cameraPos.xyz - p);
+    if (!hair && dot(n, toEye) < 0.0) n = -n;  // two-sided: shade the side the camera sees
+    vec3 sum = vec3(0.0);
+    for (uint i = 0; i < frame.size.z; ++i) {
+        GpuLight light = lights[i];
+        vec3 l;
+        vec3 e = incidentIrradiance(light, p, l);
+        float ndotl = hair ? 1.0 : max(dot(n, l), 0.0);
+        if (ndotl <= 0.0 || all(equal(e, vec3(0.0)))) continue;
+        float v = 1.0;
+        if (light.radiance.w != NO_SHADOW)
+            v = lightVisibility(shadowLights[uint(light.radiance.w)], light, p, hair ? l : n, angle, true).x;
+        v *= deepShadowTransmittance(i, p, n, hair);
+        sum += e * v * (hair ? kajiyaKay(albedo, n, l, toEye) : albedo / PI * ndotl);
+    }
+    return sum;
+}
+
+void main() {
+    uint index = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * 64u + gl_LocalInvocationIndex;
+    uint aov = frame.size.w;
+    if (index >= layers.header.x || (aov != AOV_FINAL && aov != AOV_DIRECT && aov != AOV_INDIRECT)) return;
+    uvec2 entry = layers.entries[index];
+    ivec2 pixel = ivec2(entry.y & 0xFFFFu, entry.y >> 16);
+    uvec4 data = nodes[entry.x];
+    vec2 ba = unpackHalf2x16(data.w);
+    vec3 albedo = vec3(unpackHalf2x16(data.y), ba.x);
+    bool hair = ba.y < 0.0;
+    vec3 n = octDecode(unpackSnorm2x16(normals[entry.x]));
+    vec3 p = pixelWorldPosition(frame, pixel, uintBitsToFloat(data.x));
+    vec3 l = vec3(0.0);
+    if (aov != AOV_INDIRECT) l += directRadiance(p, n, hair, albedo, kernelAngle(pixel));
+    if (aov != AOV_DIRECT && frame.options.x != 0u) l += albedo / PI * texelFetch(indirectIrradiance, pixel, 0).rgb;
+    nodes[entry.x] = uvec4(floatBitsToUint(l.r), floatBitsToUint(l.g), floatBitsToUint(l.b), data.w);
+}
