@@ -40,13 +40,15 @@ GBufferPass::GBufferPass(vk::Allocator& alloc, SceneGpu& scene, uint32_t width, 
                             VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
                                 VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_STORAGE_BIT,
                             "gbuffer-ids"});
-    if (computeRaster)
+    if (computeRaster) {  // the compute rasterizer draws the IDs: no raster pipelines
         compute_ = std::make_unique<ComputeRaster>(alloc, scene, VkExtent2D{width, height}, 1,
                                                    ComputeRaster::Views::Camera);
-    d.colorFormats = {ids.format()};
-    pipeline_ = vk::Pipeline::graphics(ctx, d, SceneGpu::drawLayouts(ctx, drawLayout), sizeof(gpu::DrawPush));
-    d.fragmentShader = "render/visibility_masked.frag";
-    masked_ = vk::Pipeline::graphics(ctx, d, SceneGpu::drawLayouts(ctx, drawLayout), sizeof(gpu::DrawPush));
+    } else {
+        d.colorFormats = {ids.format()};
+        pipeline_ = vk::Pipeline::graphics(ctx, d, SceneGpu::drawLayouts(ctx, drawLayout), sizeof(gpu::DrawPush));
+        d.fragmentShader = "render/visibility_masked.frag";
+        masked_ = vk::Pipeline::graphics(ctx, d, SceneGpu::drawLayouts(ctx, drawLayout), sizeof(gpu::DrawPush));
+    }
     std::vector<vk::Binding> bindings = SceneGpu::resolveSetBindings();
     bindings.push_back({3, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER});
     bindings.push_back({5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});

@@ -41,6 +41,7 @@ private:
     CameraPath path_;
     bool drawBlended_;
     vk::Pipeline pipeline_, masked_;  // gbuffer: pipeline_ only; visibility: opaque and masked ID pipelines
+                                      // (none under the compute rasterizer)
     vk::DescriptorLayout resolveLayout_;
     vk::Pipeline resolve_;
     vk::Sampler nearest_;
