@@ -68,7 +68,8 @@ RsmGather::RsmGather(vk::Allocator& alloc, vk::CommandContext& cmd, uint32_t wid
     gather_ = vk::ComputeKernel(ctx, gather,
                                 {ubo, tex, tex, tex, tex, tex, ssbo, ssbo, img, ssbo, ssbo},
                                 sizeof(gpu::RsmPush));
-    interpolate_ = vk::ComputeKernel(ctx, "rsm/interpolate.comp", {ubo, tex, tex, tex, img, ssbo}, sizeof(gpu::RsmPush));
+    interpolate_ = vk::ComputeKernel(ctx, "rsm/interpolate.comp", {ubo, tex, tex, tex, img, ssbo, ssbo},
+                                     sizeof(gpu::RsmPush));
     args_ = vk::ComputeKernel(ctx, "render/indirect_args.comp", {ssbo, ssbo}, sizeof(uint32_t));
     pointSampler_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
 
@@ -184,6 +185,7 @@ void RsmGather::addTo(FrameGraph& graph, uint32_t layers, uint32_t slot) {
         .sampled(3, low, point)
         .storageImage(4, irradiance)
         .storageBuffer(5, list, Use::StorageWrite)
+        .storageBuffer(6, graph.buffer("rsm.layers"))
         .record([this, pc](PassContext& c) {
             interpolate_.pipeline.push(c.cmd, pc);
             vkCmdDispatch(c.cmd, vk::divUp(width_, 8), vk::divUp(height_, 8), 1);
