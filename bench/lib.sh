@@ -6,6 +6,7 @@ full="$techniques --width 1920 --height 1080"
 frames="--frames 60 --warmup 10"
 sponza="$assets/sponza/glTF/Sponza.gltf --camera -9,1.7,0.3,6,4.5,0,0,1,0,70 --light directional,0.1,-1,0.2,20"
 vc="$assets/VC/glTF/VC.gltf --camera 14,9,16,0,1.5,0,0,1,0,50"
+hair="hair --dsm-res 2048 --width 1920 --height 1080"  # issue 15's frame, with --shadow and --strands
 run() {  # NAME ARGS...: `penumbra bench ARGS` into NAME.json and NAME.txt, its frame lines printed
   local name=$1; shift
   "$bin" bench "$@" $frames --json "$out/$name.json" > "$out/$name.txt" 2>&1 || echo "FAILED $name"

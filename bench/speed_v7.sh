@@ -6,7 +6,6 @@
 set -euo pipefail
 bin=$1 assets=$2 out=$3
 . "$(dirname "$0")/lib.sh"
-hair="hair --dsm-res 2048 --width 1920 --height 1080"
 for n in 25000 100000; do
   run hair_1920x1080_dsm-$n $hair --shadow dsm --strands $n
   run hair_1920x1080_dsm-links-$n $hair --shadow dsm --strands $n --dsm-lookup links
