@@ -1,6 +1,6 @@
 // Camera translucency build (src/dsm/translucency.h): every hair or BLEND fragment (raster, or hair
 // in compute: dsm/ribbon_raster.glsl) in front of the opaque surface (the G-buffer depth) pushes a
-// node onto one of its pixel's DSM_CHAINS lists, as the DSM build does (dsm/dsm_insert.glsl). Needs `draw` (HairDrawPush: ids.z = image width, ids.w = node capacity).
+// node onto one of its pixel's OIT_CHAINS lists, as the DSM build does (dsm/dsm_insert.glsl). Needs `draw` (HairDrawPush: ids.z = image width, ids.w = node capacity).
 layout(set = 0, binding = 5, std430) buffer Heads { uint heads[]; };
 layout(set = 0, binding = 6, std430) writeonly buffer Nodes { uvec4 nodes[]; };
 layout(set = 0, binding = 7, std430) writeonly buffer Normals { uint normals[]; };
@@ -17,8 +17,8 @@ void oitInsert(ivec2 pixel, float depth, vec3 albedo, float alpha, vec3 normal, 
     if (depth >= texelFetch(opaqueDepth, pixel, 0).r) return;
     uint node = atomicAdd(stats.counts.x, 1u);
     if (node >= draw.ids.w) return;  // pool full: counted, dropped
-    uint chain = node % DSM_CHAINS;  // the pixel's lists, walked side by side by the composite
-    uint previous = atomicExchange(heads[(uint(pixel.y) * draw.ids.z + uint(pixel.x)) * DSM_CHAINS + chain], node);
+    uint chain = node % OIT_CHAINS;  // the pixel's lists, walked side by side by the composite
+    uint previous = atomicExchange(heads[(uint(pixel.y) * draw.ids.z + uint(pixel.x)) * OIT_CHAINS + chain], node);
     alpha = min(alpha, 1.0);
     nodes[node] = uvec4(floatBitsToUint(depth), packHalf2x16(albedo.rg), previous,
                         packHalf2x16(vec2(albedo.b, hair ? -alpha : alpha)));

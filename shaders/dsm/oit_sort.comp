@@ -1,6 +1,6 @@
 #version 460
 // Camera translucency, first of three passes (src/dsm/translucency.h), one thread per pixel: the
-// pixel's OIT_MAX_LIST nearest fragments (its DSM_CHAINS lists walked side by side) in depth order,
+// pixel's OIT_MAX_LIST nearest fragments (its OIT_CHAINS lists walked side by side) in depth order,
 // appended to the kept-layer list that oit_shade.comp lights one layer per thread, and the pixel's
 // header for oit_blend.comp: heads[4 p] = its first entry, + 1 = how many, + 2 = the log-transmittance
 // of all its fragments (the walk sums it: the merged tail needs no second walk), + 3 = the list's
@@ -19,7 +19,7 @@ layout(set = 0, binding = 4, std430) buffer Layers { uvec4 header; uvec2 entries
 layout(push_constant) uniform Push { OitPush pc; };
 
 #define SORT_CAPACITY OIT_MAX_LIST
-#define SORT_CHAINS DSM_CHAINS
+#define SORT_CHAINS OIT_CHAINS
 #define SORT_SHARED_GROUP 64
 // Clamped so that an opaque fragment (alpha 1) stays finite.
 float logTransmittanceAll;
@@ -40,10 +40,10 @@ void main() {
     if (gl_LocalInvocationIndex == 0) groupKept = groupDropped = groupLongest = 0u;
     barrier();
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-    uint base = (uint(pixel.y) * pc.sizes.x + uint(pixel.x)) * DSM_CHAINS;
-    uint chains[DSM_CHAINS];
+    uint base = (uint(pixel.y) * pc.sizes.x + uint(pixel.x)) * OIT_CHAINS;
+    uint chains[OIT_CHAINS];
     bool listed = false;
-    [[unroll]] for (int k = 0; k < DSM_CHAINS; ++k) {
+    [[unroll]] for (int k = 0; k < OIT_CHAINS; ++k) {
         chains[k] = all(lessThan(pixel, ivec2(pc.sizes.xy))) ? heads[base + k] : DSM_NONE;
         listed = listed || chains[k] != DSM_NONE;
     }

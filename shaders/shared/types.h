@@ -286,8 +286,12 @@ struct ShadowDrawPush {
 // The build pushes a texel's fragments onto DSM_CHAINS lists (by node index), which the resolve walks
 // side by side, so that its reads of the unsorted nodes are DSM_CHAINS at a time, not one after
 // another. A texel's DSM_CHAINS heads are consecutive; after the resolve the first holds the head of
-// its sorted list and the second that list's length (0: not packed, written in place).
-#define DSM_CHAINS 4
+// its sorted list and the second that list's length (0: not packed, written in place). The camera's
+// lists likewise, OIT_CHAINS per pixel (at least 4: the pixel's header after oit.sort is 4 uints).
+// H100, hair at 1080p: 2 and 4 (25k strands 6.17 ms, 100k 14.68); 4 and 4 (6.29, 14.70); 4 and 8
+// (6.53, 15.01): more lists keep more reads in flight but spread the builds' atomics over more memory.
+#define DSM_CHAINS 2
+#define OIT_CHAINS 4
 
 // A DSM node is a uvec4 in the node pool: x = depth (float bits: distance from a spot light, depth
 // along a directional light), y = alpha (build) then the transmittance behind the node (resolve),

@@ -29,7 +29,7 @@ CameraTranslucency::CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, co
     capacity_ = std::min(pixels * kNodesPerPixel, devicePoolLimit(ctx));
     const VkBufferUsageFlags usage =
         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
-    heads_ = vk::Buffer(alloc, pixels * 4 * DSM_CHAINS, usage, false, "oit-heads");
+    heads_ = vk::Buffer(alloc, pixels * 4 * OIT_CHAINS, usage, false, "oit-heads");
     nodes_ = vk::Buffer(alloc, capacity_ * 16, usage, false, "oit-nodes");
     normals_ = vk::Buffer(alloc, capacity_ * 4, usage, false, "oit-normals");
     stats_ = vk::Buffer(alloc, sizeof(gpu::OitStats), usage, false, "oit-stats");
