@@ -232,7 +232,7 @@ vec3 gather(vec3 x, vec3 n, bool hair, uint lane, uint lanes) {
 }
 
 // Receivers share out their samples: `lanes` (push sampling.w: 1, 2, 4 or 8) invocations of a
-// workgroup per receiver, each summing every lanes-th sample, their sums added in shared memory. The
+// workgroup per receiver, each summing a run of consecutive samples, their sums added in shared memory. The
 // fallback list is a few percent of the pixels: one invocation each left most of the H100's SMs
 // waiting on memory (its per-pixel cost was 4x the low-res pass's). The voxel pipeline keeps one lane:
 // its visible share is a ratio per receiver and layer.

@@ -9,27 +9,31 @@ DeepShadowResolvePass::DeepShadowResolvePass(vk::Allocator& alloc, DsmResources&
     link_ = vk::ComputeKernel(alloc.context(), "dsm/link.comp", {ssbo, ssbo, ssbo}, sizeof(gpu::DsmPush));
 }
 
-// One thread per texel of every layer. The resolve rewrites the heads (binding 0: each list's packed
-// place and length), the nodes (1), its counters (2) and the search keys (3, the side buffer); the
-// link pass reads the heads and writes the nodes' right links and the side buffer's upper links.
-void DeepShadowResolvePass::addDispatch(FrameGraph& graph, const char* name, const vk::ComputeKernel& k) const {
+// One thread per texel of every layer. Both passes rewrite the nodes (binding 1) and the side buffer:
+// the resolve its search keys (3), the link pass its upper links (2).
+void DeepShadowResolvePass::addDispatch(PassBuilder& pass, const vk::ComputeKernel& k) const {
     const gpu::DsmPush push{{res_.resolution, res_.layerCount(), uint32_t(res_.capacity), res_.maxList}};
-    const bool resolve = &k == &resolve_;
-    PassBuilder pass = graph.pass(name);
-    pass.pipeline(k.pipeline)
-        .storageBuffer(0, graph.import(res_.heads), resolve ? Use::StorageWrite : Use::StorageRead)
-        .storageBuffer(1, graph.import(res_.nodes), Use::StorageWrite)
-        .storageBuffer(2, graph.import(resolve ? res_.stats : res_.side), Use::StorageWrite);
-    if (resolve) pass.storageBuffer(3, graph.import(res_.side), Use::StorageWrite);
-    pass.record([this, &k, push](PassContext& c) {
-            k.pipeline.push(c.cmd, push);
-            vkCmdDispatch(c.cmd, vk::divUp(res_.resolution, 8), vk::divUp(res_.resolution, 8), res_.layerCount());
-        });
+    pass.pipeline(k.pipeline).record([this, &k, push](PassContext& c) {
+        k.pipeline.push(c.cmd, push);
+        vkCmdDispatch(c.cmd, vk::divUp(res_.resolution, 8), vk::divUp(res_.resolution, 8), res_.layerCount());
+    });
 }
 
 void DeepShadowResolvePass::addTo(FrameGraph& graph) {
-    addDispatch(graph, "dsm.resolve", resolve_);
-    if (links_) addDispatch(graph, "dsm.link", link_);
+    const BufferHandle heads = graph.import(res_.heads), nodes = graph.import(res_.nodes),
+                       side = graph.import(res_.side);
+    PassBuilder resolve = graph.pass("dsm.resolve");
+    resolve.storageBuffer(0, heads, Use::StorageWrite)  // each list's packed place and length
+        .storageBuffer(1, nodes, Use::StorageWrite)
+        .storageBuffer(2, graph.import(res_.stats), Use::StorageWrite)
+        .storageBuffer(3, side, Use::StorageWrite);
+    addDispatch(resolve, resolve_);
+    if (!links_) return;
+    PassBuilder link = graph.pass("dsm.link");
+    link.storageBuffer(0, heads, Use::StorageRead)
+        .storageBuffer(1, nodes, Use::StorageWrite)
+        .storageBuffer(2, side, Use::StorageWrite);
+    addDispatch(link, link_);
 }
 
 }  // namespace penumbra

@@ -15,7 +15,7 @@ public:
     void addTo(FrameGraph& graph);
 
 private:
-    void addDispatch(FrameGraph& graph, const char* name, const vk::ComputeKernel& k) const;
+    void addDispatch(PassBuilder& pass, const vk::ComputeKernel& k) const;
     vk::Allocator& alloc_;
     DsmResources& res_;
     vk::ComputeKernel resolve_, link_;

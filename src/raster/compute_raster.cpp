@@ -204,31 +204,30 @@ void ComputeRaster::declareRasterSet(PassBuilder& pass, FrameGraph& graph, Buffe
 // list placed in the list buffer), scatter (each entry's record into its tile's list).
 void ComputeRaster::addTileLists(FrameGraph& graph, const std::string& name, BufferHandle viewRows,
                                  const gpu::RasterPush& p) {
-    const BufferHandle args = graph.import(dispatchArgs_), depth = graph.import(depth_),
-                       depthIds = graph.import(depthIds_);
-    for (const vk::ComputeKernel* k : {&bin_, &scatter_}) {
-        const bool binning = k == &bin_;
-        PassBuilder pass = graph.pass(name + (binning ? ".bin" : ".scatter"));
-        pass.pipeline(k->pipeline);
+    // Bin and scatter: indirect dispatches over the triangle records (args row 1) and the entries (row 0).
+    auto listPass = [&](const char* suffix, const vk::ComputeKernel& k, VkDeviceSize argsOffset) {
+        PassBuilder pass = graph.pass(name + suffix);
+        pass.pipeline(k.pipeline);
         declareRasterSet(pass, graph, viewRows, Use::StorageWrite);
-        pass.storageBuffer(3, depth, Use::StorageRead)
-            .storageBuffer(16, depthIds, Use::StorageRead)
-            .use(args, Use::IndirectArgs)
-            .record([this, k, p, binning](PassContext& c) {
-                k->pipeline.push(c.cmd, p);
-                vkCmdDispatchIndirect(c.cmd, dispatchArgs_.handle(), binning ? sizeof(gpu::uvec4) : 0);
+        pass.storageBuffer(3, graph.import(depth_), Use::StorageRead)
+            .storageBuffer(16, graph.import(depthIds_), Use::StorageRead)
+            .use(graph.import(dispatchArgs_), Use::IndirectArgs)
+            .record([this, &k, p, argsOffset](PassContext& c) {
+                k.pipeline.push(c.cmd, p);
+                vkCmdDispatchIndirect(c.cmd, dispatchArgs_.handle(), argsOffset);
             });
-        if (!binning) continue;
-        const gpu::uvec4 bins{binCount(), 0, 0, 0};
-        graph.pass(name + ".place")
-            .pipeline(place_.pipeline)
-            .storageBuffer(0, graph.import(tileBins_), Use::StorageWrite)
-            .storageBuffer(1, graph.import(counters_), Use::StorageWrite)
-            .record([this, bins](PassContext& c) {
-                place_.pipeline.push(c.cmd, bins);
-                vkCmdDispatch(c.cmd, vk::divUp(bins.x, RASTER_PLACE_GROUP), 1, 1);
-            });
-    }
+    };
+    listPass(".bin", bin_, sizeof(gpu::uvec4));
+    const gpu::uvec4 bins{binCount(), 0, 0, 0};
+    graph.pass(name + ".place")
+        .pipeline(place_.pipeline)
+        .storageBuffer(0, graph.import(tileBins_), Use::StorageWrite)
+        .storageBuffer(1, graph.import(counters_), Use::StorageWrite)
+        .record([this, bins](PassContext& c) {
+            place_.pipeline.push(c.cmd, bins);
+            vkCmdDispatch(c.cmd, vk::divUp(bins.x, RASTER_PLACE_GROUP), 1, 1);
+        });
+    listPass(".scatter", scatter_, 0);
 }
 
 void ComputeRaster::addResolve(FrameGraph& graph, const std::string& name, ImageHandle target) {

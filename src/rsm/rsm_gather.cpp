@@ -116,11 +116,15 @@ void RsmGather::setSettings(const RsmSettings& s) {
 // for RSM_GATHER_LOWRES (which the interpolation reads), the full image's otherwise.
 gpu::RsmPush RsmGather::constants(uint32_t mode, uint32_t layers) const {
     const bool low = mode == RSM_GATHER_LOWRES;
-    const uint32_t lanes = settings_.visibility == RsmVisibility::Voxels ? 1u : lanesPerReceiver(mode);
     return {{mode, settings_.samples, layers, std::max(1u, settings_.lowResFactor)},
             {low ? lowWidth_ : width_, low ? lowHeight_ : height_, settings_.resolution, settings_.bilinearVpls ? 1u : 0u},
             {settings_.normalThreshold, settings_.distanceThreshold, settings_.radius, 0},
-            {visibilityMode(), settings_.visibilityRays, settings_.weights == RsmWeights::Paper ? 1u : 0u, lanes}};
+            {visibilityMode(), settings_.visibilityRays, settings_.weights == RsmWeights::Paper ? 1u : 0u, lanes(mode)}};
+}
+
+// The voxel pipeline keeps one invocation per receiver: its visible share is a ratio per receiver.
+uint32_t RsmGather::lanes(uint32_t mode) const {
+    return settings_.visibility == RsmVisibility::Voxels ? 1u : lanesPerReceiver(mode);
 }
 
 uint32_t RsmGather::visibilityMode() const {
@@ -195,9 +199,8 @@ void RsmGather::addTo(FrameGraph& graph, uint32_t layers, uint32_t slot) {
         .pipeline(args_.pipeline)
         .storageBuffer(0, list, Use::StorageRead)
         .storageBuffer(1, args, Use::StorageWrite)
-        .record([this, layers](PassContext& c) {
-            const uint32_t receiversPerGroup = 64 / constants(RSM_GATHER_LIST, layers).sampling.w;
-            args_.pipeline.push(c.cmd, receiversPerGroup);
+        .record([this](PassContext& c) {
+            args_.pipeline.push(c.cmd, 64 / lanes(RSM_GATHER_LIST));  // receivers per gather workgroup
             vkCmdDispatch(c.cmd, 1, 1, 1);
         });
     addGather(graph, "rsm.gather-fallback", RSM_GATHER_LIST, irradiance, layers);
