@@ -169,7 +169,7 @@ TEST_F(GpuTest, DsmListsAndLinksAreConsistent) {
     const DsmFrameStats st = r.deepShadows().readStats(r.commands());
     ASSERT_EQ(st.overflow, 0u);
     const uint32_t n = res.resolution;
-    auto heads = r.commands().readBuffer(res.heads, VkDeviceSize(n) * n * 4 * DSM_CHAINS);  // head, length, ...
+    auto heads = r.commands().readBuffer(res.heads, VkDeviceSize(n) * n * 4 * DSM_HEAD_UINTS);  // head, length, ...
     // The resolve packs the sorted lists after the build's nodes (dsm/resolve.comp).
     const uint64_t used = std::min<uint64_t>(st.fragments + st.kept, res.capacity);
     auto nodeBytes = r.commands().readBuffer(res.nodes, used * 16);
@@ -184,7 +184,7 @@ TEST_F(GpuTest, DsmListsAndLinksAreConsistent) {
     for (uint32_t t = 0; t < n * n; ++t) {
         uint32_t len = 0;
         float lastDepth = -1e30f, lastT = 1.0f;
-        for (uint32_t i = head[t * DSM_CHAINS]; i != DSM_NONE && len <= rs.dsm.maxList; i = node[i].z, ++len) {
+        for (uint32_t i = head[t * DSM_HEAD_UINTS]; i != DSM_NONE && len <= rs.dsm.maxList; i = node[i].z, ++len) {
             owner[i] = t;
             scattered += node[i].z != DSM_NONE && node[i].z != i + 1;  // packed: each list in consecutive nodes
             unsorted += depth(i) < lastDepth;
@@ -193,7 +193,7 @@ TEST_F(GpuTest, DsmListsAndLinksAreConsistent) {
             lastT = glm::uintBitsToFloat(node[i].y);
         }
         tooLong += len > rs.dsm.maxList;
-        wrongLength += head[t * DSM_CHAINS] != DSM_NONE && head[t * DSM_CHAINS + 1] != len;
+        wrongLength += head[t * DSM_HEAD_UINTS] != DSM_NONE && head[t * DSM_HEAD_UINTS + 1] != len;
         kept += len;
     }
     // A link from node i of texel t to texel u (DSM_NONE: u has nothing at or in front of i).
@@ -201,7 +201,7 @@ TEST_F(GpuTest, DsmListsAndLinksAreConsistent) {
     auto checkLink = [&](uint32_t i, uint32_t link, uint32_t u) {
         ++links;
         uint32_t expected = DSM_NONE;
-        for (uint32_t j = head[u * DSM_CHAINS]; j != DSM_NONE && depth(j) <= depth(i); j = node[j].z) expected = j;
+        for (uint32_t j = head[u * DSM_HEAD_UINTS]; j != DSM_NONE && depth(j) <= depth(i); j = node[j].z) expected = j;
         badLinks += link != expected;
     };
     for (uint32_t i = 0; i < used; ++i) {
@@ -243,10 +243,10 @@ TEST_F(GpuTest, DsmSearchLookupEqualsTheLinkWalk) {
         if (stats) *stats = r.deepShadows().readStats(r.commands());
         const DsmResources& res = r.deepShadows().resources();
         const uint32_t texels = res.resolution * res.resolution;
-        const std::vector<uint8_t> bytes = r.commands().readBuffer(res.heads, VkDeviceSize(texels) * 4 * DSM_CHAINS);
+        const std::vector<uint8_t> bytes = r.commands().readBuffer(res.heads, VkDeviceSize(texels) * 4 * DSM_HEAD_UINTS);
         const auto* heads = reinterpret_cast<const uint32_t*>(bytes.data());
         for (uint32_t t = 0; t < texels; ++t)
-            inPlace += heads[t * DSM_CHAINS] != DSM_NONE && heads[t * DSM_CHAINS + 1] == 0;
+            inPlace += heads[t * DSM_HEAD_UINTS] != DSM_NONE && heads[t * DSM_HEAD_UINTS + 1] == 0;
         return r.readHdr();
     };
     DsmFrameStats roomy;

@@ -37,17 +37,17 @@ uint32_t addBlendMaterial(Scene& s, float alpha) {
     return m;
 }
 
-// Layers j = 0..n-1 at y = 1 + 0.1 j, 4 x 4, facing down towards a directional light that shines
+// Layers j = 0..n-1 at y = 1 + spacing j, 4 x 4, facing down towards a directional light that shines
 // up: the light sees their fronts, the camera above their backs (culled: the camera sees through
 // them). Opaque receivers above every layer (x > 0) and below every layer (x < 0).
 // Layer j has opacity alphas[j] and is added in the order `order` (which the GPU draws in).
-Scene stackedLayers(const std::vector<float>& alphas, const std::vector<size_t>& order) {
+Scene stackedLayers(const std::vector<float>& alphas, const std::vector<size_t>& order, float spacing = 0.1f) {
     Scene s;
     s.name = "dsm-layers";
     std::vector<uint32_t> materials;
     for (float a : alphas) materials.push_back(addBlendMaterial(s, a));
     for (size_t j : order)
-        addQuad(s, {-2.0f, 1.0f + 0.1f * float(j), -2.0f}, {4, 0, 0}, {0, 0, 4}, materials[j]);  // normal -y
+        addQuad(s, {-2.0f, 1.0f + spacing * float(j), -2.0f}, {4, 0, 0}, {0, 0, 4}, materials[j]);  // normal -y
     const uint32_t grey = addMaterial(s, glm::vec3(0.5f));
     addQuad(s, {0.2f, kCeilingY, -1.5f}, {0, 0, 3}, {1.3f, 0, 0}, grey);   // above the layers, facing up
     addQuad(s, {-1.5f, kFloorY, -1.5f}, {0, 0, 3}, {1.3f, 0, 0}, grey);    // below them, facing up
@@ -189,6 +189,36 @@ TEST_F(DsmTest, ListCapKeepsNearestNodes) {
 // closed form (1 - 0.3)^k exactly (the opacity map's optical depths add up to -ln T whatever layers
 // they fall in), in front of them 1. Between strands the deep opacity map interpolates within its
 // layers where the lists are exact: that difference is what `eval --hair` measures.
+// 300 layers in one texel, drawn in a shuffled order: more nodes than the resolve's shared slots
+// (2 x DSM_MAX_LIST_CAP), so they come in batches, and after the first sort only nodes nearer than
+// the farthest kept take a slot. Behind all of them the transmittance is the product over the cap's
+// nearest layers (by depth from the light, not by drawing order), for the default cap and the largest.
+TEST_F(DsmTest, LongListsKeepTheNearestNodesAcrossBatches) {
+    constexpr size_t kLayers = 300;
+    std::vector<float> alphas(kLayers);
+    for (size_t j = 0; j < kLayers; ++j) alphas[j] = 0.01f + 0.04f * float(j) / kLayers + 0.002f * float((j * 37) % 11);
+    const Scene s = stackedLayers(alphas, shuffled(kLayers, 11), 0.005f);
+    for (uint32_t cap : {50u, uint32_t(DSM_MAX_LIST_CAP)}) {
+        DsmSettings dsm;
+        dsm.maxList = cap;
+        dsm.poolNodes = 1 << 20;  // every fragment (1764 texels x 300) and the sorted lists
+        const DsmRun run = renderDsm(s, topCamera(), kW, kH, Aov::Transmittance, dsm);
+        EXPECT_EQ(run.stats.overflow, 0u);
+        double nearest = 1.0, farthest = 1.0;
+        for (size_t j = 0; j < cap; ++j) nearest *= 1.0 - double(alphas[j]), farthest *= 1.0 - double(alphas[kLayers - 1 - j]);
+        const double err = maxError(run.image, platePixels(kCeilingY, true), nearest);
+        std::printf("[dsm long lists] cap %u: T = %.6f against the nearest %u layers' %.6f (farthest %u: %.6f), max "
+                    "error %.2e\n", cap, double(run.image.at(platePixels(kCeilingY, true)[0].first,
+                                                             platePixels(kCeilingY, true)[0].second)),
+                    cap, nearest, cap, farthest, err);
+        EXPECT_LT(err, 1e-3) << "cap " << cap;
+        EXPECT_EQ(run.stats.longest, kLayers);
+        EXPECT_GT(run.stats.lists, 0u);
+        EXPECT_EQ(run.stats.kept, cap * run.stats.lists);
+        EXPECT_EQ(run.stats.beyondMaxList, (kLayers - cap) * run.stats.lists);
+    }
+}
+
 TEST_F(DsmTest, StackedStrandsGiveClosedFormTransmittanceInBothTechniques) {
     constexpr float kAlpha = 0.3f;
     const auto above = platePixels(kCeilingY, true), below = platePixels(kFloorY, false);

@@ -1,5 +1,7 @@
-// The DSM build's one job per light-space fragment (raster or compute, dsm/ribbon_raster.glsl): allocate a node from the pool (one atomic add)
-// and push it onto one of the texel's DSM_CHAINS lists (one atomic exchange, one store). Needs `draw` (HairDrawPush:
+// The DSM build's one job per light-space fragment (raster or compute, dsm/ribbon_raster.glsl): allocate a node from
+// the pool (one atomic add), count it in its texel (one atomic add: the node's place among the texel's, which the
+// scatter pass turns into a place in the texel's run of node indices) and store it (one store). No lists: the
+// resolve finds a texel's nodes through that run, not by walking pointers (dsm/resolve.comp). Needs `draw` (HairDrawPush:
 // ids.x = DSM layer, ids.z = the scene light, or DSM_NONE for no depth test, ids.w = capacity).
 // A full pool drops the fragment; the counter keeps counting, so the overflow is known exactly and
 // no list ever points at a node that was not written.
@@ -67,7 +69,7 @@ void dsmInsert(uvec2 texel, float depth, float alpha, vec3 world) {
     uint node = atomicAdd(stats.build.x, 1u);
     if (node >= draw.ids.w) return;
     uint res = uint(draw.footprint.z);
-    uint chain = node % DSM_CHAINS;  // spread over the texel's chains (shared/types.h)
-    uint previous = atomicExchange(heads[((draw.ids.x * res + texel.y) * res + texel.x) * DSM_CHAINS + chain], node);
-    nodes[node] = uvec4(floatBitsToUint(depth), floatBitsToUint(min(alpha, 1.0)), previous, DSM_NONE);
+    uint index = (draw.ids.x * res + texel.y) * res + texel.x;
+    uint place = atomicAdd(heads[index * DSM_HEAD_UINTS], 1u);  // the texel's count (shared/types.h)
+    nodes[node] = uvec4(floatBitsToUint(depth), floatBitsToUint(min(alpha, 1.0)), index, place);
 }

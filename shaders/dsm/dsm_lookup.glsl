@@ -20,7 +20,7 @@ float dsmTransmittanceOf(uint n) { return n == DSM_NONE ? 1.0 : uintBitsToFloat(
 uint dsmFind(uint texel, float d, uint hint) {
     uint n = hint;
     if (n == DSM_NONE) {
-        n = dsmHeads[texel * DSM_CHAINS];
+        n = dsmHeads[texel * DSM_HEAD_UINTS];
         if (n == DSM_NONE || dsmNodeDepth(n) > d) return DSM_NONE;
     }
     for (uint i = 0; i < DSM_MAX_LIST_CAP; ++i) {  // resolved lists are never longer
@@ -57,9 +57,9 @@ float dsmTapWeight(float s, float width, int i) {
 // of batches: that loop made the default kernel's pass slower on the H100 (oit.shade 0.85 -> 0.99 ms
 // at 25k strands, lighting 0.12 -> 0.14; its registers), so the wide path stays scalar.
 float dsmSearchOne(uint texel, float d) {
-    uint first = dsmHeads[texel * DSM_CHAINS];
+    uint first = dsmHeads[texel * DSM_HEAD_UINTS];
     if (first == DSM_NONE) return 1.0;
-    uint length = dsmHeads[texel * DSM_CHAINS + 1u];
+    uint length = dsmHeads[texel * DSM_HEAD_UINTS + 1u];
     if (length == 0u) return dsmTransmittanceOf(dsmFind(texel, d, DSM_NONE));  // not packed: walk it
     uint before = 0u;  // nodes with depth <= d
     while (length > 0u) {
@@ -92,8 +92,8 @@ float dsmSearchKernel(uint base, int res, ivec2 lo, ivec2 hi, vec2 s, float widt
         const ivec2 t = lo + ivec2(k % nx, k / nx);
         const bool inside = k < taps && all(greaterThanEqual(t, ivec2(0))) && all(lessThan(t, ivec2(res)));
         const uint texel = base + uint(t.y * res + t.x);
-        at[k] = inside ? dsmHeads[texel * DSM_CHAINS] : DSM_NONE;
-        state[k] = at[k] != DSM_NONE ? dsmHeads[texel * DSM_CHAINS + 1u] << 1 : 0u;
+        at[k] = inside ? dsmHeads[texel * DSM_HEAD_UINTS] : DSM_NONE;
+        state[k] = at[k] != DSM_NONE ? dsmHeads[texel * DSM_HEAD_UINTS + 1u] << 1 : 0u;
         if (at[k] != DSM_NONE && state[k] == 0u) {  // not packed (pool full): walk it
             const uint n = dsmFind(texel, d, DSM_NONE);
             at[k] = n + 1u;
@@ -200,7 +200,7 @@ float dsmListLengthAov(ivec2 pixel, uvec2 size, uint lightCount) {
             vec4 layers = uintBitsToFloat(dsmNodes[index]);
             return float(dsmHeads[index] != DSM_NONE) * dot(vec4(greaterThan(layers, vec4(0.0))), vec4(1.0));
         }
-        uint n = dsmHeads[index * DSM_CHAINS];
+        uint n = dsmHeads[index * DSM_HEAD_UINTS];
         uint length = 0;
         for (; n != DSM_NONE && length < DSM_MAX_LIST_CAP; n = dsmNodes[n].z) ++length;
         return float(length);

@@ -35,8 +35,8 @@ void main() {
     uvec3 id = gl_GlobalInvocationID;
     if (id.x >= res || id.y >= res) return;
     uint texel = (id.z * res + id.y) * res + id.x;
-    uint head = heads[texel * DSM_CHAINS];  // the resolved list (shared/types.h)
+    uint head = heads[texel * DSM_HEAD_UINTS];  // the resolved list (shared/types.h)
     if (head == DSM_NONE) return;
-    link(head, id.x + 1 < res ? heads[(texel + 1) * DSM_CHAINS] : DSM_NONE, true);
-    link(head, id.y + 1 < res ? heads[(texel + res) * DSM_CHAINS] : DSM_NONE, false);
+    link(head, id.x + 1 < res ? heads[(texel + 1) * DSM_HEAD_UINTS] : DSM_NONE, true);
+    link(head, id.y + 1 < res ? heads[(texel + res) * DSM_HEAD_UINTS] : DSM_NONE, false);
 }

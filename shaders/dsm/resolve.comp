@@ -1,105 +1,128 @@
 #version 460
-// DSM resolve, one thread per texel of every layer. The build left each list in drawing order, its
-// nodes scattered over the pool; this keeps the list's `maxList` nearest nodes, sorted by depth, each
-// holding the transmittance behind it, T_k = prod_{j<=k} (1 - alpha_j). Farther nodes (the list's
-// tail after sorting) are unlinked and counted.
+// DSM resolve, one workgroup per texel with nodes (the work list of dsm.offsets; a fixed grid of
+// workgroups strides over it): the texel's `maxList` nearest nodes sorted by depth, each holding the
+// transmittance behind it, T_k = prod_{j<=k} (1 - alpha_j); farther nodes are dropped (dsm.offsets
+// counted them). The texel's nodes (found through its run of indices in the side buffer,
+// dsm.scatter) go into shared slots, a bitonic network sorts them and the nearest `maxList` stay; a
+// list longer than the slots comes in batches, and once the cap is full only nodes nearer than the
+// farthest kept take a slot. (One thread
+// per texel walking linked lists into a heap kept 50 heap entries per thread in local memory, which
+// the H100 could not hold in L1: 0.84 of the resolve's 1.16 ms at 25k strands went to the heap; one
+// workgroup per 8x8 tile, sorting its texels one after another, made a dense tile the whole pass's
+// critical path. README "Deep shadow maps".)
 //
-// The sorted nodes are written packed: a workgroup's lists (an 8x8 tile of texels) side by side in
-// the pool after the build's nodes, each list in consecutive nodes, so that the link pass and every
-// lookup walk memory in order (the lookups of the camera's hair layers walked scattered nodes: most
-// of oit.composite on the H100). The texel's first head slot then points at the packed list, its
-// second holds the list's length, and the side buffer its depths (one uint per node, the depths
-// alone: a binary search touches 4 bytes a step, not a node's 16). When the pool has no room left
-// for a tile, its lists are written back in place into their own first nodes instead, with length
-// 0 (not packed: a lookup walks them). The build's nodes of a texel are on DSM_CHAINS lists
-// (shared/types.h), walked side by side.
+// The sorted nodes are written packed after the build's nodes (at the place dsm.offsets gave the
+// list: an 8x8 tile's lists side by side), each list in consecutive nodes, so that the link pass and
+// every lookup walk memory in order. The texel's first head slot then points
+// at the packed list, its second holds the list's length, and the side buffer its depths (one uint
+// per node: a binary search touches 4 bytes a step, not a node's 16). When the pool has no room left
+// for a tile's lists, they are written in place into the texel's own nodes instead, linked in order, with
+// length 0 (not packed: a lookup walks them). Equal depths are ordered by alpha, so that the same
+// nodes are kept every run.
 #extension GL_GOOGLE_include_directive : require
-#extension GL_EXT_control_flow_attributes : require
 #include "shared/types.h"
 
-layout(local_size_x = 8, local_size_y = 8) in;
+#define GROUP_SIZE 64
+// Shared sort slots: up to DSM_MAX_LIST_CAP kept nodes and the batches that come after them.
+#define SORT_SLOTS (2 * DSM_MAX_LIST_CAP)
+
+layout(local_size_x = GROUP_SIZE) in;
 layout(set = 0, binding = 0, std430) buffer Heads { uint heads[]; };
 layout(set = 0, binding = 1, std430) buffer Nodes { uvec4 nodes[]; };
 layout(set = 0, binding = 2, std430) buffer Stats { DsmStats stats; };
-layout(set = 0, binding = 3, std430) writeonly buffer Keys { uint keys[]; };  // the side buffer
+layout(set = 0, binding = 3, std430) buffer Side { uint side[]; };  // runs in, search keys out
+layout(set = 0, binding = 4, std430) readonly buffer Work { uvec4 header; uvec2 lists[]; } work;  // (texel, first)
 layout(push_constant) uniform Push { DsmPush pc; };
 
-shared uint groupKept, groupDropped, groupLongest, groupLists, groupPacked;
+shared uvec2 slots[SORT_SLOTS];  // (depth bits, alpha bits)
+shared uint slotCount;
 
-#define SORT_CAPACITY DSM_MAX_LIST_CAP
-#define SORT_CHAINS DSM_CHAINS
-vec2 sortEntry(uint n, uvec4 node) { return vec2(uintBitsToFloat(node.x), uintBitsToFloat(node.y)); }  // (depth, alpha)
-uint sortTieKey(vec2 e) { return floatBitsToUint(e.y); }
-#include "dsm/sort_nearest.glsl"
+const uvec2 kPad = uvec2(0x7F800000u, 0xFFFFFFFFu);  // +inf: sorts after every node
 
-// The node after n when the texel's chains are read one after the other (chain c holds n).
-uint nextInChains(uint n, uint chains[DSM_CHAINS], inout uint c) {
-    uint next = nodes[n].z;
-    while (next == DSM_NONE && ++c < DSM_CHAINS) next = chains[c];
-    return next;
+// Whether a goes before b: nearer, or as near with a smaller alpha.
+bool nearer(uvec2 a, uvec2 b) {
+    float da = uintBitsToFloat(a.x), db = uintBitsToFloat(b.x);
+    return da < db || (da == db && a.y < b.y);
 }
 
-// Writes the `count` sorted entries as one list: at `first` onwards (packed), or, with first ==
-// DSM_NONE, into the texel's own first nodes (in place, over its chains one after the other).
-// Either way the texel's first head slot then holds the list's head, the second its length (0 in
-// place: not packed).
-void writeList(uint texel, uint chains[DSM_CHAINS], uint count, uint first) {
-    float t = 1.0;
-    uint c = 0u;
-    while (chains[c] == DSM_NONE) ++c;  // a texel with a list has a chain that is not empty
-    uint n = first == DSM_NONE ? chains[c] : first;
-    heads[texel * DSM_CHAINS] = n;
-    heads[texel * DSM_CHAINS + 1u] = first == DSM_NONE ? 0u : count;
-    for (uint i = 0; i < count; ++i) {
-        uint next = first == DSM_NONE ? nextInChains(n, chains, c) : n + 1;
-        t *= 1.0 - clamp(sorted(i).y, 0.0, 1.0);
-        nodes[n] = uvec4(floatBitsToUint(sorted(i).x), floatBitsToUint(t), i + 1 < count ? next : DSM_NONE, DSM_NONE);
-        if (first != DSM_NONE) keys[n] = floatBitsToUint(sorted(i).x);
-        n = next;
+// Sorts slots[0, count) ascending (count a power of two), every thread taking its share of each
+// step's pairs; ends with a barrier.
+void bitonicSort(uint count) {
+    for (uint k = 2u; k <= count; k <<= 1)
+        for (uint j = k >> 1; j > 0u; j >>= 1) {
+            for (uint p = gl_LocalInvocationIndex; p < count / 2u; p += GROUP_SIZE) {
+                uint i = ((p & ~(j - 1u)) << 1) | (p & (j - 1u));
+                uvec2 a = slots[i], b = slots[i | j];
+                if ((i & k) == 0u ? nearer(b, a) : nearer(a, b)) {
+                    slots[i] = b;
+                    slots[i | j] = a;
+                }
+            }
+            barrier();
+        }
+}
+
+// Sorts slots[0, filled) and keeps the `maxList` nearest; returns how many it kept. Ends with a barrier.
+uint sortSlots(uint filled, uint maxList) {
+    uint size = filled <= 1u ? 1u : 1u << (findMSB(filled - 1u) + 1);
+    for (uint s = filled + gl_LocalInvocationIndex; s < size; s += GROUP_SIZE) slots[s] = kPad;
+    barrier();
+    bitonicSort(size);
+    uint kept = min(maxList, filled);
+    if (gl_LocalInvocationIndex == 0u) slotCount = kept;
+    barrier();
+    return kept;
+}
+
+// Leaves the `maxList` nearest of the `count` nodes at side[run...] sorted in slots[0, kept). The
+// nodes come GROUP_SIZE at a time; once `maxList` are kept, only nodes nearer than the farthest of
+// them take a slot, so that a long list's tail (most of it, in dense hair) costs a read and a
+// comparison, not a place in the sort.
+uint sortNearest(uint run, uint count, uint maxList) {
+    if (gl_LocalInvocationIndex == 0u) slotCount = 0u;
+    barrier();
+    uint filled = 0u;
+    uvec2 farthestKept = kPad;
+    for (uint done = 0u; done < count; done += GROUP_SIZE) {
+        if (filled + GROUP_SIZE > SORT_SLOTS) {
+            filled = sortSlots(filled, maxList);
+            farthestKept = filled == maxList ? slots[filled - 1u] : kPad;
+        }
+        uint i = done + gl_LocalInvocationIndex;
+        if (i < count) {
+            uvec2 e = nodes[side[run + i]].xy;
+            if (nearer(e, farthestKept)) slots[atomicAdd(slotCount, 1u)] = e;
+        }
+        barrier();
+        filled = slotCount;
+        barrier();  // every thread has read slotCount before sortSlots resets it
     }
+    return sortSlots(filled, maxList);
+}
+
+// Writes the sorted `count` nodes of slots as the texel's list: packed at `first` onwards, or, with
+// first == DSM_NONE, into the texel's own nodes (side[run...]). Ends with a barrier.
+void writeList(uint texel, uint run, uint count, uint first) {
+    bool packed = first != DSM_NONE;
+    for (uint k = gl_LocalInvocationIndex; k < count; k += GROUP_SIZE) {
+        float t = 1.0;  // the same products, in the same order, as a walk down the list
+        for (uint i = 0u; i <= k; ++i) t *= 1.0 - clamp(uintBitsToFloat(slots[i].y), 0.0, 1.0);
+        uint node = packed ? first + k : side[run + k];
+        uint next = k + 1u == count ? DSM_NONE : packed ? node + 1u : side[run + k + 1u];
+        nodes[node] = uvec4(slots[k].x, floatBitsToUint(t), next, DSM_NONE);
+        if (packed) side[node] = slots[k].x;
+    }
+    if (gl_LocalInvocationIndex == 0u) {
+        heads[texel * DSM_HEAD_UINTS] = packed ? first : side[run];
+        heads[texel * DSM_HEAD_UINTS + 1u] = packed ? count : 0u;
+    }
+    barrier();
 }
 
 void main() {
-    if (gl_LocalInvocationIndex == 0) {
-        groupKept = 0u;
-        groupDropped = 0u;
-        groupLongest = 0u;
-        groupLists = 0u;
-    }
-    barrier();
-    const uint res = pc.sizes.x;
-    uvec3 id = gl_GlobalInvocationID;
-    uint texel = (id.z * res + id.y) * res + id.x;
-    uint chains[DSM_CHAINS];
-    bool listed = false;
-    [[unroll]] for (int k = 0; k < DSM_CHAINS; ++k) {
-        chains[k] = id.x < res && id.y < res ? heads[texel * DSM_CHAINS + k] : DSM_NONE;
-        listed = listed || chains[k] != DSM_NONE;
-    }
-    uint count = 0u, length = 0u;
-    if (listed) length = sortNearest(chains, pc.sizes.w, pc.sizes.z, count);  // the pool bounds a list
-    // This texel's place among the tile's packed lists, then the tile's place in the pool (one
-    // global atomic per tile, on a counter of its own: build.z).
-    uint offset = atomicAdd(groupKept, count);
-    barrier();
-    if (gl_LocalInvocationIndex == 0) {
-        uint used = min(stats.build.x, pc.sizes.z);  // the build's nodes
-        uint start = groupKept > 0u ? used + atomicAdd(stats.build.z, groupKept) : 0u;
-        groupPacked = groupKept > 0u && start + groupKept <= pc.sizes.z ? start : DSM_NONE;
-    }
-    barrier();
-    if (listed) {
-        writeList(texel, chains, count, groupPacked == DSM_NONE ? DSM_NONE : groupPacked + offset);
-        atomicAdd(groupDropped, length - count);
-        atomicMax(groupLongest, length);
-        atomicAdd(groupLists, 1u);
-    }
-    barrier();
-    // One global update per workgroup, not per texel.
-    if (gl_LocalInvocationIndex == 0 && groupLists > 0u) {
-        atomicAdd(stats.lists.x, groupKept);
-        atomicAdd(stats.lists.y, groupDropped);
-        atomicMax(stats.lists.z, groupLongest);
-        atomicAdd(stats.lists.w, groupLists);
+    for (uint w = gl_WorkGroupID.x; w < work.header.x; w += gl_NumWorkGroups.x) {
+        uvec2 list = work.lists[w];
+        uint count = heads[list.x * DSM_HEAD_UINTS], run = heads[list.x * DSM_HEAD_UINTS + 1u];
+        writeList(list.x, run, sortNearest(run, count, pc.sizes.w), list.y);
     }
 }

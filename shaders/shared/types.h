@@ -283,19 +283,22 @@ struct ShadowDrawPush {
 
 #define DSM_NONE 0xFFFFFFFFu   // no node: empty list, end of a list, no neighbour link
 #define DSM_MAX_LIST_CAP 128   // size of the resolve's sort array: the largest allowed --dsm-max-list
-// The build pushes a texel's fragments onto DSM_CHAINS lists (by node index), which the resolve walks
-// side by side, so that its reads of the unsorted nodes are DSM_CHAINS at a time, not one after
-// another. A texel's DSM_CHAINS heads are consecutive; after the resolve the first holds the head of
-// its sorted list and the second that list's length (0: not packed, written in place). The camera's
-// lists likewise, OIT_CHAINS per pixel (at least 4: the pixel's header after oit.sort is 4 uints).
-// H100, hair at 1080p: 2 and 4 (25k strands 6.17 ms, 100k 14.68); 4 and 4 (6.29, 14.70); 4 and 8
-// (6.53, 15.01): more lists keep more reads in flight but spread the builds' atomics over more memory.
-#define DSM_CHAINS 2
+// A texel's entry in the heads buffer is DSM_HEAD_UINTS uints. The build counts its nodes in the first
+// (each node holds its texel and its place among them); dsm.offsets gives the texel a run of that many
+// uints in the side buffer (its start in the second), where dsm.scatter writes the nodes' indices;
+// after the resolve the first holds the head of the sorted list (DSM_NONE: empty) and the second its
+// length (0: not packed, written in place). The camera's lists are linked lists, OIT_CHAINS per pixel
+// (at least 4: the pixel's header after oit.sort is 4 uints), which oit.sort walks side by side.
+// H100, hair at 1080p, when the DSM's were lists too: 2 and 4 lists (25k strands 6.17 ms, 100k 14.68);
+// 4 and 4 (6.29, 14.70); 4 and 8 (6.53, 15.01): more lists keep more reads in flight but spread the
+// builds' atomics over more memory.
+#define DSM_HEAD_UINTS 2
 #define OIT_CHAINS 4
 
 // A DSM node is a uvec4 in the node pool: x = depth (float bits: distance from a spot light, depth
 // along a directional light), y = alpha (build) then the transmittance behind the node (resolve),
-// z = next node of the texel's list, w = link to the right neighbour texel's list (the node there
+// z = the node's texel (build) then the next node of the texel's sorted list (resolve), w = the
+// node's place among its texel's (build) then the link to the right neighbour texel's list (the node there
 // with the largest depth <= this node's, or DSM_NONE); the upper neighbour's link is in a uint array.
 
 // One point of a hair strand as the ribbon vertex shader reads it.
@@ -337,7 +340,8 @@ struct GpuDsmLight {
 struct DsmStats {
     uvec4 build;  // x = light-space fragments (allocations tried: beyond the capacity = dropped),
                   // y = fragments skipped by the depth test against opaque casters, z = nodes the
-                  // resolve asked for to pack the sorted lists (dsm/resolve.comp), w unused
+                  // resolve asked for to pack the sorted lists (dsm/resolve.comp), w = side-buffer
+                  // uints given to the texels' runs of node indices (dsm/offsets.comp)
     uvec4 lists;  // x = nodes kept, y = nodes dropped beyond the max list length, z = longest list,
                   // w = texels with a list
 };

@@ -72,13 +72,16 @@ void DeepShadowBuildPass::recordLayer(VkCommandBuffer cmd, uint32_t layer) const
 void DeepShadowBuildPass::addTo(FrameGraph& graph) {
     const BufferHandle heads = graph.import(res_.heads), nodes = graph.import(res_.nodes),
                        stats = graph.import(res_.stats);
+    const BufferHandle work = graph.import(res_.work);
     graph.pass("dsm.clear", PassKind::Transfer)
         .use(heads, Use::TransferDst)
         .use(stats, Use::TransferDst)
+        .use(work, Use::TransferDst)
         .bytes(res_.heads.size())  // a fill: bound by memory bandwidth
-        .record([heads, stats](PassContext& c) {
-            vkCmdFillBuffer(c.cmd, c.buffer(heads).handle(), 0, VK_WHOLE_SIZE, DSM_NONE);
+        .record([heads, stats, work](PassContext& c) {
+            vkCmdFillBuffer(c.cmd, c.buffer(heads).handle(), 0, VK_WHOLE_SIZE, 0);  // the texels' counts
             vkCmdFillBuffer(c.cmd, c.buffer(stats).handle(), 0, VK_WHOLE_SIZE, 0);
+            vkCmdFillBuffer(c.cmd, c.buffer(work).handle(), 0, 16, 0);  // no texels listed yet
         });
 
     heads_ = heads, nodes_ = nodes, stats_ = stats;

@@ -14,7 +14,7 @@ constexpr double kMiB = 1024.0 * 1024.0;
 void checkFits(vk::Context& ctx, uint64_t capacity, VkDeviceSize headBytes) {
     const vk::DeviceLimits& lim = ctx.limits();
     const VkDeviceSize nodeBytes = VkDeviceSize(capacity) * 16;
-    const VkDeviceSize total = VkDeviceSize(capacity) * DsmResources::kNodeBytes + headBytes;
+    const VkDeviceSize total = VkDeviceSize(capacity) * DsmResources::kNodeBytes + 2 * headBytes;  // heads, work
     struct Check {
         VkDeviceSize need, limit;
         const char* what;
@@ -58,15 +58,16 @@ DsmResources::DsmResources(vk::Allocator& alloc, const DsmSettings& settings, ui
     const VkBufferUsageFlags cleared = storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
     const uint64_t texels = uint64_t(res) * res * std::max<size_t>(layers.size(), 1);
     const uint64_t automatic = std::min({texels * DsmSettings::kAutoNodesPerTexel, DsmSettings::kMaxPoolNodes - 1,
-                                         maxNodes(alloc.context(), texels * 4 * DSM_CHAINS)});
+                                         maxNodes(alloc.context(), texels * 4 * DSM_HEAD_UINTS)});
     capacity = layers.empty() ? 1 : opacityMaps ? texels : settings.poolNodes ? settings.poolNodes : automatic;
     deviceLimited = !layers.empty() && !opacityMaps && !settings.poolNodes && automatic < texels * DsmSettings::kAutoNodesPerTexel;
-    const uint64_t headBytes = texels * 4 * (opacityMaps ? 1 : DSM_CHAINS);
+    const uint64_t headBytes = texels * 4 * (opacityMaps ? 1 : DSM_HEAD_UINTS);
     if (!layers.empty()) checkFits(alloc.context(), capacity, headBytes);  // an explicit --dsm-nodes may not fit
     heads = vk::Buffer(alloc, layers.empty() ? 4 : headBytes, cleared, false, "dsm-heads");
     nodes = vk::Buffer(alloc, capacity * 16, cleared, false, "dsm-nodes");
     side = vk::Buffer(alloc, opacityMaps ? 4 : capacity * 4, cleared, false, "dsm-side");  // DOM: unused
     stats = vk::Buffer(alloc, sizeof(gpu::DsmStats), cleared, false, "dsm-stats");
+    work = vk::Buffer(alloc, opacityMaps || layers.empty() ? 16 : 16 + headBytes, cleared, false, "dsm-work");
 
     views = vk::BufferRing(alloc, std::max<size_t>(layers.size(), 1) * sizeof(glm::mat4), storage, "dsm-views");
     const size_t faces = size_t(std::count_if(layers.begin(), layers.end(), [](const DsmLayer& l) { return l.cube; }));

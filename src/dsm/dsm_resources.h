@@ -1,6 +1,6 @@
 // The GPU memory the deep-shadow-map passes and the lookup share, and how it is sized.
 //
-// Layout: DSM_CHAINS head pointers per texel (uint, DSM_NONE = empty list; after the resolve the
+// Layout: DSM_HEAD_UINTS head pointers per texel (uint, DSM_NONE = empty list; after the resolve the
 // sorted list's head and length) for every DSM layer (one layer per light with a DSM; deep opacity
 // maps: one uint per texel); one node pool for all layers, a uvec4 per
 // node (depth, alpha -> transmittance, next, right-neighbour link: see shared/types.h) plus a side
@@ -36,10 +36,12 @@ struct DsmResources {
     std::vector<DsmLayer> layers;
     vk::BufferRing views;       // row k: layer k's viewProj (binding 0 of the build), per frame slot
     vk::BufferRing lightTable;  // GpuDsmLight per scene light, then per cube face, per frame slot
-    vk::Buffer heads;       // DSM_CHAINS uints per texel and layer
+    vk::Buffer heads;       // DSM_HEAD_UINTS uints per texel and layer
     vk::Buffer nodes;       // uvec4 per node
     vk::Buffer side;        // uint per node: search key (depth bits) or upper link
     vk::Buffer stats;       // DsmStats
+    vk::Buffer work;        // the texels with nodes, for the resolve: uvec4 (x = count), then per texel a uvec2
+                            // (texel, its sorted list's place in the pool)
 
     static constexpr VkDeviceSize kNodeBytes = 16 + 4;  // node + side
     size_t lightCount_ = 1;
@@ -53,7 +55,7 @@ struct DsmResources {
     // Writes frame slot `slot`'s tables from the layers' current projections.
     void writeTables(const DsmSettings& settings, uint32_t slot);
     VkDeviceSize poolBytes() const { return nodes.size() + side.size(); }
-    VkDeviceSize headBytes() const { return heads.size(); }
+    VkDeviceSize headBytes() const { return heads.size() + work.size(); }
 };
 
 }  // namespace penumbra
