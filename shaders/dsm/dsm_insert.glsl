@@ -1,7 +1,7 @@
 // The DSM build's one job per light-space fragment (raster or compute, dsm/ribbon_raster.glsl): allocate a node from
-// the pool (one atomic add), count it in its texel (one atomic add: the node's place among the texel's, which the
-// scatter pass turns into a place in the texel's run of node indices) and store it (one store). No lists: the
-// resolve finds a texel's nodes through that run, not by walking pointers (dsm/resolve.comp). Needs `draw` (HairDrawPush:
+// the pool (one atomic add), count it in its texel's depth bucket (one atomic add: the node's place among the
+// bucket's, which dsm.scatter turns into a place in the texel's run) and store it (one store). No lists: the
+// resolve reads a texel's nodes from that run, not by walking pointers (dsm/resolve.comp). Needs `draw` (HairDrawPush:
 // ids.x = DSM layer, ids.z = the scene light, or DSM_NONE for no depth test, ids.w = capacity).
 // A full pool drops the fragment; the counter keeps counting, so the overflow is known exactly and
 // no list ever points at a node that was not written.
@@ -12,7 +12,7 @@
 // nothing that the opaque casters leave lit: it takes no node. Conservative: it is dropped only
 // when every shadow-map texel of that neighbourhood holds a nearer opaque depth than the fragment
 // moved two DSM texels towards the light.
-layout(set = 0, binding = 5, std430) buffer Heads { uint heads[]; };
+layout(set = 0, binding = 5, std430) buffer Buckets { uint buckets[]; };  // per texel, DsmPush.buckets.x counts
 layout(set = 0, binding = 6, std430) writeonly buffer Nodes { uvec4 nodes[]; };
 layout(set = 0, binding = 7, std430) buffer Stats { DsmStats stats; };
 layout(set = 0, binding = 8, std430) readonly buffer Lights { GpuLight lights[]; };
@@ -70,6 +70,7 @@ void dsmInsert(uvec2 texel, float depth, float alpha, vec3 world) {
     if (node >= draw.ids.w) return;
     uint res = uint(draw.footprint.z);
     uint index = (draw.ids.x * res + texel.y) * res + texel.x;
-    uint place = atomicAdd(heads[index * DSM_HEAD_UINTS], 1u);  // the texel's count (shared/types.h)
-    nodes[node] = uvec4(floatBitsToUint(depth), floatBitsToUint(min(alpha, 1.0)), index, place);
+    uint bucket = uint(clamp((depth - draw.buckets.x) * draw.buckets.y, 0.0, draw.buckets.z - 1.0));
+    uint place = atomicAdd(buckets[index * uint(draw.buckets.z) + bucket], 1u);  // shared/types.h
+    nodes[node] = uvec4(floatBitsToUint(depth), floatBitsToUint(min(alpha, 1.0)), index, place | bucket << DSM_BUCKET_SHIFT);
 }

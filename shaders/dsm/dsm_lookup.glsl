@@ -60,7 +60,6 @@ float dsmSearchOne(uint texel, float d) {
     uint first = dsmHeads[texel * DSM_HEAD_UINTS];
     if (first == DSM_NONE) return 1.0;
     uint length = dsmHeads[texel * DSM_HEAD_UINTS + 1u];
-    if (length == 0u) return dsmTransmittanceOf(dsmFind(texel, d, DSM_NONE));  // not packed: walk it
     uint before = 0u;  // nodes with depth <= d
     while (length > 0u) {
         uint half_ = length / 2u;
@@ -94,11 +93,6 @@ float dsmSearchKernel(uint base, int res, ivec2 lo, ivec2 hi, vec2 s, float widt
         const uint texel = base + uint(t.y * res + t.x);
         at[k] = inside ? dsmHeads[texel * DSM_HEAD_UINTS] : DSM_NONE;
         state[k] = at[k] != DSM_NONE ? dsmHeads[texel * DSM_HEAD_UINTS + 1u] << 1 : 0u;
-        if (at[k] != DSM_NONE && state[k] == 0u) {  // not packed (pool full): walk it
-            const uint n = dsmFind(texel, d, DSM_NONE);
-            at[k] = n + 1u;
-            state[k] = n == DSM_NONE ? 0u : 1u;
-        }
     }
     for (bool searching = true; searching;) {
         searching = false;

@@ -2,23 +2,19 @@
 // DSM resolve, one workgroup per texel with nodes (the work list of dsm.offsets; a fixed grid of
 // workgroups strides over it): the texel's `maxList` nearest nodes sorted by depth, each holding the
 // transmittance behind it, T_k = prod_{j<=k} (1 - alpha_j); farther nodes are dropped (dsm.offsets
-// counted them). The texel's nodes (found through its run of indices in the side buffer,
-// dsm.scatter) go into shared slots, a bitonic network sorts them and the nearest `maxList` stay; a
-// list longer than the slots comes in batches, and once the cap is full only nodes nearer than the
-// farthest kept take a slot. (One thread
-// per texel walking linked lists into a heap kept 50 heap entries per thread in local memory, which
-// the H100 could not hold in L1: 0.84 of the resolve's 1.16 ms at 25k strands went to the heap; one
-// workgroup per 8x8 tile, sorting its texels one after another, made a dense tile the whole pass's
-// critical path. README "Deep shadow maps".)
+// counted them). The texel's nodes (consecutive in its run, dsm.scatter) go into shared slots, a
+// bitonic network sorts them and the nearest `maxList` stay; a list longer than the slots comes in
+// batches, and once the cap is full only nodes nearer than the farthest kept take a slot. (One
+// thread per texel walking linked lists into a heap kept 50 heap entries per thread in local memory,
+// which the H100 could not hold in L1: 0.84 of the resolve's 1.16 ms at 25k strands went to the heap;
+// one workgroup per 8x8 tile, sorting its texels one after another, made a dense tile the whole
+// pass's critical path. README "Deep shadow maps".)
 //
-// The sorted nodes are written packed after the build's nodes (at the place dsm.offsets gave the
-// list: an 8x8 tile's lists side by side), each list in consecutive nodes, so that the link pass and
-// every lookup walk memory in order. The texel's first head slot then points
-// at the packed list, its second holds the list's length, and the side buffer its depths (one uint
-// per node: a binary search touches 4 bytes a step, not a node's 16). When the pool has no room left
-// for a tile's lists, they are written in place into the texel's own nodes instead, linked in order, with
-// length 0 (not packed: a lookup walks them). Equal depths are ordered by alpha, so that the same
-// nodes are kept every run.
+// The sorted list is written packed at the start of the texel's run, in the pool (the build's nodes
+// there were read by the scatter and are not needed any more) and its depths in the side buffer at
+// the same indices (one uint per node: a binary search touches 4 bytes a step, not a node's 16). The
+// texel's first head slot then points at the list, its second holds the list's length. Equal depths
+// are ordered by alpha, so that the same nodes are kept every run.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
 
@@ -29,9 +25,9 @@
 layout(local_size_x = GROUP_SIZE) in;
 layout(set = 0, binding = 0, std430) buffer Heads { uint heads[]; };
 layout(set = 0, binding = 1, std430) buffer Nodes { uvec4 nodes[]; };
-layout(set = 0, binding = 2, std430) buffer Stats { DsmStats stats; };
-layout(set = 0, binding = 3, std430) buffer Side { uint side[]; };  // runs in, search keys out
-layout(set = 0, binding = 4, std430) readonly buffer Work { uvec4 header; uvec2 lists[]; } work;  // (texel, first)
+layout(set = 0, binding = 2, std430) writeonly buffer Side { uint side[]; };  // the search keys
+layout(set = 0, binding = 3, std430) readonly buffer Work { uvec4 header; uint texels[]; } work;
+layout(set = 0, binding = 4, std430) readonly buffer Runs { uvec2 runs[]; };  // (depth, alpha) bits
 layout(push_constant) uniform Push { DsmPush pc; };
 
 shared uvec2 slots[SORT_SLOTS];  // (depth bits, alpha bits)
@@ -74,7 +70,7 @@ uint sortSlots(uint filled, uint maxList) {
     return kept;
 }
 
-// Leaves the `maxList` nearest of the `count` nodes at side[run...] sorted in slots[0, kept). The
+// Leaves the `maxList` nearest of the `count` nodes at runs[run...] sorted in slots[0, kept). The
 // nodes come GROUP_SIZE at a time; once `maxList` are kept, only nodes nearer than the farthest of
 // them take a slot, so that a long list's tail (most of it, in dense hair) costs a read and a
 // comparison, not a place in the sort.
@@ -90,7 +86,7 @@ uint sortNearest(uint run, uint count, uint maxList) {
         }
         uint i = done + gl_LocalInvocationIndex;
         if (i < count) {
-            uvec2 e = nodes[side[run + i]].xy;
+            uvec2 e = runs[run + i];
             if (nearer(e, farthestKept)) slots[atomicAdd(slotCount, 1u)] = e;
         }
         barrier();
@@ -100,29 +96,25 @@ uint sortNearest(uint run, uint count, uint maxList) {
     return sortSlots(filled, maxList);
 }
 
-// Writes the sorted `count` nodes of slots as the texel's list: packed at `first` onwards, or, with
-// first == DSM_NONE, into the texel's own nodes (side[run...]). Ends with a barrier.
-void writeList(uint texel, uint run, uint count, uint first) {
-    bool packed = first != DSM_NONE;
+// Writes the sorted `count` nodes of slots as the texel's list at `first` onwards. Ends with a barrier.
+void writeList(uint texel, uint count, uint first) {
     for (uint k = gl_LocalInvocationIndex; k < count; k += GROUP_SIZE) {
         float t = 1.0;  // the same products, in the same order, as a walk down the list
         for (uint i = 0u; i <= k; ++i) t *= 1.0 - clamp(uintBitsToFloat(slots[i].y), 0.0, 1.0);
-        uint node = packed ? first + k : side[run + k];
-        uint next = k + 1u == count ? DSM_NONE : packed ? node + 1u : side[run + k + 1u];
-        nodes[node] = uvec4(slots[k].x, floatBitsToUint(t), next, DSM_NONE);
-        if (packed) side[node] = slots[k].x;
+        nodes[first + k] = uvec4(slots[k].x, floatBitsToUint(t), k + 1u < count ? first + k + 1u : DSM_NONE, DSM_NONE);
+        side[first + k] = slots[k].x;
     }
     if (gl_LocalInvocationIndex == 0u) {
-        heads[texel * DSM_HEAD_UINTS] = packed ? first : side[run];
-        heads[texel * DSM_HEAD_UINTS + 1u] = packed ? count : 0u;
+        heads[texel * DSM_HEAD_UINTS] = first;
+        heads[texel * DSM_HEAD_UINTS + 1u] = count;
     }
     barrier();
 }
 
 void main() {
     for (uint w = gl_WorkGroupID.x; w < work.header.x; w += gl_NumWorkGroups.x) {
-        uvec2 list = work.lists[w];
-        uint count = heads[list.x * DSM_HEAD_UINTS], run = heads[list.x * DSM_HEAD_UINTS + 1u];
-        writeList(list.x, run, sortNearest(run, count, pc.sizes.w), list.y);
+        uint texel = work.texels[w];
+        uint count = heads[texel * DSM_HEAD_UINTS], run = heads[texel * DSM_HEAD_UINTS + 1u];
+        writeList(texel, sortNearest(run, count, pc.sizes.w), run);
     }
 }

@@ -283,22 +283,31 @@ struct ShadowDrawPush {
 
 #define DSM_NONE 0xFFFFFFFFu   // no node: empty list, end of a list, no neighbour link
 #define DSM_MAX_LIST_CAP 128   // size of the resolve's sort array: the largest allowed --dsm-max-list
-// A texel's entry in the heads buffer is DSM_HEAD_UINTS uints. The build counts its nodes in the first
-// (each node holds its texel and its place among them); dsm.offsets gives the texel a run of that many
-// uints in the side buffer (its start in the second), where dsm.scatter writes the nodes' indices;
-// after the resolve the first holds the head of the sorted list (DSM_NONE: empty) and the second its
-// length (0: not packed, written in place). The camera's lists are linked lists, OIT_CHAINS per pixel
+// A texel's entry in the heads buffer is DSM_HEAD_UINTS uints. The build counts its nodes per depth
+// bucket (below; each node holds its texel, bucket and place); dsm.offsets gives the texel a run of
+// entries for the buckets it keeps (the run's length in the first, its start in the second), where
+// dsm.scatter writes those nodes' (depth, alpha) and the resolve the sorted list (nodes and search
+// keys at the run's indices); after the resolve the first holds the head of the sorted list
+// (DSM_NONE: empty) and the second its length. The camera's lists are linked lists, OIT_CHAINS per pixel
 // (at least 4: the pixel's header after oit.sort is 4 uints), which oit.sort walks side by side.
 // H100, hair at 1080p, when the DSM's were lists too: 2 and 4 lists (25k strands 6.17 ms, 100k 14.68);
 // 4 and 4 (6.29, 14.70); 4 and 8 (6.53, 15.01): more lists keep more reads in flight but spread the
 // builds' atomics over more memory.
 #define DSM_HEAD_UINTS 2
+// The build counts a texel's nodes per depth bucket (the translucent casters' depth range cut into
+// DsmPush.buckets.x equal slices, depths outside it in the end slices): dsm.offsets then keeps only
+// the buckets up to the one that brings the count to the list cap, since every node behind it has at
+// least the cap's number of nodes in front. Exact for any range; the range only decides how much is
+// left out. A node's place among its bucket's is in the low DSM_BUCKET_SHIFT bits of its .w, the
+// bucket above them.
+#define DSM_MAX_BUCKETS 8
+#define DSM_BUCKET_SHIFT 28
 #define OIT_CHAINS 4
 
 // A DSM node is a uvec4 in the node pool: x = depth (float bits: distance from a spot light, depth
 // along a directional light), y = alpha (build) then the transmittance behind the node (resolve),
 // z = the node's texel (build) then the next node of the texel's sorted list (resolve), w = the
-// node's place among its texel's (build) then the link to the right neighbour texel's list (the node there
+// node's bucket and place (build, DSM_BUCKET_SHIFT) then the link to the right neighbour texel's list (the node there
 // with the largest depth <= this node's, or DSM_NONE); the upper neighbour's link is in a uint array.
 
 // One point of a hair strand as the ribbon vertex shader reads it.
@@ -318,6 +327,8 @@ struct HairDrawPush {
     vec4 viewer;      // xyz = eye position (w = 1) or unit direction towards a directional light (w = 0)
     vec4 footprint;   // x = world size of a pixel/texel (orthographic) or per unit distance (perspective),
                       // y = perspective (1) or not (0), z = DSM resolution, w = min ribbon width in pixels
+    vec4 buckets;     // the DSM build's depth buckets: x = the nearest depth of the translucent casters,
+                      // y = buckets per unit of depth, z = buckets per texel (DsmPush.buckets.x)
 };
 
 // The deep shadow map of light i is entry i (lighting reads it for every light).
@@ -339,16 +350,16 @@ struct GpuDsmLight {
 // Counters of one frame (cleared before the build; read back for the report).
 struct DsmStats {
     uvec4 build;  // x = light-space fragments (allocations tried: beyond the capacity = dropped),
-                  // y = fragments skipped by the depth test against opaque casters, z = nodes the
-                  // resolve asked for to pack the sorted lists (dsm/resolve.comp), w = side-buffer
-                  // uints given to the texels' runs of node indices (dsm/offsets.comp)
+                  // y = fragments skipped by the depth test against opaque casters, z unused,
+                  // w = entries given to the texels' runs (dsm/offsets.comp)
     uvec4 lists;  // x = nodes kept, y = nodes dropped beyond the max list length, z = longest list,
                   // w = texels with a list
 };
 
 // Push constants of the resolve and link passes.
 struct DsmPush {
-    uvec4 sizes;  // x = resolution, y = layer count, z = node capacity, w = max list length
+    uvec4 sizes;    // x = resolution, y = layer count, z = node capacity, w = max list length
+    uvec4 buckets;  // x = depth buckets per texel (DSM_MAX_BUCKETS or fewer), yzw unused
 };
 
 // ---- Camera translucency: hair and alphaMode BLEND surfaces (src/dsm/translucency.*) ----

@@ -8,6 +8,8 @@ DeepShadowBuildPass::DeepShadowBuildPass(vk::Allocator& alloc, SceneGpu& scene, 
                                          DsmResources& res, bool depthTest, bool computeHair)
     : alloc_(alloc), scene_(scene), hair_(hair), res_(res), depthTest_(depthTest) {
     for (const Material& m : scene.scene().materials) hasBlended_ |= m.alphaMode == AlphaMode::Blend;
+    for (const glm::vec3& p : scene.scene().strandPoints) casters_.extend(p);
+    if (hasBlended_) casters_ = scene.scene().bounds;
     // Set 0: the scene's draw set (views = the DSM views, materials; set 1 the textures), the hair buffers,
     // then heads, nodes and counters, and for the depth test the lights, the shadow lights and layers
     // and the opaque casters' shadow map (5-11: both builds, raster and compute, write the lists there).
@@ -41,8 +43,23 @@ DeepShadowBuildPass::DeepShadowBuildPass(vk::Allocator& alloc, SceneGpu& scene, 
 gpu::HairDrawPush DeepShadowBuildPass::layerPush(uint32_t layer) const {
     const DsmLayer& l = res_.layers[layer];
     const uint32_t depthTestLight = depthTest_ ? l.light : DSM_NONE;
-    gpu::HairDrawPush push{{layer, 0, depthTestLight, uint32_t(res_.capacity)}, l.view.viewer, l.view.footprint};
+    gpu::HairDrawPush push{{layer, 0, depthTestLight, uint32_t(res_.capacity)}, l.view.viewer, l.view.footprint, {}};
     push.footprint.z = float(res_.resolution);
+    // The casters' depth range as dsm/dsm_common.glsl measures depth (from a spot light, along a
+    // directional one), cut into the buckets (shared/types.h). Only how much the buckets leave out
+    // depends on it, not what is kept.
+    float nearest = 1e30f, farthest = -1e30f;
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 p{corner & 1 ? casters_.max.x : casters_.min.x, corner & 2 ? casters_.max.y : casters_.min.y,
+                          corner & 4 ? casters_.max.z : casters_.min.z};
+        const glm::vec3 eye(l.view.viewer);
+        const float d = l.view.viewer.w > 0.5f ? glm::distance(p, eye) : -glm::dot(p, eye);
+        nearest = std::min(nearest, d), farthest = std::max(farthest, d);
+    }
+    if (l.view.viewer.w > 0.5f)  // from a point: the box's nearest point, not its nearest corner
+        nearest = glm::distance(glm::clamp(glm::vec3(l.view.viewer), casters_.min, casters_.max), glm::vec3(l.view.viewer));
+    const float buckets = float(res_.bucketCount);
+    push.buckets = {nearest, farthest > nearest ? buckets / (farthest - nearest) : 0.0f, buckets, 0.0f};
     return push;
 }
 
@@ -70,21 +87,20 @@ void DeepShadowBuildPass::recordLayer(VkCommandBuffer cmd, uint32_t layer) const
 }
 
 void DeepShadowBuildPass::addTo(FrameGraph& graph) {
-    const BufferHandle heads = graph.import(res_.heads), nodes = graph.import(res_.nodes),
-                       stats = graph.import(res_.stats);
-    const BufferHandle work = graph.import(res_.work);
+    const BufferHandle nodes = graph.import(res_.nodes), stats = graph.import(res_.stats);
+    const BufferHandle work = graph.import(res_.work), buckets = graph.import(res_.buckets);
     graph.pass("dsm.clear", PassKind::Transfer)
-        .use(heads, Use::TransferDst)
+        .use(buckets, Use::TransferDst)
         .use(stats, Use::TransferDst)
         .use(work, Use::TransferDst)
-        .bytes(res_.heads.size())  // a fill: bound by memory bandwidth
-        .record([heads, stats, work](PassContext& c) {
-            vkCmdFillBuffer(c.cmd, c.buffer(heads).handle(), 0, VK_WHOLE_SIZE, 0);  // the texels' counts
+        .bytes(res_.buckets.size())  // a fill: bound by memory bandwidth
+        .record([buckets, stats, work](PassContext& c) {
+            vkCmdFillBuffer(c.cmd, c.buffer(buckets).handle(), 0, VK_WHOLE_SIZE, 0);  // the texels' counts
             vkCmdFillBuffer(c.cmd, c.buffer(stats).handle(), 0, VK_WHOLE_SIZE, 0);
             vkCmdFillBuffer(c.cmd, c.buffer(work).handle(), 0, 16, 0);  // no texels listed yet
         });
 
-    heads_ = heads, nodes_ = nodes, stats_ = stats;
+    buckets_ = buckets, nodes_ = nodes, stats_ = stats;
     if (hasBlended_ || hairPipeline_.handle()) {
         PassBuilder build = graph.pass("dsm.build", PassKind::Raster);
         build.pipeline(setLayoutPipeline());
@@ -108,7 +124,7 @@ void DeepShadowBuildPass::addTo(FrameGraph& graph) {
 // Bindings 5-11 of both builds: the lists, and what the depth test reads.
 PassBuilder& DeepShadowBuildPass::declareLists(PassBuilder& pass) const {
     FrameGraph& graph = pass.graph();
-    return pass.storageBuffer(5, heads_, Use::StorageWrite)
+    return pass.storageBuffer(5, buckets_, Use::StorageWrite)
         .storageBuffer(6, nodes_, Use::StorageWrite)
         .storageBuffer(7, stats_, Use::StorageWrite)
         .storageBuffer(8, graph.buffer("lights"))

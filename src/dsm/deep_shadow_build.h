@@ -29,12 +29,13 @@ private:
     const HairGpu* hair_;
     DsmResources& res_;
     bool hasBlended_ = false;
+    Bounds casters_;  // of the translucent casters (hair; with BLEND meshes the whole scene): the depth buckets' range
     bool depthTest_;
     vk::Sampler nearest_;
     vk::DescriptorLayout layout_;
     vk::Pipeline hairPipeline_, meshPipeline_;  // the raster's (hairPipeline_ without computeHair)
     vk::ComputeKernel hairKernel_;               // with computeHair
-    BufferHandle heads_, nodes_, stats_;         // this frame's, set by addTo
+    BufferHandle buckets_, nodes_, stats_;       // this frame's, set by addTo
 };
 
 }  // namespace penumbra

@@ -125,7 +125,8 @@ DsmFrameStats DeepShadowMaps::readStats(vk::CommandContext& cmd) const {
     s.beyondMaxList = g.lists.y;
     s.longest = g.lists.z;
     s.lists = g.lists.w;
-    s.usedBytes = std::min(s.fragments + g.build.z, s.capacity) * DsmResources::kNodeBytes;  // build + packed lists
+    s.sorted = g.build.w;
+    s.usedBytes = std::min(s.fragments, s.capacity) * DsmResources::kNodeBytes;  // the sorted lists reuse the build's
     return s;
 }
 
@@ -137,9 +138,9 @@ std::string describeDsm(const DsmFrameStats& s) {
                            s.maps, s.resolution, DOM_LAYERS, s.opacityLayer, mib(s.poolBytes + s.headBytes));
     return fmt::format(
         "dsm: {} map(s) of {}^2: {} light-space fragments ({} more hidden behind opaque casters skipped), {} nodes kept in {} lists (longest {}, {} beyond the "
-        "{}-node cap dropped); node pool {:.1f} MiB for {} nodes ({:.1f} MiB used), heads {:.1f} MiB",
+        "{}-node cap dropped, {} of them in depth buckets not sorted); node pool {:.1f} MiB for {} nodes ({:.1f} MiB used), heads {:.1f} MiB",
         s.maps, s.resolution, count(s.fragments), count(s.hidden), count(s.kept), count(s.lists), s.longest, count(s.beyondMaxList),
-        s.maxList, mib(s.poolBytes), count(s.capacity), mib(s.usedBytes), mib(s.headBytes));
+        s.maxList, count(s.kept + s.beyondMaxList - s.sorted), mib(s.poolBytes), count(s.capacity), mib(s.usedBytes), mib(s.headBytes));
 }
 
 std::vector<std::string> dsmWarnings(const DsmFrameStats& s) {

@@ -25,6 +25,7 @@ struct DsmFrameStats {
     uint64_t overflow = 0;         // fragments dropped because the pool was full
     uint64_t kept = 0;             // nodes in the resolved lists
     uint64_t beyondMaxList = 0;    // nodes dropped by the per-texel cap (the farthest of long lists)
+    uint64_t sorted = 0;           // nodes the resolve sorted (the rest lay in depth buckets behind the cap's)
     uint32_t maxList = 0, longest = 0;
     uint64_t lists = 0;            // texels with at least one node
     uint64_t poolBytes = 0, headBytes = 0, usedBytes = 0;

@@ -14,7 +14,8 @@ constexpr double kMiB = 1024.0 * 1024.0;
 void checkFits(vk::Context& ctx, uint64_t capacity, VkDeviceSize headBytes) {
     const vk::DeviceLimits& lim = ctx.limits();
     const VkDeviceSize nodeBytes = VkDeviceSize(capacity) * 16;
-    const VkDeviceSize total = VkDeviceSize(capacity) * DsmResources::kNodeBytes + 2 * headBytes;  // heads, work
+    // Heads, work list and at most DSM_MAX_BUCKETS / DSM_HEAD_UINTS times the heads in bucket counts.
+    const VkDeviceSize total = VkDeviceSize(capacity) * DsmResources::kNodeBytes + (2 + DSM_MAX_BUCKETS / DSM_HEAD_UINTS) * headBytes;
     struct Check {
         VkDeviceSize need, limit;
         const char* what;
@@ -68,6 +69,11 @@ DsmResources::DsmResources(vk::Allocator& alloc, const DsmSettings& settings, ui
     side = vk::Buffer(alloc, opacityMaps ? 4 : capacity * 4, cleared, false, "dsm-side");  // DOM: unused
     stats = vk::Buffer(alloc, sizeof(gpu::DsmStats), cleared, false, "dsm-stats");
     work = vk::Buffer(alloc, opacityMaps || layers.empty() ? 16 : 16 + headBytes, cleared, false, "dsm-work");
+    runs = vk::Buffer(alloc, opacityMaps ? 8 : capacity * 8, cleared, false, "dsm-runs");  // DOM: unused
+    bucketCount = DSM_MAX_BUCKETS;
+    while (bucketCount > 1 && texels * 4 * bucketCount > alloc.context().limits().storageBufferRange) bucketCount /= 2;
+    buckets = vk::Buffer(alloc, opacityMaps || layers.empty() ? 4 : texels * 4 * bucketCount, cleared, false,
+                         "dsm-buckets");
 
     views = vk::BufferRing(alloc, std::max<size_t>(layers.size(), 1) * sizeof(glm::mat4), storage, "dsm-views");
     const size_t faces = size_t(std::count_if(layers.begin(), layers.end(), [](const DsmLayer& l) { return l.cube; }));

@@ -39,11 +39,14 @@ struct DsmResources {
     vk::Buffer heads;       // DSM_HEAD_UINTS uints per texel and layer
     vk::Buffer nodes;       // uvec4 per node
     vk::Buffer side;        // uint per node: search key (depth bits) or upper link
+    vk::Buffer runs;        // uvec2 per node: the build's (depth, alpha), grouped by texel (dsm.scatter)
+    vk::Buffer buckets;     // bucketCount uints per texel and layer: node counts per depth bucket, then places
+    uint32_t bucketCount = 1;  // DSM_MAX_BUCKETS, or fewer where one buffer of them would not fit the device
     vk::Buffer stats;       // DsmStats
     vk::Buffer work;        // the texels with nodes, for the resolve: uvec4 (x = count), then per texel a uvec2
                             // (texel, its sorted list's place in the pool)
 
-    static constexpr VkDeviceSize kNodeBytes = 16 + 4;  // node + side
+    static constexpr VkDeviceSize kNodeBytes = 16 + 4 + 8;  // node + side + run entry
     size_t lightCount_ = 1;
 
     // Allocates every buffer and writes the tables of every slot. Throws vk::VulkanError with a clear message
@@ -54,8 +57,8 @@ struct DsmResources {
     uint32_t layerCount() const { return uint32_t(layers.size()); }
     // Writes frame slot `slot`'s tables from the layers' current projections.
     void writeTables(const DsmSettings& settings, uint32_t slot);
-    VkDeviceSize poolBytes() const { return nodes.size() + side.size(); }
-    VkDeviceSize headBytes() const { return heads.size() + work.size(); }
+    VkDeviceSize poolBytes() const { return nodes.size() + side.size() + runs.size(); }
+    VkDeviceSize headBytes() const { return heads.size() + work.size() + buckets.size(); }
 };
 
 }  // namespace penumbra
