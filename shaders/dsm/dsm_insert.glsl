@@ -1,10 +1,9 @@
-// The DSM build's one job per light-space fragment (raster or compute, dsm/ribbon_raster.glsl): allocate a node from
-// the pool (one atomic add), count it in its texel's depth bucket (one atomic add: the node's place among the
-// bucket's, which dsm.scatter turns into a place in the texel's run) and store it (one store). No lists: the
-// resolve reads a texel's nodes from that run, not by walking pointers (dsm/resolve.comp). Needs `draw` (HairDrawPush:
-// ids.x = DSM layer, ids.z = the scene light, or DSM_NONE for no depth test, ids.w = capacity).
-// A full pool drops the fragment; the counter keeps counting, so the overflow is known exactly and
-// no list ever points at a node that was not written.
+// The DSM build's one job per light-space fragment (raster or compute, dsm/ribbon_raster.glsl), in two steps
+// (HairDrawPush.buckets.w): first count it in its texel's depth bucket (one atomic add), then, after dsm.offsets
+// gave each bucket a place in its texel's run, store its (depth, alpha) there (one atomic add, one store), unless its
+// bucket lies behind the list cap's (or found no room): it takes no memory at all. Both steps make the same
+// fragments: the same code, the same pipeline. No lists: the resolve reads a texel's fragments from its run.
+// Needs `draw` (HairDrawPush: ids.x = DSM layer, ids.z = the scene light, or DSM_NONE for no depth test).
 //
 // Depth test against the opaque casters: a fragment hidden behind the light's ordinary shadow map
 // everywhere a receiver could look it up from (its DSM texel and the lookup's filter around it,
@@ -12,8 +11,8 @@
 // nothing that the opaque casters leave lit: it takes no node. Conservative: it is dropped only
 // when every shadow-map texel of that neighbourhood holds a nearer opaque depth than the fragment
 // moved two DSM texels towards the light.
-layout(set = 0, binding = 5, std430) buffer Buckets { uint buckets[]; };  // per texel, DsmPush.buckets.x counts
-layout(set = 0, binding = 6, std430) writeonly buffer Nodes { uvec4 nodes[]; };
+layout(set = 0, binding = 5, std430) buffer Buckets { uint buckets[]; };  // per texel, DsmPush.buckets.x counts, then places
+layout(set = 0, binding = 6, std430) writeonly buffer Runs { uvec2 runs[]; };  // (depth, alpha) bits
 layout(set = 0, binding = 7, std430) buffer Stats { DsmStats stats; };
 layout(set = 0, binding = 8, std430) readonly buffer Lights { GpuLight lights[]; };
 layout(set = 0, binding = 9, std430) readonly buffer ShadowLights { GpuShadowLight shadowLights[]; };
@@ -62,15 +61,14 @@ bool hiddenByOpaque(vec3 world) {
 
 void dsmInsert(uvec2 texel, float depth, float alpha, vec3 world) {
     if (!(alpha > 0.0)) return;  // nothing to cast (NaN too: see oit_insert.glsl)
+    bool counting = draw.buckets.w < 0.5;
     if (hiddenByOpaque(world)) {
-        atomicAdd(stats.build.y, 1u);
+        if (counting) atomicAdd(stats.build.y, 1u);
         return;
     }
-    uint node = atomicAdd(stats.build.x, 1u);
-    if (node >= draw.ids.w) return;
     uint res = uint(draw.footprint.z);
     uint index = (draw.ids.x * res + texel.y) * res + texel.x;
     uint bucket = uint(clamp((depth - draw.buckets.x) * draw.buckets.y, 0.0, draw.buckets.z - 1.0));
-    uint place = atomicAdd(buckets[index * uint(draw.buckets.z) + bucket], 1u);  // shared/types.h
-    nodes[node] = uvec4(floatBitsToUint(depth), floatBitsToUint(min(alpha, 1.0)), index, place | bucket << DSM_BUCKET_SHIFT);
+    uint at = atomicAdd(buckets[index * uint(draw.buckets.z) + bucket], 1u);  // shared/types.h
+    if (!counting && at < DSM_CULLED) runs[at] = uvec2(floatBitsToUint(depth), floatBitsToUint(min(alpha, 1.0)));
 }

@@ -2,7 +2,7 @@
 // DSM resolve, one workgroup per texel with nodes (the work list of dsm.offsets; a fixed grid of
 // workgroups strides over it): the texel's `maxList` nearest nodes sorted by depth, each holding the
 // transmittance behind it, T_k = prod_{j<=k} (1 - alpha_j); farther nodes are dropped (dsm.offsets
-// counted them). The texel's nodes (consecutive in its run, dsm.scatter) go into shared slots, a
+// counted them). The texel's fragments (consecutive in its run, the build's) go into shared slots, a
 // bitonic network sorts them and the nearest `maxList` stay; a list longer than the slots comes in
 // batches, and once the cap is full only nodes nearer than the farthest kept take a slot. (One
 // thread per texel walking linked lists into a heap kept 50 heap entries per thread in local memory,
@@ -10,9 +10,8 @@
 // one workgroup per 8x8 tile, sorting its texels one after another, made a dense tile the whole
 // pass's critical path. README "Deep shadow maps".)
 //
-// The sorted list is written packed at the start of the texel's run, in the pool (the build's nodes
-// there were read by the scatter and are not needed any more) and its depths in the side buffer at
-// the same indices (one uint per node: a binary search touches 4 bytes a step, not a node's 16). The
+// The sorted list is written packed at the start of the texel's run's indices, in the pool, and its
+// depths in the side buffer at the same indices (one uint per node: a binary search touches 4 bytes a step, not a node's 16). The
 // texel's first head slot then points at the list, its second holds the list's length. Equal depths
 // are ordered by alpha, so that the same nodes are kept every run.
 #extension GL_GOOGLE_include_directive : require

@@ -283,12 +283,12 @@ struct ShadowDrawPush {
 
 #define DSM_NONE 0xFFFFFFFFu   // no node: empty list, end of a list, no neighbour link
 #define DSM_MAX_LIST_CAP 128   // size of the resolve's sort array: the largest allowed --dsm-max-list
-// A texel's entry in the heads buffer is DSM_HEAD_UINTS uints. The build counts its nodes per depth
-// bucket (below; each node holds its texel, bucket and place); dsm.offsets gives the texel a run of
-// entries for the buckets it keeps (the run's length in the first, its start in the second), where
-// dsm.scatter writes those nodes' (depth, alpha) and the resolve the sorted list (nodes and search
-// keys at the run's indices); after the resolve the first holds the head of the sorted list
-// (DSM_NONE: empty) and the second its length. The camera's lists are linked lists, OIT_CHAINS per pixel
+// A texel's entry in the heads buffer is DSM_HEAD_UINTS uints. The build counts its fragments per
+// depth bucket (below); dsm.offsets gives the texel a run of entries for the buckets it keeps (the
+// run's length in the first, its start in the second), where the build's second step stores those
+// fragments' (depth, alpha) and the resolve then the sorted list (nodes and search keys at the run's
+// indices); after the resolve the first holds the head of the sorted list (DSM_NONE: empty) and the
+// second its length. The camera's lists are linked lists, OIT_CHAINS per pixel
 // (at least 4: the pixel's header after oit.sort is 4 uints), which oit.sort walks side by side.
 // H100, hair at 1080p, when the DSM's were lists too: 2 and 4 lists (25k strands 6.17 ms, 100k 14.68);
 // 4 and 4 (6.29, 14.70); 4 and 8 (6.53, 15.01): more lists keep more reads in flight but spread the
@@ -298,16 +298,15 @@ struct ShadowDrawPush {
 // DsmPush.buckets.x equal slices, depths outside it in the end slices): dsm.offsets then keeps only
 // the buckets up to the one that brings the count to the list cap, since every node behind it has at
 // least the cap's number of nodes in front. Exact for any range; the range only decides how much is
-// left out. A node's place among its bucket's is in the low DSM_BUCKET_SHIFT bits of its .w, the
-// bucket above them.
+// left out. A bucket's place is DSM_CULLED or above when it is left out (or found no room): the
+// build's second step adds to it and stores nothing.
 #define DSM_MAX_BUCKETS 8
-#define DSM_BUCKET_SHIFT 28
+#define DSM_CULLED 0x80000000u
 #define OIT_CHAINS 4
 
 // A DSM node is a uvec4 in the node pool: x = depth (float bits: distance from a spot light, depth
-// along a directional light), y = alpha (build) then the transmittance behind the node (resolve),
-// z = the node's texel (build) then the next node of the texel's sorted list (resolve), w = the
-// node's bucket and place (build, DSM_BUCKET_SHIFT) then the link to the right neighbour texel's list (the node there
+// along a directional light), y = the transmittance behind the node, z = the next node of the texel's
+// sorted list, w = the link to the right neighbour texel's list (the node there
 // with the largest depth <= this node's, or DSM_NONE); the upper neighbour's link is in a uint array.
 
 // One point of a hair strand as the ribbon vertex shader reads it.
@@ -328,7 +327,8 @@ struct HairDrawPush {
     vec4 footprint;   // x = world size of a pixel/texel (orthographic) or per unit distance (perspective),
                       // y = perspective (1) or not (0), z = DSM resolution, w = min ribbon width in pixels
     vec4 buckets;     // the DSM build's depth buckets: x = the nearest depth of the translucent casters,
-                      // y = buckets per unit of depth, z = buckets per texel (DsmPush.buckets.x)
+                      // y = buckets per unit of depth, z = buckets per texel (DsmPush.buckets.x),
+                      // w = the build's step (0: count, 1: store)
 };
 
 // The deep shadow map of light i is entry i (lighting reads it for every light).
@@ -349,8 +349,8 @@ struct GpuDsmLight {
 
 // Counters of one frame (cleared before the build; read back for the report).
 struct DsmStats {
-    uvec4 build;  // x = light-space fragments (allocations tried: beyond the capacity = dropped),
-                  // y = fragments skipped by the depth test against opaque casters, z unused,
+    uvec4 build;  // x = light-space fragments, y = fragments skipped by the depth test against opaque
+                  // casters, z = fragments dropped for want of room in the pool (their tiles' whole),
                   // w = entries given to the texels' runs (dsm/offsets.comp)
     uvec4 lists;  // x = nodes kept, y = nodes dropped beyond the max list length, z = longest list,
                   // w = texels with a list

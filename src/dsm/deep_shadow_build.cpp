@@ -1,5 +1,7 @@
 #include "dsm/deep_shadow_build.h"
 
+#include <string>
+
 #include "render/raster.h"
 
 namespace penumbra {
@@ -11,7 +13,7 @@ DeepShadowBuildPass::DeepShadowBuildPass(vk::Allocator& alloc, SceneGpu& scene, 
     for (const glm::vec3& p : scene.scene().strandPoints) casters_.extend(p);
     if (hasBlended_) casters_ = scene.scene().bounds;
     // Set 0: the scene's draw set (views = the DSM views, materials; set 1 the textures), the hair buffers,
-    // then heads, nodes and counters, and for the depth test the lights, the shadow lights and layers
+    // then buckets, runs and counters, and for the depth test the lights, the shadow lights and layers
     // and the opaque casters' shadow map (5-11: both builds, raster and compute, write the lists there).
     std::vector<vk::Binding> lists;
     for (uint32_t i = 5; i <= 10; ++i) lists.push_back({i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
@@ -28,6 +30,8 @@ DeepShadowBuildPass::DeepShadowBuildPass(vk::Allocator& alloc, SceneGpu& scene, 
         hairPipeline_ = vk::Pipeline::graphics(ctx, HairGpu::pipelineDesc("dsm/build_hair.frag"), SceneGpu::drawLayouts(ctx, layout_.handle()),
                                                sizeof(gpu::HairDrawPush));
     }
+    const VkDescriptorType ssbo = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    offsets_ = vk::ComputeKernel(ctx, "dsm/offsets.comp", {ssbo, ssbo, ssbo, ssbo}, sizeof(gpu::DsmPush));
     if (hasBlended_) {
         vk::GraphicsDesc d;
         d.vertexShader = "render/scene.vert";
@@ -40,7 +44,7 @@ DeepShadowBuildPass::DeepShadowBuildPass(vk::Allocator& alloc, SceneGpu& scene, 
     }
 }
 
-gpu::HairDrawPush DeepShadowBuildPass::layerPush(uint32_t layer) const {
+gpu::HairDrawPush DeepShadowBuildPass::layerPush(uint32_t layer, Step step) const {
     const DsmLayer& l = res_.layers[layer];
     const uint32_t depthTestLight = depthTest_ ? l.light : DSM_NONE;
     gpu::HairDrawPush push{{layer, 0, depthTestLight, uint32_t(res_.capacity)}, l.view.viewer, l.view.footprint, {}};
@@ -59,14 +63,15 @@ gpu::HairDrawPush DeepShadowBuildPass::layerPush(uint32_t layer) const {
     if (l.view.viewer.w > 0.5f)  // from a point: the box's nearest point, not its nearest corner
         nearest = glm::distance(glm::clamp(glm::vec3(l.view.viewer), casters_.min, casters_.max), glm::vec3(l.view.viewer));
     const float buckets = float(res_.bucketCount);
-    push.buckets = {nearest, farthest > nearest ? buckets / (farthest - nearest) : 0.0f, buckets, 0.0f};
+    push.buckets = {nearest, farthest > nearest ? buckets / (farthest - nearest) : 0.0f, buckets,
+                    step == Step::Count ? 0.0f : 1.0f};
     return push;
 }
 
-void DeepShadowBuildPass::recordLayer(VkCommandBuffer cmd, uint32_t layer) const {
+void DeepShadowBuildPass::recordLayer(VkCommandBuffer cmd, uint32_t layer, Step step) const {
     RasterTarget target{{res_.resolution, res_.resolution}, {}, VK_NULL_HANDLE};  // no attachments
     beginRaster(cmd, target);
-    gpu::HairDrawPush push = layerPush(layer);
+    gpu::HairDrawPush push = layerPush(layer, step);
     // Both pipelines share one set layout: the set the pass pushed stays bound across them.
     for (const vk::Pipeline* p : {&hairPipeline_, &meshPipeline_}) {
         if (!p->handle()) continue;
@@ -87,8 +92,8 @@ void DeepShadowBuildPass::recordLayer(VkCommandBuffer cmd, uint32_t layer) const
 }
 
 void DeepShadowBuildPass::addTo(FrameGraph& graph) {
-    const BufferHandle nodes = graph.import(res_.nodes), stats = graph.import(res_.stats);
-    const BufferHandle work = graph.import(res_.work), buckets = graph.import(res_.buckets);
+    const BufferHandle heads = graph.import(res_.heads), stats = graph.import(res_.stats),
+                       work = graph.import(res_.work), buckets = graph.import(res_.buckets);
     graph.pass("dsm.clear", PassKind::Transfer)
         .use(buckets, Use::TransferDst)
         .use(stats, Use::TransferDst)
@@ -99,33 +104,50 @@ void DeepShadowBuildPass::addTo(FrameGraph& graph) {
             vkCmdFillBuffer(c.cmd, c.buffer(stats).handle(), 0, VK_WHOLE_SIZE, 0);
             vkCmdFillBuffer(c.cmd, c.buffer(work).handle(), 0, 16, 0);  // no texels listed yet
         });
+    buckets_ = buckets, runs_ = graph.import(res_.runs), stats_ = stats;
+    addRasterPasses(graph, Step::Count);
+    PassBuilder offsets = graph.pass("dsm.offsets");
+    offsets.storageBuffer(0, heads, Use::StorageWrite)  // each texel's run
+        .storageBuffer(1, stats, Use::StorageWrite)
+        .storageBuffer(2, work, Use::StorageWrite)
+        .storageBuffer(3, buckets, Use::StorageWrite)  // counts in, places out
+        .pipeline(offsets_.pipeline)
+        .record([this](PassContext& c) {
+            offsets_.pipeline.push(c.cmd, res_.push());
+            vkCmdDispatch(c.cmd, vk::divUp(res_.resolution, 8), vk::divUp(res_.resolution, 8), res_.layerCount());
+        });
+    addRasterPasses(graph, Step::Store);
+}
 
-    buckets_ = buckets, nodes_ = nodes, stats_ = stats;
+// The raster build of the BLEND meshes (and, without computeHair, the hair) and the compute build of
+// the hair, for one step: the same pipelines both times, so that both steps make the same fragments.
+void DeepShadowBuildPass::addRasterPasses(FrameGraph& graph, Step step) {
+    const std::string name = step == Step::Count ? "dsm.count" : "dsm.build";
     if (hasBlended_ || hairPipeline_.handle()) {
-        PassBuilder build = graph.pass("dsm.build", PassKind::Raster);
+        PassBuilder build = graph.pass(name, PassKind::Raster);
         build.pipeline(setLayoutPipeline());
         scene_.declareDrawSet(build, graph.import(res_.views.current()));
         if (hairPipeline_.handle()) hair_->declare(build);
-        declareLists(build).record([this](PassContext& c) {
-            for (uint32_t layer = 0; layer < res_.layerCount(); ++layer) recordLayer(c.cmd, layer);
+        declareLists(build).record([this, step](PassContext& c) {
+            for (uint32_t layer = 0; layer < res_.layerCount(); ++layer) recordLayer(c.cmd, layer, step);
         });
     }
     if (hairKernel_.pipeline.handle()) {
-        PassBuilder build = graph.pass("dsm.build.hair");
+        PassBuilder build = graph.pass(name + ".hair");
         build.pipeline(hairKernel_.pipeline).storageBuffer(0, graph.import(res_.views.current()));
         hair_->declare(build);
-        declareLists(build).record([this](PassContext& c) {
+        declareLists(build).record([this, step](PassContext& c) {
             for (uint32_t layer = 0; layer < res_.layerCount(); ++layer)
-                hair_->dispatchSegments(c.cmd, hairKernel_.pipeline, layerPush(layer));
+                hair_->dispatchSegments(c.cmd, hairKernel_.pipeline, layerPush(layer, step));
         });
     }
 }
 
-// Bindings 5-11 of both builds: the lists, and what the depth test reads.
+// Bindings 5-11 of both builds: buckets and runs, and what the depth test reads.
 PassBuilder& DeepShadowBuildPass::declareLists(PassBuilder& pass) const {
     FrameGraph& graph = pass.graph();
     return pass.storageBuffer(5, buckets_, Use::StorageWrite)
-        .storageBuffer(6, nodes_, Use::StorageWrite)
+        .storageBuffer(6, runs_, Use::StorageWrite)
         .storageBuffer(7, stats_, Use::StorageWrite)
         .storageBuffer(8, graph.buffer("lights"))
         .storageBuffer(9, graph.buffer("shadow.lights"))

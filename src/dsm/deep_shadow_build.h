@@ -1,9 +1,11 @@
-// DSM build: clears the head pointers and the node counter, then rasterizes every semi-transparent
-// caster (hair ribbons, alphaMode BLEND meshes) in each DSM light's view; every fragment pushes a
-// (depth, alpha) node onto its texel's list (dsm/dsm_insert.glsl). No attachments and no depth test
-// among translucent casters: all layers are kept, in drawing order (the resolve sorts them); only
-// fragments hidden behind the opaque casters' shadow map are skipped. With `computeHair` the hair
-// ribbons are rasterized in compute instead (dsm/ribbon_raster.glsl), in a pass of their own.
+// DSM build: clears the depth buckets' counts, then rasterizes every semi-transparent caster (hair
+// ribbons, alphaMode BLEND meshes) in each DSM light's view twice: dsm.count counts every fragment in
+// its texel's depth bucket, dsm.offsets gives each texel a run for the buckets up to the list cap's
+// (dsm/offsets.comp), and dsm.build stores those buckets' fragments, (depth, alpha), in the runs
+// (dsm/dsm_insert.glsl; shared/types.h has the layout). No attachments and no depth test among
+// translucent casters: the resolve sorts each run; only fragments hidden behind the opaque casters'
+// shadow map are skipped. With `computeHair` the hair ribbons are rasterized in compute instead
+// (dsm/ribbon_raster.glsl), in passes of their own (dsm.count.hair, dsm.build.hair).
 #pragma once
 #include "dsm/dsm_resources.h"
 #include "render/frame_graph.h"
@@ -20,8 +22,10 @@ public:
     void addTo(FrameGraph& graph);
 
 private:
-    void recordLayer(VkCommandBuffer cmd, uint32_t layer) const;
-    gpu::HairDrawPush layerPush(uint32_t layer) const;
+    enum class Step { Count, Store };
+    void addRasterPasses(FrameGraph& graph, Step step);
+    void recordLayer(VkCommandBuffer cmd, uint32_t layer, Step step) const;
+    gpu::HairDrawPush layerPush(uint32_t layer, Step step) const;
     PassBuilder& declareLists(PassBuilder& pass) const;
     const vk::Pipeline& setLayoutPipeline() const { return hairPipeline_.handle() ? hairPipeline_ : meshPipeline_; }
     vk::Allocator& alloc_;
@@ -35,7 +39,8 @@ private:
     vk::DescriptorLayout layout_;
     vk::Pipeline hairPipeline_, meshPipeline_;  // the raster's (hairPipeline_ without computeHair)
     vk::ComputeKernel hairKernel_;               // with computeHair
-    BufferHandle buckets_, nodes_, stats_;       // this frame's, set by addTo
+    vk::ComputeKernel offsets_;
+    BufferHandle buckets_, runs_, stats_;        // this frame's, set by addTo
 };
 
 }  // namespace penumbra

@@ -120,13 +120,13 @@ DsmFrameStats DeepShadowMaps::readStats(vk::CommandContext& cmd) const {
     std::memcpy(&g, bytes.data(), sizeof(g));
     s.fragments = g.build.x;
     s.hidden = g.build.y;
-    s.overflow = s.fragments > s.capacity ? s.fragments - s.capacity : 0;
+    s.overflow = g.build.z;
     s.kept = g.lists.x;
     s.beyondMaxList = g.lists.y;
     s.longest = g.lists.z;
     s.lists = g.lists.w;
     s.sorted = g.build.w;
-    s.usedBytes = std::min(s.fragments, s.capacity) * DsmResources::kNodeBytes;  // the sorted lists reuse the build's
+    s.usedBytes = s.sorted * DsmResources::kNodeBytes;  // the runs; the sorted lists reuse their indices
     return s;
 }
 

@@ -1,23 +1,19 @@
 #include "dsm/deep_shadow_resolve.h"
 
-
 namespace penumbra {
 
 DeepShadowResolvePass::DeepShadowResolvePass(vk::Allocator& alloc, DsmResources& res, bool links)
     : alloc_(alloc), res_(res), links_(links) {
     const VkDescriptorType ssbo = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    offsets_ = vk::ComputeKernel(alloc.context(), "dsm/offsets.comp", {ssbo, ssbo, ssbo, ssbo}, sizeof(gpu::DsmPush));
-    scatter_ = vk::ComputeKernel(alloc.context(), "dsm/scatter.comp", {ssbo, ssbo, ssbo, ssbo}, sizeof(gpu::DsmPush));
     resolve_ = vk::ComputeKernel(alloc.context(), "dsm/resolve.comp", {ssbo, ssbo, ssbo, ssbo, ssbo},
                                  sizeof(gpu::DsmPush));  // heads, nodes, side, work, runs
     link_ = vk::ComputeKernel(alloc.context(), "dsm/link.comp", {ssbo, ssbo, ssbo}, sizeof(gpu::DsmPush));
 }
 
 // One thread per texel of every layer (8x8 tiles), or (`grid`) a fixed grid of workgroups striding
-// over the build's nodes or the listed texels: enough to fill a large GPU, however many the frame made.
+// over the listed texels, however many the frame made.
 void DeepShadowResolvePass::addDispatch(PassBuilder& pass, const vk::ComputeKernel& k, bool grid) const {
-    const gpu::DsmPush push{{res_.resolution, res_.layerCount(), uint32_t(res_.capacity), res_.maxList},
-                            {res_.bucketCount, 0, 0, 0}};
+    const gpu::DsmPush push = res_.push();
     pass.pipeline(k.pipeline).record([this, &k, push, grid](PassContext& c) {
         k.pipeline.push(c.cmd, push);
         if (grid)
@@ -29,21 +25,8 @@ void DeepShadowResolvePass::addDispatch(PassBuilder& pass, const vk::ComputeKern
 
 void DeepShadowResolvePass::addTo(FrameGraph& graph) {
     const BufferHandle heads = graph.import(res_.heads), nodes = graph.import(res_.nodes),
-                       side = graph.import(res_.side), stats = graph.import(res_.stats),
-                       work = graph.import(res_.work), runs = graph.import(res_.runs),
-                       buckets = graph.import(res_.buckets);
-    PassBuilder offsets = graph.pass("dsm.offsets");
-    offsets.storageBuffer(0, heads, Use::StorageWrite)  // each texel's run
-        .storageBuffer(1, stats, Use::StorageWrite)
-        .storageBuffer(2, work, Use::StorageWrite)
-        .storageBuffer(3, buckets, Use::StorageWrite);  // counts in, places out
-    addDispatch(offsets, offsets_);
-    PassBuilder scatter = graph.pass("dsm.scatter");
-    scatter.storageBuffer(0, buckets, Use::StorageRead)
-        .storageBuffer(1, nodes, Use::StorageRead)
-        .storageBuffer(2, stats, Use::StorageRead)
-        .storageBuffer(3, runs, Use::StorageWrite);
-    addDispatch(scatter, scatter_, true);
+                       side = graph.import(res_.side), work = graph.import(res_.work),
+                       runs = graph.import(res_.runs);
     PassBuilder resolve = graph.pass("dsm.resolve");
     resolve.storageBuffer(0, heads, Use::StorageWrite)  // each list's place and length
         .storageBuffer(1, nodes, Use::StorageWrite)

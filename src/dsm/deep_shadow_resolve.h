@@ -1,9 +1,8 @@
-// DSM resolve (compute), after the build counted each texel's nodes: dsm.offsets gives each texel a
-// run in the side buffer (dsm/offsets.comp), dsm.scatter writes every node's index into its texel's
-// run (dsm/scatter.comp), dsm.resolve sorts each texel's nodes and keeps its nearest `maxList` with
-// their cumulative transmittance (dsm/resolve.comp); then, with `--dsm-lookup links`, dsm.link links
-// every node to its right and upper neighbour texels' lists (dsm/link.comp) for the lookup's filter
-// (the default binary search needs no links). Separate dispatches: each needs all of the previous.
+// DSM resolve (compute), after the build stored each texel's fragments in its run: dsm.resolve sorts
+// them and keeps the nearest `maxList` with their cumulative transmittance (dsm/resolve.comp); then,
+// with `--dsm-lookup links`, dsm.link links every node to its right and upper neighbour texels' lists
+// (dsm/link.comp) for the lookup's filter (the default binary search needs no links). Two dispatches,
+// because a link needs the neighbour's list sorted.
 #pragma once
 #include "dsm/dsm_resources.h"
 #include "render/frame_graph.h"
@@ -17,10 +16,10 @@ public:
 
 private:
     void addDispatch(PassBuilder& pass, const vk::ComputeKernel& k, bool grid = false) const;
-    static constexpr uint32_t kGridGroups = 4096;
+    static constexpr uint32_t kGridGroups = 4096;  // the resolve's: enough to fill a large GPU
     vk::Allocator& alloc_;
     DsmResources& res_;
-    vk::ComputeKernel offsets_, scatter_, resolve_, link_;
+    vk::ComputeKernel resolve_, link_;
     bool links_;
 };
 

@@ -39,7 +39,7 @@ struct DsmResources {
     vk::Buffer heads;       // DSM_HEAD_UINTS uints per texel and layer
     vk::Buffer nodes;       // uvec4 per node
     vk::Buffer side;        // uint per node: search key (depth bits) or upper link
-    vk::Buffer runs;        // uvec2 per node: the build's (depth, alpha), grouped by texel (dsm.scatter)
+    vk::Buffer runs;        // uvec2 per node: the build's (depth, alpha), grouped by texel (its second step)
     vk::Buffer buckets;     // bucketCount uints per texel and layer: node counts per depth bucket, then places
     uint32_t bucketCount = 1;  // DSM_MAX_BUCKETS, or fewer where one buffer of them would not fit the device
     vk::Buffer stats;       // DsmStats
@@ -55,6 +55,10 @@ struct DsmResources {
                  size_t lightCount, float opacityLayer = 1.0f);
 
     uint32_t layerCount() const { return uint32_t(layers.size()); }
+    // The push constants of the per-texel passes (offsets, resolve, link).
+    gpu::DsmPush push() const {
+        return {{resolution, layerCount(), uint32_t(capacity), maxList}, {bucketCount, 0, 0, 0}};
+    }
     // Writes frame slot `slot`'s tables from the layers' current projections.
     void writeTables(const DsmSettings& settings, uint32_t slot);
     VkDeviceSize poolBytes() const { return nodes.size() + side.size() + runs.size(); }
