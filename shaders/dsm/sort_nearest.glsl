@@ -1,7 +1,8 @@
-// The nearest entries of a linked list, sorted by depth: shared by the DSM resolve (light-space
-// lists) and the camera translucency resolve (per-pixel lists). The includer defines
-// SORT_CAPACITY (size of the local array), SORT_CHAINS (how many lists hold one texel's or pixel's
-// entries; 1 if not defined), `nodes` (uvec4: x = depth bits, z = next),
+// The nearest entries of a pixel's linked lists, sorted by depth, for the camera translucency's sort
+// (dsm/oit_sort.comp; the DSM resolve sorts runs, not lists, in a workgroup per texel:
+// dsm/resolve.comp). The includer defines SORT_CAPACITY (entries kept), SORT_SHARED_GROUP (the
+// workgroup's invocation count), SORT_CHAINS (how many lists hold one pixel's entries; 1 if not
+// defined), `nodes` (uvec4: x = depth bits, z = next),
 // `vec2 sortEntry(uint index, uvec4 node)` (x = depth, y = the payload the includer keeps) and
 // `uint sortTieKey(vec2 entry)`, which orders entries of equal depth by what they hold, not by where
 // the build's atomics happened to put them: the result does not change from run to run (strands'
@@ -10,18 +11,12 @@
 #define SORT_CHAINS 1
 #endif
 
-// The heap, entry k read and written as sorted(k) (after sortNearest: ascending depth): in each
-// invocation's local array, or (SORT_SHARED_GROUP, the workgroup's invocation count) in shared
+// The heap, entry k read and written as sorted(k) (after sortNearest: ascending depth), in shared
 // memory, entry k of invocation i at k * SORT_SHARED_GROUP + i (consecutive invocations in
-// consecutive banks). H100: shared cut the camera sort from 3.51 to 2.85 ms (100k strands); for the
-// DSM resolve (60 entries, 30 KiB a workgroup) it doubled the time (occupancy).
-#ifdef SORT_SHARED_GROUP
+// consecutive banks). H100: shared cut the camera sort from 3.51 to 2.85 ms (100k strands) against a
+// local array, which spilled to L2.
 shared vec2 sortHeap[SORT_CAPACITY * SORT_SHARED_GROUP];
 #define sorted(k) sortHeap[(k) * SORT_SHARED_GROUP + gl_LocalInvocationIndex]
-#else
-vec2 sortHeap[SORT_CAPACITY];
-#define sorted(k) sortHeap[k]
-#endif
 
 // Whether a lies farther than b (depth, then the tie key).
 bool sortFarther(vec2 a, vec2 b) { return a.x > b.x || (a.x == b.x && sortTieKey(a) > sortTieKey(b)); }
