@@ -11,6 +11,8 @@
 // nothing that the opaque casters leave lit: it takes no node. Conservative: it is dropped only
 // when every shadow-map texel of that neighbourhood holds a nearer opaque depth than the fragment
 // moved two DSM texels towards the light.
+#include "dsm/depth_buckets.glsl"
+
 layout(set = 0, binding = 5, std430) buffer Buckets { uint buckets[]; };  // per texel, DsmPush.buckets.x counts, then places
 layout(set = 0, binding = 6, std430) writeonly buffer Runs { uvec2 runs[]; };  // (depth, alpha) bits
 layout(set = 0, binding = 7, std430) buffer Stats { DsmStats stats; };
@@ -68,7 +70,6 @@ void dsmInsert(uvec2 texel, float depth, float alpha, vec3 world) {
     }
     uint res = uint(draw.footprint.z);
     uint index = (draw.ids.x * res + texel.y) * res + texel.x;
-    uint bucket = uint(clamp((depth - draw.buckets.x) * draw.buckets.y, 0.0, draw.buckets.z - 1.0));
-    uint at = atomicAdd(buckets[index * uint(draw.buckets.z) + bucket], 1u);  // shared/types.h
+    uint at = atomicAdd(buckets[index * uint(draw.buckets.z) + depthBucket(depth, draw.buckets)], 1u);
     if (!counting && at < DSM_CULLED) runs[at] = uvec2(floatBitsToUint(depth), floatBitsToUint(min(alpha, 1.0)));
 }

@@ -11,6 +11,7 @@
 // lists) are counted here, once per tile.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
+#include "dsm/depth_buckets.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = 0, std430) writeonly buffer Heads { uint heads[]; };
@@ -29,12 +30,9 @@ void main() {
     bool inside = id.x < res && id.y < res;
     uint texel = (id.z * res + id.y) * res + id.x;
     uint counts[DSM_MAX_BUCKETS];
-    uint count = 0u, entries = 0u;  // all the texel's fragments; those in the buckets it keeps
-    for (uint b = 0u; b < perTexel; ++b) {
-        counts[b] = inside ? buckets[texel * perTexel + b] : 0u;
-        count += counts[b];
-        if (entries < maxList) entries += counts[b];
-    }
+    for (uint b = 0u; b < perTexel; ++b) counts[b] = inside ? buckets[texel * perTexel + b] : 0u;
+    uint count, entries;  // all the texel's fragments; those in the buckets it keeps
+    uint kept = bucketsKept(counts, perTexel, maxList, entries, count);
     uint offset = 0u, place = 0u;
     if (count > 0u) {
         offset = atomicAdd(groupEntries, entries);
@@ -65,7 +63,7 @@ void main() {
     if (count > 0u) {
         uint at = start;
         for (uint b = 0u; b < perTexel; ++b) {
-            buckets[texel * perTexel + b] = listed && at < start + entries ? at : DSM_CULLED;
+            buckets[texel * perTexel + b] = listed && b < kept ? at : DSM_CULLED;
             at += counts[b];
         }
     }

@@ -294,12 +294,9 @@ struct ShadowDrawPush {
 // 4 and 4 (6.29, 14.70); 4 and 8 (6.53, 15.01): more lists keep more reads in flight but spread the
 // builds' atomics over more memory.
 #define DSM_HEAD_UINTS 2
-// The build counts a texel's nodes per depth bucket (the translucent casters' depth range cut into
-// DsmPush.buckets.x equal slices, depths outside it in the end slices): dsm.offsets then keeps only
-// the buckets up to the one that brings the count to the list cap, since every node behind it has at
-// least the cap's number of nodes in front. Exact for any range; the range only decides how much is
-// left out. A bucket's place is DSM_CULLED or above when it is left out (or found no room): the
-// build's second step adds to it and stores nothing.
+// The build counts a texel's fragments per depth bucket and keeps only the buckets up to the list
+// cap's (dsm/depth_buckets.glsl). A bucket's place is DSM_CULLED or above when it is left out (or
+// found no room): the build's second step adds to it and stores nothing.
 #define DSM_MAX_BUCKETS 8
 #define DSM_CULLED 0x80000000u
 #define OIT_CHAINS 4
