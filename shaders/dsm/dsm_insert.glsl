@@ -13,7 +13,8 @@
 // moved two DSM texels towards the light.
 #include "dsm/depth_buckets.glsl"
 
-layout(set = 0, binding = 5, std430) buffer Buckets { uint buckets[]; };  // per texel, DsmPush.buckets.x counts, then places
+// Per texel DsmPush.buckets.x bucket counts, then their places in the texel's run (dsm.offsets).
+layout(set = 0, binding = 5, std430) buffer Buckets { uint buckets[]; };
 layout(set = 0, binding = 6, std430) writeonly buffer Runs { uvec2 runs[]; };  // (depth, alpha) bits
 layout(set = 0, binding = 7, std430) buffer Stats { DsmStats stats; };
 layout(set = 0, binding = 8, std430) readonly buffer Lights { GpuLight lights[]; };

@@ -11,9 +11,9 @@
 // pass's critical path. README "Deep shadow maps".)
 //
 // The sorted list is written packed at the start of the texel's run's indices, in the pool, and its
-// depths in the side buffer at the same indices (one uint per node: a binary search touches 4 bytes a step, not a node's 16). The
-// texel's first head slot then points at the list, its second holds the list's length. Equal depths
-// are ordered by alpha, so that the same nodes are kept every run.
+// depths in the side buffer at the same indices (one uint per node: a binary search touches 4 bytes
+// a step, not a node's 16). The texel's first head slot then points at the list, its second holds
+// the list's length. Equal depths are ordered by alpha, so that the same nodes are kept every run.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
 

@@ -40,8 +40,26 @@ DeepShadowBuildPass::DeepShadowBuildPass(vk::Allocator& alloc, SceneGpu& scene, 
         d.vertexAttributes = SceneGpu::vertexAttributes();
         d.dynamicCullMode = true;  // single-sided blended surfaces cast only from their front
         d.frontFace = SceneGpu::sceneFrontFace(false);
-        meshPipeline_ = vk::Pipeline::graphics(ctx, d, SceneGpu::drawLayouts(ctx, layout_.handle()), sizeof(gpu::HairDrawPush));
+        meshPipeline_ = vk::Pipeline::graphics(ctx, d, SceneGpu::drawLayouts(ctx, layout_.handle()),
+                                               sizeof(gpu::HairDrawPush));
     }
+}
+
+// The casters' depth range as dsm/dsm_common.glsl measures depth from `viewer` (from a spot light,
+// along a directional one): the depth buckets' (dsm/depth_buckets.glsl). Only how much the buckets
+// leave out depends on it, not what is kept.
+glm::vec2 DeepShadowBuildPass::casterDepthRange(const glm::vec4& viewer) const {
+    const glm::vec3 eye(viewer);
+    const bool fromPoint = viewer.w > 0.5f;
+    glm::vec2 range{1e30f, -1e30f};
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec3 p{corner & 1 ? casters_.max.x : casters_.min.x, corner & 2 ? casters_.max.y : casters_.min.y,
+                          corner & 4 ? casters_.max.z : casters_.min.z};
+        const float d = fromPoint ? glm::distance(p, eye) : -glm::dot(p, eye);
+        range = {std::min(range.x, d), std::max(range.y, d)};
+    }
+    if (fromPoint) range.x = glm::distance(glm::clamp(eye, casters_.min, casters_.max), eye);  // the box's nearest point
+    return range;
 }
 
 gpu::HairDrawPush DeepShadowBuildPass::layerPush(uint32_t layer, Step step) const {
@@ -49,21 +67,9 @@ gpu::HairDrawPush DeepShadowBuildPass::layerPush(uint32_t layer, Step step) cons
     const uint32_t depthTestLight = depthTest_ ? l.light : DSM_NONE;
     gpu::HairDrawPush push{{layer, 0, depthTestLight, uint32_t(res_.capacity)}, l.view.viewer, l.view.footprint, {}};
     push.footprint.z = float(res_.resolution);
-    // The casters' depth range as dsm/dsm_common.glsl measures depth (from a spot light, along a
-    // directional one), cut into the buckets (shared/types.h). Only how much the buckets leave out
-    // depends on it, not what is kept.
-    float nearest = 1e30f, farthest = -1e30f;
-    for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec3 p{corner & 1 ? casters_.max.x : casters_.min.x, corner & 2 ? casters_.max.y : casters_.min.y,
-                          corner & 4 ? casters_.max.z : casters_.min.z};
-        const glm::vec3 eye(l.view.viewer);
-        const float d = l.view.viewer.w > 0.5f ? glm::distance(p, eye) : -glm::dot(p, eye);
-        nearest = std::min(nearest, d), farthest = std::max(farthest, d);
-    }
-    if (l.view.viewer.w > 0.5f)  // from a point: the box's nearest point, not its nearest corner
-        nearest = glm::distance(glm::clamp(glm::vec3(l.view.viewer), casters_.min, casters_.max), glm::vec3(l.view.viewer));
+    const glm::vec2 range = casterDepthRange(l.view.viewer);
     const float buckets = float(res_.bucketCount);
-    push.buckets = {nearest, farthest > nearest ? buckets / (farthest - nearest) : 0.0f, buckets,
+    push.buckets = {range.x, range.y > range.x ? buckets / (range.y - range.x) : 0.0f, buckets,
                     step == Step::Count ? 0.0f : 1.0f};
     return push;
 }

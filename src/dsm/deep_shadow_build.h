@@ -26,6 +26,7 @@ private:
     void addRasterPasses(FrameGraph& graph, Step step);
     void recordLayer(VkCommandBuffer cmd, uint32_t layer, Step step) const;
     gpu::HairDrawPush layerPush(uint32_t layer, Step step) const;
+    glm::vec2 casterDepthRange(const glm::vec4& viewer) const;
     PassBuilder& declareLists(PassBuilder& pass) const;
     const vk::Pipeline& setLayoutPipeline() const { return hairPipeline_.handle() ? hairPipeline_ : meshPipeline_; }
     vk::Allocator& alloc_;
@@ -33,7 +34,7 @@ private:
     const HairGpu* hair_;
     DsmResources& res_;
     bool hasBlended_ = false;
-    Bounds casters_;  // of the translucent casters (hair; with BLEND meshes the whole scene): the depth buckets' range
+    Bounds casters_;  // of the translucent casters (hair; with BLEND meshes the whole scene)
     bool depthTest_;
     vk::Sampler nearest_;
     vk::DescriptorLayout layout_;

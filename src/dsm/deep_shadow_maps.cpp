@@ -137,10 +137,12 @@ std::string describeDsm(const DsmFrameStats& s) {
                            "{:.1f} MiB",
                            s.maps, s.resolution, DOM_LAYERS, s.opacityLayer, mib(s.poolBytes + s.headBytes));
     return fmt::format(
-        "dsm: {} map(s) of {}^2: {} light-space fragments ({} more hidden behind opaque casters skipped), {} nodes kept in {} lists (longest {}, {} beyond the "
-        "{}-node cap dropped, {} of them in depth buckets not sorted); node pool {:.1f} MiB for {} nodes ({:.1f} MiB used), heads, work list and depth buckets {:.1f} MiB",
-        s.maps, s.resolution, count(s.fragments), count(s.hidden), count(s.kept), count(s.lists), s.longest, count(s.beyondMaxList),
-        s.maxList, count(s.kept + s.beyondMaxList - s.sorted), mib(s.poolBytes), count(s.capacity), mib(s.usedBytes), mib(s.headBytes));
+        "dsm: {} map(s) of {}^2: {} light-space fragments ({} more hidden behind opaque casters skipped), {} nodes kept "
+        "in {} lists (longest {}, {} beyond the {}-node cap dropped, {} of them in depth buckets not sorted); node pool "
+        "{:.1f} MiB for {} nodes ({:.1f} MiB used), heads, work list and depth buckets {:.1f} MiB",
+        s.maps, s.resolution, count(s.fragments), count(s.hidden), count(s.kept), count(s.lists), s.longest,
+        count(s.beyondMaxList), s.maxList, count(s.kept + s.beyondMaxList - s.sorted), mib(s.poolBytes),
+        count(s.capacity), mib(s.usedBytes), mib(s.headBytes));
 }
 
 std::vector<std::string> dsmWarnings(const DsmFrameStats& s) {
