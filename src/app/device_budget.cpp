@@ -184,8 +184,11 @@ std::vector<Demand> frameDemands(const RenderSettings& s, const Scene& scene, co
     if (s.dsm.enabled) {
         const uint64_t res = s.dsm.resolution ? s.dsm.resolution : s.shadow.resolution;
         d.push_back({s.dsm.resolution ? "--dsm-res" : "--shadow-res", res, 16,
-                     "the deep-shadow-map heads, work list and depth buckets (one light)",
-                     [](uint64_t r) { return r * r * 4 * (2 * DSM_HEAD_UINTS + DSM_MAX_BUCKETS); }, true});
+                     "the deep-shadow-map list heads (one light)", [](uint64_t r) { return r * r * 4 * DSM_HEAD_UINTS; }, true});
+        // Separate buffers, the buckets as many as fit one (dsm_resources.cpp): memory, not a descriptor's range.
+        d.push_back({s.dsm.resolution ? "--dsm-res" : "--shadow-res", res, 16,
+                     "the deep-shadow-map work list and depth buckets (one light)",
+                     [](uint64_t r) { return r * r * 4 * (DSM_HEAD_UINTS + DSM_MAX_BUCKETS); }});
     }
     const uint64_t strands = scene.strands.size(), points = scene.strandPoints.size() + 2 * strands;
     if (strands)
