@@ -25,7 +25,7 @@ void main() {
     if (any(greaterThanEqual(pixel, ivec2(pc.sizes.xy))) ||
         (aov != AOV_FINAL && aov != AOV_DIRECT && aov != AOV_INDIRECT))
         return;
-    uint base = (uint(pixel.y) * pc.sizes.x + uint(pixel.x)) * OIT_CHAINS;
+    uint base = (uint(pixel.y) * pc.sizes.x + uint(pixel.x)) * OIT_HEADER_UINTS;
     uint first = heads[base];
     if (first == DSM_NONE) return;  // no translucent fragment in front of the opaque surface
     uint count = heads[base + 1u], length = heads[base + 3u];

@@ -3,6 +3,8 @@
 // why): every segment's ribbon in the camera's view, each pixel it covers in front of the opaque
 // surface pushing a node (dsm/oit_insert.glsl) with the strand's coverage as alpha.
 #extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+#extension GL_EXT_shader_atomic_int64 : require
 #include "shared/types.h"
 #include "dsm/dsm_common.glsl"
 

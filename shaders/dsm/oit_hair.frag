@@ -2,6 +2,8 @@
 // Camera translucency build for hair ribbons (dsm/hair.vert in the camera's view): a strand thinner
 // than a pixel is drawn one pixel wide and passes its coverage on as alpha (opacity x width / drawn).
 #extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
+#extension GL_EXT_shader_atomic_int64 : require
 #include "shared/types.h"
 
 layout(push_constant) uniform Push { HairDrawPush draw; };

@@ -1,13 +1,20 @@
 // Camera translucency build (src/dsm/translucency.h): every hair or BLEND fragment (raster, or hair
-// in compute: dsm/ribbon_raster.glsl) in front of the opaque surface (the G-buffer depth) pushes a
-// node onto one of its pixel's OIT_CHAINS lists, as the DSM build does (dsm/dsm_insert.glsl). Needs `draw` (HairDrawPush: ids.z = image width, ids.w = node capacity).
-layout(set = 0, binding = 5, std430) buffer Heads { uint heads[]; };
+// in compute: dsm/ribbon_raster.glsl) in front of the opaque surface (the G-buffer depth), in two steps
+// (HairDrawPush.buckets.w), as the DSM's (dsm/dsm_insert.glsl): first counted in its pixel's depth
+// bucket, its -log(1 - alpha) added to the pixel's sum; then, after oit.offsets gave the kept buckets
+// places in the pixel's run, stored there as a node (one atomic add, two stores); a fragment of a
+// bucket left out stores nothing. Needs `draw` (HairDrawPush: ids.z = image width) and, in the
+// includer, GL_EXT_shader_atomic_int64 with 64-bit integer types.
+layout(set = 0, binding = 5, std430) buffer Heads { uint heads[]; };  // unused here (the set's layout)
 layout(set = 0, binding = 6, std430) writeonly buffer Nodes { uvec4 nodes[]; };
 layout(set = 0, binding = 7, std430) writeonly buffer Normals { uint normals[]; };
 layout(set = 0, binding = 8, std430) buffer Stats { OitStats stats; };
 layout(set = 0, binding = 9) uniform sampler2D opaqueDepth;
+layout(set = 0, binding = 10, std430) buffer Buckets { uint buckets[]; };   // per pixel, OitPush.sizes.w
+layout(set = 0, binding = 11, std430) buffer Tails { uint64_t tails[]; };  // per pixel, OIT_LOG_SCALE
 
 #include "dsm/octahedral.glsl"
+#include "dsm/depth_buckets.glsl"
 
 void oitInsert(ivec2 pixel, float depth, vec3 albedo, float alpha, vec3 normal, bool hair) {
     // Nothing to composite; NaN too: lavapipe's raster can give a fragment of a strip's degenerate
@@ -15,12 +22,19 @@ void oitInsert(ivec2 pixel, float depth, vec3 albedo, float alpha, vec3 normal, 
     if (!(alpha > 0.0)) return;
     // Behind (or on) the opaque surface: hidden (a coplanar translucent surface loses to the opaque one).
     if (depth >= texelFetch(opaqueDepth, pixel, 0).r) return;
-    uint node = atomicAdd(stats.counts.x, 1u);
-    if (node >= draw.ids.w) return;  // pool full: counted, dropped
-    uint chain = node % OIT_CHAINS;  // the pixel's lists, walked side by side by the composite
-    uint previous = atomicExchange(heads[(uint(pixel.y) * draw.ids.z + uint(pixel.x)) * OIT_CHAINS + chain], node);
     alpha = min(alpha, 1.0);
-    nodes[node] = uvec4(floatBitsToUint(depth), packHalf2x16(albedo.rg), previous,
-                        packHalf2x16(vec2(albedo.b, hair ? -alpha : alpha)));
+    uint p = uint(pixel.y) * draw.ids.z + uint(pixel.x);
+    uint slot = p * uint(draw.buckets.z) + depthBucket(depth, draw.buckets);
+    if (draw.buckets.w < 0.5) {  // the first step: count
+        // The alpha the node will hold (a half), clamped so that alpha 1 stays finite: the composite
+        // takes the kept layers' share out of this sum (oit_blend.comp).
+        float stored = unpackHalf2x16(packHalf2x16(vec2(alpha, 0.0))).x;
+        atomicAdd(buckets[slot], 1u);
+        atomicAdd(tails[p], uint64_t(-log(max(1.0 - stored, 1e-7)) * OIT_LOG_SCALE + 0.5));
+        return;
+    }
+    uint node = atomicAdd(buckets[slot], 1u);
+    if (node >= DSM_CULLED) return;  // behind the cap's bucket (its sum is all that counts), or no room
+    nodes[node] = uvec4(floatBitsToUint(depth), packHalf2x16(albedo.rg), 0u, packHalf2x16(vec2(albedo.b, hair ? -alpha : alpha)));
     normals[node] = packSnorm2x16(octEncode(normal));
 }

@@ -1,12 +1,13 @@
 #version 460
 // Camera translucency, first of three passes (src/dsm/translucency.h), one thread per pixel: the
-// pixel's OIT_MAX_LIST nearest fragments (its OIT_CHAINS lists walked side by side) in depth order,
+// pixel's OIT_MAX_LIST nearest fragments (of its run, oit.offsets) in depth order,
 // appended to the kept-layer list that oit_shade.comp lights one layer per thread, and the pixel's
 // header for oit_blend.comp: heads[4 p] = its first entry, + 1 = how many, + 2 = the log-transmittance
-// of all its fragments (the walk sums it: the merged tail needs no second walk), + 3 = the list's
-// length. A pixel without fragments keeps DSM_NONE in its first head.
+// of all its fragments (summed by the build's first step), + 3 = how many fragments it has (stored or
+// in the buckets left out). A pixel without stored fragments keeps DSM_NONE in its first head.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #include "shared/types.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -16,17 +17,12 @@ layout(set = 0, binding = 1, std430) readonly buffer Nodes { uvec4 nodes[]; };
 layout(set = 0, binding = 2, std430) readonly buffer Normals { uint normals[]; };
 layout(set = 0, binding = 3, std430) buffer Stats { OitStats stats; };
 layout(set = 0, binding = 4, std430) buffer Layers { uvec4 header; uvec2 entries[]; } layers;  // (node, pixel)
+layout(set = 0, binding = 5, std430) readonly buffer Tails { uint64_t tails[]; };  // sum of -log(1 - alpha)
 layout(push_constant) uniform Push { OitPush pc; };
 
 #define SORT_CAPACITY OIT_MAX_LIST
-#define SORT_CHAINS OIT_CHAINS
 #define SORT_SHARED_GROUP 64
-// Clamped so that an opaque fragment (alpha 1) stays finite.
-float logTransmittanceAll;
-vec2 sortEntry(uint n, uvec4 node) {  // (depth, node)
-    logTransmittanceAll += log(max(1.0 - abs(unpackHalf2x16(node.w).y), 1e-7));
-    return vec2(uintBitsToFloat(node.x), uintBitsToFloat(n));
-}
+vec2 sortEntry(uint n, uvec4 node) { return vec2(uintBitsToFloat(node.x), uintBitsToFloat(n)); }  // (depth, node)
 // Equal depths (read only then): by the fragment's tangent or normal, colour and alpha.
 uint sortTieKey(vec2 e) {
     uint n = floatBitsToUint(e.y);
@@ -40,16 +36,12 @@ void main() {
     if (gl_LocalInvocationIndex == 0) groupKept = groupDropped = groupLongest = 0u;
     barrier();
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-    uint base = (uint(pixel.y) * pc.sizes.x + uint(pixel.x)) * OIT_CHAINS;
-    uint chains[OIT_CHAINS];
-    bool listed = false;
-    [[unroll]] for (int k = 0; k < OIT_CHAINS; ++k) {
-        chains[k] = all(lessThan(pixel, ivec2(pc.sizes.xy))) ? heads[base + k] : DSM_NONE;
-        listed = listed || chains[k] != DSM_NONE;
-    }
-    uint count = 0u, length = 0u;
-    logTransmittanceAll = 0.0;
-    if (listed) length = sortNearest(chains, OIT_MAX_LIST, pc.sizes.z, count);
+    bool inside = all(lessThan(pixel, ivec2(pc.sizes.xy)));
+    uint base = (uint(pixel.y) * pc.sizes.x + uint(pixel.x)) * OIT_HEADER_UINTS;
+    uint start = inside ? heads[base] : DSM_NONE;  // oit.offsets' header: the run, its nodes, all fragments
+    bool listed = start != DSM_NONE;
+    uint count = 0u, length = listed ? heads[base + 3u] : 0u;
+    if (listed) sortNearest(start, heads[base + 1u], OIT_MAX_LIST, count);
     // This pixel's place among the workgroup's entries, then the workgroup's in the list (one
     // global atomic per workgroup).
     uint offset = atomicAdd(groupKept, count);
@@ -66,8 +58,7 @@ void main() {
             layers.entries[first + i] = uvec2(floatBitsToUint(sorted(i).y), uint(pixel.y) << 16 | uint(pixel.x));
         heads[base] = first;
         heads[base + 1u] = count;
-        heads[base + 2u] = floatBitsToUint(logTransmittanceAll);
-        heads[base + 3u] = length;
+        heads[base + 2u] = floatBitsToUint(-float(tails[base / OIT_HEADER_UINTS]) / OIT_LOG_SCALE);
     }
     if (gl_LocalInvocationIndex == 0 && (groupKept | groupDropped) != 0u) {
         atomicAdd(stats.counts.y, groupKept);

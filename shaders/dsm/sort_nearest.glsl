@@ -1,15 +1,12 @@
-// The nearest entries of a pixel's linked lists, sorted by depth, for the camera translucency's sort
-// (dsm/oit_sort.comp; the DSM resolve sorts runs, not lists, in a workgroup per texel:
+// The nearest entries of a pixel's run of nodes, sorted by depth, for the camera translucency's sort
+// (dsm/oit_sort.comp; the DSM resolve sorts its texels' longer runs in a workgroup per texel:
 // dsm/resolve.comp). The includer defines SORT_CAPACITY (entries kept), SORT_SHARED_GROUP (the
-// workgroup's invocation count), SORT_CHAINS (how many lists hold one pixel's entries; 1 if not
-// defined), `nodes` (uvec4: x = depth bits, z = next),
+// workgroup's invocation count), `nodes` (uvec4: x = depth bits),
 // `vec2 sortEntry(uint index, uvec4 node)` (x = depth, y = the payload the includer keeps) and
 // `uint sortTieKey(vec2 entry)`, which orders entries of equal depth by what they hold, not by where
 // the build's atomics happened to put them: the result does not change from run to run (strands'
 // consecutive segments meet at a point of equal depth, so ties are common at the cap).
-#ifndef SORT_CHAINS
-#define SORT_CHAINS 1
-#endif
+#define SORT_BATCH 4  // nodes read before any is sorted: their reads in flight together
 
 // The heap, entry k read and written as sorted(k) (after sortNearest: ascending depth), in shared
 // memory, entry k of invocation i at k * SORT_SHARED_GROUP + i (consecutive invocations in
@@ -50,30 +47,16 @@ void heapPush(vec2 e, uint maxCount, inout uint count) {
     }
 }
 
-// Keeps the `maxCount` (<= SORT_CAPACITY) nearest entries of the lists at `heads`, sorted ascending;
-// `guard` bounds corrupt lists. Returns the lists' full length; `count` receives how many entries
-// were kept. The chains are walked side by side: each step loads the next node of every chain
-// before it sorts any, so that SORT_CHAINS independent reads are in flight at once.
-uint sortNearest(uint heads[SORT_CHAINS], uint maxCount, uint guard, out uint count) {
+// Keeps the `maxCount` (<= SORT_CAPACITY) nearest of the `length` nodes at `start`, sorted ascending;
+// `count` receives how many were kept.
+void sortNearest(uint start, uint length, uint maxCount, out uint count) {
     count = 0;
-    uint length = 0;
-    uint n[SORT_CHAINS] = heads;
-    for (bool walking = true; walking;) {
-        uvec4 node[SORT_CHAINS];
-        [[unroll]] for (int k = 0; k < SORT_CHAINS; ++k)
-            if (n[k] != DSM_NONE) node[k] = nodes[n[k]];
-        walking = false;
-        [[unroll]] for (int k = 0; k < SORT_CHAINS; ++k) {
-            if (n[k] == DSM_NONE) continue;
-            if (length == guard) {  // a cycle: a corrupt list
-                walking = false;
-                break;
-            }
-            ++length;
-            heapPush(sortEntry(n[k], node[k]), maxCount, count);
-            n[k] = node[k].z;
-            walking = walking || n[k] != DSM_NONE;
-        }
+    for (uint i = 0; i < length; i += SORT_BATCH) {
+        uvec4 node[SORT_BATCH];
+        [[unroll]] for (uint k = 0; k < SORT_BATCH; ++k)
+            if (i + k < length) node[k] = nodes[start + i + k];
+        [[unroll]] for (uint k = 0; k < SORT_BATCH; ++k)
+            if (i + k < length) heapPush(sortEntry(start + i + k, node[k]), maxCount, count);
     }
     // Heap sort: the farthest to the end, one by one.
     for (uint end = count; end > 1u; --end) {
@@ -82,5 +65,4 @@ uint sortNearest(uint heads[SORT_CHAINS], uint maxCount, uint guard, out uint co
         sorted(end - 1u) = farthest;
         heapSiftDown(0u, end - 1u);
     }
-    return length;
 }

@@ -288,18 +288,15 @@ struct ShadowDrawPush {
 // run's length in the first, its start in the second), where the build's second step stores those
 // fragments' (depth, alpha) and the resolve then the sorted list (nodes and search keys at the run's
 // indices); after the resolve the first holds the head of the sorted list (DSM_NONE: empty) and the
-// second its length. The camera's lists are linked lists, OIT_CHAINS per pixel
-// (at least 4: the pixel's header after oit.sort is 4 uints), which oit.sort walks side by side.
-// H100, hair at 1080p, when the DSM's were lists too: 2 and 4 lists (25k strands 6.17 ms, 100k 14.68);
-// 4 and 4 (6.29, 14.70); 4 and 8 (6.53, 15.01): more lists keep more reads in flight but spread the
-// builds' atomics over more memory.
+// second its length. The camera's pixels likewise get runs (dsm/oit_offsets.comp) and a header of
+// OIT_HEADER_UINTS uints (oit.offsets' run, then oit.sort's kept layers: dsm/oit_sort.comp).
 #define DSM_HEAD_UINTS 2
 // The build counts a texel's fragments per depth bucket and keeps only the buckets up to the list
 // cap's (dsm/depth_buckets.glsl). A bucket's place is DSM_CULLED or above when it is left out (or
 // found no room): the build's second step adds to it and stores nothing.
 #define DSM_MAX_BUCKETS 8
 #define DSM_CULLED 0x80000000u
-#define OIT_CHAINS 4
+#define OIT_HEADER_UINTS 4
 
 // A DSM node is a uvec4 in the node pool: x = depth (float bits: distance from a spot light, depth
 // along a directional light), y = the transmittance behind the node, z = the next node of the texel's
@@ -368,13 +365,19 @@ struct DsmPush {
 // unit normal (surface) or tangent (hair), octahedral snorm16 x2, is in a uint array beside them.
 
 struct OitStats {
-    uvec4 counts;  // x = fragments (allocations tried: beyond the capacity = dropped), y = kept,
-                   // z = dropped beyond OIT_MAX_LIST, w = longest list
+    uvec4 counts;  // x = run entries given to the pixels (oit.offsets), y = kept, z = dropped beyond
+                   // OIT_MAX_LIST (stored or not), w = longest list
+    uvec4 cut;     // x = fragments in front of the opaque surface (all: oit.offsets), y = those in depth
+                   // buckets behind the cap's (counted, never stored), z = fragments dropped for want
+                   // of room in the pool (their tiles' whole), w unused
 };
+// A pixel's fragments beyond the cap still darken what lies behind them: the build's first step sums
+// each fragment's -log(1 - alpha) per pixel in 64-bit fixed point (exact, so in any order the same).
+#define OIT_LOG_SCALE 16777216.0
 
 // Push constants of the translucency resolve.
 struct OitPush {
-    uvec4 sizes;  // x = width, y = height, z = node capacity, w unused
+    uvec4 sizes;  // x = width, y = height, z = node capacity, w = depth buckets per pixel
 };
 
 // ---- Compute rasterizer for depth-only views (src/raster, shaders/raster) ----

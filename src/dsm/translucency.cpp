@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -24,25 +25,32 @@ CameraTranslucency::CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, co
     : alloc_(alloc), scene_(scene), hair_(hair), width_(width), height_(height) {
     for (const Material& m : scene.scene().materials) hasBlended_ |= m.alphaMode == AlphaMode::Blend;
     if (!active()) return;
+    for (const glm::vec3& p : scene.scene().strandPoints) casters_.extend(p);
+    if (hasBlended_) casters_ = scene.scene().bounds;
     vk::Context& ctx = alloc.context();
     const uint64_t pixels = uint64_t(width) * height;
     capacity_ = std::min(pixels * kNodesPerPixel, devicePoolLimit(ctx));
     const VkBufferUsageFlags usage =
         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
-    heads_ = vk::Buffer(alloc, pixels * 4 * OIT_CHAINS, usage, false, "oit-heads");
+    heads_ = vk::Buffer(alloc, pixels * 4 * OIT_HEADER_UINTS, usage, false, "oit-heads");
     nodes_ = vk::Buffer(alloc, capacity_ * 16, usage, false, "oit-nodes");
     normals_ = vk::Buffer(alloc, capacity_ * 4, usage, false, "oit-normals");
     stats_ = vk::Buffer(alloc, sizeof(gpu::OitStats), usage, false, "oit-stats");
+    bucketCount_ = DSM_MAX_BUCKETS;  // fewer where they would not fit one storage buffer
+    while (bucketCount_ > 1 && pixels * 4 * bucketCount_ > ctx.limits().storageBufferRange) bucketCount_ /= 2;
+    buckets_ = vk::Buffer(alloc, pixels * 4 * bucketCount_, usage, false, "oit-buckets");
+    tails_ = vk::Buffer(alloc, pixels * 8, usage, false, "oit-tails");
     layers_ = vk::Buffer(alloc, 16 + 8 * capacity_, usage, false, "oit-kept-layers");  // kept <= stored nodes
     shadeArgs_ = vk::Buffer(alloc, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, false,
                             "oit-shade-args");
 
     // Build set: the scene's draw set (0, 1 and the instances; set 1 its textures), the hair buffers
-    // (3, 4), then heads, nodes, normals, counters and the opaque depth (5-9: both builds, raster and
-    // compute, write the lists there).
+    // (3, 4), then heads, nodes, normals, counters, the opaque depth, the depth buckets and the tails'
+    // sums (5-11: both builds, raster and compute, write the lists there).
     std::vector<vk::Binding> lists;
     for (uint32_t i = 5; i <= 8; ++i) lists.push_back({i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
     lists.push_back({9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
+    for (uint32_t i = 10; i <= 11; ++i) lists.push_back({i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
     std::vector<vk::Binding> b = SceneGpu::drawSetBindings();
     for (const vk::Binding& h : HairGpu::bindings()) b.push_back(h);
     b.insert(b.end(), lists.begin(), lists.end());
@@ -65,7 +73,9 @@ CameraTranslucency::CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, co
 
     const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                            uniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-    sort_ = vk::ComputeKernel(ctx, "dsm/oit_sort.comp", {storage, storage, storage, storage, storage}, sizeof(gpu::OitPush));
+    offsets_ = vk::ComputeKernel(ctx, "dsm/oit_offsets.comp", {storage, storage, storage}, sizeof(gpu::OitPush));
+    sort_ = vk::ComputeKernel(ctx, "dsm/oit_sort.comp", {storage, storage, storage, storage, storage, storage},
+                              sizeof(gpu::OitPush));
     args_ = vk::ComputeKernel(ctx, "render/indirect_args.comp", {storage, storage}, sizeof(uint32_t));
     shade_ = vk::ComputeKernel(ctx, "dsm/oit_shade.comp",
                                {uniform, storage, storage, storage, storage, sampled, uniform, storage, storage, storage,
@@ -79,13 +89,25 @@ CameraTranslucency::CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, co
     moments_ = vk::Sampler(ctx, {VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
 }
 
-gpu::HairDrawPush CameraTranslucency::cameraPush(const RibbonView& camera) const {
-    return {{0, 0, width_, uint32_t(capacity_)}, camera.viewer, camera.footprint};
+// The depth buckets over the casters' window depths (their bounds' corners; 0 for a corner behind the
+// eye): only how much the buckets leave out depends on it, not what is kept (dsm/depth_buckets.glsl).
+gpu::HairDrawPush CameraTranslucency::cameraPush(const RibbonView& camera, const glm::mat4& viewProj, Step step) const {
+    float nearest = 1.0f, farthest = 0.0f;
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::vec4 clip = viewProj * glm::vec4(corner & 1 ? casters_.max.x : casters_.min.x,
+                                                    corner & 2 ? casters_.max.y : casters_.min.y,
+                                                    corner & 4 ? casters_.max.z : casters_.min.z, 1.0f);
+        const float depth = clip.w > 0.0f ? glm::clamp(clip.z / clip.w, 0.0f, 1.0f) : 0.0f;
+        nearest = std::min(nearest, depth), farthest = std::max(farthest, depth);
+    }
+    const float buckets = float(bucketCount_);
+    return {{0, 0, width_, uint32_t(capacity_)}, camera.viewer, camera.footprint,
+            {nearest, farthest > nearest ? buckets / (farthest - nearest) : 0.0f, buckets, step == Step::Count ? 0.0f : 1.0f}};
 }
 
-void CameraTranslucency::recordBuild(VkCommandBuffer cmd, const RibbonView& camera) const {
+void CameraTranslucency::recordBuild(VkCommandBuffer cmd, const gpu::HairDrawPush& cameraPush) const {
     beginRaster(cmd, {{width_, height_}, {}, VK_NULL_HANDLE});  // no attachments: the lists are the output
-    gpu::HairDrawPush push = cameraPush(camera);
+    gpu::HairDrawPush push = cameraPush;
     if (hairPipeline_.handle()) {
         hairPipeline_.bind(cmd);
         hair_->draw(cmd, hairPipeline_, push);
@@ -103,45 +125,65 @@ void CameraTranslucency::recordBuild(VkCommandBuffer cmd, const RibbonView& came
     vkCmdEndRendering(cmd);
 }
 
-void CameraTranslucency::addBuildTo(FrameGraph& graph, const RibbonView& camera) {
+void CameraTranslucency::addBuildTo(FrameGraph& graph, const RibbonView& camera, const glm::mat4& viewProj) {
     if (!active()) return;
     const BufferHandle heads = graph.import(heads_), nodes = graph.import(nodes_), normals = graph.import(normals_),
-                       stats = graph.import(stats_), layers = graph.import(layers_);
+                       stats = graph.import(stats_), layers = graph.import(layers_), buckets = graph.import(buckets_),
+                       tails = graph.import(tails_);
     graph.pass("oit.clear", PassKind::Transfer)
-        .use(heads, Use::TransferDst)
         .use(stats, Use::TransferDst)
         .use(layers, Use::TransferDst)
-        .bytes(heads_.size())
-        .record([heads, stats, layers](PassContext& c) {
-            vkCmdFillBuffer(c.cmd, c.buffer(heads).handle(), 0, VK_WHOLE_SIZE, DSM_NONE);
+        .use(buckets, Use::TransferDst)
+        .use(tails, Use::TransferDst)
+        .bytes(buckets_.size() + tails_.size())
+        .record([stats, layers, buckets, tails](PassContext& c) {
             vkCmdFillBuffer(c.cmd, c.buffer(stats).handle(), 0, VK_WHOLE_SIZE, 0);
             vkCmdFillBuffer(c.cmd, c.buffer(layers).handle(), 0, 16, 0);  // the kept layers' count
+            vkCmdFillBuffer(c.cmd, c.buffer(buckets).handle(), 0, VK_WHOLE_SIZE, 0);
+            vkCmdFillBuffer(c.cmd, c.buffer(tails).handle(), 0, VK_WHOLE_SIZE, 0);
         });
-    lists_ = {heads, nodes, normals, stats};
+    lists_ = {heads, nodes, normals, stats, buckets, tails};
+    addBuildPasses(graph, cameraPush(camera, viewProj, Step::Count), "oit.count");
+    const gpu::OitPush push{{width_, height_, uint32_t(capacity_), bucketCount_}};
+    graph.pass("oit.offsets")
+        .pipeline(offsets_.pipeline)
+        .storageBuffer(0, buckets, Use::StorageWrite)  // counts in, places out
+        .storageBuffer(1, stats, Use::StorageWrite)
+        .storageBuffer(2, heads, Use::StorageWrite)  // each pixel's run
+        .record([this, push](PassContext& c) {
+            offsets_.pipeline.push(c.cmd, push);
+            vkCmdDispatch(c.cmd, vk::divUp(width_, 8), vk::divUp(height_, 8), 1);
+        });
+    addBuildPasses(graph, cameraPush(camera, viewProj, Step::Store), "oit.build");
+}
+
+// One step of the build: the raster (BLEND meshes, and hair without computeHair) and the compute
+// hair, the same pipelines both steps, so that both make the same fragments.
+void CameraTranslucency::addBuildPasses(FrameGraph& graph, const gpu::HairDrawPush& push, const std::string& name) {
     if (hasBlended_ || hairPipeline_.handle()) {
-        PassBuilder build = graph.pass("oit.build", PassKind::Raster);
+        PassBuilder build = graph.pass(name, PassKind::Raster);
         build.pipeline(hairPipeline_.handle() ? hairPipeline_ : meshPipeline_);
         scene_.declareDrawSet(build, graph.buffer("views"));
         if (hairPipeline_.handle()) hair_->declare(build);
-        declareLists(build).record([this, camera](PassContext& c) { recordBuild(c.cmd, camera); });
+        declareLists(build).record([this, push](PassContext& c) { recordBuild(c.cmd, push); });
     }
     if (hairKernel_.pipeline.handle()) {
-        PassBuilder build = graph.pass("oit.build.hair");
+        PassBuilder build = graph.pass(name + ".hair");
         build.pipeline(hairKernel_.pipeline).storageBuffer(0, graph.buffer("views"));
         hair_->declare(build);
-        declareLists(build).record([this, camera](PassContext& c) {
-            hair_->dispatchSegments(c.cmd, hairKernel_.pipeline, cameraPush(camera));
-        });
+        declareLists(build).record([this, push](PassContext& c) { hair_->dispatchSegments(c.cmd, hairKernel_.pipeline, push); });
     }
 }
 
-// Bindings 5-9 of both builds: the lists and the opaque depth they are tested against.
+// Bindings 5-11 of both builds: the lists, the opaque depth they are tested against, the buckets and sums.
 PassBuilder& CameraTranslucency::declareLists(PassBuilder& pass) const {
     return pass.storageBuffer(5, lists_[0], Use::StorageWrite)
         .storageBuffer(6, lists_[1], Use::StorageWrite)
         .storageBuffer(7, lists_[2], Use::StorageWrite)
         .storageBuffer(8, lists_[3], Use::StorageWrite)
-        .sampled(9, pass.graph().image("gbuffer.depth"), nearest_.handle());
+        .sampled(9, pass.graph().image("gbuffer.depth"), nearest_.handle())
+        .storageBuffer(10, lists_[4], Use::StorageWrite)
+        .storageBuffer(11, lists_[5], Use::StorageWrite);
 }
 
 // oit.sort (per pixel) -> oit.shade-args -> oit.shade (per kept layer, indirect) -> oit.blend (per pixel).
@@ -149,7 +191,7 @@ void CameraTranslucency::addCompositeTo(FrameGraph& graph) {
     if (!active()) return;
     const BufferHandle heads = graph.import(heads_), nodes = graph.import(nodes_), normals = graph.import(normals_),
                        layers = graph.import(layers_), args = graph.import(shadeArgs_);
-    const gpu::OitPush push{{width_, height_, uint32_t(capacity_), 0}};
+    const gpu::OitPush push{{width_, height_, uint32_t(capacity_), bucketCount_}};
     const uint32_t groupsX = vk::divUp(width_, 8), groupsY = vk::divUp(height_, 8);
     graph.pass("oit.sort")
         .pipeline(sort_.pipeline)
@@ -158,6 +200,7 @@ void CameraTranslucency::addCompositeTo(FrameGraph& graph) {
         .storageBuffer(2, normals, Use::StorageRead)
         .storageBuffer(3, graph.import(stats_), Use::StorageWrite)
         .storageBuffer(4, layers, Use::StorageWrite)
+        .storageBuffer(5, graph.import(tails_), Use::StorageRead)
         .record([this, push, groupsX, groupsY](PassContext& c) {
             sort_.pipeline.push(c.cmd, push);
             vkCmdDispatch(c.cmd, groupsX, groupsY, 1);
@@ -209,8 +252,9 @@ OitFrameStats CameraTranslucency::readStats(vk::CommandContext& cmd) const {
     const std::vector<uint8_t> bytes = cmd.readBuffer(stats_, sizeof(g));
     std::memcpy(&g, bytes.data(), sizeof(g));
     s.capacity = capacity_;
-    s.fragments = g.counts.x;
-    s.overflow = s.fragments > capacity_ ? s.fragments - capacity_ : 0;
+    s.fragments = g.cut.x;
+    s.leftOut = g.cut.y;
+    s.overflow = g.cut.z;
     s.kept = g.counts.y;
     s.beyondMaxList = g.counts.z;
     s.longest = g.counts.w;
@@ -220,8 +264,9 @@ OitFrameStats CameraTranslucency::readStats(vk::CommandContext& cmd) const {
 
 std::string describeTranslucency(const OitFrameStats& s) {
     return fmt::format("translucency: {} camera fragments in front of the opaque surface, {} composited (longest "
-                       "list {}, {} beyond the {}-fragment cap merged into one layer); pool {:.1f} MiB for {} nodes",
-                       s.fragments, s.kept, s.longest, s.beyondMaxList, OIT_MAX_LIST,
+                       "list {}, {} beyond the {}-fragment cap merged into one layer, {} of them in depth buckets "
+                       "never stored); pool {:.1f} MiB for {} nodes",
+                       s.fragments, s.kept, s.longest, s.beyondMaxList, OIT_MAX_LIST, s.leftOut,
                        double(s.poolBytes) / (1024.0 * 1024.0), s.capacity);
 }
 

@@ -1,12 +1,14 @@
 // Camera translucency: hair strands and alphaMode BLEND surfaces composited over the lit opaque
-// image in depth order, with the deep shadow map's machinery (per-pixel linked lists built in one
-// raster pass, sorted in compute). Techniques compose by name only: the build reads the opaque depth
+// image in depth order, with the deep shadow map's machinery (per-pixel runs of fragments, sorted in
+// compute; the build's depth buckets leave out what lies behind the cap's bucket). Techniques compose by name only: the build reads the opaque depth
 // ("gbuffer.depth") and "views"; the composite reads and rewrites the lit image ("hdr") after the
 // lighting pass, with the lights' shadow maps ("shadow.*"), deep shadow maps ("dsm.*") and the
 // indirect irradiance ("gi.irradiance"), so it works behind any camera path that publishes them.
 //
-// Frame: oit.clear -> oit.build (raster; hair in compute, oit.build.hair, with `computeHair`: see
-// dsm/ribbon_raster.glsl) -> ... lighting ... -> oit.sort (per pixel: its nearest layers) ->
+// Frame: oit.clear -> oit.count (raster; hair in compute, oit.count.hair, with `computeHair`: see
+// dsm/ribbon_raster.glsl; each fragment counted in its pixel's depth bucket) -> oit.offsets (per
+// pixel: a run for the buckets up to the cap's) -> oit.build (.hair; the same passes again, the kept
+// buckets' fragments stored in the runs) -> ... lighting ... -> oit.sort (per pixel: its nearest layers) ->
 // oit.shade (per kept layer: its light) -> oit.blend (per pixel: front to back over "hdr").
 #pragma once
 #include <array>
@@ -24,6 +26,7 @@ struct OitFrameStats {
     uint64_t overflow = 0;       // dropped because the pool was full
     uint64_t kept = 0;           // composited
     uint64_t beyondMaxList = 0;  // dropped beyond OIT_MAX_LIST per pixel (the farthest)
+    uint64_t leftOut = 0;        // of those, in depth buckets the build never stored
     uint32_t longest = 0;
     uint64_t poolBytes = 0;
 };
@@ -34,8 +37,8 @@ public:
     CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, const HairGpu* hair, uint32_t width, uint32_t height,
                        bool computeHair = false);
     bool active() const { return hair_ || hasBlended_; }
-    // oit.clear and oit.build (after the G-buffer).
-    void addBuildTo(FrameGraph& graph, const RibbonView& camera);
+    // oit.clear, oit.count, oit.offsets and oit.build (after the G-buffer); `viewProj` the camera's.
+    void addBuildTo(FrameGraph& graph, const RibbonView& camera, const glm::mat4& viewProj);
     // oit.sort, oit.shade and oit.blend (after lighting, before the tone mapper).
     void addCompositeTo(FrameGraph& graph);
     OitFrameStats readStats(vk::CommandContext& cmd) const;
@@ -46,21 +49,26 @@ public:
     static constexpr VkDeviceSize kNodeBytes = 16 + 4;  // node + normal
 
 private:
-    void recordBuild(VkCommandBuffer cmd, const RibbonView& camera) const;
-    gpu::HairDrawPush cameraPush(const RibbonView& camera) const;
+    enum class Step { Count, Store };
+    void addBuildPasses(FrameGraph& graph, const gpu::HairDrawPush& push, const std::string& name);
+    void recordBuild(VkCommandBuffer cmd, const gpu::HairDrawPush& cameraPush) const;
+    gpu::HairDrawPush cameraPush(const RibbonView& camera, const glm::mat4& viewProj, Step step) const;
     PassBuilder& declareLists(PassBuilder& pass) const;
     vk::Allocator& alloc_;
     SceneGpu& scene_;
     const HairGpu* hair_;
     bool hasBlended_ = false;
+    Bounds casters_;  // hair (with BLEND meshes the whole scene): the depth buckets' range
+    uint32_t bucketCount_ = 1;
     uint32_t width_, height_;
     uint64_t capacity_ = 0;
     vk::Buffer heads_, nodes_, normals_, stats_;
+    vk::Buffer buckets_, tails_;  // per pixel: fragments per depth bucket, and the sum of -log(1 - alpha)
     vk::Buffer layers_, shadeArgs_;  // the kept layers (node, pixel) in pixel order, and their dispatch
-    std::array<BufferHandle, 4> lists_;  // this frame's heads, nodes, normals and stats (addBuildTo)
+    std::array<BufferHandle, 6> lists_;  // this frame's heads, nodes, normals, stats, buckets, tails (addBuildTo)
     vk::DescriptorLayout buildLayout_;
     vk::Pipeline hairPipeline_, meshPipeline_;  // the raster's (hairPipeline_ without computeHair)
-    vk::ComputeKernel hairKernel_, sort_, args_, shade_, blend_;
+    vk::ComputeKernel hairKernel_, offsets_, sort_, args_, shade_, blend_;
     vk::Sampler nearest_, border_, moments_;
 };
 

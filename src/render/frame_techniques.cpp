@@ -53,7 +53,7 @@ void CameraTechnique::addPasses(const FrameContext& f) {
     gbuffer_.addTo(f.graph, f.slot);
     const RibbonView view = cameraRibbonView(f.camera.eye, f.uniforms.lens.x);
     if (hair_) hair_->addTo(f.graph, view);
-    if (translucency_) translucency_->addBuildTo(f.graph, view);
+    if (translucency_) translucency_->addBuildTo(f.graph, view, f.uniforms.viewProj);
 }
 
 // Hair (src/dsm) is an opaque caster in the ordinary shadow map of lights without a deep shadow

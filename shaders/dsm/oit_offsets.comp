@@ -1,0 +1,58 @@
+#version 460
+// Camera translucency, between the build's two steps (src/dsm/translucency.h), one thread per pixel:
+// the pixel keeps its depth buckets up to the one whose count reaches OIT_MAX_LIST
+// (dsm/depth_buckets.glsl) and gets a run of as many nodes in the pool, each kept bucket its place
+// in it (a bucket left out gets DSM_CULLED: the second step stores nothing of it). An 8x8 tile's runs
+// are side by side (one atomic per tile); a tile whose runs do not fit the pool is dropped whole and
+// counted. The pixel's header for oit.sort: heads[4 p] = run start, + 1 = nodes in it, + 3 = all its
+// fragments (DSM_NONE in the first when it has none).
+#extension GL_GOOGLE_include_directive : require
+#include "shared/types.h"
+#include "dsm/depth_buckets.glsl"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(set = 0, binding = 0, std430) buffer Buckets { uint buckets[]; };  // counts in, places out
+layout(set = 0, binding = 1, std430) buffer Stats { OitStats stats; };
+layout(set = 0, binding = 2, std430) writeonly buffer Heads { uint heads[]; };
+layout(push_constant) uniform Push { OitPush pc; };
+
+shared uint groupAll, groupEntries, groupRun;
+
+void main() {
+    if (gl_LocalInvocationIndex == 0) groupAll = groupEntries = 0u;
+    barrier();
+    uvec2 pixel = gl_GlobalInvocationID.xy;
+    const uint perPixel = pc.sizes.w, p = pixel.y * pc.sizes.x + pixel.x;
+    const bool inside = all(lessThan(pixel, pc.sizes.xy));
+    uint counts[DSM_MAX_BUCKETS];
+    for (uint b = 0u; b < perPixel; ++b) counts[b] = inside ? buckets[p * perPixel + b] : 0u;
+    uint entries, count;
+    uint kept = bucketsKept(counts, perPixel, OIT_MAX_LIST, entries, count);
+    uint offset = 0u;
+    if (count > 0u) {
+        offset = atomicAdd(groupEntries, entries);
+        atomicAdd(groupAll, count);
+    }
+    barrier();
+    if (gl_LocalInvocationIndex == 0 && groupAll > 0u) {
+        atomicAdd(stats.cut.x, groupAll);
+        atomicAdd(stats.cut.y, groupAll - groupEntries);
+        groupRun = atomicAdd(stats.counts.x, groupEntries);
+        if (groupRun + groupEntries > pc.sizes.z) {  // no room: the tile is dropped
+            atomicAdd(stats.counts.x, 0u - groupEntries);
+            atomicAdd(stats.cut.z, groupAll);
+            groupRun = DSM_NONE;
+        }
+    }
+    barrier();
+    if (!inside) return;
+    bool listed = count > 0u && groupRun != DSM_NONE;
+    uint at = groupRun + offset;
+    for (uint b = 0u; b < perPixel; ++b) {
+        if (count > 0u) buckets[p * perPixel + b] = listed && b < kept ? at : DSM_CULLED;
+        at += counts[b];
+    }
+    heads[p * OIT_HEADER_UINTS] = listed ? groupRun + offset : DSM_NONE;
+    heads[p * OIT_HEADER_UINTS + 1u] = listed ? entries : 0u;
+    heads[p * OIT_HEADER_UINTS + 3u] = count;
+}
