@@ -396,11 +396,11 @@ TEST_F(GpuTest, HairComputeRasterEqualsTheHardware) {
     EXPECT_LT(final, 0.01);
 }
 
-// The same frame twice gives the same image: the builds' atomics put the fragments on their lists in
+// The same frame twice gives the same image: the builds' atomics put the fragments in their runs in
 // a different order each run, and fragments of equal depth (a strand's consecutive segments meet at
 // one point) must not trade places at the composite's 32-layer cap or the DSM's list cap, or a
 // pixel's merged tail takes another layer's radiance (up to 0.9 in a run at 480x270 before the tie
-// key, dsm/sort_nearest.glsl). Left: float rounding of the tail's summed log-transmittance.
+// keys of dsm/oit_sort.comp and dsm/resolve.comp).
 TEST_F(GpuTest, HairCompositeIsTheSameFromRunToRun) {
     const Scene s = hairScene(5000);
     RenderSettings rs = dsmFrame(160, 120, 512, 12);

@@ -1,9 +1,12 @@
-// The DSM build's depth buckets (dsm/dsm_insert.glsl, dsm/offsets.comp): a texel's fragments counted
-// per bucket, equal slices of the translucent casters' depth range from the light (HairDrawPush.buckets:
-// x = nearest depth, y = buckets per unit of depth, z = buckets per texel; outside the range, the end
+// Depth buckets of the translucent casters' builds, the DSM's (texels: dsm/dsm_insert.glsl,
+// dsm/offsets.comp) and the camera's (pixels: dsm/oit_insert.glsl, dsm/oit_offsets.comp): a cell's
+// fragments counted per bucket, equal slices of the casters' depth range (HairDrawPush.buckets: x =
+// nearest depth, y = buckets per unit of depth, z = buckets per cell; outside the range, the end
 // slices); only the buckets up to the one whose count reaches the list cap are kept: every fragment
 // behind it has at least the cap's number of fragments in front, so none of it could be kept. Exact
-// for any range; the range only decides how much is left out.
+// for any range; the range only decides how much is left out. The includer declares `buckets` (a
+// uint per bucket of every cell: counts, then each kept bucket's place in its cell's run).
+
 
 uint depthBucket(float depth, vec4 buckets) {
     return uint(clamp((depth - buckets.x) * buckets.y, 0.0, buckets.z - 1.0));
@@ -23,4 +26,16 @@ uint bucketsKept(uint counts[DSM_MAX_BUCKETS], uint perTexel, uint maxList, out 
         }
     }
     return kept;
+}
+
+// Cell `cell`'s counts (zeros for a cell outside the map or image).
+void readBucketCounts(uint cell, uint perCell, bool inside, out uint counts[DSM_MAX_BUCKETS]) {
+    for (uint b = 0u; b < perCell; ++b) counts[b] = inside ? buckets[cell * perCell + b] : 0u;
+}
+
+// Replaces cell `cell`'s counts by its buckets' places in its run from `start` on (the first `kept`,
+// when `listed`); the rest get DSM_CULLED, so that the build's second step stores nothing of them.
+void writeBucketPlaces(uint cell, uint perCell, uint counts[DSM_MAX_BUCKETS], uint kept, uint start, bool listed) {
+    for (uint b = 0u, at = start; b < perCell; at += counts[b], ++b)
+        buckets[cell * perCell + b] = listed && b < kept ? at : DSM_CULLED;
 }

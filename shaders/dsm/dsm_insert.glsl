@@ -11,8 +11,6 @@
 // nothing that the opaque casters leave lit: it takes no node. Conservative: it is dropped only
 // when every shadow-map texel of that neighbourhood holds a nearer opaque depth than the fragment
 // moved two DSM texels towards the light.
-#include "dsm/depth_buckets.glsl"
-
 // Per texel DsmPush.buckets.x bucket counts, then their places in the texel's run (dsm.offsets).
 layout(set = 0, binding = 5, std430) buffer Buckets { uint buckets[]; };
 layout(set = 0, binding = 6, std430) writeonly buffer Runs { uvec2 runs[]; };  // (depth, alpha) bits
@@ -21,6 +19,8 @@ layout(set = 0, binding = 8, std430) readonly buffer Lights { GpuLight lights[];
 layout(set = 0, binding = 9, std430) readonly buffer ShadowLights { GpuShadowLight shadowLights[]; };
 layout(set = 0, binding = 10, std430) readonly buffer ShadowLayers { GpuShadowLayer shadowLayers[]; };
 layout(set = 0, binding = 11) uniform sampler2DArray opaqueShadowMap;  // "shadow.map", nearest
+
+#include "dsm/depth_buckets.glsl"
 
 // Whether shadow layer `index` holds an opaque depth nearer than q over the whole neighbourhood of
 // `reach` world units around q (false where the layer does not cover it).

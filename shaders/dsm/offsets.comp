@@ -11,7 +11,6 @@
 // lists) are counted here, once per tile.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
-#include "dsm/depth_buckets.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = 0, std430) writeonly buffer Heads { uint heads[]; };
@@ -19,6 +18,8 @@ layout(set = 0, binding = 1, std430) buffer Stats { DsmStats stats; };
 layout(set = 0, binding = 2, std430) buffer Work { uvec4 header; uint texels[]; } work;
 layout(set = 0, binding = 3, std430) buffer Buckets { uint buckets[]; };  // counts in, places out
 layout(push_constant) uniform Push { DsmPush pc; };
+
+#include "dsm/depth_buckets.glsl"
 
 shared uint groupEntries, groupAll, groupKept, groupLongest, groupLists, groupRun, groupWork;
 
@@ -30,7 +31,7 @@ void main() {
     bool inside = id.x < res && id.y < res;
     uint texel = (id.z * res + id.y) * res + id.x;
     uint counts[DSM_MAX_BUCKETS];
-    for (uint b = 0u; b < perTexel; ++b) counts[b] = inside ? buckets[texel * perTexel + b] : 0u;
+    readBucketCounts(texel, perTexel, inside, counts);
     uint count, entries;  // all the texel's fragments; those in the buckets it keeps
     uint kept = bucketsKept(counts, perTexel, maxList, entries, count);
     uint offset = 0u, place = 0u;
@@ -60,13 +61,7 @@ void main() {
     barrier();
     bool listed = count > 0u && groupRun != DSM_NONE;
     uint start = groupRun + offset;
-    if (count > 0u) {
-        uint at = start;
-        for (uint b = 0u; b < perTexel; ++b) {
-            buckets[texel * perTexel + b] = listed && b < kept ? at : DSM_CULLED;
-            at += counts[b];
-        }
-    }
+    if (count > 0u) writeBucketPlaces(texel, perTexel, counts, kept, start, listed);
     if (listed) {
         heads[texel * DSM_HEAD_UINTS] = entries;
         heads[texel * DSM_HEAD_UINTS + 1u] = start;

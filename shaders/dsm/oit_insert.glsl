@@ -5,7 +5,6 @@
 // places in the pixel's run, stored there as a node (one atomic add, two stores); a fragment of a
 // bucket left out stores nothing. Needs `draw` (HairDrawPush: ids.z = image width) and, in the
 // includer, GL_EXT_shader_atomic_int64 with 64-bit integer types.
-layout(set = 0, binding = 5, std430) buffer Heads { uint heads[]; };  // unused here (the set's layout)
 layout(set = 0, binding = 6, std430) writeonly buffer Nodes { uvec4 nodes[]; };
 layout(set = 0, binding = 7, std430) writeonly buffer Normals { uint normals[]; };
 layout(set = 0, binding = 8, std430) buffer Stats { OitStats stats; };
@@ -35,6 +34,7 @@ void oitInsert(ivec2 pixel, float depth, vec3 albedo, float alpha, vec3 normal, 
     }
     uint node = atomicAdd(buckets[slot], 1u);
     if (node >= DSM_CULLED) return;  // behind the cap's bucket (its sum is all that counts), or no room
-    nodes[node] = uvec4(floatBitsToUint(depth), packHalf2x16(albedo.rg), 0u, packHalf2x16(vec2(albedo.b, hair ? -alpha : alpha)));
+    nodes[node] = uvec4(floatBitsToUint(depth), packHalf2x16(albedo.rg), 0u,  // .z unused
+                        packHalf2x16(vec2(albedo.b, hair ? -alpha : alpha)));
     normals[node] = packSnorm2x16(octEncode(normal));
 }

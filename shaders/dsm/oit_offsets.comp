@@ -8,13 +8,14 @@
 // fragments (DSM_NONE in the first when it has none).
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
-#include "dsm/depth_buckets.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = 0, std430) buffer Buckets { uint buckets[]; };  // counts in, places out
 layout(set = 0, binding = 1, std430) buffer Stats { OitStats stats; };
 layout(set = 0, binding = 2, std430) writeonly buffer Heads { uint heads[]; };
 layout(push_constant) uniform Push { OitPush pc; };
+
+#include "dsm/depth_buckets.glsl"
 
 shared uint groupAll, groupEntries, groupRun;
 
@@ -25,7 +26,7 @@ void main() {
     const uint perPixel = pc.sizes.w, p = pixel.y * pc.sizes.x + pixel.x;
     const bool inside = all(lessThan(pixel, pc.sizes.xy));
     uint counts[DSM_MAX_BUCKETS];
-    for (uint b = 0u; b < perPixel; ++b) counts[b] = inside ? buckets[p * perPixel + b] : 0u;
+    readBucketCounts(p, perPixel, inside, counts);
     uint entries, count;
     uint kept = bucketsKept(counts, perPixel, OIT_MAX_LIST, entries, count);
     uint offset = 0u;
@@ -47,11 +48,7 @@ void main() {
     barrier();
     if (!inside) return;
     bool listed = count > 0u && groupRun != DSM_NONE;
-    uint at = groupRun + offset;
-    for (uint b = 0u; b < perPixel; ++b) {
-        if (count > 0u) buckets[p * perPixel + b] = listed && b < kept ? at : DSM_CULLED;
-        at += counts[b];
-    }
+    if (count > 0u) writeBucketPlaces(p, perPixel, counts, kept, groupRun + offset, listed);
     heads[p * OIT_HEADER_UINTS] = listed ? groupRun + offset : DSM_NONE;
     heads[p * OIT_HEADER_UINTS + 1u] = listed ? entries : 0u;
     heads[p * OIT_HEADER_UINTS + 3u] = count;

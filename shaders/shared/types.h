@@ -357,10 +357,10 @@ struct DsmPush {
 };
 
 // ---- Camera translucency: hair and alphaMode BLEND surfaces (src/dsm/translucency.*) ----
-// Per-pixel linked lists built like the DSM's (one atomic add, one atomic exchange per fragment,
-// behind-the-opaque-surface fragments rejected), then sorted, shaded and composited in compute.
-#define OIT_MAX_LIST 32  // fragments composited per pixel, nearest first (the rest are counted, dropped)
-// A node is a uvec4: x = window depth (float bits), y = albedo r, g (half x2), z = next, w = albedo b
+// Per-pixel runs built like the DSM's (counted per depth bucket, then the kept buckets' fragments
+// stored; behind-the-opaque-surface fragments rejected), then sorted, shaded and composited in compute.
+#define OIT_MAX_LIST 32  // fragments composited per pixel, nearest first (the rest merged into one layer)
+// A node is a uvec4: x = window depth (float bits), y = albedo r, g (half x2), z unused, w = albedo b
 // and alpha (opacity x coverage; half x2; a negative alpha marks hair, shaded with Kajiya-Kay); its
 // unit normal (surface) or tangent (hair), octahedral snorm16 x2, is in a uint array beside them.
 

@@ -8,10 +8,8 @@ namespace penumbra {
 
 DeepShadowBuildPass::DeepShadowBuildPass(vk::Allocator& alloc, SceneGpu& scene, const HairGpu* hair,
                                          DsmResources& res, bool depthTest, bool computeHair)
-    : alloc_(alloc), scene_(scene), hair_(hair), res_(res), depthTest_(depthTest) {
-    for (const Material& m : scene.scene().materials) hasBlended_ |= m.alphaMode == AlphaMode::Blend;
-    for (const glm::vec3& p : scene.scene().strandPoints) casters_.extend(p);
-    if (hasBlended_) casters_ = scene.scene().bounds;
+    : alloc_(alloc), scene_(scene), hair_(hair), res_(res), hasBlended_(scene.scene().hasBlendedMaterials()),
+      casters_(scene.scene().translucentCasterBounds()), depthTest_(depthTest) {
     // Set 0: the scene's draw set (views = the DSM views, materials; set 1 the textures), the hair buffers,
     // then buckets, runs and counters, and for the depth test the lights, the shadow lights and layers
     // and the opaque casters' shadow map (5-11: both builds, raster and compute, write the lists there).
@@ -53,8 +51,7 @@ glm::vec2 DeepShadowBuildPass::casterDepthRange(const glm::vec4& viewer) const {
     const bool fromPoint = viewer.w > 0.5f;
     glm::vec2 range{1e30f, -1e30f};
     for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec3 p{corner & 1 ? casters_.max.x : casters_.min.x, corner & 2 ? casters_.max.y : casters_.min.y,
-                          corner & 4 ? casters_.max.z : casters_.min.z};
+        const glm::vec3 p = casters_.corner(corner);
         const float d = fromPoint ? glm::distance(p, eye) : -glm::dot(p, eye);
         range = {std::min(range.x, d), std::max(range.y, d)};
     }
@@ -62,19 +59,16 @@ glm::vec2 DeepShadowBuildPass::casterDepthRange(const glm::vec4& viewer) const {
     return range;
 }
 
-gpu::HairDrawPush DeepShadowBuildPass::layerPush(uint32_t layer, Step step) const {
+gpu::HairDrawPush DeepShadowBuildPass::layerPush(uint32_t layer, BuildStep step) const {
     const DsmLayer& l = res_.layers[layer];
     const uint32_t depthTestLight = depthTest_ ? l.light : DSM_NONE;
     gpu::HairDrawPush push{{layer, 0, depthTestLight, uint32_t(res_.capacity)}, l.view.viewer, l.view.footprint, {}};
     push.footprint.z = float(res_.resolution);
-    const glm::vec2 range = casterDepthRange(l.view.viewer);
-    const float buckets = float(res_.bucketCount);
-    push.buckets = {range.x, range.y > range.x ? buckets / (range.y - range.x) : 0.0f, buckets,
-                    step == Step::Count ? 0.0f : 1.0f};
+    push.buckets = depthBuckets(casterDepthRange(l.view.viewer), res_.bucketCount, step);
     return push;
 }
 
-void DeepShadowBuildPass::recordLayer(VkCommandBuffer cmd, uint32_t layer, Step step) const {
+void DeepShadowBuildPass::recordLayer(VkCommandBuffer cmd, uint32_t layer, BuildStep step) const {
     RasterTarget target{{res_.resolution, res_.resolution}, {}, VK_NULL_HANDLE};  // no attachments
     beginRaster(cmd, target);
     gpu::HairDrawPush push = layerPush(layer, step);
@@ -111,7 +105,7 @@ void DeepShadowBuildPass::addTo(FrameGraph& graph) {
             vkCmdFillBuffer(c.cmd, c.buffer(work).handle(), 0, 16, 0);  // no texels listed yet
         });
     buckets_ = buckets, runs_ = graph.import(res_.runs), stats_ = stats;
-    addRasterPasses(graph, Step::Count);
+    addRasterPasses(graph, BuildStep::Count);
     PassBuilder offsets = graph.pass("dsm.offsets");
     offsets.storageBuffer(0, heads, Use::StorageWrite)  // each texel's run
         .storageBuffer(1, stats, Use::StorageWrite)
@@ -122,13 +116,13 @@ void DeepShadowBuildPass::addTo(FrameGraph& graph) {
             offsets_.pipeline.push(c.cmd, res_.push());
             vkCmdDispatch(c.cmd, vk::divUp(res_.resolution, 8), vk::divUp(res_.resolution, 8), res_.layerCount());
         });
-    addRasterPasses(graph, Step::Store);
+    addRasterPasses(graph, BuildStep::Store);
 }
 
 // The raster build of the BLEND meshes (and, without computeHair, the hair) and the compute build of
 // the hair, for one step: the same pipelines both times, so that both steps make the same fragments.
-void DeepShadowBuildPass::addRasterPasses(FrameGraph& graph, Step step) {
-    const std::string name = step == Step::Count ? "dsm.count" : "dsm.build";
+void DeepShadowBuildPass::addRasterPasses(FrameGraph& graph, BuildStep step) {
+    const std::string name = step == BuildStep::Count ? "dsm.count" : "dsm.build";
     if (hasBlended_ || hairPipeline_.handle()) {
         PassBuilder build = graph.pass(name, PassKind::Raster);
         build.pipeline(setLayoutPipeline());

@@ -22,10 +22,9 @@ public:
     void addTo(FrameGraph& graph);
 
 private:
-    enum class Step { Count, Store };
-    void addRasterPasses(FrameGraph& graph, Step step);
-    void recordLayer(VkCommandBuffer cmd, uint32_t layer, Step step) const;
-    gpu::HairDrawPush layerPush(uint32_t layer, Step step) const;
+    void addRasterPasses(FrameGraph& graph, BuildStep step);
+    void recordLayer(VkCommandBuffer cmd, uint32_t layer, BuildStep step) const;
+    gpu::HairDrawPush layerPush(uint32_t layer, BuildStep step) const;
     glm::vec2 casterDepthRange(const glm::vec4& viewer) const;
     PassBuilder& declareLists(PassBuilder& pass) const;
     const vk::Pipeline& setLayoutPipeline() const { return hairPipeline_.handle() ? hairPipeline_ : meshPipeline_; }
@@ -33,8 +32,8 @@ private:
     SceneGpu& scene_;
     const HairGpu* hair_;
     DsmResources& res_;
-    bool hasBlended_ = false;
-    Bounds casters_;  // of the translucent casters (hair; with BLEND meshes the whole scene)
+    bool hasBlended_;
+    Bounds casters_;  // Scene::translucentCasterBounds
     bool depthTest_;
     vk::Sampler nearest_;
     vk::DescriptorLayout layout_;

@@ -70,8 +70,7 @@ DsmResources::DsmResources(vk::Allocator& alloc, const DsmSettings& settings, ui
     stats = vk::Buffer(alloc, sizeof(gpu::DsmStats), cleared, false, "dsm-stats");
     work = vk::Buffer(alloc, opacityMaps || layers.empty() ? 16 : 16 + headBytes, cleared, false, "dsm-work");
     runs = vk::Buffer(alloc, opacityMaps ? 8 : capacity * 8, cleared, false, "dsm-runs");  // DOM: unused
-    bucketCount = DSM_MAX_BUCKETS;
-    while (bucketCount > 1 && texels * 4 * bucketCount > alloc.context().limits().storageBufferRange) bucketCount /= 2;
+    bucketCount = depthBucketCount(alloc.context(), texels);
     buckets = vk::Buffer(alloc, opacityMaps || layers.empty() ? 4 : texels * 4 * bucketCount, cleared, false,
                          "dsm-buckets");
 

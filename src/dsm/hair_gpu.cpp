@@ -38,6 +38,18 @@ std::vector<gpu::GpuHairPoint> ribbonPoints(const Scene& scene) {
 
 }  // namespace
 
+glm::vec4 depthBuckets(glm::vec2 range, uint32_t count, BuildStep step) {
+    const float buckets = float(count);
+    return {range.x, range.y > range.x ? buckets / (range.y - range.x) : 0.0f, buckets,
+            step == BuildStep::Count ? 0.0f : 1.0f};
+}
+
+uint32_t depthBucketCount(vk::Context& ctx, uint64_t cells) {
+    uint32_t count = DSM_MAX_BUCKETS;
+    while (count > 1 && cells * 4 * count > ctx.limits().storageBufferRange) count /= 2;
+    return count;
+}
+
 RibbonView cameraRibbonView(const glm::vec3& eye, float pixelPerDistance) {
     return {glm::vec4(eye, 1.0f), glm::vec4(pixelPerDistance, 1.0f, 0.0f, 1.0f)};
 }

@@ -22,6 +22,15 @@ RibbonView cameraRibbonView(const glm::vec3& eye, float pixelPerDistance);
 // A shadow-map or DSM view of a directional or spot light.
 RibbonView lightRibbonView(const Light& light, const LightProjection& projection);
 
+// The translucent casters' builds (the DSM's and the camera's) make the same fragments twice: first
+// they count them per depth bucket, then they store the kept buckets' (dsm/depth_buckets.glsl).
+enum class BuildStep { Count, Store };
+// HairDrawPush.buckets: `count` depth buckets over the casters' depths [range.x, range.y], for `step`.
+glm::vec4 depthBuckets(glm::vec2 range, uint32_t count, BuildStep step);
+// How many depth buckets (DSM_MAX_BUCKETS, or fewer where those would not fit one storage buffer)
+// `cells` texels or pixels get.
+uint32_t depthBucketCount(vk::Context& ctx, uint64_t cells);
+
 class HairGpu {
 public:
     HairGpu(vk::CommandContext& cmd, const Scene& scene);

@@ -22,11 +22,9 @@ uint64_t devicePoolLimit(vk::Context& ctx) {
 
 CameraTranslucency::CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, const HairGpu* hair, uint32_t width,
                                        uint32_t height, bool computeHair)
-    : alloc_(alloc), scene_(scene), hair_(hair), width_(width), height_(height) {
-    for (const Material& m : scene.scene().materials) hasBlended_ |= m.alphaMode == AlphaMode::Blend;
+    : alloc_(alloc), scene_(scene), hair_(hair), hasBlended_(scene.scene().hasBlendedMaterials()),
+      casters_(scene.scene().translucentCasterBounds()), width_(width), height_(height) {
     if (!active()) return;
-    for (const glm::vec3& p : scene.scene().strandPoints) casters_.extend(p);
-    if (hasBlended_) casters_ = scene.scene().bounds;
     vk::Context& ctx = alloc.context();
     const uint64_t pixels = uint64_t(width) * height;
     capacity_ = std::min(pixels * kNodesPerPixel, devicePoolLimit(ctx));
@@ -36,8 +34,7 @@ CameraTranslucency::CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, co
     nodes_ = vk::Buffer(alloc, capacity_ * 16, usage, false, "oit-nodes");
     normals_ = vk::Buffer(alloc, capacity_ * 4, usage, false, "oit-normals");
     stats_ = vk::Buffer(alloc, sizeof(gpu::OitStats), usage, false, "oit-stats");
-    bucketCount_ = DSM_MAX_BUCKETS;  // fewer where they would not fit one storage buffer
-    while (bucketCount_ > 1 && pixels * 4 * bucketCount_ > ctx.limits().storageBufferRange) bucketCount_ /= 2;
+    bucketCount_ = depthBucketCount(ctx, pixels);
     buckets_ = vk::Buffer(alloc, pixels * 4 * bucketCount_, usage, false, "oit-buckets");
     tails_ = vk::Buffer(alloc, pixels * 8, usage, false, "oit-tails");
     layers_ = vk::Buffer(alloc, 16 + 8 * capacity_, usage, false, "oit-kept-layers");  // kept <= stored nodes
@@ -45,10 +42,10 @@ CameraTranslucency::CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, co
                             "oit-shade-args");
 
     // Build set: the scene's draw set (0, 1 and the instances; set 1 its textures), the hair buffers
-    // (3, 4), then heads, nodes, normals, counters, the opaque depth, the depth buckets and the tails'
-    // sums (5-11: both builds, raster and compute, write the lists there).
+    // (3, 4), then nodes, normals, counters, the opaque depth, the depth buckets and the tails' sums
+    // (6-11: both builds, raster and compute, write the runs there; oit.offsets writes the heads).
     std::vector<vk::Binding> lists;
-    for (uint32_t i = 5; i <= 8; ++i) lists.push_back({i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
+    for (uint32_t i = 6; i <= 8; ++i) lists.push_back({i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
     lists.push_back({9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
     for (uint32_t i = 10; i <= 11; ++i) lists.push_back({i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
     std::vector<vk::Binding> b = SceneGpu::drawSetBindings();
@@ -91,18 +88,15 @@ CameraTranslucency::CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, co
 
 // The depth buckets over the casters' window depths (their bounds' corners; 0 for a corner behind the
 // eye): only how much the buckets leave out depends on it, not what is kept (dsm/depth_buckets.glsl).
-gpu::HairDrawPush CameraTranslucency::cameraPush(const RibbonView& camera, const glm::mat4& viewProj, Step step) const {
-    float nearest = 1.0f, farthest = 0.0f;
+gpu::HairDrawPush CameraTranslucency::cameraPush(const RibbonView& camera, const glm::mat4& viewProj,
+                                                BuildStep step) const {
+    glm::vec2 range{1.0f, 0.0f};
     for (int corner = 0; corner < 8; ++corner) {
-        const glm::vec4 clip = viewProj * glm::vec4(corner & 1 ? casters_.max.x : casters_.min.x,
-                                                    corner & 2 ? casters_.max.y : casters_.min.y,
-                                                    corner & 4 ? casters_.max.z : casters_.min.z, 1.0f);
+        const glm::vec4 clip = viewProj * glm::vec4(casters_.corner(corner), 1.0f);
         const float depth = clip.w > 0.0f ? glm::clamp(clip.z / clip.w, 0.0f, 1.0f) : 0.0f;
-        nearest = std::min(nearest, depth), farthest = std::max(farthest, depth);
+        range = {std::min(range.x, depth), std::max(range.y, depth)};
     }
-    const float buckets = float(bucketCount_);
-    return {{0, 0, width_, uint32_t(capacity_)}, camera.viewer, camera.footprint,
-            {nearest, farthest > nearest ? buckets / (farthest - nearest) : 0.0f, buckets, step == Step::Count ? 0.0f : 1.0f}};
+    return {{0, 0, width_, uint32_t(capacity_)}, camera.viewer, camera.footprint, depthBuckets(range, bucketCount_, step)};
 }
 
 void CameraTranslucency::recordBuild(VkCommandBuffer cmd, const gpu::HairDrawPush& cameraPush) const {
@@ -142,8 +136,8 @@ void CameraTranslucency::addBuildTo(FrameGraph& graph, const RibbonView& camera,
             vkCmdFillBuffer(c.cmd, c.buffer(buckets).handle(), 0, VK_WHOLE_SIZE, 0);
             vkCmdFillBuffer(c.cmd, c.buffer(tails).handle(), 0, VK_WHOLE_SIZE, 0);
         });
-    lists_ = {heads, nodes, normals, stats, buckets, tails};
-    addBuildPasses(graph, cameraPush(camera, viewProj, Step::Count), "oit.count");
+    lists_ = {nodes, normals, stats, buckets, tails};
+    addBuildPasses(graph, cameraPush(camera, viewProj, BuildStep::Count), "oit.count");
     const gpu::OitPush push{{width_, height_, uint32_t(capacity_), bucketCount_}};
     graph.pass("oit.offsets")
         .pipeline(offsets_.pipeline)
@@ -154,7 +148,7 @@ void CameraTranslucency::addBuildTo(FrameGraph& graph, const RibbonView& camera,
             offsets_.pipeline.push(c.cmd, push);
             vkCmdDispatch(c.cmd, vk::divUp(width_, 8), vk::divUp(height_, 8), 1);
         });
-    addBuildPasses(graph, cameraPush(camera, viewProj, Step::Store), "oit.build");
+    addBuildPasses(graph, cameraPush(camera, viewProj, BuildStep::Store), "oit.build");
 }
 
 // One step of the build: the raster (BLEND meshes, and hair without computeHair) and the compute
@@ -175,15 +169,14 @@ void CameraTranslucency::addBuildPasses(FrameGraph& graph, const gpu::HairDrawPu
     }
 }
 
-// Bindings 5-11 of both builds: the lists, the opaque depth they are tested against, the buckets and sums.
+// Bindings 6-11 of both builds: the runs, the opaque depth they are tested against, the buckets and sums.
 PassBuilder& CameraTranslucency::declareLists(PassBuilder& pass) const {
-    return pass.storageBuffer(5, lists_[0], Use::StorageWrite)
-        .storageBuffer(6, lists_[1], Use::StorageWrite)
-        .storageBuffer(7, lists_[2], Use::StorageWrite)
-        .storageBuffer(8, lists_[3], Use::StorageWrite)
+    return pass.storageBuffer(6, lists_[0], Use::StorageWrite)
+        .storageBuffer(7, lists_[1], Use::StorageWrite)
+        .storageBuffer(8, lists_[2], Use::StorageWrite)
         .sampled(9, pass.graph().image("gbuffer.depth"), nearest_.handle())
-        .storageBuffer(10, lists_[4], Use::StorageWrite)
-        .storageBuffer(11, lists_[5], Use::StorageWrite);
+        .storageBuffer(10, lists_[3], Use::StorageWrite)
+        .storageBuffer(11, lists_[4], Use::StorageWrite);
 }
 
 // oit.sort (per pixel) -> oit.shade-args -> oit.shade (per kept layer, indirect) -> oit.blend (per pixel).

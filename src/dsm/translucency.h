@@ -49,23 +49,22 @@ public:
     static constexpr VkDeviceSize kNodeBytes = 16 + 4;  // node + normal
 
 private:
-    enum class Step { Count, Store };
     void addBuildPasses(FrameGraph& graph, const gpu::HairDrawPush& push, const std::string& name);
     void recordBuild(VkCommandBuffer cmd, const gpu::HairDrawPush& cameraPush) const;
-    gpu::HairDrawPush cameraPush(const RibbonView& camera, const glm::mat4& viewProj, Step step) const;
+    gpu::HairDrawPush cameraPush(const RibbonView& camera, const glm::mat4& viewProj, BuildStep step) const;
     PassBuilder& declareLists(PassBuilder& pass) const;
     vk::Allocator& alloc_;
     SceneGpu& scene_;
     const HairGpu* hair_;
-    bool hasBlended_ = false;
-    Bounds casters_;  // hair (with BLEND meshes the whole scene): the depth buckets' range
+    bool hasBlended_;
+    Bounds casters_;  // Scene::translucentCasterBounds: the depth buckets' range
     uint32_t bucketCount_ = 1;
     uint32_t width_, height_;
     uint64_t capacity_ = 0;
     vk::Buffer heads_, nodes_, normals_, stats_;
     vk::Buffer buckets_, tails_;  // per pixel: fragments per depth bucket, and the sum of -log(1 - alpha)
     vk::Buffer layers_, shadeArgs_;  // the kept layers (node, pixel) in pixel order, and their dispatch
-    std::array<BufferHandle, 6> lists_;  // this frame's heads, nodes, normals, stats, buckets, tails (addBuildTo)
+    std::array<BufferHandle, 5> lists_;  // this frame's nodes, normals, stats, buckets, tails (addBuildTo)
     vk::DescriptorLayout buildLayout_;
     vk::Pipeline hairPipeline_, meshPipeline_;  // the raster's (hairPipeline_ without computeHair)
     vk::ComputeKernel hairKernel_, offsets_, sort_, args_, shade_, blend_;

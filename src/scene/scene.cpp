@@ -22,6 +22,19 @@ void Scene::computeBounds() {
     bounds = animatedBounds(*this);
 }
 
+bool Scene::hasBlendedMaterials() const {
+    for (const Material& m : materials)
+        if (m.alphaMode == AlphaMode::Blend) return true;
+    return false;
+}
+
+Bounds Scene::translucentCasterBounds() const {
+    if (hasBlendedMaterials()) return bounds;
+    Bounds b;
+    for (const glm::vec3& p : strandPoints) b.extend(p);
+    return b;
+}
+
 size_t Scene::drawnTriangleCount() const {
     if (instances.empty()) return triangleCount();
     size_t n = 0;

@@ -62,6 +62,7 @@ struct Bounds {
     void extend(const glm::vec3& p) { min = glm::min(min, p); max = glm::max(max, p); }
     bool empty() const { return min.x > max.x; }
     glm::vec3 center() const { return 0.5f * (min + max); }
+    glm::vec3 corner(int i) const { return {i & 1 ? max.x : min.x, i & 2 ? max.y : min.y, i & 4 ? max.z : min.z}; }
     float radius() const { return 0.5f * glm::length(max - min); }
 };
 
@@ -165,6 +166,10 @@ struct Scene {
     std::vector<std::string> warnings;
 
     void computeBounds();
+    bool hasBlendedMaterials() const;
+    // Where light passes partly (the DSM's and the camera translucency's casters): the strands' points,
+    // or with alphaMode BLEND materials the whole scene's bounds.
+    Bounds translucentCasterBounds() const;
     size_t triangleCount() const { return indices.size() / 3; }  // stored (each mesh once)
     size_t drawnTriangleCount() const;                            // drawn (each instance of each mesh)
 };
