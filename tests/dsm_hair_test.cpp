@@ -266,6 +266,101 @@ TEST_F(GpuTest, DsmSearchLookupEqualsTheLinkWalk) {
     EXPECT_EQ(differing, 0u);
 }
 
+namespace {
+
+// Integral of the unit tent from -inf to t, and the weight of texel i for a box of `width` texels
+// centred at s (dsm/dsm_lookup.glsl's filter, written again in double).
+double tentCdf(double t) {
+    t = std::clamp(t, -1.0, 1.0);
+    return t < 0.0 ? 0.5 * (t + 1.0) * (t + 1.0) : 1.0 - 0.5 * (1.0 - t) * (1.0 - t);
+}
+double tapWeight(double s, double width, int i) {
+    const double c = i + 0.5;
+    if (width < 1e-3) return std::max(0.0, 1.0 - std::abs(s - c));
+    return (tentCdf(s + 0.5 * width - c) - tentCdf(s - 0.5 * width - c)) / width;
+}
+
+// The filtered transmittance of a hair receiver at p in one DSM (a directional or spot light's),
+// from the resolved lists read back: per tap the transmittance behind the last node at or in front
+// of the receiver's depth.
+double listTransmittance(const gpu::GpuDsmLight& dsm, const glm::dvec3& p, const uint32_t* heads,
+                         const glm::uvec4* nodes) {
+    const glm::dvec3 viewer(dsm.viewer);
+    const bool spot = dsm.viewer.w > 0.5f;
+    const double texel = dsm.params.x * (dsm.params.y > 0.5f ? glm::distance(p, viewer) : 1.0);
+    const glm::dvec3 q = p + (spot ? glm::normalize(viewer - p) : viewer) * (dsm.kernel.z * texel);
+    const glm::dvec4 clip = glm::dmat4(dsm.viewProj) * glm::dvec4(q, 1.0);
+    if (clip.w <= 0.0) return 1.0;
+    const int res = int(dsm.params.w);
+    const double width = dsm.kernel.x, d = (spot ? glm::distance(q, viewer) : -glm::dot(q, viewer)) - dsm.kernel.y * texel;
+    const glm::dvec2 s = (glm::dvec2(clip) / clip.w * 0.5 + 0.5) * double(res);
+    const glm::ivec2 lo(glm::floor(s - 0.5 * width - 0.5)), hi = glm::ivec2(glm::floor(s + 0.5 * width - 0.5)) + 1;
+    double sum = 0.0;
+    for (int y = lo.y; y <= hi.y; ++y)
+        for (int x = lo.x; x <= hi.x; ++x) {
+            double t = 1.0;
+            if (x >= 0 && y >= 0 && x < res && y < res) {
+                const uint32_t texelIndex = uint32_t(dsm.params.z) * res * res + y * res + x;
+                const uint32_t first = heads[texelIndex * DSM_HEAD_UINTS], length = heads[texelIndex * DSM_HEAD_UINTS + 1];
+                for (uint32_t k = 0; first != DSM_NONE && k < length && glm::uintBitsToFloat(nodes[first + k].x) <= d; ++k)
+                    t = glm::uintBitsToFloat(nodes[first + k].y);
+            }
+            sum += tapWeight(s.y, width, y) * tapWeight(s.x, width, x) * t;
+        }
+    return std::min(sum, 1.0);
+}
+
+}  // namespace
+
+// The strands' own transmittance (dsm.strands: what the camera's hair layers interpolate along their
+// segments) at every drawn hair point equals the DSM lookup there, computed again on the CPU in
+// double from the lists read back; for two lights (the hair scene's spot, and a sun: slots 0 and 1),
+// which also checks the points' Morton order and the slots' layout.
+TEST_F(GpuTest, StrandTransmittanceEqualsTheListsAtEveryPoint) {
+    Scene s = hairScene(2000);
+    Light sun;
+    sun.direction = glm::normalize(glm::vec3(0.4f, -1.0f, 0.3f));
+    s.lights.push_back(sun);
+    RenderSettings rs = dsmFrame(64, 48, 256, 16);
+    rs.gi = GiMode::None;
+    Renderer r(ctx(), s, rs);
+    r.render(s.cameras[0]);
+    const DsmResources& res = r.deepShadows().resources();
+    ASSERT_EQ(res.mappedLights(), (std::vector<uint32_t>{0, 1}));
+    ASSERT_EQ(r.deepShadows().readStats(r.commands()).overflow, 0u);
+    const HairGpu& hair = *r.hair();
+    const uint32_t points = hair.pointCount(), texels = res.resolution * res.resolution * res.layerCount();
+    const auto pointBytes = r.commands().readBuffer(hair.points(), points * sizeof(gpu::GpuHairPoint));
+    const auto strandBytes = r.commands().readBuffer(r.deepShadows().strandTransmittance(), 2 * points * 4);
+    const auto headBytes = r.commands().readBuffer(res.heads, VkDeviceSize(texels) * 4 * DSM_HEAD_UINTS);
+    const auto nodeBytes = r.commands().readBuffer(res.nodes, res.capacity * 16);
+    const auto* point = reinterpret_cast<const gpu::GpuHairPoint*>(pointBytes.data());
+    const auto* strand = reinterpret_cast<const float*>(strandBytes.data());
+    const auto* table = reinterpret_cast<const gpu::GpuDsmLight*>(res.lightTable.current().mapped());
+    size_t compared = 0, differing = 0, shadowed[2] = {0, 0};
+    double worst = 0.0, sumError = 0.0;
+    for (uint32_t slot = 0; slot < 2; ++slot)
+        for (uint32_t i = 0; i < points; ++i) {
+            if (point[i].position.w <= 0.0f) continue;  // the zero-width copies bracketing a strand: never drawn
+            const double cpu = listTransmittance(table[slot], glm::dvec3(point[i].position),
+                                                 reinterpret_cast<const uint32_t*>(headBytes.data()),
+                                                 reinterpret_cast<const glm::uvec4*>(nodeBytes.data()));
+            const double error = std::abs(strand[slot * points + i] - cpu);
+            ++compared;
+            shadowed[slot] += cpu < 0.99;
+            differing += error > 1e-4;
+            worst = std::max(worst, error);
+            sumError += error;
+        }
+    std::printf("[dsm strands] %zu point lookups (with T < 0.99: %zu spot, %zu sun): %zu differ by > 1e-4 (worst "
+                "%.2e, mean %.2e)\n",
+                compared, shadowed[0], shadowed[1], differing, worst, sumError / double(compared));
+    EXPECT_GT(std::min(shadowed[0], shadowed[1]), compared / 20);  // both maps shadow many points
+    // A receiver within float rounding of a node's depth may fall on either side of it.
+    EXPECT_LT(differing, compared / 1000 + 1);
+    EXPECT_LT(sumError / double(compared), 1e-5);
+}
+
 // Shadow visibility (opaque map x DSM transmittance) of the hair's own pixels: with a DSM a large
 // share of the shadowed ones is partly lit; with hair in the ordinary (hard) shadow map almost none is.
 TEST_F(GpuTest, HairShadowsArePartialWithDsmAndBinaryWithout) {

@@ -13,7 +13,7 @@ layout(push_constant) uniform Push { HairDrawPush draw; };
 #include "dsm/ribbon_raster.glsl"
 
 void ribbonFragment(ivec2 pixel, float ndcDepth, float viewerDepth, float alpha, vec3 world, vec3 tangent,
-                    vec3 colour) {
+                    vec3 colour, uint segment) {
     dsmInsert(uvec2(pixel), viewerDepth, alpha, world);
 }
 

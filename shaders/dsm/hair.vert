@@ -15,6 +15,9 @@ layout(location = 1) out vec3 outColor;
 layout(location = 2) out float outAlpha;  // opacity x coverage
 layout(location = 3) out float outDepth;  // dsmDepth from the viewer
 layout(location = 4) out vec3 outWorld;
+// Flat: the provoking vertex of strip triangle k is vertex k, whose point k / 2 is the first of the
+// segment the triangle belongs to (dsm/oit_hair.frag).
+layout(location = 5) flat out uint outSegment;
 
 void main() {
     GpuHairPoint point = points[gl_VertexIndex >> 1];
@@ -27,4 +30,5 @@ void main() {
     outAlpha = s.alpha;
     outDepth = dsmDepth(draw.viewer, p);
     outWorld = world;
+    outSegment = uint(gl_VertexIndex >> 1);
 }

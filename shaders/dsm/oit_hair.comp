@@ -16,8 +16,8 @@ layout(push_constant) uniform Push { HairDrawPush draw; };
 #include "dsm/ribbon_raster.glsl"
 
 void ribbonFragment(ivec2 pixel, float ndcDepth, float viewerDepth, float alpha, vec3 world, vec3 tangent,
-                    vec3 colour) {
-    oitInsert(pixel, ndcDepth, colour, alpha, tangent, true);
+                    vec3 colour, uint segment) {
+    oitInsert(pixel, ndcDepth, colour, alpha, tangent, segment);
 }
 
 void main() {

@@ -10,7 +10,8 @@ layout(push_constant) uniform Push { HairDrawPush draw; };
 layout(location = 0) in vec3 inTangent;
 layout(location = 1) in vec3 inColor;
 layout(location = 2) in float inAlpha;
+layout(location = 5) flat in uint inSegment;  // the provoking vertex's point: the segment's first
 
 #include "dsm/oit_insert.glsl"
 
-void main() { oitInsert(ivec2(gl_FragCoord.xy), gl_FragCoord.z, inColor, inAlpha, normalize(inTangent), true); }
+void main() { oitInsert(ivec2(gl_FragCoord.xy), gl_FragCoord.z, inColor, inAlpha, normalize(inTangent), inSegment); }

@@ -15,7 +15,9 @@ layout(set = 0, binding = 11, std430) buffer Tails { uint64_t tails[]; };  // pe
 #include "dsm/octahedral.glsl"
 #include "dsm/depth_buckets.glsl"
 
-void oitInsert(ivec2 pixel, float depth, vec3 albedo, float alpha, vec3 normal, bool hair) {
+// `segment`: a hair fragment's segment (the index of its first point), OIT_NOT_HAIR for a mesh's.
+void oitInsert(ivec2 pixel, float depth, vec3 albedo, float alpha, vec3 normal, uint segment) {
+    bool hair = segment != OIT_NOT_HAIR;
     // Nothing to composite; NaN too: lavapipe's raster can give a fragment of a strip's degenerate
     // join (dsm/hair.vert) non-finite interpolants (one pixel of the hair at 1280x720).
     if (!(alpha > 0.0)) return;
@@ -34,7 +36,7 @@ void oitInsert(ivec2 pixel, float depth, vec3 albedo, float alpha, vec3 normal, 
     }
     uint node = atomicAdd(buckets[slot], 1u);
     if (node >= DSM_CULLED) return;  // behind the cap's bucket (its sum is all that counts), or no room
-    nodes[node] = uvec4(floatBitsToUint(depth), packHalf2x16(albedo.rg), 0u,  // .z unused
+    nodes[node] = uvec4(floatBitsToUint(depth), packHalf2x16(albedo.rg), segment,
                         packHalf2x16(vec2(albedo.b, hair ? -alpha : alpha)));
     normals[node] = packSnorm2x16(octEncode(normal));
 }

@@ -15,5 +15,5 @@ layout(location = 1) in vec2 inUv;
 
 void main() {
     vec4 c = baseColor(draw.ids.y, inUv);
-    oitInsert(ivec2(gl_FragCoord.xy), gl_FragCoord.z, c.rgb, c.a, normalize(inNormal), false);
+    oitInsert(ivec2(gl_FragCoord.xy), gl_FragCoord.z, c.rgb, c.a, normalize(inNormal), OIT_NOT_HAIR);
 }

@@ -3,8 +3,9 @@
 // (oit_sort.comp's list, an indirect dispatch), so that every thread does one layer's lighting: the
 // per-pixel pass lit a pixel's up to OIT_MAX_LIST layers one after another, its lanes idle wherever
 // a neighbour had more. The layer is lit like an opaque surface (every light with its shadow-map
-// filter and its deep shadow map, Lambert or Kajiya-Kay, plus the indirect irradiance gathered at
-// the pixel's opaque receiver: the GI techniques gather per G-buffer pixel, not per layer); its
+// filter and its deep shadow map, hair with its strand's transmittance from dsm.strands; Lambert or
+// Kajiya-Kay; plus the indirect irradiance gathered at the pixel's opaque receiver: the GI techniques
+// gather per G-buffer pixel, not per layer); its
 // radiance (per unit alpha, of the frame's radiance AOV) replaces the node's depth and colour:
 // node = (L.r, L.g, L.b, alpha as before).
 #extension GL_GOOGLE_include_directive : require
@@ -27,6 +28,8 @@ layout(set = 0, binding = 7, std430) readonly buffer ShadowLayers { GpuShadowLay
 layout(set = 0, binding = 12) uniform sampler2DArray shadowDepth;
 layout(set = 0, binding = 13) uniform sampler2DArray shadowMoments;
 layout(set = 0, binding = 14, std430) readonly buffer ShadowLights { GpuShadowLight shadowLights[]; };
+layout(set = 0, binding = 15, std430) readonly buffer StrandTransmittance { float strandTransmittance[]; };
+layout(set = 0, binding = 16, std430) readonly buffer Points { GpuHairPoint points[]; };
 
 #include "shadow/project.glsl"
 #include "shadow/moments.glsl"
@@ -36,8 +39,21 @@ layout(set = 0, binding = 14, std430) readonly buffer ShadowLights { GpuShadowLi
 #include "dsm/kajiya_kay.glsl"
 #include "dsm/octahedral.glsl"
 
-// Direct radiance towards the eye of one translucent fragment (per unit alpha).
-vec3 directRadiance(vec3 p, vec3 n, bool hair, vec3 albedo, float angle) {
+// The deep-shadow transmittance of light `light` at hair fragment p of `segment` (its first point's
+// index): the strand's own at the segment's two points (dsm.strands), interpolated at p's projection.
+float strandDeepShadow(uint light, vec3 p, uint segment) {
+    GpuDsmLight dsm = dsmLights[light];
+    if (dsm.params.z < 0.0) return 1.0;
+    vec3 a = points[segment].position.xyz, ab = points[segment + 1u].position.xyz - a;
+    float s = clamp(dot(p - a, ab) / max(dot(ab, ab), 1e-30), 0.0, 1.0);
+    uint first = uint(dsm.opacity.z) * uint(points.length()) + segment;
+    return mix(strandTransmittance[first], strandTransmittance[first + 1u], s);
+}
+
+// Direct radiance towards the eye of one translucent fragment (per unit alpha); `segment`: a hair
+// fragment's (OIT_NOT_HAIR: a mesh's).
+vec3 directRadiance(vec3 p, vec3 n, uint segment, vec3 albedo, float angle) {
+    bool hair = segment != OIT_NOT_HAIR;
     vec3 toEye = normalize(frame.cameraPos.xyz - p);
     if (!hair && dot(n, toEye) < 0.0) n = -n;  // two-sided: shade the side the camera sees
     vec3 sum = vec3(0.0);
@@ -50,7 +66,7 @@ vec3 directRadiance(vec3 p, vec3 n, bool hair, vec3 albedo, float angle) {
         float v = 1.0;
         if (light.radiance.w != NO_SHADOW)
             v = lightVisibility(shadowLights[uint(light.radiance.w)], light, p, hair ? l : n, angle, true).x;
-        v *= deepShadowTransmittance(i, p, n, hair);
+        v *= hair ? strandDeepShadow(i, p, segment) : deepShadowTransmittance(i, p, n, false);
         sum += e * v * (hair ? kajiyaKay(albedo, n, l, toEye) : albedo / PI * ndotl);
     }
     return sum;
@@ -65,11 +81,10 @@ void main() {
     uvec4 data = nodes[entry.x];
     vec2 ba = unpackHalf2x16(data.w);
     vec3 albedo = vec3(unpackHalf2x16(data.y), ba.x);
-    bool hair = ba.y < 0.0;
     vec3 n = octDecode(unpackSnorm2x16(normals[entry.x]));
     vec3 p = pixelWorldPosition(frame, pixel, uintBitsToFloat(data.x));
     vec3 l = vec3(0.0);
-    if (aov != AOV_INDIRECT) l += directRadiance(p, n, hair, albedo, kernelAngle(pixel));
+    if (aov != AOV_INDIRECT) l += directRadiance(p, n, data.z, albedo, kernelAngle(pixel));
     if (aov != AOV_DIRECT && frame.options.x != 0u) l += albedo / PI * texelFetch(indirectIrradiance, pixel, 0).rgb;
     nodes[entry.x] = uvec4(floatBitsToUint(l.r), floatBitsToUint(l.g), floatBitsToUint(l.b), data.w);
 }

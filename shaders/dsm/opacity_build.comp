@@ -21,7 +21,7 @@ layout(set = 0, binding = 6, std430) buffer Layers { float opticalDepth[]; };  /
 #include "dsm/ribbon_raster.glsl"
 
 void ribbonFragment(ivec2 pixel, float ndcDepth, float viewerDepth, float alpha, vec3 world, vec3 tangent,
-                    vec3 colour) {
+                    vec3 colour, uint segment) {
     if (alpha <= 0.0) return;
     uint res = uint(draw.footprint.z);
     uint texel = (draw.ids.x * res + uint(pixel.y)) * res + uint(pixel.x);

@@ -11,8 +11,10 @@
 // with 1/w. Segments are clipped to the near plane (z >= 0); fragments beyond the far plane or
 // outside `size` are not emitted. Needs `draw`, dsm/ribbon.glsl and dsm/dsm_common.glsl.
 
+// `segment`: the index of the segment's first point (what oit_shade.comp reads the strand's own
+// transmittance at).
 void ribbonFragment(ivec2 pixel, float ndcDepth, float viewerDepth, float alpha, vec3 world, vec3 tangent,
-                    vec3 colour);
+                    vec3 colour, uint segment);
 
 struct RibbonEnd {
     GpuHairPoint point;
@@ -86,7 +88,7 @@ void rasterRibbonSegment(uint i, vec2 size) {
             if (ndcDepth > 1.0) continue;
             ribbonFragment(ivec2(pixel), ndcDepth, mix(depthA, depthB, s), mix(a.section.alpha, b.section.alpha, s),
                            mix(a.point.position.xyz, b.point.position.xyz, s),
-                           normalize(mix(a.point.tangent.xyz, b.point.tangent.xyz, s)), colour);
+                           normalize(mix(a.point.tangent.xyz, b.point.tangent.xyz, s)), colour, i);
         }
     }
 }

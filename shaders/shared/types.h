@@ -297,6 +297,10 @@ struct ShadowDrawPush {
 #define DSM_MAX_BUCKETS 8
 #define DSM_CULLED 0x80000000u
 #define OIT_HEADER_UINTS 4
+// A camera node's z: a hair fragment's segment (the index of its first point among the hair points),
+// where oit.shade reads the strand's own deep-shadow transmittance (dsm/strand_transmittance.comp);
+// OIT_NOT_HAIR for a mesh's fragment.
+#define OIT_NOT_HAIR 0xFFFFFFFFu
 
 // A DSM node is a uvec4 in the node pool: x = depth (float bits: distance from a spot light, depth
 // along a directional light), y = the transmittance behind the node, z = the next node of the texel's
@@ -336,7 +340,8 @@ struct GpuDsmLight {
                     // w = a cube's first face entry (faces +x, -x, +y, -y, +z, -z follow the lights' entries)
     vec4 opacity;   // x = 1: deep opacity maps (--shadow dom; heads hold each texel's first depth, the node
                     // at the texel's index its DOM_LAYERS optical depths), 0: lists; y = layer thickness
-                    // (world units); z unused; w = 1: lists looked up by binary search (--dsm-lookup
+                    // (world units); z = the light's slot in the strands' transmittance (dsm.strands:
+                    // slot x points + point); w = 1: lists looked up by binary search (--dsm-lookup
                     // search), 0: through the neighbour links (links)
 };
 #define DOM_LAYERS 4  // opacity layers of a deep opacity map texel (one vec4)

@@ -49,15 +49,23 @@ public:
     // Every ribbon segment in one dispatch of a compute raster (dsm/ribbon_raster.glsl: 64 segments
     // per group, groups in 2D); `push` says which view.
     void dispatchSegments(VkCommandBuffer cmd, const vk::Pipeline& pipeline, const gpu::HairDrawPush& push) const;
+    // One invocation per drawn point (spatialPoints()), 64 per group, groups in 2D.
+    void dispatchDrawnPoints(VkCommandBuffer cmd) const { dispatch64(cmd, drawnPointCount_); }
 
     const vk::Buffer& points() const { return points_; }
     const vk::Buffer& strands() const { return strands_; }
+    // The drawn points' indices (not the zero-width copies') in the order of a Morton curve over their
+    // positions: a pass that reads a map at every point takes them in this order, so that a warp's
+    // reads are neighbours (hair is static: the order is made once).
+    const vk::Buffer& spatialPoints() const { return spatialPoints_; }
     uint32_t strandCount() const { return strandCount_; }
+    uint32_t pointCount() const { return vertexCount_ / 2; }  // with the zero-width copies bracketing strands
     VkDeviceSize bytes() const { return points_.size() + strands_.size(); }
 
 private:
-    vk::Buffer points_, strands_;
-    uint32_t vertexCount_ = 0, strandCount_ = 0;
+    static void dispatch64(VkCommandBuffer cmd, uint32_t invocations);
+    vk::Buffer points_, strands_, spatialPoints_;
+    uint32_t vertexCount_ = 0, strandCount_ = 0, drawnPointCount_ = 0;
 };
 
 }  // namespace penumbra

@@ -76,7 +76,7 @@ CameraTranslucency::CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, co
     args_ = vk::ComputeKernel(ctx, "render/indirect_args.comp", {storage, storage}, sizeof(uint32_t));
     shade_ = vk::ComputeKernel(ctx, "dsm/oit_shade.comp",
                                {uniform, storage, storage, storage, storage, sampled, uniform, storage, storage, storage,
-                                storage, storage, sampled, sampled, storage},
+                                storage, storage, sampled, sampled, storage, storage, storage},
                                0);
     blend_ = vk::ComputeKernel(ctx, "dsm/oit_blend.comp",
                                {uniform, storage, storage, storage, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, sizeof(gpu::OitPush));
@@ -224,6 +224,8 @@ void CameraTranslucency::addCompositeTo(FrameGraph& graph) {
         .sampled(12, graph.image("shadow.map"), border_.handle())
         .sampled(13, graph.image("shadow.moments"), moments_.handle())
         .storageBuffer(14, graph.buffer("shadow.lights"))
+        .storageBuffer(15, graph.buffer("dsm.strands"))
+        .storageBuffer(16, hair_ ? graph.import(hair_->points()) : heads)  // no hair: never read
         .record([args](PassContext& c) { vkCmdDispatchIndirect(c.cmd, c.buffer(args).handle(), 0); });
     graph.pass("oit.blend")
         .pipeline(blend_.pipeline)
