@@ -3,11 +3,11 @@
 // (oit_sort.comp's list, an indirect dispatch), so that every thread does one layer's lighting: the
 // per-pixel pass lit a pixel's up to OIT_MAX_LIST layers one after another, its lanes idle wherever
 // a neighbour had more. The layer is lit like an opaque surface (every light with its shadow-map
-// filter and its deep shadow map, hair with its strand's transmittance from dsm.strands; Lambert or
-// Kajiya-Kay; plus the indirect irradiance gathered at the pixel's opaque receiver: the GI techniques
-// gather per G-buffer pixel, not per layer); its
-// radiance (per unit alpha, of the frame's radiance AOV) replaces the node's depth and colour:
-// node = (L.r, L.g, L.b, alpha as before).
+// filter and its deep shadow map, or for hair under a DSM its strand's shadow from
+// oit_hair_shadow.comp; Lambert or Kajiya-Kay; plus the indirect irradiance gathered at the pixel's
+// opaque receiver: the GI techniques gather per G-buffer pixel, not per layer); its radiance (per
+// unit alpha, of the frame's radiance AOV) replaces the node's depth and colour: node = (L.r, L.g,
+// L.b, alpha as before).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
 #include "shared/types.h"
@@ -28,7 +28,7 @@ layout(set = 0, binding = 7, std430) readonly buffer ShadowLayers { GpuShadowLay
 layout(set = 0, binding = 12) uniform sampler2DArray shadowDepth;
 layout(set = 0, binding = 13) uniform sampler2DArray shadowMoments;
 layout(set = 0, binding = 14, std430) readonly buffer ShadowLights { GpuShadowLight shadowLights[]; };
-layout(set = 0, binding = 15, std430) readonly buffer StrandTransmittance { float strandTransmittance[]; };
+layout(set = 0, binding = 15, std430) readonly buffer HairShadow { float hairShadow[]; };
 layout(set = 0, binding = 16, std430) readonly buffer Points { GpuHairPoint points[]; };
 
 #include "shadow/project.glsl"
@@ -36,18 +36,17 @@ layout(set = 0, binding = 16, std430) readonly buffer Points { GpuHairPoint poin
 #include "shadow/pcf.glsl"
 #include "shadow/visibility.glsl"
 #include "dsm/dsm_lookup.glsl"
+#include "dsm/layer_shadow.glsl"
 #include "dsm/kajiya_kay.glsl"
 #include "dsm/octahedral.glsl"
 
-// The deep-shadow transmittance of light `light` at hair fragment p of `segment` (its first point's
-// index): the strand's own at the segment's two points (dsm.strands), interpolated at p's projection.
-float strandDeepShadow(uint light, vec3 p, uint segment) {
-    GpuDsmLight dsm = dsmLights[light];
-    if (dsm.params.z < 0.0) return 1.0;
+// The shadow of light i (with a DSM) at hair fragment p of `segment` (its first point's index): the
+// strand's own at the segment's two points (oit_hair_shadow.comp), interpolated at p's projection.
+float strandShadow(uint i, vec3 p, uint segment) {
     vec3 a = points[segment].position.xyz, ab = points[segment + 1u].position.xyz - a;
     float s = clamp(dot(p - a, ab) / max(dot(ab, ab), 1e-30), 0.0, 1.0);
-    uint first = uint(dsm.opacity.z) * uint(points.length()) + segment;
-    return mix(strandTransmittance[first], strandTransmittance[first + 1u], s);
+    uint first = i * uint(points.length()) + segment;
+    return mix(hairShadow[first], hairShadow[first + 1u], s);
 }
 
 // Direct radiance towards the eye of one translucent fragment (per unit alpha); `segment`: a hair
@@ -57,16 +56,15 @@ vec3 directRadiance(vec3 p, vec3 n, uint segment, vec3 albedo, float angle) {
     vec3 toEye = normalize(frame.cameraPos.xyz - p);
     if (!hair && dot(n, toEye) < 0.0) n = -n;  // two-sided: shade the side the camera sees
     vec3 sum = vec3(0.0);
+    uint strandLights = uint(hairShadow.length()) / uint(points.length());
     for (uint i = 0; i < frame.size.z; ++i) {
         GpuLight light = lights[i];
         vec3 l;
         vec3 e = incidentIrradiance(light, p, l);
         float ndotl = hair ? 1.0 : max(dot(n, l), 0.0);
         if (ndotl <= 0.0 || all(equal(e, vec3(0.0)))) continue;
-        float v = 1.0;
-        if (light.radiance.w != NO_SHADOW)
-            v = lightVisibility(shadowLights[uint(light.radiance.w)], light, p, hair ? l : n, angle, true).x;
-        v *= hair ? strandDeepShadow(i, p, segment) : deepShadowTransmittance(i, p, n, false);
+        float v = hair && i < strandLights && dsmLights[i].params.z >= 0.0 ? strandShadow(i, p, segment)
+                                                                           : layerShadow(i, light, p, n, l, hair, angle);
         sum += e * v * (hair ? kajiyaKay(albedo, n, l, toEye) : albedo / PI * ndotl);
     }
     return sum;

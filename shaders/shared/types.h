@@ -298,7 +298,7 @@ struct ShadowDrawPush {
 #define DSM_CULLED 0x80000000u
 #define OIT_HEADER_UINTS 4
 // A camera node's z: a hair fragment's segment (the index of its first point among the hair points),
-// where oit.shade reads the strand's own deep-shadow transmittance (dsm/strand_transmittance.comp);
+// where oit.shade reads the strand's own shadow (dsm/oit_hair_shadow.comp);
 // OIT_NOT_HAIR for a mesh's fragment.
 #define OIT_NOT_HAIR 0xFFFFFFFFu
 
@@ -340,8 +340,7 @@ struct GpuDsmLight {
                     // w = a cube's first face entry (faces +x, -x, +y, -y, +z, -z follow the lights' entries)
     vec4 opacity;   // x = 1: deep opacity maps (--shadow dom; heads hold each texel's first depth, the node
                     // at the texel's index its DOM_LAYERS optical depths), 0: lists; y = layer thickness
-                    // (world units); z = the light's slot in the strands' transmittance (dsm.strands:
-                    // slot x points + point); w = 1: lists looked up by binary search (--dsm-lookup
+                    // (world units); z unused; w = 1: lists looked up by binary search (--dsm-lookup
                     // search), 0: through the neighbour links (links)
 };
 #define DOM_LAYERS 4  // opacity layers of a deep opacity map texel (one vec4)

@@ -53,7 +53,7 @@ double mib(uint64_t bytes) { return double(bytes) / (1024.0 * 1024.0); }
 DeepShadowMaps::DeepShadowMaps(vk::Allocator& alloc, SceneGpu& scene, const HairGpu* hair, const DsmSettings& settings,
                                uint32_t shadowResolution, const std::vector<Light>& lights,
                                std::vector<std::string>& warnings, bool computeHair)
-    : settings_(settings), hair_(hair) {
+    : settings_(settings) {
     if (settings.maxList < 1 || settings.maxList > DSM_MAX_LIST_CAP)
         throw vk::VulkanError(fmt::format("--dsm-max-list {}: must be in 1..{}", settings.maxList, DSM_MAX_LIST_CAP));
     const uint32_t res = settings.resolution ? settings.resolution : shadowResolution;
@@ -68,18 +68,7 @@ DeepShadowMaps::DeepShadowMaps(vk::Allocator& alloc, SceneGpu& scene, const Hair
     if (settings.opacityMaps && !hair) layers.clear();  // nothing to cast: every lookup reads "no map"
     const float domLayer = settings.opacityMaps ? DeepOpacityBuildPass::layerThickness(scene.scene()) : 1.0f;
     res_ = std::make_unique<DsmResources>(alloc, settings, res, std::move(layers), lights.size(), domLayer);
-    const uint64_t strandValues = active() && hair ? uint64_t(hair->pointCount()) * res_->mappedLights().size() : 1;
-    strandTransmittance_ = vk::Buffer(alloc, strandValues * 4,
-                                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, false,
-                                      "dsm-strand-transmittance");
     if (!active()) return;
-    if (hair) {
-        const VkDescriptorType ssbo = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-        strands_ = vk::ComputeKernel(alloc.context(), "dsm/strand_transmittance.comp",
-                                     {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}, {3, ssbo}, {5, ssbo}, {6, ssbo}, {8, ssbo},
-                                      {9, ssbo}, {10, ssbo}, {11, ssbo}},
-                                     0);
-    }
     if (settings.opacityMaps) {
         opacity_ = std::make_unique<DeepOpacityBuildPass>(alloc, *hair, *res_);
         return;
@@ -106,29 +95,13 @@ void DeepShadowMaps::addTo(FrameGraph& graph) {
     graph.publish("dsm.heads", graph.import(res_->heads));
     graph.publish("dsm.nodes", graph.import(res_->nodes));
     graph.publish("dsm.side", graph.import(res_->side));
-    graph.publish("dsm.strands", graph.import(strandTransmittance_));
     if (!active()) return;
     if (opacity_) {
         opacity_->addTo(graph);
-    } else {
-        build_->addTo(graph);
-        resolve_->addTo(graph);
+        return;
     }
-    if (hair_) addStrandsTo(graph);
-}
-
-void DeepShadowMaps::addStrandsTo(FrameGraph& graph) {
-    graph.pass("dsm.strands")
-        .pipeline(strands_.pipeline)
-        .uniform(0, graph.buffer("frame"))
-        .storageBuffer(3, graph.import(hair_->points()))
-        .storageBuffer(5, graph.buffer("dsm.strands"), Use::StorageWrite)
-        .storageBuffer(6, graph.import(hair_->spatialPoints()))
-        .storageBuffer(8, graph.buffer("dsm.lights"))
-        .storageBuffer(9, graph.buffer("dsm.heads"))
-        .storageBuffer(10, graph.buffer("dsm.nodes"))
-        .storageBuffer(11, graph.buffer("dsm.side"))
-        .record([this](PassContext& c) { hair_->dispatchDrawnPoints(c.cmd); });
+    build_->addTo(graph);
+    resolve_->addTo(graph);
 }
 
 DsmFrameStats DeepShadowMaps::readStats(vk::CommandContext& cmd) const {

@@ -47,14 +47,11 @@ public:
     // Whether light `light` has a DSM: its translucent casters then stay out of its ordinary map.
     bool covers(uint32_t light) const;
     // The build and resolve passes (when active), and the lookup's inputs by name (placeholders when
-    // inactive): "dsm.lights", "dsm.heads", "dsm.nodes", "dsm.side", and "dsm.strands", the
-    // transmittance at every hair point (dsm/strand_transmittance.comp) for the camera's hair.
+    // inactive): "dsm.lights", "dsm.heads", "dsm.nodes", "dsm.side".
     void addTo(FrameGraph& graph);
 
     DsmFrameStats readStats(vk::CommandContext& cmd) const;
     const DsmResources& resources() const { return *res_; }
-    // Per mapped light slot (DsmResources::mappedLights) and hair point (HairGpu::points).
-    const vk::Buffer& strandTransmittance() const { return strandTransmittance_; }
     const DsmSettings& settings() const { return settings_; }
 
 private:
@@ -63,10 +60,6 @@ private:
     std::unique_ptr<DeepShadowBuildPass> build_;
     std::unique_ptr<DeepShadowResolvePass> resolve_;
     std::unique_ptr<DeepOpacityBuildPass> opacity_;  // `--shadow dom`, in place of the two above
-    const HairGpu* hair_;
-    vk::Buffer strandTransmittance_;  // per mapped light slot and hair point (4 bytes without either)
-    vk::ComputeKernel strands_;
-    void addStrandsTo(FrameGraph& graph);
 };
 
 // One report line ("dsm: ..."), and the warnings a frame deserves (pool overflow).

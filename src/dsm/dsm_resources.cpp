@@ -38,14 +38,14 @@ uint64_t maxNodes(vk::Context& ctx, VkDeviceSize headBytes) {
 }
 
 gpu::GpuDsmLight tableEntry(const DsmLayer& layer, int index, uint32_t resolution, const DsmSettings& s,
-                            float opacityLayer, uint32_t slot) {
+                            float opacityLayer) {
     gpu::GpuDsmLight g{};
     g.viewProj = layer.projection.viewProj;
     g.viewer = layer.view.viewer;
     g.params = {layer.projection.texelSize, layer.projection.perspective ? 1.0f : 0.0f, float(index),
                 float(resolution)};
     g.kernel = {s.filterWidth, s.depthBias, s.normalOffset, 0.0f};
-    g.opacity = {s.opacityMaps ? 1.0f : 0.0f, opacityLayer, float(slot), s.lookup == DsmLookup::Search ? 1.0f : 0.0f};
+    g.opacity = {s.opacityMaps ? 1.0f : 0.0f, opacityLayer, 0.0f, s.lookup == DsmLookup::Search ? 1.0f : 0.0f};
     return g;
 }
 
@@ -82,21 +82,12 @@ DsmResources::DsmResources(vk::Allocator& alloc, const DsmSettings& settings, ui
     for (uint32_t slot = 0; slot < vk::kMaxFramesInFlight; ++slot) writeTables(settings, slot);
 }
 
-std::vector<uint32_t> DsmResources::mappedLights() const {
-    std::vector<uint32_t> lights;
-    for (const DsmLayer& l : layers)
-        if (std::find(lights.begin(), lights.end(), l.light) == lights.end()) lights.push_back(l.light);
-    return lights;
-}
-
 void DsmResources::writeTables(const DsmSettings& settings, uint32_t slot) {
-    const std::vector<uint32_t> mapped = mappedLights();
     std::vector<glm::mat4> rows{glm::mat4(1.0f)};
     std::vector<gpu::GpuDsmLight> table(lightCount_);
     for (gpu::GpuDsmLight& g : table) g.params = {0.0f, 0.0f, -1.0f, float(resolution)};  // no DSM
     for (size_t i = 0; i < layers.size(); ++i) {
-        const uint32_t strandSlot = uint32_t(std::find(mapped.begin(), mapped.end(), layers[i].light) - mapped.begin());
-        const gpu::GpuDsmLight entry = tableEntry(layers[i], int(i), resolution, settings, opacityLayer, strandSlot);
+        const gpu::GpuDsmLight entry = tableEntry(layers[i], int(i), resolution, settings, opacityLayer);
         if (!layers[i].cube) {
             table.at(layers[i].light) = entry;
         } else {

@@ -55,9 +55,6 @@ struct DsmResources {
                  size_t lightCount, float opacityLayer = 1.0f);
 
     uint32_t layerCount() const { return uint32_t(layers.size()); }
-    // The lights with a map (a point light's six faces are one), in the order of their first layer:
-    // light slot k (GpuDsmLight.opacity.z) holds the hair points' transmittance k (dsm.strands).
-    std::vector<uint32_t> mappedLights() const;
     // The push constants of the per-texel passes (offsets, resolve, link).
     gpu::DsmPush push() const {
         return {{resolution, layerCount(), uint32_t(capacity), maxList}, {bucketCount, 0, 0, 0}};

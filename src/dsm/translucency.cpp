@@ -40,6 +40,9 @@ CameraTranslucency::CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, co
     layers_ = vk::Buffer(alloc, 16 + 8 * capacity_, usage, false, "oit-kept-layers");  // kept <= stored nodes
     shadeArgs_ = vk::Buffer(alloc, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, false,
                             "oit-shade-args");
+    const size_t lights = std::max<size_t>(scene.scene().lights.size(), 1);
+    hairShadow_ = vk::Buffer(alloc, hair_ ? VkDeviceSize(lights) * hair_->pointCount() * 4 : 4,
+                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, false, "oit-hair-shadow");
 
     // Build set: the scene's draw set (0, 1 and the instances; set 1 its textures), the hair buffers
     // (3, 4), then nodes, normals, counters, the opaque depth, the depth buckets and the tails' sums
@@ -78,6 +81,13 @@ CameraTranslucency::CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, co
                                {uniform, storage, storage, storage, storage, sampled, uniform, storage, storage, storage,
                                 storage, storage, sampled, sampled, storage, storage, storage},
                                0);
+    if (hair_)  // the shade pass's bindings of lights, shadows and hair (0, 1, 6-16) and the points' order (17)
+        hairShadowKernel_ = vk::ComputeKernel(
+            ctx, "dsm/oit_hair_shadow.comp",
+            std::vector<vk::Binding>{{0, uniform}, {1, storage}, {6, uniform}, {7, storage}, {8, storage}, {9, storage},
+                                     {10, storage}, {11, storage}, {12, sampled}, {13, sampled}, {14, storage},
+                                     {15, storage}, {16, storage}, {17, storage}},
+            0);
     blend_ = vk::ComputeKernel(ctx, "dsm/oit_blend.comp",
                                {uniform, storage, storage, storage, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, sizeof(gpu::OitPush));
     // The shadow map's samplers as shadow.filter makes them (the border reads as lit).
@@ -186,6 +196,7 @@ void CameraTranslucency::addCompositeTo(FrameGraph& graph) {
                        layers = graph.import(layers_), args = graph.import(shadeArgs_);
     const gpu::OitPush push{{width_, height_, uint32_t(capacity_), bucketCount_}};
     const uint32_t groupsX = vk::divUp(width_, 8), groupsY = vk::divUp(height_, 8);
+    if (hair_) addHairShadowTo(graph);
     graph.pass("oit.sort")
         .pipeline(sort_.pipeline)
         .storageBuffer(0, heads, Use::StorageWrite)
@@ -206,27 +217,16 @@ void CameraTranslucency::addCompositeTo(FrameGraph& graph) {
             args_.pipeline.push(c.cmd, uint32_t(64));  // oit_shade.comp's workgroup
             vkCmdDispatch(c.cmd, 1, 1, 1);
         });
-    graph.pass("oit.shade")
-        .pipeline(shade_.pipeline)
+    PassBuilder shade = graph.pass("oit.shade");
+    shade.pipeline(shade_.pipeline)
         .use(args, Use::IndirectArgs)
-        .uniform(0, graph.buffer("frame"))
-        .storageBuffer(1, graph.buffer("lights"))
         .storageBuffer(2, layers, Use::StorageRead)
         .storageBuffer(3, nodes, Use::StorageWrite)
         .storageBuffer(4, normals, Use::StorageRead)
         .sampled(5, graph.image("gi.irradiance"), nearest_.handle())
-        .uniform(6, graph.buffer("shadow.params"))
-        .storageBuffer(7, graph.buffer("shadow.layers"))
-        .storageBuffer(8, graph.buffer("dsm.lights"))
-        .storageBuffer(9, graph.buffer("dsm.heads"))
-        .storageBuffer(10, graph.buffer("dsm.nodes"))
-        .storageBuffer(11, graph.buffer("dsm.side"))
-        .sampled(12, graph.image("shadow.map"), border_.handle())
-        .sampled(13, graph.image("shadow.moments"), moments_.handle())
-        .storageBuffer(14, graph.buffer("shadow.lights"))
-        .storageBuffer(15, graph.buffer("dsm.strands"))
-        .storageBuffer(16, hair_ ? graph.import(hair_->points()) : heads)  // no hair: never read
-        .record([args](PassContext& c) { vkCmdDispatchIndirect(c.cmd, c.buffer(args).handle(), 0); });
+        .storageBuffer(15, graph.import(hairShadow_))
+        .storageBuffer(16, hair_ ? graph.import(hair_->points()) : heads);  // no hair: never read
+    declareShadows(shade).record([args](PassContext& c) { vkCmdDispatchIndirect(c.cmd, c.buffer(args).handle(), 0); });
     graph.pass("oit.blend")
         .pipeline(blend_.pipeline)
         .uniform(0, graph.buffer("frame"))
@@ -238,6 +238,33 @@ void CameraTranslucency::addCompositeTo(FrameGraph& graph) {
             blend_.pipeline.push(c.cmd, push);
             vkCmdDispatch(c.cmd, groupsX, groupsY, 1);
         });
+}
+
+// Bindings 0, 1 and 6-14 of oit.shade and oit.hair-shadow: the frame, the lights, their shadow maps
+// and deep shadow maps.
+PassBuilder& CameraTranslucency::declareShadows(PassBuilder& pass) const {
+    FrameGraph& graph = pass.graph();
+    return pass.uniform(0, graph.buffer("frame"))
+        .storageBuffer(1, graph.buffer("lights"))
+        .uniform(6, graph.buffer("shadow.params"))
+        .storageBuffer(7, graph.buffer("shadow.layers"))
+        .storageBuffer(8, graph.buffer("dsm.lights"))
+        .storageBuffer(9, graph.buffer("dsm.heads"))
+        .storageBuffer(10, graph.buffer("dsm.nodes"))
+        .storageBuffer(11, graph.buffer("dsm.side"))
+        .sampled(12, graph.image("shadow.map"), border_.handle())
+        .sampled(13, graph.image("shadow.moments"), moments_.handle())
+        .storageBuffer(14, graph.buffer("shadow.lights"));
+}
+
+// One invocation per drawn hair point, in their Morton order.
+void CameraTranslucency::addHairShadowTo(FrameGraph& graph) {
+    PassBuilder pass = graph.pass("oit.hair-shadow");
+    pass.pipeline(hairShadowKernel_.pipeline)
+        .storageBuffer(15, graph.import(hairShadow_), Use::StorageWrite)
+        .storageBuffer(16, graph.import(hair_->points()))
+        .storageBuffer(17, graph.import(hair_->spatialPoints()));
+    declareShadows(pass).record([this](PassContext& c) { hair_->dispatchDrawnPoints(c.cmd); });
 }
 
 OitFrameStats CameraTranslucency::readStats(vk::CommandContext& cmd) const {

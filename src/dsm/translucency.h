@@ -8,8 +8,9 @@
 // Frame: oit.clear -> oit.count (raster; hair in compute, oit.count.hair, with `computeHair`: see
 // dsm/ribbon_raster.glsl; each fragment counted in its pixel's depth bucket) -> oit.offsets (per
 // pixel: a run for the buckets up to the cap's) -> oit.build (.hair; the same passes again, the kept
-// buckets' fragments stored in the runs) -> ... lighting ... -> oit.sort (per pixel: its nearest layers) ->
-// oit.shade (per kept layer: its light) -> oit.blend (per pixel: front to back over "hdr").
+// buckets' fragments stored in the runs) -> ... lighting ... -> oit.hair-shadow (per hair point: the
+// shadow of each light with a DSM) -> oit.sort (per pixel: its nearest layers) -> oit.shade (per kept
+// layer: its light) -> oit.blend (per pixel: front to back over "hdr").
 #pragma once
 #include <array>
 #include <string>
@@ -42,6 +43,8 @@ public:
     // oit.sort, oit.shade and oit.blend (after lighting, before the tone mapper).
     void addCompositeTo(FrameGraph& graph);
     OitFrameStats readStats(vk::CommandContext& cmd) const;
+    // Per scene light and hair point (HairGpu::points): the shadow of each light with a DSM there.
+    const vk::Buffer& hairShadow() const { return hairShadow_; }
 
     // 100k strands of the hair scene make 29.5M camera fragments at 1080p (14 per pixel); 8 per pixel
     // dropped 44% of them on the H100. Capped by what one storage buffer addresses (lavapipe: 8.4M).
@@ -50,6 +53,8 @@ public:
 
 private:
     void addBuildPasses(FrameGraph& graph, const gpu::HairDrawPush& push, const std::string& name);
+    void addHairShadowTo(FrameGraph& graph);
+    PassBuilder& declareShadows(PassBuilder& pass) const;
     void recordBuild(VkCommandBuffer cmd, const gpu::HairDrawPush& cameraPush) const;
     gpu::HairDrawPush cameraPush(const RibbonView& camera, const glm::mat4& viewProj, BuildStep step) const;
     PassBuilder& declareLists(PassBuilder& pass) const;
@@ -64,10 +69,11 @@ private:
     vk::Buffer heads_, nodes_, normals_, stats_;
     vk::Buffer buckets_, tails_;  // per pixel: fragments per depth bucket, and the sum of -log(1 - alpha)
     vk::Buffer layers_, shadeArgs_;  // the kept layers (node, pixel) in pixel order, and their dispatch
+    vk::Buffer hairShadow_;          // hairShadow() (4 bytes without hair)
     std::array<BufferHandle, 5> lists_;  // this frame's nodes, normals, stats, buckets, tails (addBuildTo)
     vk::DescriptorLayout buildLayout_;
     vk::Pipeline hairPipeline_, meshPipeline_;  // the raster's (hairPipeline_ without computeHair)
-    vk::ComputeKernel hairKernel_, offsets_, sort_, args_, shade_, blend_;
+    vk::ComputeKernel hairKernel_, offsets_, sort_, args_, shade_, blend_, hairShadowKernel_;
     vk::Sampler nearest_, border_, moments_;
 };
 
