@@ -130,6 +130,54 @@ TEST_F(TranslucencyTest, RandomOrderLayersEqualTheOverOperator) {
     }
 }
 
+// Pixels whose runs hold thousands of fragments: 2100 small layers within 0.05 of one another near
+// the camera, all in the nearest depth bucket and so all stored, in a shuffled order, each its own
+// colour and alpha. The 32 nearest must be composited exactly in order and the rest merged behind
+// them (their combined alpha, the 32nd's radiance), as in a run of a few layers.
+TEST_F(TranslucencyTest, LongRunsKeepTheNearestInOrder) {
+    constexpr uint32_t k = 2100;
+    std::mt19937 rng(11);
+    std::uniform_int_distribution<int> sixteenth(1, 15);
+    std::vector<Layer> layers(k);
+    for (Layer& l : layers)
+        l.albedo = glm::vec3(sixteenth(rng), sixteenth(rng), sixteenth(rng)) / 16.0f, l.alpha = sixteenth(rng) / 16.0f;
+    std::vector<size_t> order(k);
+    std::iota(order.begin(), order.end(), size_t(0));
+    std::shuffle(order.begin(), order.end(), rng);
+    Scene s;
+    s.name = "oit-long-run";
+    for (size_t j : order)  // layer j at distance 1.5 + 0.05 j / k from the eye: j = 0 nearest
+        addQuad(s, {-0.02f, -0.02f, 8.5f - 0.05f * float(j) / float(k)}, {0.04f, 0, 0}, {0, 0.04f, 0},
+                addBlend(s, layers[j].albedo, layers[j].alpha));
+    addQuad(s, {-3.0f, -3.0f, 0.0f}, {6, 0, 0}, {0, 6, 0}, addMaterial(s, glm::vec3(0.5f, 0.25f, 0.75f)));
+    s.lights.push_back(sun({0, 0, -1}, 3.14159265f, false));
+    s.computeBounds();
+    const FloatImage img = renderWith(s, {});
+
+    glm::dvec3 expected(0.0);
+    double t = 1.0;
+    for (uint32_t j = 0; j < OIT_MAX_LIST; ++j) {
+        expected += t * double(layers[j].alpha) * glm::dvec3(layers[j].albedo);
+        t *= 1.0 - double(layers[j].alpha);
+    }
+    double tail = 1.0;  // the rest: about (1 - 1/2)^2068 on average, no light of the wall left
+    for (uint32_t j = OIT_MAX_LIST; j < k; ++j) tail *= 1.0 - double(layers[j].alpha);
+    expected += t * (1.0 - tail) * glm::dvec3(layers[OIT_MAX_LIST - 1].albedo);
+    double worst = 0.0;
+    for (uint32_t y = kH / 2 - 1; y <= kH / 2; ++y)
+        for (uint32_t x = kW / 2 - 1; x <= kW / 2; ++x)
+            for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(double(img.at(x, y, c)) - expected[c]));
+    const uint64_t stored = stats_.fragments - stats_.leftOut;
+    std::printf("[oit long run] %u layers: expected (%.5f %.5f %.5f), max error %.2e over the 4 centre pixels; %llu "
+                "fragments, %llu stored, longest list %u\n",
+                k, expected.x, expected.y, expected.z, worst, (unsigned long long)stats_.fragments,
+                (unsigned long long)stored, stats_.longest);
+    EXPECT_EQ(stats_.overflow, 0u);
+    EXPECT_EQ(stats_.longest, k);
+    EXPECT_GE(stored, 4u * k);  // the centre pixels' whole runs were stored
+    EXPECT_LT(worst, 1e-3);
+}
+
 // A 2 x 2 quad of alpha 0.5 at z = 1 over a wall at z = 0, a sun at 36.9 degrees (n.l = 0.8) whose
 // deep shadow map takes the quad: through the quad (left, away from its shadow, which falls to the
 // right) the EXR holds 0.5 quad + 0.5 wall (the lit wall as the opaque image holds it); the wall in

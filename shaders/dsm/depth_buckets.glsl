@@ -12,6 +12,15 @@ uint depthBucket(float depth, vec4 buckets) {
     return uint(clamp((depth - buckets.x) * buckets.y, 0.0, buckets.z - 1.0));
 }
 
+// The same slices over the cell's own part of the range, in front of `far` (the camera's pixel: its
+// opaque surface, behind which no fragment is kept): over a pixel whose surface lies within the
+// casters' depths the buckets are finer, and fewer fragments beyond the cap's bucket are stored.
+uint depthBucketBefore(float depth, vec4 buckets, float far) {
+    float span = min(buckets.z / buckets.y, far - buckets.x);
+    return span > 0.0 ? uint(clamp((depth - buckets.x) / span * buckets.z, 0.0, buckets.z - 1.0))
+                      : depthBucket(depth, buckets);
+}
+
 // How many of the first buckets (counts[0, perTexel)) to keep for a cap of `maxList`; `entries`
 // receives the fragments they hold, `count` all the fragments.
 uint bucketsKept(uint counts[DSM_MAX_BUCKETS], uint perTexel, uint maxList, out uint entries, out uint count) {

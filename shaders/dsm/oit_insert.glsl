@@ -22,10 +22,11 @@ void oitInsert(ivec2 pixel, float depth, vec3 albedo, float alpha, vec3 normal, 
     // join (dsm/hair.vert) non-finite interpolants (one pixel of the hair at 1280x720).
     if (!(alpha > 0.0)) return;
     // Behind (or on) the opaque surface: hidden (a coplanar translucent surface loses to the opaque one).
-    if (depth >= texelFetch(opaqueDepth, pixel, 0).r) return;
+    float opaque = texelFetch(opaqueDepth, pixel, 0).r;
+    if (depth >= opaque) return;
     alpha = min(alpha, 1.0);
     uint p = uint(pixel.y) * draw.ids.z + uint(pixel.x);
-    uint slot = p * uint(draw.buckets.z) + depthBucket(depth, draw.buckets);
+    uint slot = p * uint(draw.buckets.z) + depthBucketBefore(depth, draw.buckets, opaque);
     if (draw.buckets.w < 0.5) {  // the first step: count
         // The alpha the node will hold (a half), clamped so that alpha 1 stays finite: the composite
         // takes the kept layers' share out of this sum (oit_blend.comp).

@@ -293,8 +293,9 @@ struct ShadowDrawPush {
 #define DSM_HEAD_UINTS 2
 // The build counts a texel's fragments per depth bucket and keeps only the buckets up to the list
 // cap's (dsm/depth_buckets.glsl). A bucket's place is DSM_CULLED or above when it is left out (or
-// found no room): the build's second step adds to it and stores nothing.
-#define DSM_MAX_BUCKETS 8
+// found no room): the build's second step adds to it and stores nothing. At most DSM_MAX_BUCKETS a
+// cell (the DSM takes DsmResources::kBuckets, the camera CameraTranslucency::kBuckets).
+#define DSM_MAX_BUCKETS 16
 #define DSM_CULLED 0x80000000u
 #define OIT_HEADER_UINTS 4
 // A camera node's z: a hair fragment's segment (the index of its first point among the hair points),

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "app/option_checks.h"
+#include "dsm/dsm_resources.h"
 #include "lpv/lpv.h"
 #include "raster/raster_mode.h"
 #include "render/scene_gpu.h"
@@ -188,7 +189,7 @@ std::vector<Demand> frameDemands(const RenderSettings& s, const Scene& scene, co
         // Separate buffers, the buckets as many as fit one (dsm_resources.cpp): memory, not a descriptor's range.
         d.push_back({s.dsm.resolution ? "--dsm-res" : "--shadow-res", res, 16,
                      "the deep-shadow-map work list and depth buckets (one light)",
-                     [](uint64_t r) { return r * r * 4 * (DSM_HEAD_UINTS + DSM_MAX_BUCKETS); }});
+                     [](uint64_t r) { return r * r * 4 * (DSM_HEAD_UINTS + DsmResources::kBuckets); }});
     }
     const uint64_t strands = scene.strands.size(), points = scene.strandPoints.size() + 2 * strands;
     if (strands)

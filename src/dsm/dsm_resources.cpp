@@ -14,8 +14,9 @@ constexpr double kMiB = 1024.0 * 1024.0;
 void checkFits(vk::Context& ctx, uint64_t capacity, VkDeviceSize headBytes) {
     const vk::DeviceLimits& lim = ctx.limits();
     const VkDeviceSize nodeBytes = VkDeviceSize(capacity) * 16;
-    // Heads, work list and at most DSM_MAX_BUCKETS / DSM_HEAD_UINTS times the heads in bucket counts.
-    const VkDeviceSize total = VkDeviceSize(capacity) * DsmResources::kNodeBytes + (2 + DSM_MAX_BUCKETS / DSM_HEAD_UINTS) * headBytes;
+    // Heads, work list and at most kBuckets / DSM_HEAD_UINTS times the heads in bucket counts.
+    const VkDeviceSize total =
+        VkDeviceSize(capacity) * DsmResources::kNodeBytes + (2 + DsmResources::kBuckets / DSM_HEAD_UINTS) * headBytes;
     struct Check {
         VkDeviceSize need, limit;
         const char* what;
@@ -70,7 +71,7 @@ DsmResources::DsmResources(vk::Allocator& alloc, const DsmSettings& settings, ui
     stats = vk::Buffer(alloc, sizeof(gpu::DsmStats), cleared, false, "dsm-stats");
     work = vk::Buffer(alloc, opacityMaps || layers.empty() ? 16 : 16 + headBytes, cleared, false, "dsm-work");
     runs = vk::Buffer(alloc, opacityMaps ? 8 : capacity * 8, cleared, false, "dsm-runs");  // DOM: unused
-    bucketCount = depthBucketCount(alloc.context(), texels);
+    bucketCount = depthBucketCount(alloc.context(), texels, kBuckets);
     buckets = vk::Buffer(alloc, opacityMaps || layers.empty() ? 4 : texels * 4 * bucketCount, cleared, false,
                          "dsm-buckets");
 

@@ -41,12 +41,15 @@ struct DsmResources {
     vk::Buffer side;        // uint per node: search key (depth bits) or upper link
     vk::Buffer runs;        // uvec2 per node: the build's (depth, alpha), grouped by texel (its second step)
     vk::Buffer buckets;     // bucketCount uints per texel and layer: node counts per depth bucket, then places
-    uint32_t bucketCount = 1;  // DSM_MAX_BUCKETS, or fewer where one buffer of them would not fit the device
+    uint32_t bucketCount = 1;  // kBuckets, or fewer where one buffer of them would not fit the device
     vk::Buffer stats;       // DsmStats
     vk::Buffer work;        // the texels with nodes, for the resolve: uvec4 (x = count), then per texel a uvec2
                             // (texel, its sorted list's place in the pool)
 
     static constexpr VkDeviceSize kNodeBytes = 16 + 4 + 8;  // node + side + run entry
+    // Depth buckets per texel: 16 or 4 made the 100k-strand frame slower on the H100 (12.40 and 12.42
+    // ms against 12.24, session 26).
+    static constexpr uint32_t kBuckets = 8;
     size_t lightCount_ = 1;
 
     // Allocates every buffer and writes the tables of every slot. Throws vk::VulkanError with a clear message

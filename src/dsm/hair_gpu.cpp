@@ -72,8 +72,8 @@ glm::vec4 depthBuckets(glm::vec2 range, uint32_t count, BuildStep step) {
             step == BuildStep::Count ? 0.0f : 1.0f};
 }
 
-uint32_t depthBucketCount(vk::Context& ctx, uint64_t cells) {
-    uint32_t count = DSM_MAX_BUCKETS;
+uint32_t depthBucketCount(vk::Context& ctx, uint64_t cells, uint32_t wanted) {
+    uint32_t count = std::min<uint32_t>(wanted, DSM_MAX_BUCKETS);
     while (count > 1 && cells * 4 * count > ctx.limits().storageBufferRange) count /= 2;
     return count;
 }

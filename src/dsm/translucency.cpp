@@ -34,7 +34,7 @@ CameraTranslucency::CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, co
     nodes_ = vk::Buffer(alloc, capacity_ * 16, usage, false, "oit-nodes");
     normals_ = vk::Buffer(alloc, capacity_ * 4, usage, false, "oit-normals");
     stats_ = vk::Buffer(alloc, sizeof(gpu::OitStats), usage, false, "oit-stats");
-    bucketCount_ = depthBucketCount(ctx, pixels);
+    bucketCount_ = depthBucketCount(ctx, pixels, kBuckets);
     buckets_ = vk::Buffer(alloc, pixels * 4 * bucketCount_, usage, false, "oit-buckets");
     tails_ = vk::Buffer(alloc, pixels * 8, usage, false, "oit-tails");
     layers_ = vk::Buffer(alloc, 16 + 8 * capacity_, usage, false, "oit-kept-layers");  // kept <= stored nodes
