@@ -20,6 +20,7 @@ layout(set = 0, binding = 6, std430) readonly buffer Layers { GpuRsmLayer rsmLay
 layout(set = 0, binding = 7, std430) readonly buffer Samples { vec4 samples[]; };  // two per sample (rsm_gather.cpp)
 layout(set = 0, binding = 8, rgba32f) uniform writeonly image2D outIrradiance;
 layout(set = 0, binding = 9, std430) readonly buffer PixelList { uvec4 header; uvec2 pixels[]; } list;
+layout(set = 0, binding = 11) uniform usampler2DArray rsmVpls;  // depth, normal and flux in one texel
 layout(push_constant) uniform Push { RsmPush pc; };
 
 #include "rsm/vpl.glsl"

@@ -21,6 +21,9 @@ layout(set = 0, binding = 5) uniform usampler2DArray ids;
 layout(set = 0, binding = 6, r32f) uniform writeonly image2DArray outDepth;
 layout(set = 0, binding = 7, rg16_snorm) uniform writeonly image2DArray outNormal;
 layout(set = 0, binding = 8, rgba16f) uniform writeonly image2DArray outFlux;
+// The same texel packed, for the gather's one fetch per VPL (rsm/vpl.glsl): depth bits, the
+// normal's octahedral snorm16 pair, the flux's halves (r, g), (b, 0).
+layout(set = 0, binding = 9, rgba32ui) uniform writeonly uimage2DArray outVpls;
 layout(push_constant) uniform Push { RsmResolvePush pc; };
 
 void main() {
@@ -33,6 +36,7 @@ void main() {
         imageStore(outDepth, texel, vec4(1.0));
         imageStore(outNormal, texel, vec4(0.0));
         imageStore(outFlux, texel, vec4(0.0));
+        imageStore(outVpls, texel, uvec4(floatBitsToUint(1.0), 0u, 0u, 0u));
         return;
     }
     const GpuRsmLayer layer = rsmLayers[texel.z];
@@ -51,7 +55,12 @@ void main() {
     }
     vec3 n = s.normal;
     if (dot(n, l) < 0.0) n = -n;  // the side the light sees (two-sided surfaces)
-    imageStore(outDepth, texel, vec4(clip.z / clip.w));
-    imageStore(outNormal, texel, vec4(octEncode(n), 0.0, 0.0));
-    imageStore(outFlux, texel, vec4(surfaceBaseColor(s).rgb * e * area, 1.0));
+    // Rounded once, as packed: the separate images then hold the packed texel's values exactly.
+    const vec3 flux = surfaceBaseColor(s).rgb * e * area;
+    const uvec4 vpl = uvec4(floatBitsToUint(clip.z / clip.w), packSnorm2x16(octEncode(n)), packHalf2x16(flux.rg),
+                            packHalf2x16(vec2(flux.b, 0.0)));
+    imageStore(outDepth, texel, vec4(uintBitsToFloat(vpl.x)));
+    imageStore(outNormal, texel, vec4(unpackSnorm2x16(vpl.y), 0.0, 0.0));
+    imageStore(outFlux, texel, vec4(unpackHalf2x16(vpl.z), unpackHalf2x16(vpl.w).x, 1.0));
+    imageStore(outVpls, texel, vpl);
 }

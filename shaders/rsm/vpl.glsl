@@ -1,5 +1,6 @@
 // Virtual point lights read from the RSM arrays, and their irradiance at a receiver.
-// Declared by the includer: rsmDepth, rsmNormal, rsmFlux (sampler2DArray), rsmLayers[].
+// Declared by the includer: rsmDepth, rsmNormal, rsmFlux (sampler2DArray), rsmVpls (the three
+// packed: usampler2DArray), rsmLayers[].
 #include "shared/octahedral.glsl"
 
 // The world position of the VPL of texel `t` of layer `layer`, whose RSM depth is `depth` (< 1).
@@ -16,13 +17,17 @@ vec3 vplPosition(ivec2 t, uint layer, float depth) {
 // Kajiya-Kay diffuse term (dsm/kajiya_kay.glsl) of the light arriving from w.
 // Written out in one function: a Vpl struct filled by a fetch function and read by a second cost the
 // gather 0.17 ms at 1080p on the H100 (cornell; 0.46 -> 0.63 ms low-res).
+// One fetch of the packed texel (rsm/resolve.comp): the gather is bound by the L2's random reads, and
+// three fetches (depth, normal, flux) made the H100's low-res gather 0.43 ms at 1080p on cornell
+// against 0.37 (hair 0.40 against 0.29, VC 0.48 against 0.43).
 vec3 vplIrradiance(ivec2 t, uint layer, vec3 x, vec3 n, bool hair) {
-    float depth = texelFetch(rsmDepth, ivec3(t, layer), 0).r;
+    uvec4 vpl = texelFetch(rsmVpls, ivec3(t, layer), 0);
+    float depth = uintBitsToFloat(vpl.x);
     if (depth >= 1.0) return vec3(0.0);  // no surface in this texel
     GpuRsmLayer L = rsmLayers[layer];
     vec3 xp = vplPosition(t, layer, depth);
-    vec3 np = octDecode(texelFetch(rsmNormal, ivec3(t, layer), 0).xy);
-    vec3 phi = texelFetch(rsmFlux, ivec3(t, layer), 0).rgb;
+    vec3 np = octDecode(unpackSnorm2x16(vpl.y));
+    vec3 phi = vec3(unpackHalf2x16(vpl.z), unpackHalf2x16(vpl.w).x);
     vec3 v = x - xp;
     float d2 = dot(v, v);
     float footprint = L.params.x * L.params.x;

@@ -66,7 +66,7 @@ RsmGather::RsmGather(vk::Allocator& alloc, vk::CommandContext& cmd, uint32_t wid
                          : settings.radii == RsmRadii::Shifted        ? "rsm/gather_shifted.comp"
                                                                       : "rsm/gather.comp";
     gather_ = vk::ComputeKernel(ctx, gather,
-                                {ubo, tex, tex, tex, tex, tex, ssbo, ssbo, img, ssbo, ssbo},
+                                {ubo, tex, tex, tex, tex, tex, ssbo, ssbo, img, ssbo, ssbo, tex},
                                 sizeof(gpu::RsmPush));
     interpolate_ = vk::ComputeKernel(ctx, "rsm/interpolate.comp", {ubo, tex, tex, tex, img, ssbo, ssbo},
                                      sizeof(gpu::RsmPush));
@@ -150,7 +150,8 @@ void RsmGather::addGather(FrameGraph& graph, const char* name, uint32_t mode, Im
         .storageBuffer(7, graph.import(samples_.current()))
         .storageImage(8, out)
         .storageBuffer(9, graph.import(pixelList_))
-        .storageBuffer(10, graph.hasBuffer("occupancy") ? graph.buffer("occupancy") : graph.import(noOccupancy_));
+        .storageBuffer(10, graph.hasBuffer("occupancy") ? graph.buffer("occupancy") : graph.import(noOccupancy_))
+        .sampled(11, graph.image("rsm.vpls"), point);
     const BufferHandle args = mode == RSM_GATHER_LIST ? graph.import(dispatchArgs_) : BufferHandle{};
     if (args) pass.use(args, Use::IndirectArgs);
     const gpu::RsmPush pc = constants(mode, layers);

@@ -11,7 +11,7 @@ RsmPass::RsmPass(vk::Allocator& alloc, SceneGpu& scene, const RsmSettings& setti
     bindings.push_back({3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});  // lights
     bindings.push_back({4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});  // RSM layer table
     bindings.push_back({5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});  // shadow.ids
-    for (uint32_t k : {6u, 7u, 8u}) bindings.push_back({k, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
+    for (uint32_t k : {6u, 7u, 8u, 9u}) bindings.push_back({k, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
     layout_ = vk::DescriptorLayout(ctx, bindings);
     pipeline_ = vk::Pipeline::compute(ctx, "rsm/resolve.comp", SceneGpu::drawLayouts(ctx, layout_.handle()), sizeof(gpu::RsmResolvePush));
     nearest_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
@@ -28,6 +28,7 @@ void RsmPass::setLayers(const std::vector<RsmLayerSource>& layers, uint32_t slot
         depth_ = vk::Image(alloc_, {VK_FORMAT_R32_SFLOAT, r, r, n, target, "rsm-depth", 1, true});
         normal_ = vk::Image(alloc_, {VK_FORMAT_R16G16_SNORM, r, r, n, target, "rsm-normal", 1, true});
         flux_ = vk::Image(alloc_, {VK_FORMAT_R16G16B16A16_SFLOAT, r, r, n, target, "rsm-flux", 1, true});
+        vpls_ = vk::Image(alloc_, {VK_FORMAT_R32G32B32A32_UINT, r, r, n, target, "rsm-vpls", 1, true});
         layerTable_ = vk::BufferRing(alloc_, sizeof(gpu::GpuRsmLayer) * n, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                      "rsm-layers");
     }
@@ -51,11 +52,13 @@ std::vector<uint32_t> RsmPass::shadowLayers() const {
 }
 
 void RsmPass::addTo(FrameGraph& graph) {
-    const ImageHandle depth = graph.import(depth_), normal = graph.import(normal_), flux = graph.import(flux_);
+    const ImageHandle depth = graph.import(depth_), normal = graph.import(normal_), flux = graph.import(flux_),
+                      vpls = graph.import(vpls_);
     const BufferHandle table = graph.import(layerTable_.current());
     graph.publish("rsm.depth", depth);
     graph.publish("rsm.normal", normal);
     graph.publish("rsm.flux", flux);
+    graph.publish("rsm.vpls", vpls);
     graph.publish("rsm.layers", table);
     if (sources_.empty()) return;
     PassBuilder pass = graph.pass("rsm.resolve");
@@ -67,9 +70,10 @@ void RsmPass::addTo(FrameGraph& graph) {
         .sampled(5, graph.image("shadow.ids"), nearest_.handle())
         .storageImage(6, depth)
         .storageImage(7, normal)
-        .storageImage(8, flux);
+        .storageImage(8, flux)
+        .storageImage(9, vpls);
     const uint32_t r = settings_.resolution;
-    pass.bytes(VkDeviceSize(r) * r * sources_.size() * (4 + 4 + 4 + 8));
+    pass.bytes(VkDeviceSize(r) * r * sources_.size() * (4 + 4 + 4 + 8 + 16));
     pass.record([this, r](PassContext& c) {
         pipeline_.push(c.cmd, gpu::RsmResolvePush{{r, idResolution_, 0, 0}});
         vkCmdDispatch(c.cmd, vk::divUp(r, 8), vk::divUp(r, 8), uint32_t(sources_.size()));

@@ -56,6 +56,7 @@ private:
     vk::Sampler nearest_;
     std::vector<RsmLayerSource> sources_;
     vk::Image depth_, normal_, flux_;
+    vk::Image vpls_;  // the three packed in one texel for the gather (rsm/resolve.comp)
     vk::BufferRing layerTable_;
 };
 
