@@ -5,7 +5,12 @@
 // slices); only the buckets up to the one whose count reaches the list cap are kept: every fragment
 // behind it has at least the cap's number of fragments in front, so none of it could be kept. Exact
 // for any range; the range only decides how much is left out. The includer declares `buckets` (a
-// uint per bucket of every cell: counts, then each kept bucket's place in its cell's run).
+// uint per bucket of every cell: counts, then each kept bucket's place in its cell's run) and
+// CELL_BUCKETS, the most buckets a cell has (DSM_BUCKETS or OIT_BUCKETS: the arrays' size; the
+// builds, which take no arrays, leave it at the larger).
+#ifndef CELL_BUCKETS
+#define CELL_BUCKETS OIT_BUCKETS
+#endif
 
 
 uint depthBucket(float depth, vec4 buckets) {
@@ -23,7 +28,7 @@ uint depthBucketBefore(float depth, vec4 buckets, float far) {
 
 // How many of the first buckets (counts[0, perTexel)) to keep for a cap of `maxList`; `entries`
 // receives the fragments they hold, `count` all the fragments.
-uint bucketsKept(uint counts[DSM_MAX_BUCKETS], uint perTexel, uint maxList, out uint entries, out uint count) {
+uint bucketsKept(uint counts[CELL_BUCKETS], uint perTexel, uint maxList, out uint entries, out uint count) {
     uint kept = 0u;
     entries = 0u;
     count = 0u;
@@ -38,13 +43,13 @@ uint bucketsKept(uint counts[DSM_MAX_BUCKETS], uint perTexel, uint maxList, out 
 }
 
 // Cell `cell`'s counts (zeros for a cell outside the map or image).
-void readBucketCounts(uint cell, uint perCell, bool inside, out uint counts[DSM_MAX_BUCKETS]) {
+void readBucketCounts(uint cell, uint perCell, bool inside, out uint counts[CELL_BUCKETS]) {
     for (uint b = 0u; b < perCell; ++b) counts[b] = inside ? buckets[cell * perCell + b] : 0u;
 }
 
 // Replaces cell `cell`'s counts by its buckets' places in its run from `start` on (the first `kept`,
 // when `listed`); the rest get DSM_CULLED, so that the build's second step stores nothing of them.
-void writeBucketPlaces(uint cell, uint perCell, uint counts[DSM_MAX_BUCKETS], uint kept, uint start, bool listed) {
+void writeBucketPlaces(uint cell, uint perCell, uint counts[CELL_BUCKETS], uint kept, uint start, bool listed) {
     for (uint b = 0u, at = start; b < perCell; at += counts[b], ++b)
         buckets[cell * perCell + b] = listed && b < kept ? at : DSM_CULLED;
 }

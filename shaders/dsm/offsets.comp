@@ -19,6 +19,7 @@ layout(set = 0, binding = 2, std430) buffer Work { uvec4 header; uint texels[]; 
 layout(set = 0, binding = 3, std430) buffer Buckets { uint buckets[]; };  // counts in, places out
 layout(push_constant) uniform Push { DsmPush pc; };
 
+#define CELL_BUCKETS DSM_BUCKETS
 #include "dsm/depth_buckets.glsl"
 
 shared uint groupEntries, groupAll, groupKept, groupLongest, groupLists, groupRun, groupWork;
@@ -30,7 +31,7 @@ void main() {
     uvec3 id = gl_GlobalInvocationID;
     bool inside = id.x < res && id.y < res;
     uint texel = (id.z * res + id.y) * res + id.x;
-    uint counts[DSM_MAX_BUCKETS];
+    uint counts[CELL_BUCKETS];
     readBucketCounts(texel, perTexel, inside, counts);
     uint count, entries;  // all the texel's fragments; those in the buckets it keeps
     uint kept = bucketsKept(counts, perTexel, maxList, entries, count);

@@ -15,6 +15,7 @@ layout(set = 0, binding = 1, std430) buffer Stats { OitStats stats; };
 layout(set = 0, binding = 2, std430) writeonly buffer Heads { uint heads[]; };
 layout(push_constant) uniform Push { OitPush pc; };
 
+#define CELL_BUCKETS OIT_BUCKETS
 #include "dsm/depth_buckets.glsl"
 
 shared uint groupAll, groupEntries, groupRun;
@@ -25,7 +26,7 @@ void main() {
     uvec2 pixel = gl_GlobalInvocationID.xy;
     const uint perPixel = pc.sizes.w, p = pixel.y * pc.sizes.x + pixel.x;
     const bool inside = all(lessThan(pixel, pc.sizes.xy));
-    uint counts[DSM_MAX_BUCKETS];
+    uint counts[CELL_BUCKETS];
     readBucketCounts(p, perPixel, inside, counts);
     uint entries, count;
     uint kept = bucketsKept(counts, perPixel, OIT_MAX_LIST, entries, count);

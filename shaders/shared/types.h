@@ -293,9 +293,12 @@ struct ShadowDrawPush {
 #define DSM_HEAD_UINTS 2
 // The build counts a texel's fragments per depth bucket and keeps only the buckets up to the list
 // cap's (dsm/depth_buckets.glsl). A bucket's place is DSM_CULLED or above when it is left out (or
-// found no room): the build's second step adds to it and stores nothing. At most DSM_MAX_BUCKETS a
-// cell (the DSM takes DsmResources::kBuckets, the camera CameraTranslucency::kBuckets).
-#define DSM_MAX_BUCKETS 16
+// found no room): the build's second step adds to it and stores nothing. Buckets per DSM texel and
+// per camera pixel (or fewer, where one buffer of them would not fit the device): 16 or 4 made the
+// 100k-strand frame slower for the DSM on the H100 (12.40 and 12.42 ms against 12.24, session 26);
+// 16 made it faster for the camera (9.41 -> 8.71 ms on an H200, session 27).
+#define DSM_BUCKETS 8
+#define OIT_BUCKETS 16
 #define DSM_CULLED 0x80000000u
 #define OIT_HEADER_UINTS 4
 // A camera node's z: a hair fragment's segment (the index of its first point among the hair points),
@@ -358,7 +361,7 @@ struct DsmStats {
 // Push constants of the resolve and link passes.
 struct DsmPush {
     uvec4 sizes;    // x = resolution, y = layer count, z = node capacity, w = max list length
-    uvec4 buckets;  // x = depth buckets per texel (DSM_MAX_BUCKETS or fewer), yzw unused
+    uvec4 buckets;  // x = depth buckets per texel (DSM_BUCKETS or fewer), yzw unused
 };
 
 // ---- Camera translucency: hair and alphaMode BLEND surfaces (src/dsm/translucency.*) ----

@@ -47,9 +47,7 @@ struct DsmResources {
                             // (texel, its sorted list's place in the pool)
 
     static constexpr VkDeviceSize kNodeBytes = 16 + 4 + 8;  // node + side + run entry
-    // Depth buckets per texel: 16 or 4 made the 100k-strand frame slower on the H100 (12.40 and 12.42
-    // ms against 12.24, session 26).
-    static constexpr uint32_t kBuckets = 8;
+    static constexpr uint32_t kBuckets = DSM_BUCKETS;  // depth buckets per texel
     size_t lightCount_ = 1;
 
     // Allocates every buffer and writes the tables of every slot. Throws vk::VulkanError with a clear message

@@ -73,7 +73,7 @@ glm::vec4 depthBuckets(glm::vec2 range, uint32_t count, BuildStep step) {
 }
 
 uint32_t depthBucketCount(vk::Context& ctx, uint64_t cells, uint32_t wanted) {
-    uint32_t count = std::min<uint32_t>(wanted, DSM_MAX_BUCKETS);
+    uint32_t count = wanted;
     while (count > 1 && cells * 4 * count > ctx.limits().storageBufferRange) count /= 2;
     return count;
 }

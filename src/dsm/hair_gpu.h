@@ -27,8 +27,8 @@ RibbonView lightRibbonView(const Light& light, const LightProjection& projection
 enum class BuildStep { Count, Store };
 // HairDrawPush.buckets: `count` depth buckets over the casters' depths [range.x, range.y], for `step`.
 glm::vec4 depthBuckets(glm::vec2 range, uint32_t count, BuildStep step);
-// How many depth buckets (`wanted` <= DSM_MAX_BUCKETS, or fewer where those would not fit one
-// storage buffer) `cells` texels or pixels get.
+// How many depth buckets (`wanted`, or fewer where those would not fit one storage buffer) `cells`
+// texels or pixels get.
 uint32_t depthBucketCount(vk::Context& ctx, uint64_t cells, uint32_t wanted);
 
 class HairGpu {

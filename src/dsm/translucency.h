@@ -50,8 +50,7 @@ public:
     // dropped 44% of them on the H100. Capped by what one storage buffer addresses (lavapipe: 8.4M).
     static constexpr uint32_t kNodesPerPixel = 16;
     static constexpr VkDeviceSize kNodeBytes = 16 + 4;  // node + normal
-    // Depth buckets per pixel (DSM_MAX_BUCKETS at most).
-    static constexpr uint32_t kBuckets = 16;
+    static constexpr uint32_t kBuckets = OIT_BUCKETS;  // depth buckets per pixel
 
 private:
     void addBuildPasses(FrameGraph& graph, const gpu::HairDrawPush& push, const std::string& name);
