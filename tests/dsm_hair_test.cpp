@@ -418,6 +418,8 @@ TEST(DsmCli, BadInputGivesOneErrorLine) {
         "render hair --aov transmittance -o " + out,
         "render hair --dsm-lights 3 --strands 10 --width 8 --height 8 -o " + out,
         "render hair --shadow dsm --dsm-filter 20 -o " + out,
+        // Six cube faces of 2048^2 need 1152 MiB of heads, work list and buckets: more than lavapipe's half.
+        "render hair --shadow dsm --light point,0.3,1,0.4,3 --dsm-res 2048 --strands 10 -o " + out,
     };
     for (const std::string& args : bad) {
         const Cli r = runCli(dir, args);
@@ -428,6 +430,19 @@ TEST(DsmCli, BadInputGivesOneErrorLine) {
 }
 
 // A pool far too small: the run succeeds, warns with the number of dropped fragments and reports.
+// A point light's DSM at the shadow maps' resolution (2048^2, six faces) would not fit lavapipe's
+// memory: taken by default, the resolution halves with one warning and the frame renders.
+TEST(DsmCli, DefaultResolutionHalvesWhereTheMapsDoNotFit) {
+    ScratchDir dir;
+    const Cli r = runCli(dir, "render hair --strands 200 --shadow dsm --light point,0.3,1,0.4,3 --width 64 --height 48 "
+                              "-o " + dir.file("hair.png"));
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.err.find("penumbra: warning: --shadow dsm: 6 deep shadow map(s) of 2048^2 would take 1152 MiB"),
+              std::string::npos) << r.err;
+    EXPECT_NE(r.out.find("dsm: 6 map(s) of 1024^2"), std::string::npos) << r.out;
+    EXPECT_TRUE(fs::exists(dir.file("hair.png")));
+}
+
 TEST(DsmCli, SmallPoolWarnsAndReports) {
     ScratchDir dir;
     const Cli r = runCli(dir, "render hair --strands 200 --shadow pcf,dsm --dsm-nodes 1000 --width 64 --height 48 "

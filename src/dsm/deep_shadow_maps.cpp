@@ -56,8 +56,22 @@ DeepShadowMaps::DeepShadowMaps(vk::Allocator& alloc, SceneGpu& scene, const Hair
     : settings_(settings) {
     if (settings.maxList < 1 || settings.maxList > DSM_MAX_LIST_CAP)
         throw vk::VulkanError(fmt::format("--dsm-max-list {}: must be in 1..{}", settings.maxList, DSM_MAX_LIST_CAP));
-    const uint32_t res = settings.resolution ? settings.resolution : shadowResolution;
+    uint32_t res = settings.resolution ? settings.resolution : shadowResolution;
     std::vector<DsmLayer> layers = chooseLayers(lights, scene.scene().bounds, settings, res);
+    // The shadow maps' resolution, taken by default, halves until the maps' fixed part (heads, work
+    // list, depth buckets: 48 bytes a texel) takes at most a quarter of the device's memory: a point
+    // light's six faces of 2048^2 need 1.2 GiB, more than lavapipe's half (1 GiB).
+    const uint64_t quarter = alloc.context().limits().deviceMemory / 4;
+    const uint32_t wanted = res;
+    auto fixed = [&](uint32_t r) { return DsmResources::fixedBytes(uint64_t(r) * r * layers.size(), settings.opacityMaps); };
+    while (!settings.resolution && res > 256 && fixed(res) > quarter) res /= 2;
+    if (res != wanted) {
+        warnings.push_back(fmt::format("--shadow {}: {} deep shadow map(s) of {}^2 would take {:.0f} MiB of the "
+                                       "device's {:.0f} MiB before any node; {}^2 instead (--dsm-res sets it)",
+                                       settings.opacityMaps ? "dom" : "dsm", layers.size(), wanted, mib(fixed(wanted)),
+                                       mib(alloc.context().limits().deviceMemory), res));
+        layers = chooseLayers(lights, scene.scene().bounds, settings, res);
+    }
     if (settings.enabled && layers.empty())
         warnings.push_back("--shadow dsm: no light casts shadows; no deep shadow map");
     const bool blended = std::any_of(scene.scene().materials.begin(), scene.scene().materials.end(),

@@ -1,6 +1,7 @@
 #include "dsm/dsm_resources.h"
 
 #include <algorithm>
+#include <string>
 
 #include <fmt/format.h>
 
@@ -9,32 +10,37 @@ namespace {
 
 constexpr double kMiB = 1024.0 * 1024.0;
 
-// The pool must be addressable by one storage-buffer descriptor, allocatable in one piece, and leave
-// the device most of its memory: refuse it with the numbers rather than fail inside the driver.
-void checkFits(vk::Context& ctx, uint64_t capacity, VkDeviceSize headBytes) {
+// The maps' fixed part (`fixed`: heads, work list, depth buckets) must leave half of the device's
+// memory to spare, and the pool must be addressable by one storage-buffer descriptor, allocatable in
+// one piece, and fit what the fixed part leaves of that half: refuse either with the numbers rather
+// than fail inside the driver.
+void checkFits(vk::Context& ctx, uint64_t capacity, VkDeviceSize fixed, const DsmSettings& settings, uint32_t res,
+               size_t maps) {
     const vk::DeviceLimits& lim = ctx.limits();
-    const VkDeviceSize nodeBytes = VkDeviceSize(capacity) * 16;
-    // Heads, work list and at most kBuckets / DSM_HEAD_UINTS times the heads in bucket counts.
-    const VkDeviceSize total =
-        VkDeviceSize(capacity) * DsmResources::kNodeBytes + (2 + DsmResources::kBuckets / DSM_HEAD_UINTS) * headBytes;
+    if (fixed > lim.deviceMemory / 2)
+        throw vk::VulkanError(fmt::format("--dsm-res {}: {} deep shadow map(s) need {:.0f} MiB of list heads, work list "
+                                          "and depth buckets, more than half of the device's memory ({:.0f} MiB)",
+                                          res, maps, double(fixed) / kMiB, double(lim.deviceMemory / 2) / kMiB));
+    const VkDeviceSize nodeBytes = VkDeviceSize(capacity) * 16, total = VkDeviceSize(capacity) * DsmResources::kNodeBytes + fixed;
     struct Check {
         VkDeviceSize need, limit;
         const char* what;
     };
+    const std::string pool = settings.poolNodes ? fmt::format("--dsm-nodes {}", capacity) : "--dsm-res " + std::to_string(res);
     for (const Check& c : {Check{nodeBytes, lim.storageBufferRange, "the device's storage-buffer range"},
                            Check{nodeBytes, lim.allocationSize, "the device's largest allocation"},
                            Check{total, lim.deviceMemory / 2, "half of the device's memory"}})
         if (c.need > c.limit)
-            throw vk::VulkanError(fmt::format("--dsm-nodes {}: the deep-shadow-map node pool needs {:.0f} MiB, more "
-                                              "than {} ({:.0f} MiB)",
-                                              capacity, double(c.need) / kMiB, c.what, double(c.limit) / kMiB));
+            throw vk::VulkanError(fmt::format("{}: the deep-shadow-map node pool and lists need {:.0f} MiB, more than {} "
+                                              "({:.0f} MiB)",
+                                              pool, double(c.need) / kMiB, c.what, double(c.limit) / kMiB));
 }
 
-// The largest pool the device takes (the automatic size is clamped to it).
-uint64_t maxNodes(vk::Context& ctx, VkDeviceSize headBytes) {
+// The largest pool the device takes beside the maps' fixed part (the automatic size is clamped to it).
+uint64_t maxNodes(vk::Context& ctx, VkDeviceSize fixed) {
     const vk::DeviceLimits& lim = ctx.limits();
     const uint64_t half = lim.deviceMemory / 2;
-    const uint64_t forHeap = half > headBytes ? (half - headBytes) / DsmResources::kNodeBytes : 0;
+    const uint64_t forHeap = half > fixed ? (half - fixed) / DsmResources::kNodeBytes : 0;
     return std::max<uint64_t>(1, std::min({lim.storageBufferRange / 16, lim.allocationSize / 16, forHeap}));
 }
 
@@ -59,12 +65,13 @@ DsmResources::DsmResources(vk::Allocator& alloc, const DsmSettings& settings, ui
     const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     const VkBufferUsageFlags cleared = storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
     const uint64_t texels = uint64_t(res) * res * std::max<size_t>(layers.size(), 1);
+    const VkDeviceSize fixed = layers.empty() ? 0 : fixedBytes(texels, opacityMaps);
     const uint64_t automatic = std::min({texels * DsmSettings::kAutoNodesPerTexel, DsmSettings::kMaxPoolNodes - 1,
-                                         maxNodes(alloc.context(), texels * 4 * DSM_HEAD_UINTS)});
+                                         maxNodes(alloc.context(), fixed)});
     capacity = layers.empty() ? 1 : opacityMaps ? texels : settings.poolNodes ? settings.poolNodes : automatic;
     deviceLimited = !layers.empty() && !opacityMaps && !settings.poolNodes && automatic < texels * DsmSettings::kAutoNodesPerTexel;
     const uint64_t headBytes = texels * 4 * (opacityMaps ? 1 : DSM_HEAD_UINTS);
-    if (!layers.empty()) checkFits(alloc.context(), capacity, headBytes);  // an explicit --dsm-nodes may not fit
+    if (!layers.empty()) checkFits(alloc.context(), capacity, fixed, settings, res, layers.size());  // --dsm-res, --dsm-nodes
     heads = vk::Buffer(alloc, layers.empty() ? 4 : headBytes, cleared, false, "dsm-heads");
     nodes = vk::Buffer(alloc, capacity * 16, cleared, false, "dsm-nodes");
     side = vk::Buffer(alloc, opacityMaps ? 4 : capacity * 4, cleared, false, "dsm-side");  // DOM: unused

@@ -48,6 +48,11 @@ struct DsmResources {
 
     static constexpr VkDeviceSize kNodeBytes = 16 + 4 + 8;  // node + side + run entry
     static constexpr uint32_t kBuckets = DSM_BUCKETS;  // depth buckets per texel
+    // The maps' memory besides the node pool for `texels` texels: heads, work list and depth buckets
+    // (48 bytes a texel), or a deep opacity map's first depths (4).
+    static VkDeviceSize fixedBytes(uint64_t texels, bool opacityMaps) {
+        return texels * (opacityMaps ? 4 : 4 * DSM_HEAD_UINTS * (2 + kBuckets / DSM_HEAD_UINTS));
+    }
     size_t lightCount_ = 1;
 
     // Allocates every buffer and writes the tables of every slot. Throws vk::VulkanError with a clear message
