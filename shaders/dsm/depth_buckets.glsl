@@ -44,7 +44,9 @@ uint bucketsKept(uint counts[CELL_BUCKETS], uint perTexel, uint maxList, out uin
 
 // Cell `cell`'s counts (zeros for a cell outside the map or image).
 void readBucketCounts(uint cell, uint perCell, bool inside, out uint counts[CELL_BUCKETS]) {
-    for (uint b = 0u; b < perCell; ++b) counts[b] = inside ? buckets[cell * perCell + b] : 0u;
+    for (uint b = 0u; b < perCell; ++b) counts[b] = 0u;
+    if (inside)
+        for (uint b = 0u; b < perCell; ++b) counts[b] = buckets[cell * perCell + b];
 }
 
 // Replaces cell `cell`'s counts by its buckets' places in its run from `start` on (the first `kept`,

@@ -24,15 +24,19 @@ void oitInsert(ivec2 pixel, float depth, vec3 albedo, float alpha, vec3 normal, 
     // Behind (or on) the opaque surface: hidden (a coplanar translucent surface loses to the opaque one).
     float opaque = texelFetch(opaqueDepth, pixel, 0).r;
     if (depth >= opaque) return;
+    // The alpha the node will hold (a half), clamped so that alpha 1 stays finite: the composite takes
+    // the kept layers' share out of the pixel's sum (oit_blend.comp). A fragment whose half is 0 adds
+    // nothing to the image and is left out; every counted one adds at least 1 to the sum (oit.offsets
+    // reads the counts only where the sum is not 0).
+    float stored = unpackHalf2x16(packHalf2x16(vec2(min(alpha, 1.0), 0.0))).x;
+    if (stored <= 0.0) return;
     alpha = min(alpha, 1.0);
     uint p = uint(pixel.y) * draw.ids.z + uint(pixel.x);
     uint slot = p * uint(draw.buckets.z) + depthBucketBefore(depth, draw.buckets, opaque);
     if (draw.buckets.w < 0.5) {  // the first step: count
-        // The alpha the node will hold (a half), clamped so that alpha 1 stays finite: the composite
-        // takes the kept layers' share out of this sum (oit_blend.comp).
-        float stored = unpackHalf2x16(packHalf2x16(vec2(alpha, 0.0))).x;
         atomicAdd(buckets[slot], 1u);
-        atomicAdd(tails[p], uint64_t(-log(max(1.0 - stored, 1e-7)) * OIT_LOG_SCALE + 0.5));
+        float optical = max(-log(max(1.0 - stored, 1e-7)), 0.0);  // >= 0 whatever the log's rounding
+        atomicAdd(tails[p], max(uint64_t(optical * OIT_LOG_SCALE + 0.5), 1ul));
         return;
     }
     uint node = atomicAdd(buckets[slot], 1u);

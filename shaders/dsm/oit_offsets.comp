@@ -5,14 +5,18 @@
 // in it (a bucket left out gets DSM_CULLED: the second step stores nothing of it). An 8x8 tile's runs
 // are side by side (one atomic per tile); a tile whose runs do not fit the pool is dropped whole and
 // counted. The pixel's header for oit.sort: heads[4 p] = run start, + 1 = nodes in it, + 3 = all its
-// fragments (DSM_NONE in the first when it has none).
+// fragments (DSM_NONE in the first when it has none). A pixel whose sum of -log(1 - alpha) is 0 has
+// no fragment (each adds at least 1, dsm/oit_insert.glsl): its counts are not read (most pixels,
+// at 1080p: H100 oit.offsets 0.116 -> 0.099 ms at 25k strands, 0.114 -> 0.099 at 100k).
 #extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #include "shared/types.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = 0, std430) buffer Buckets { uint buckets[]; };  // counts in, places out
 layout(set = 0, binding = 1, std430) buffer Stats { OitStats stats; };
 layout(set = 0, binding = 2, std430) writeonly buffer Heads { uint heads[]; };
+layout(set = 0, binding = 3, std430) readonly buffer Tails { uint64_t tails[]; };  // per pixel (oit.count)
 layout(push_constant) uniform Push { OitPush pc; };
 
 #define CELL_BUCKETS OIT_BUCKETS
@@ -27,7 +31,7 @@ void main() {
     const uint perPixel = pc.sizes.w, p = pixel.y * pc.sizes.x + pixel.x;
     const bool inside = all(lessThan(pixel, pc.sizes.xy));
     uint counts[CELL_BUCKETS];
-    readBucketCounts(p, perPixel, inside, counts);
+    readBucketCounts(p, perPixel, inside && tails[p] != 0ul, counts);
     uint entries, count;
     uint kept = bucketsKept(counts, perPixel, OIT_MAX_LIST, entries, count);
     uint offset = 0u;

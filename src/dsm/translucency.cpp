@@ -73,7 +73,7 @@ CameraTranslucency::CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, co
 
     const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                            uniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-    offsets_ = vk::ComputeKernel(ctx, "dsm/oit_offsets.comp", {storage, storage, storage}, sizeof(gpu::OitPush));
+    offsets_ = vk::ComputeKernel(ctx, "dsm/oit_offsets.comp", {storage, storage, storage, storage}, sizeof(gpu::OitPush));
     sort_ = vk::ComputeKernel(ctx, "dsm/oit_sort.comp", {storage, storage, storage, storage, storage, storage},
                               sizeof(gpu::OitPush));
     args_ = vk::ComputeKernel(ctx, "render/indirect_args.comp", {storage, storage}, sizeof(uint32_t));
@@ -154,6 +154,7 @@ void CameraTranslucency::addBuildTo(FrameGraph& graph, const RibbonView& camera,
         .storageBuffer(0, buckets, Use::StorageWrite)  // counts in, places out
         .storageBuffer(1, stats, Use::StorageWrite)
         .storageBuffer(2, heads, Use::StorageWrite)  // each pixel's run
+        .storageBuffer(3, tails)                     // which pixels have fragments
         .record([this, push](PassContext& c) {
             offsets_.pipeline.push(c.cmd, push);
             vkCmdDispatch(c.cmd, vk::divUp(width_, 8), vk::divUp(height_, 8), 1);
