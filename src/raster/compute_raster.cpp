@@ -9,9 +9,11 @@ constexpr VkDescriptorType kBuffer = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
 constexpr uint32_t kMaxGroups = 65535;  // the smallest maxComputeWorkGroupCount Vulkan allows
 
 // Bin capacities: a quarter of the (triangle, layer) pairs may be large, each in 8 tiles on average;
-// beyond that triangles are rasterized by their setup thread (correct, slower). Capped at 64 MiB.
+// beyond that triangles are rasterized by their setup thread (correct, slower). Every pair of a scene
+// of up to 16384 gets a record (1.5 MiB; see smallExtent). Capped at 64 MiB.
 uint32_t recordCapacityFor(uint64_t triangles, uint32_t layers) {
-    return uint32_t(std::clamp<uint64_t>(triangles * layers / 4, 4096, 1u << 19));
+    const uint64_t pairs = triangles * layers;
+    return uint32_t(std::clamp<uint64_t>(std::max<uint64_t>(pairs / 4, std::min<uint64_t>(pairs, 16384)), 4096, 1u << 19));
 }
 
 // Tile entries: 8 per record, and at least 16 times every layer's tiles, so that a few triangles as
@@ -102,10 +104,20 @@ void ComputeRaster::setViews(const std::vector<RasterViews>& views, uint32_t slo
     if (!rows.empty()) layerTable_.write(rows.data(), rows.size() * sizeof(rows[0]));
 }
 
+// The small-triangle threshold: where every (triangle, layer) pair has a record (scenes of few
+// triangles: too few setup threads to keep the GPU busy while each rasterizes up to 16x16 pixels), half
+// of it, so that more of them are binned to tiles. H100, 1080p: the hair scene's (4110 triangles) raster passes 0.36 ->
+// 0.32 ms; at 8 for every scene Sponza's frame went 2.16 -> 2.47 ms, and at 4 the bins overflowed
+// (`session27/raster_exp9-small-extent-not-kept/`).
+uint32_t ComputeRaster::smallExtent() const {
+    return uint64_t(scene_.drawnTriangleCount()) * layers_ <= recordCapacity_ ? RASTER_SMALL_EXTENT / 2
+                                                                              : RASTER_SMALL_EXTENT;
+}
+
 gpu::RasterPush ComputeRaster::push(RasterBias bias) const {
     const uint32_t triangles = scene_.drawnTriangleCount();
     return {{size_.width, subpixelBits_, triangles, layerRows_},
-            {recordCapacity_, entryCapacity_, RASTER_SMALL_EXTENT, size_.height},
+            {recordCapacity_, entryCapacity_, smallExtent(), size_.height},
             {bias.constant, bias.slope, kind_ == Views::Camera ? 1.0f : 0.0f, 0.0f}};
 }
 
