@@ -34,7 +34,7 @@ void main() {
     for (uint i = 0; i < count; ++i) {
         uvec4 node = nodes[layers.entries[first + i].x];
         vec3 l = uintBitsToFloat(node.xyz);
-        float a = abs(unpackHalf2x16(node.w).y);
+        float a = unpackHalf2x16(node.w).y;
         sum += t * a * l;
         t *= 1.0 - a;
         logKept += log(max(1.0 - a, 1e-7));

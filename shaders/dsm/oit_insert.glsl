@@ -17,7 +17,6 @@ layout(set = 0, binding = 11, std430) buffer Tails { uint64_t tails[]; };  // pe
 
 // `segment`: a hair fragment's segment (the index of its first point), OIT_NOT_HAIR for a mesh's.
 void oitInsert(ivec2 pixel, float depth, vec3 albedo, float alpha, vec3 normal, uint segment) {
-    bool hair = segment != OIT_NOT_HAIR;
     // Nothing to composite; NaN too: lavapipe's raster can give a fragment of a strip's degenerate
     // join (dsm/hair.vert) non-finite interpolants (one pixel of the hair at 1280x720).
     if (!(alpha > 0.0)) return;
@@ -28,9 +27,9 @@ void oitInsert(ivec2 pixel, float depth, vec3 albedo, float alpha, vec3 normal, 
     // the kept layers' share out of the pixel's sum (oit_blend.comp). A fragment whose half is 0 adds
     // nothing to the image and is left out; every counted one adds at least 1 to the sum (oit.offsets
     // reads the counts only where the sum is not 0).
-    float stored = unpackHalf2x16(packHalf2x16(vec2(min(alpha, 1.0), 0.0))).x;
-    if (stored <= 0.0) return;
     alpha = min(alpha, 1.0);
+    float stored = unpackHalf2x16(packHalf2x16(vec2(alpha, 0.0))).x;
+    if (stored <= 0.0) return;
     uint p = uint(pixel.y) * draw.ids.z + uint(pixel.x);
     uint slot = p * uint(draw.buckets.z) + depthBucketBefore(depth, draw.buckets, opaque);
     if (draw.buckets.w < 0.5) {  // the first step: count
@@ -42,6 +41,6 @@ void oitInsert(ivec2 pixel, float depth, vec3 albedo, float alpha, vec3 normal, 
     uint node = atomicAdd(buckets[slot], 1u);
     if (node >= DSM_CULLED) return;  // behind the cap's bucket (its sum is all that counts), or no room
     nodes[node] = uvec4(floatBitsToUint(depth), packHalf2x16(albedo.rg), segment,
-                        packHalf2x16(vec2(albedo.b, hair ? -alpha : alpha)));
+                        packHalf2x16(vec2(albedo.b, alpha)));
     normals[node] = packSnorm2x16(octEncode(normal));
 }

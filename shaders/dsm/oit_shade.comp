@@ -40,6 +40,11 @@ layout(set = 0, binding = 16, std430) readonly buffer Points { GpuHairPoint poin
 #include "dsm/kajiya_kay.glsl"
 #include "dsm/octahedral.glsl"
 
+// Whether oit_hair_shadow.comp gave the hair points light i's shadow (it has a DSM and a slot).
+bool hasStrandShadow(uint i) {
+    return dsmLights[i].params.z >= 0.0 && i < uint(hairShadow.length()) / uint(points.length());
+}
+
 // The shadow of light i (with a DSM) at hair fragment p of `segment` (its first point's index): the
 // strand's own at the segment's two points (oit_hair_shadow.comp), interpolated at p's projection.
 float strandShadow(uint i, vec3 p, uint segment) {
@@ -56,15 +61,13 @@ vec3 directRadiance(vec3 p, vec3 n, uint segment, vec3 albedo, float angle) {
     vec3 toEye = normalize(frame.cameraPos.xyz - p);
     if (!hair && dot(n, toEye) < 0.0) n = -n;  // two-sided: shade the side the camera sees
     vec3 sum = vec3(0.0);
-    uint strandLights = uint(hairShadow.length()) / uint(points.length());
     for (uint i = 0; i < frame.size.z; ++i) {
         GpuLight light = lights[i];
         vec3 l;
         vec3 e = incidentIrradiance(light, p, l);
         float ndotl = hair ? 1.0 : max(dot(n, l), 0.0);
         if (ndotl <= 0.0 || all(equal(e, vec3(0.0)))) continue;
-        float v = hair && i < strandLights && dsmLights[i].params.z >= 0.0 ? strandShadow(i, p, segment)
-                                                                           : layerShadow(i, light, p, n, l, hair, angle);
+        float v = hair && hasStrandShadow(i) ? strandShadow(i, p, segment) : layerShadow(i, light, p, n, l, hair, angle);
         sum += e * v * (hair ? kajiyaKay(albedo, n, l, toEye) : albedo / PI * ndotl);
     }
     return sum;
