@@ -7,8 +7,10 @@
 // work list of the resolve (one workgroup per listed texel). An empty texel gets its final heads
 // (DSM_NONE, 0). One 8x8 tile's runs and work are side by side (one global atomic each per tile: one
 // per texel, on one counter, would serialise). A tile whose runs do not fit the pool is dropped
-// whole and counted (build.z). The statistics (fragments, kept, dropped beyond the cap, longest,
-// lists) are counted here, once per tile.
+// whole and counted (build.z); its texels still get a place in the work list, marked
+// DSM_WORK_UNLISTED: the resolve, the last reader of the counts, zeroes every counted texel's buckets
+// for the next frame (so that no pass fills the whole buffer). The statistics (fragments, kept,
+// dropped beyond the cap, longest, lists) are counted here, once per tile.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
 
@@ -47,12 +49,12 @@ void main() {
     if (gl_LocalInvocationIndex == 0 && groupLists > 0u) {
         atomicAdd(stats.build.x, groupAll);
         groupRun = atomicAdd(stats.build.w, groupEntries);
+        groupWork = atomicAdd(work.header.x, groupLists);
         if (groupRun + groupEntries > pc.sizes.z) {  // no room: the tile is dropped
             atomicAdd(stats.build.w, 0u - groupEntries);
             atomicAdd(stats.build.z, groupAll);
             groupRun = DSM_NONE;
         } else {
-            groupWork = atomicAdd(work.header.x, groupLists);
             atomicAdd(stats.lists.x, groupKept);
             atomicAdd(stats.lists.y, groupAll - groupKept);
             atomicMax(stats.lists.z, groupLongest);
@@ -62,11 +64,13 @@ void main() {
     barrier();
     bool listed = count > 0u && groupRun != DSM_NONE;
     uint start = groupRun + offset;
-    if (count > 0u) writeBucketPlaces(texel, perTexel, counts, kept, start, listed);
+    if (count > 0u) {
+        writeBucketPlaces(texel, perTexel, counts, kept, start, listed);
+        work.texels[groupWork + place] = listed ? texel : texel | DSM_WORK_UNLISTED;
+    }
     if (listed) {
         heads[texel * DSM_HEAD_UINTS] = entries;
         heads[texel * DSM_HEAD_UINTS + 1u] = start;
-        work.texels[groupWork + place] = texel;
     } else if (inside) {
         heads[texel * DSM_HEAD_UINTS] = DSM_NONE;
         heads[texel * DSM_HEAD_UINTS + 1u] = 0u;

@@ -5,6 +5,9 @@
 // header for oit_blend.comp: heads[4 p] = its first entry, + 1 = how many, + 2 = the log-transmittance
 // of all its fragments (summed by the build's first step), + 3 = how many fragments it has (stored or
 // in the buckets left out). A pixel without stored fragments keeps DSM_NONE in its first head.
+// The build's last reader of the pixel's bucket counts and sum: a pixel with fragments (sum not 0)
+// zeroes them for the next frame's count, so that only pixels with translucency are cleared (7% of
+// the image for the hair at 1080p; a fill of the whole buffers took 0.05 ms on the H100).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
@@ -18,7 +21,8 @@ layout(set = 0, binding = 1, std430) readonly buffer Nodes { uvec4 nodes[]; };
 layout(set = 0, binding = 2, std430) readonly buffer Normals { uint normals[]; };
 layout(set = 0, binding = 3, std430) buffer Stats { OitStats stats; };
 layout(set = 0, binding = 4, std430) buffer Layers { uvec4 header; uvec2 entries[]; } layers;  // (node, pixel)
-layout(set = 0, binding = 5, std430) readonly buffer Tails { uint64_t tails[]; };  // sum of -log(1 - alpha)
+layout(set = 0, binding = 5, std430) buffer Tails { uint64_t tails[]; };  // sum of -log(1 - alpha)
+layout(set = 0, binding = 6, std430) writeonly buffer Buckets { uint buckets[]; };  // per pixel, pc.sizes.w
 layout(push_constant) uniform Push { OitPush pc; };
 
 // (depth, node)
@@ -98,8 +102,13 @@ void main() {
     barrier();
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     bool inside = all(lessThan(pixel, ivec2(pc.sizes.xy)));
-    uint base = (uint(pixel.y) * pc.sizes.x + uint(pixel.x)) * OIT_HEADER_UINTS;
-    uint start = inside ? heads[base] : DSM_NONE;  // oit.offsets' header: the run, its nodes, all fragments
+    uint p = uint(pixel.y) * pc.sizes.x + uint(pixel.x), base = p * OIT_HEADER_UINTS;
+    uint64_t tail = inside ? tails[p] : 0ul;
+    if (tail != 0ul) {  // this frame's counts read for the last time: zero for the next frame
+        tails[p] = 0ul;
+        for (uint b = 0u; b < pc.sizes.w; ++b) buckets[p * pc.sizes.w + b] = 0u;
+    }
+    uint start = tail != 0ul ? heads[base] : DSM_NONE;  // oit.offsets' header: the run, its nodes, all fragments
     bool listed = start != DSM_NONE;
     uint count = 0u, length = listed ? heads[base + 3u] : 0u;
     if (listed) sortNearest(start, heads[base + 1u], OIT_MAX_LIST, count);
@@ -119,7 +128,7 @@ void main() {
             layers.entries[first + i] = uvec2(floatBitsToUint(sorted(i).y), uint(pixel.y) << 16 | uint(pixel.x));
         heads[base] = first;
         heads[base + 1u] = count;
-        heads[base + 2u] = floatBitsToUint(-float(tails[base / OIT_HEADER_UINTS]) / OIT_LOG_SCALE);
+        heads[base + 2u] = floatBitsToUint(-float(tail) / OIT_LOG_SCALE);
     }
     if (gl_LocalInvocationIndex == 0 && (groupKept | groupDropped) != 0u) {
         atomicAdd(stats.counts.y, groupKept);

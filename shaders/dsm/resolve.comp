@@ -1,6 +1,6 @@
 #version 460
 // DSM resolve, one workgroup per texel with nodes (the work list of dsm.offsets; a fixed grid of
-// workgroups strides over it): the texel's `maxList` nearest nodes sorted by depth, each holding the
+// workgroups strides over it; each zeroes its texel's bucket counts for the next frame): the texel's `maxList` nearest nodes sorted by depth, each holding the
 // transmittance behind it, T_k = prod_{j<=k} (1 - alpha_j); farther nodes are dropped (dsm.offsets
 // counted them). The texel's fragments (consecutive in its run, the build's) go into shared slots, a
 // bitonic network sorts them and the nearest `maxList` stay; a list longer than the slots comes in
@@ -27,6 +27,7 @@ layout(set = 0, binding = 1, std430) buffer Nodes { uvec4 nodes[]; };
 layout(set = 0, binding = 2, std430) writeonly buffer Side { uint side[]; };  // the search keys
 layout(set = 0, binding = 3, std430) readonly buffer Work { uvec4 header; uint texels[]; } work;
 layout(set = 0, binding = 4, std430) readonly buffer Runs { uvec2 runs[]; };  // (depth, alpha) bits
+layout(set = 0, binding = 5, std430) writeonly buffer Buckets { uint buckets[]; };  // pc.buckets.x per texel
 layout(push_constant) uniform Push { DsmPush pc; };
 
 shared uvec2 slots[SORT_SLOTS];  // (depth bits, alpha bits)
@@ -134,8 +135,12 @@ void writeList(uint texel, uint count, uint first) {
 }
 
 void main() {
+    const uint perTexel = pc.buckets.x;
     for (uint w = gl_WorkGroupID.x; w < work.header.x; w += gl_NumWorkGroups.x) {
-        uint texel = work.texels[w];
+        uint entry = work.texels[w], texel = entry & ~DSM_WORK_UNLISTED;
+        // The build is done with the texel's counts: zeroed for the next frame's (dsm.offsets).
+        if (gl_LocalInvocationIndex < perTexel) buckets[texel * perTexel + gl_LocalInvocationIndex] = 0u;
+        if (entry != texel) continue;  // counted, but its tile found no room in the pool
         uint count = heads[texel * DSM_HEAD_UINTS], run = heads[texel * DSM_HEAD_UINTS + 1u];
         writeList(texel, sortNearest(run, count, pc.sizes.w), run);
     }

@@ -300,6 +300,9 @@ struct ShadowDrawPush {
 #define DSM_BUCKETS 8
 #define OIT_BUCKETS 16
 #define DSM_CULLED 0x80000000u
+// A work-list entry of a texel that was counted but got no run (its tile found no room in the pool):
+// the resolve only zeroes its counts (dsm/offsets.comp).
+#define DSM_WORK_UNLISTED 0x80000000u
 #define OIT_HEADER_UINTS 4
 // A camera node's z: a hair fragment's segment (the index of its first point among the hair points),
 // where oit.shade reads the strand's own shadow (dsm/oit_hair_shadow.comp);

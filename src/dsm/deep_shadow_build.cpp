@@ -94,13 +94,16 @@ void DeepShadowBuildPass::recordLayer(VkCommandBuffer cmd, uint32_t layer, Build
 void DeepShadowBuildPass::addTo(FrameGraph& graph) {
     const BufferHandle heads = graph.import(res_.heads), stats = graph.import(res_.stats),
                        work = graph.import(res_.work), buckets = graph.import(res_.buckets);
+    // The counts are zeroed here once; then the resolve zeroes every texel that had fragments.
+    const bool zeroCounts = !res_.countsZeroed;
+    res_.countsZeroed = true;
     graph.pass("dsm.clear", PassKind::Transfer)
         .use(buckets, Use::TransferDst)
         .use(stats, Use::TransferDst)
         .use(work, Use::TransferDst)
-        .bytes(res_.buckets.size())  // a fill: bound by memory bandwidth
-        .record([buckets, stats, work](PassContext& c) {
-            vkCmdFillBuffer(c.cmd, c.buffer(buckets).handle(), 0, VK_WHOLE_SIZE, 0);  // the texels' counts
+        .bytes(zeroCounts ? res_.buckets.size() : 0)  // a fill: bound by memory bandwidth
+        .record([buckets, stats, work, zeroCounts](PassContext& c) {
+            if (zeroCounts) vkCmdFillBuffer(c.cmd, c.buffer(buckets).handle(), 0, VK_WHOLE_SIZE, 0);
             vkCmdFillBuffer(c.cmd, c.buffer(stats).handle(), 0, VK_WHOLE_SIZE, 0);
             vkCmdFillBuffer(c.cmd, c.buffer(work).handle(), 0, 16, 0);  // no texels listed yet
         });

@@ -5,8 +5,8 @@ namespace penumbra {
 DeepShadowResolvePass::DeepShadowResolvePass(vk::Allocator& alloc, DsmResources& res, bool links)
     : alloc_(alloc), res_(res), links_(links) {
     const VkDescriptorType ssbo = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    resolve_ = vk::ComputeKernel(alloc.context(), "dsm/resolve.comp", {ssbo, ssbo, ssbo, ssbo, ssbo},
-                                 sizeof(gpu::DsmPush));  // heads, nodes, side, work, runs
+    resolve_ = vk::ComputeKernel(alloc.context(), "dsm/resolve.comp", {ssbo, ssbo, ssbo, ssbo, ssbo, ssbo},
+                                 sizeof(gpu::DsmPush));  // heads, nodes, side, work, runs, buckets
     link_ = vk::ComputeKernel(alloc.context(), "dsm/link.comp", {ssbo, ssbo, ssbo}, sizeof(gpu::DsmPush));
 }
 
@@ -32,7 +32,8 @@ void DeepShadowResolvePass::addTo(FrameGraph& graph) {
         .storageBuffer(1, nodes, Use::StorageWrite)
         .storageBuffer(2, side, Use::StorageWrite)  // search keys
         .storageBuffer(3, work, Use::StorageRead)
-        .storageBuffer(4, runs, Use::StorageRead);
+        .storageBuffer(4, runs, Use::StorageRead)
+        .storageBuffer(5, graph.import(res_.buckets), Use::StorageWrite);  // zeroed for the next frame
     addDispatch(resolve, resolve_, true);
     if (!links_) return;
     PassBuilder link = graph.pass("dsm.link");

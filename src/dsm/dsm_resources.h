@@ -42,6 +42,7 @@ struct DsmResources {
     vk::Buffer runs;        // uvec2 per node: the build's (depth, alpha), grouped by texel (its second step)
     vk::Buffer buckets;     // bucketCount uints per texel and layer: node counts per depth bucket, then places
     uint32_t bucketCount = 1;  // kBuckets, or fewer where one buffer of them would not fit the device
+    bool countsZeroed = false;  // buckets filled with 0 once (dsm.clear); then the resolve keeps them so
     vk::Buffer stats;       // DsmStats
     vk::Buffer work;        // the texels with nodes, for the resolve: uvec4 (x = count), then per texel a uvec2
                             // (texel, its sorted list's place in the pool)

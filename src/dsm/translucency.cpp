@@ -74,7 +74,7 @@ CameraTranslucency::CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, co
     const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                            uniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
     offsets_ = vk::ComputeKernel(ctx, "dsm/oit_offsets.comp", {storage, storage, storage, storage}, sizeof(gpu::OitPush));
-    sort_ = vk::ComputeKernel(ctx, "dsm/oit_sort.comp", {storage, storage, storage, storage, storage, storage},
+    sort_ = vk::ComputeKernel(ctx, "dsm/oit_sort.comp", {storage, storage, storage, storage, storage, storage, storage},
                               sizeof(gpu::OitPush));
     args_ = vk::ComputeKernel(ctx, "render/indirect_args.comp", {storage, storage}, sizeof(uint32_t));
     shade_ = vk::ComputeKernel(ctx, "dsm/oit_shade.comp",
@@ -134,15 +134,19 @@ void CameraTranslucency::addBuildTo(FrameGraph& graph, const RibbonView& camera,
     const BufferHandle heads = graph.import(heads_), nodes = graph.import(nodes_), normals = graph.import(normals_),
                        stats = graph.import(stats_), layers = graph.import(layers_), buckets = graph.import(buckets_),
                        tails = graph.import(tails_);
+    // The counts and sums are zeroed here once; then oit.sort zeroes the pixels that had fragments.
+    const bool zeroCounts = !countsZeroed_;
+    countsZeroed_ = true;
     graph.pass("oit.clear", PassKind::Transfer)
         .use(stats, Use::TransferDst)
         .use(layers, Use::TransferDst)
         .use(buckets, Use::TransferDst)
         .use(tails, Use::TransferDst)
-        .bytes(buckets_.size() + tails_.size())
-        .record([stats, layers, buckets, tails](PassContext& c) {
+        .bytes(zeroCounts ? buckets_.size() + tails_.size() : 0)
+        .record([stats, layers, buckets, tails, zeroCounts](PassContext& c) {
             vkCmdFillBuffer(c.cmd, c.buffer(stats).handle(), 0, VK_WHOLE_SIZE, 0);
             vkCmdFillBuffer(c.cmd, c.buffer(layers).handle(), 0, 16, 0);  // the kept layers' count
+            if (!zeroCounts) return;
             vkCmdFillBuffer(c.cmd, c.buffer(buckets).handle(), 0, VK_WHOLE_SIZE, 0);
             vkCmdFillBuffer(c.cmd, c.buffer(tails).handle(), 0, VK_WHOLE_SIZE, 0);
         });
@@ -205,7 +209,8 @@ void CameraTranslucency::addCompositeTo(FrameGraph& graph) {
         .storageBuffer(2, normals, Use::StorageRead)
         .storageBuffer(3, graph.import(stats_), Use::StorageWrite)
         .storageBuffer(4, layers, Use::StorageWrite)
-        .storageBuffer(5, graph.import(tails_), Use::StorageRead)
+        .storageBuffer(5, graph.import(tails_), Use::StorageWrite)  // read, then zeroed where not 0
+        .storageBuffer(6, graph.import(buckets_), Use::StorageWrite)  // zeroed with them
         .record([this, push, groupsX, groupsY](PassContext& c) {
             sort_.pipeline.push(c.cmd, push);
             vkCmdDispatch(c.cmd, groupsX, groupsY, 1);

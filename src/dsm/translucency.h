@@ -5,7 +5,7 @@
 // lighting pass, with the lights' shadow maps ("shadow.*"), deep shadow maps ("dsm.*") and the
 // indirect irradiance ("gi.irradiance"), so it works behind any camera path that publishes them.
 //
-// Frame: oit.clear -> oit.count (raster; hair in compute, oit.count.hair, with `computeHair`: see
+// Frame: oit.clear (the counts only in the first frame: oit.sort zeroes what it read) -> oit.count (raster; hair in compute, oit.count.hair, with `computeHair`: see
 // dsm/ribbon_raster.glsl; each fragment counted in its pixel's depth bucket) -> oit.offsets (per
 // pixel: a run for the buckets up to the cap's) -> oit.build (.hair; the same passes again, the kept
 // buckets' fragments stored in the runs) -> ... lighting ... -> oit.hair-shadow (per hair point: the
@@ -69,6 +69,7 @@ private:
     uint64_t capacity_ = 0;
     vk::Buffer heads_, nodes_, normals_, stats_;
     vk::Buffer buckets_, tails_;  // per pixel: fragments per depth bucket, and the sum of -log(1 - alpha)
+    bool countsZeroed_ = false;   // buckets_ and tails_ filled with 0 once (then oit.sort keeps them so)
     vk::Buffer layers_, shadeArgs_;  // the kept layers (node, pixel) in pixel order, and their dispatch
     vk::Buffer hairShadow_;          // hairShadow() (4 bytes without hair)
     std::array<BufferHandle, 5> lists_;  // this frame's nodes, normals, stats, buckets, tails (addBuildTo)
