@@ -63,6 +63,7 @@ protected:
         settings.aov = aov;
         if (shadow) settings.shadow = *shadow;
         Renderer renderer(ctx(), scene, settings);
+        renderer.setPassScopes(true);  // the result's per-pass timings
         renderer.render(camera);
         RenderResult out;
         out.image = {width, height, renderer.readHdr()};

@@ -30,6 +30,7 @@ protected:
         settings.aov = aov;
         settings.shadow = shadow;
         Renderer renderer(ctx(), scene, settings);
+        renderer.setPassScopes(true);  // the result's per-pass timings
         renderer.render(camera);
         return {{width, height, renderer.readHdr()}, renderer.shadow().layers(), renderer.timings()};
     }

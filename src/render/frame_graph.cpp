@@ -86,11 +86,30 @@ void collapseRepeats(std::vector<std::string>& names) {
 
 }  // namespace
 
-void FrameGraph::barriers(VkCommandBuffer cmd, const PassDesc& pass) {
+// One barrier for a whole group: each resource's uses by the group's passes merged (schedule() puts
+// no two passes in a group that write the same resource, or read it in different layouts).
+void FrameGraph::barriers(VkCommandBuffer cmd, const std::vector<uint32_t>& group) {
+    std::vector<std::pair<vk::Image*, Sync>> imageUses;
+    std::vector<std::pair<VkBuffer, Sync>> uses;
+    auto merge = [](auto& list, auto key, const Sync& s) {
+        auto same = std::find_if(list.begin(), list.end(), [key](const auto& u) { return u.first == key; });
+        if (same == list.end()) return list.emplace_back(key, s), void();
+        same->second.stage |= s.stage;
+        same->second.access |= s.access;
+        same->second.writes |= s.writes;
+    };
+    for (uint32_t p : group) {
+        const PassDesc& pass = passes_[p];
+        for (const auto& [handle, use] : pass.images) {
+            vk::Image& image = imageOf(handle);
+            merge(imageUses, &image, syncFor(use, pass.kind, vk::isDepthFormat(image.format())));
+        }
+        // A buffer used more than once (storage and indirect arguments) waits once, for all its uses.
+        for (const auto& [handle, use] : pass.buffers) merge(uses, bufferOf(handle).handle(), syncFor(use, pass.kind, false));
+    }
     std::vector<VkImageMemoryBarrier2> imageBarriers;
-    for (const auto& [handle, use] : pass.images) {
-        vk::Image& image = imageOf(handle);
-        Sync s = syncFor(use, pass.kind, vk::isDepthFormat(image.format()));
+    for (auto& [imagePtr, s] : imageUses) {
+        vk::Image& image = *imagePtr;
         vk::ImageState& st = image.state();
         const bool hazard = s.writes || (st.access & kWriteAccess) || st.layout != s.layout;
         // A reader in a stage the last transition was not made visible to (a raster pass sampled the
@@ -125,20 +144,6 @@ void FrameGraph::barriers(VkCommandBuffer cmd, const PassDesc& pass) {
     }
     VkMemoryBarrier2 mem{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
     bool needMem = false;
-    // A buffer the pass uses more than once (storage and indirect arguments) waits once, for all its uses.
-    std::vector<std::pair<VkBuffer, Sync>> uses;
-    for (const auto& [handle, use] : pass.buffers) {
-        const Sync s = syncFor(use, pass.kind, false);
-        const VkBuffer b = bufferOf(handle).handle();
-        auto same = std::find_if(uses.begin(), uses.end(), [b](const auto& u) { return u.first == b; });
-        if (same == uses.end()) {
-            uses.emplace_back(b, s);
-        } else {
-            same->second.stage |= s.stage;
-            same->second.access |= s.access;
-            same->second.writes |= s.writes;
-        }
-    }
     for (const auto& [buffer, s] : uses) {
         BufferState& st = bufferStates_[buffer];
         if (s.writes || (st.access & kWriteAccess)) {
@@ -188,15 +193,63 @@ void FrameGraph::bind(VkCommandBuffer cmd, const PassDesc& pass) {
 }
 
 void FrameGraph::execute(VkCommandBuffer cmd, vk::GpuTimer* timer) {
-    for (uint32_t i = 0; i < passes_.size(); ++i) {
-        const PassDesc& pass = passes_[i];
-        barriers(cmd, pass);
-        uint32_t scope = timer ? timer->begin(cmd, pass.name) : 0;
-        bind(cmd, pass);
-        PassContext context(cmd, *this, i);
-        if (pass.record) pass.record(context);
-        if (timer) timer->end(cmd, scope);
+    if (!passTimings_) timer = nullptr;
+    for (const std::vector<uint32_t>& group : schedule()) {
+        barriers(cmd, group);
+        for (uint32_t i : group) {
+            const PassDesc& pass = passes_[i];
+            uint32_t scope = timer ? timer->begin(cmd, pass.name) : 0;
+            bind(cmd, pass);
+            PassContext context(cmd, *this, i);
+            if (pass.record) pass.record(context);
+            if (timer) timer->end(cmd, scope);
+        }
     }
+}
+
+std::vector<std::vector<uint32_t>> FrameGraph::schedule() const {
+    std::vector<std::vector<uint32_t>> groups;
+    if (!overlap_) {
+        for (uint32_t i = 0; i < passes_.size(); ++i) groups.push_back({i});
+        return groups;
+    }
+    // Per resource, in the order passes were added: its last writer (or layout change) and the
+    // readers since. A pass's level is one more than the highest of the passes it must follow.
+    struct Access {
+        int writer = -1;
+        std::vector<uint32_t> readers;
+        VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
+    };
+    std::unordered_map<const void*, Access> accesses;
+    std::vector<uint32_t> level(passes_.size(), 0);
+    for (uint32_t j = 0; j < passes_.size(); ++j) {
+        const PassDesc& pass = passes_[j];
+        uint32_t lv = 0;
+        auto follow = [&](int i) {
+            if (i >= 0 && uint32_t(i) != j) lv = std::max(lv, level[i] + 1);
+        };
+        auto access = [&](const void* key, const Sync& s, bool image) {
+            Access& a = accesses[key];
+            follow(a.writer);
+            // A layout change is a write: it must wait for the readers of the old layout.
+            const bool modifies = s.writes || (image && !a.readers.empty() && a.layout != s.layout);
+            if (modifies) {
+                for (uint32_t r : a.readers) follow(int(r));
+                a.writer = int(j);
+                a.readers.clear();
+            } else if (a.readers.empty() || a.readers.back() != j) {
+                a.readers.push_back(j);
+            }
+            a.layout = s.layout;
+        };
+        for (const auto& [h, use] : pass.images)
+            access(&imageOf(h), syncFor(use, pass.kind, vk::isDepthFormat(imageOf(h).format())), true);
+        for (const auto& [h, use] : pass.buffers) access(bufferOf(h).handle(), syncFor(use, pass.kind, false), false);
+        level[j] = lv;
+        if (groups.size() <= lv) groups.resize(lv + 1);
+        groups[lv].push_back(j);
+    }
+    return groups;
 }
 
 void FrameGraph::clear() {
@@ -308,8 +361,13 @@ void PassBuilder::record(std::function<void(PassContext&)> fn) {
 }
 
 std::string FrameGraph::describe() const {
+    std::vector<uint32_t> groupOf(passes_.size());
+    const std::vector<std::vector<uint32_t>> groups = schedule();
+    for (uint32_t g = 0; g < groups.size(); ++g)
+        for (uint32_t i : groups[g]) groupOf[i] = g;
     std::string out;
-    for (const PassDesc& p : passes_) {
+    for (uint32_t i = 0; i < passes_.size(); ++i) {
+        const PassDesc& p = passes_[i];
         std::vector<std::string> reads, writes;
         auto sort = [&](const std::string& name, Use u) {
             Sync s = syncFor(u, p.kind, false);
@@ -318,7 +376,7 @@ std::string FrameGraph::describe() const {
         for (const auto& [h, use] : p.images) sort(imageOf(h).name(), use);
         for (const auto& [h, use] : p.buffers) sort(bufferOf(h).name(), use);
         collapseRepeats(reads);  // a texture table is many images of one name
-        out += fmt::format("{:<22} {:<8} reads [{}] writes [{}]\n", p.name,
+        out += fmt::format("{:<22} group {:<3} {:<8} reads [{}] writes [{}]\n", p.name, groupOf[i],
                            p.kind == PassKind::Raster ? "raster" : p.kind == PassKind::Compute ? "compute" : "copy",
                            fmt::join(reads, ", "), fmt::join(writes, ", "));
     }

@@ -132,12 +132,24 @@ public:
     void clear();
     // After resources were destroyed and re-created: forget their last uses too.
     void forgetStates() { bufferStates_.clear(); }
-    // Records every pass in order with barriers and (when `timer` is set) one timestamp scope each.
+    // Records every pass with barriers and (when `timer` is set and pass timings are on) one timestamp
+    // scope each, in the groups of schedule().
     void execute(VkCommandBuffer cmd, vk::GpuTimer* timer);
+    // Groups of passes that run together: a pass's group comes after the groups of every pass it
+    // depends on (it reads what they write, writes what they read or write, or needs an image in
+    // another layout), and within a group passes keep their order. One barrier goes before each
+    // group, none between its passes, so that independent work (the camera's lists, the light's)
+    // overlaps on the GPU instead of each pass waiting for the one before. With overlap off, every
+    // pass is a group of its own, in the order added.
+    std::vector<std::vector<uint32_t>> schedule() const;
+    void setOverlap(bool on) { overlap_ = on; }
+    // Off: no timestamps between passes (the frame's own scope only): a timestamp may wait for the
+    // work before it, which would undo the overlap.
+    void setPassTimings(bool on) { passTimings_ = on; }
     const std::vector<PassDesc>& passes() const { return passes_; }
     vk::Image& imageOf(ImageHandle h) const { return *images_.at(h.index); }
     const vk::Buffer& bufferOf(BufferHandle h) const { return *buffers_.at(h.index); }
-    // One line per pass: name, kind, what it reads and writes (for `--print-passes` and the docs).
+    // One line per pass: name, group (schedule()), kind, what it reads and writes (`--print-passes`, the docs).
     std::string describe() const;
 
 private:
@@ -146,7 +158,7 @@ private:
         VkPipelineStageFlags2 stage = VK_PIPELINE_STAGE_2_NONE;
         VkAccessFlags2 access = VK_ACCESS_2_NONE;
     };
-    void barriers(VkCommandBuffer cmd, const PassDesc& pass);
+    void barriers(VkCommandBuffer cmd, const std::vector<uint32_t>& group);
     void bind(VkCommandBuffer cmd, const PassDesc& pass);
     vk::Context& ctx_;
     std::vector<PassDesc> passes_;
@@ -156,6 +168,7 @@ private:
     std::map<std::string, ImageHandle> imageNames_;
     std::map<std::string, BufferHandle> bufferNames_;
     std::unordered_map<VkBuffer, BufferState> bufferStates_;
+    bool overlap_ = true, passTimings_ = true;
 };
 
 }  // namespace penumbra

@@ -56,6 +56,9 @@ struct RenderSettings {
     // `--translucency`: hair and alphaMode BLEND surfaces composited over the opaque image in depth
     // order (src/dsm/translucency.h); off: both are drawn opaque into the G-buffer.
     bool translucency = true;
+    // The frame graph (render/frame_graph.h) runs passes that do not depend on one another together
+    // (`bench --overlap`; off: one after another, a barrier before each that needs one).
+    bool overlapPasses = true;
 };
 
 }  // namespace penumbra

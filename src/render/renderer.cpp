@@ -269,6 +269,8 @@ void Renderer::recordFrame(FrameSlot& slot, const FrameInputs& in, const FrameHo
     if (!lastFrame_ || transforms != lastFrame_->instances) invalidateCaches();
     zfar_ = sceneFar(in.camera, scene_.scene().bounds);
     graph_.clear();
+    graph_.setOverlap(settings_.overlapPasses && !passScopes_);
+    graph_.setPassTimings(passScopes_);
     const float aspect = float(settings_.width) / float(settings_.height);
     const float depthFar = std::min(zfar_, boundsFar(in.camera, scene_.scene().bounds));
     FrameContext context{graph_, index, in.camera, in.lights, settings_, aspect, zfar_, depthFar, frameConstants_};

@@ -74,7 +74,12 @@ public:
     void render(const Camera& camera);
     void render(const FrameInputs& inputs) { submit(inputs); finish(); }
 
-    // Per-pass GPU times of the newest completed frame.
+    // A timestamp scope per pass from the next frame on (off by default: the frame's scope only).
+    // A timestamp waits for the work before it, so with scopes the passes run one after another, in
+    // the order added, as the scopes' times add up to the frame's; without them the frame graph runs
+    // independent passes together (RenderSettings::overlapPasses).
+    void setPassScopes(bool on) { passScopes_ = on; }
+    // Per-pass GPU times of the newest completed frame (empty without pass scopes).
     const std::vector<vk::ScopeTiming>& timings() const { return lastTimings_.passes; }
     const FrameTimings& frameTimings() const { return lastTimings_; }
     // Every completed frame's timings since the last call (bench), oldest first.
@@ -154,6 +159,7 @@ private:
     std::unique_ptr<LightingTechnique> lighting_;
     FrameGraph graph_;
     FrameTimings lastTimings_;
+    bool passScopes_ = false;  // setPassScopes()
     std::optional<gpu::PixelProbe> lastProbe_;
     std::vector<FrameTimings> completed_;
     std::vector<std::string> warnings_;

@@ -303,7 +303,11 @@ void Panels::timingsWindow(ViewSession& session, const vk::Swapchain& swapchain)
         ImGui::PlotLines("##frame", ms.data(), int(ms.size()), 0, fmt::format("frame {:.2f} ms", newest).c_str(), 0.0f,
                          top * 1.1f, {0, 60});
     }
-    if (ImGui::BeginTable("passes", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
+    // Per-pass scopes make the passes run one after another (Renderer::setPassScopes): off shows the
+    // frame as it runs, independent passes together.
+    ImGui::Checkbox("time every pass (in order)", &passScopes_);
+    session.renderer().setPassScopes(passScopes_);
+    if (passScopes_ && ImGui::BeginTable("passes", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
         ImGui::TableSetupColumn("pass");
         ImGui::TableSetupColumn("GPU ms");
         ImGui::TableHeadersRow();

@@ -37,6 +37,7 @@ private:
     void apply(ViewSession& session, const std::string& option, const std::string& value);
 
     std::deque<float> frameMs_;
+    bool passScopes_ = true;  // the timings window's per-pass table
     std::map<std::string, std::string> edits_;  // option text fields being typed in
     std::string error_;
     std::string splitEdit_ = "shadow pcss";  // the B side's option and value
