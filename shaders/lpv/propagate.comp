@@ -3,7 +3,8 @@
 // neighbours, the flux the neighbour's intensity sends through the 5 faces of this cell that do not
 // touch the neighbour (solid angles 0.4006696846 for the face ahead, 0.4234413544 for each side
 // face). Light crossing into the cell is attenuated by the geometry volume sampled on the shared face
-// (skipped on the first step, where the light would block itself). Output: this step's light, and
+// (skipped on the first step, where the light would block itself), or (--lpv-geometry voxels) by the
+// share of the face that the occupancy volume leaves open (lpv/face_transmittance.comp), every step. Output: this step's light, and
 // the running sum in two halves: near (and every step of cascade 0) and far (the steps of a coarser
 // cascade from pc.grid.w on, the light that has left the finer cascade's reach; lpv.h).
 //
@@ -20,6 +21,7 @@ layout(set = 0, binding = 0, std430) readonly buffer Source { vec4 src[]; };
 layout(set = 0, binding = 1, std430) writeonly buffer Destination { vec4 dst[]; };
 layout(set = 0, binding = 2, std430) buffer Accumulated { vec4 accum[]; };
 layout(set = 0, binding = 3, std430) readonly buffer GeometryVolume { vec4 geometry[]; };
+layout(set = 0, binding = 4, std430) readonly buffer Faces { vec4 faces[]; };  // --lpv-geometry voxels
 layout(push_constant) uniform Push { LpvPush pc; };
 
 #include "lpv/sh.glsl"
@@ -82,13 +84,17 @@ void main() {
     if (any(greaterThanEqual(cell, ivec3(pc.grid.x))) || cascade >= pc.grid.y) return;
     const bool first = pc.grid.z == 0u;
     const bool far = cascade > 0u && pc.grid.z + 1u >= pc.grid.w;
-    const bool occlusion = pc.params.x > 0.5 && !first;
+    const bool voxelFaces = pc.params.x > 0.5 && pc.params.w > 0.5;
+    const bool occlusion = pc.params.x > 0.5 && !first && !voxelFaces;
     vec4 result[3] = vec4[](vec4(0.0), vec4(0.0), vec4(0.0));
     for (int a = 0; a < 6; ++a) {
         ivec3 d = AXES[a];  // direction of travel: from the neighbour into this cell
         ivec3 from = cell - d;
         if (!insideGrid(from)) continue;
         vec4 blocking = occlusion ? faceGeometry(cascade, cell, d) : vec4(0.0);
+        // The face between `from` and this cell is the -axis face of whichever lies higher on the axis.
+        const int axis = a / 2;
+        const float open = voxelFaces ? faces[geometryIndex(cascade, (a & 1) == 0 ? cell : from)][axis] : 1.0;
         vec4 source[3];
         float scale[3];
         for (uint ch = 0; ch < 3u; ++ch) {
@@ -99,7 +105,7 @@ void main() {
             vec3 dir;
             float solid;
             faceOf(a, f, dir, solid);
-            float transmit = 1.0 - clamp(dot(blocking, shBasis(-dir)), 0.0, 1.0);
+            float transmit = open * (1.0 - clamp(dot(blocking, shBasis(-dir)), 0.0, 1.0));
             // shBasis(dir) * PI: the projection of a beam along dir that integrates, like a cosine
             // lobe, to pi (the solid angles are divided by pi).
             vec4 y = shBasis(dir);

@@ -201,6 +201,7 @@ struct VisibilityResolvePush {
 // vec4 SH coefficients per cell at ((c * 3 + ch) * cells + cell); the geometry volume is one vec4
 // per cell at (c * cells + cell), its cell k sitting at the light cells' corner k (half a cell off).
 #define LPV_MAX_CASCADES 4
+#define LPV_FACE_COLUMNS 4  // lpv/face_transmittance.comp: segments per side of a cell face
 
 struct GpuLpvCascade {
     vec4 origin;  // xyz = world position of the grid's min corner, w = cell size
@@ -216,7 +217,8 @@ struct GpuVpl {
 struct LpvPush {
     uvec4 grid;     // x = resolution, y = cascade count, z = first-iteration flag / slice axis, w = slice index
     uvec4 counts;   // x = VPL count, y = RSM source resolution, z = down-sampled resolution, w = layer count
-    vec4 params;    // x = occlusion on (1) or off (0), y = gather blend band in cells, z = G-buffer injection step
+    vec4 params;    // x = occlusion on (1) or off (0), y = gather blend band in cells, z = G-buffer injection step,
+                    // w = occlusion from the occupancy volume's faces (1) or the geometry volume (0)
     GpuLpvCascade cascades[LPV_MAX_CASCADES];
 };
 

@@ -24,6 +24,10 @@ void addLpvOptions(CLI::App& cmd, LpvSettings& lpv) {
         ->check(CLI::Range(1, 8192));
     cmd.add_option("--lpv-occlusion", lpv.occlusion, "Geometry-volume occlusion on/off");
     cmd.add_option("--lpv-camera-geometry", lpv.cameraGeometry, "Inject camera G-buffer occluders on/off");
+    cmd.add_option("--lpv-geometry", lpv.geometry,
+                   "What blocks propagation: surfels (geometry volume) or voxels (the occupancy volume, --rsm-voxel-res)")
+        ->transform(CLI::CheckedTransformer(std::map<std::string, LpvGeometry>{{"surfels", LpvGeometry::Surfels},
+                                                                            {"voxels", LpvGeometry::Voxels}}));
     cmd.add_option("--lpv-slice-axis", lpv.sliceAxis, "Axis of the lpv-slice/gv-slice AOV: 0=x 1=y 2=z")
         ->check(CLI::Range(0, 2));
     cmd.add_option("--lpv-slice", lpv.sliceIndex, "Cell index of the lpv-slice/gv-slice AOV (< --lpv-res)")

@@ -67,7 +67,8 @@ LightPropagationVolume::LightPropagationVolume(vk::Allocator& alloc, uint32_t wi
     downsample_ = vk::ComputeKernel(ctx, "lpv/downsample.comp", {kTex, kTex, kTex, kSsbo, kSsbo, kSsbo}, push);
     inject_ = vk::ComputeKernel(ctx, "lpv/inject.comp", {kSsbo, kSsbo, kSsbo}, push);
     injectCamera_ = vk::ComputeKernel(ctx, "lpv/inject_camera.comp", {kUbo, kTex, kTex, kSsbo}, push);
-    propagate_ = vk::ComputeKernel(ctx, "lpv/propagate.comp", {kSsbo, kSsbo, kSsbo, kSsbo}, push);
+    propagate_ = vk::ComputeKernel(ctx, "lpv/propagate.comp", {kSsbo, kSsbo, kSsbo, kSsbo, kSsbo}, push);
+    if (voxels()) faceKernel_ = vk::ComputeKernel(ctx, "lpv/face_transmittance.comp", {kSsbo, kSsbo}, push);
     gather_ = vk::ComputeKernel(ctx, "lpv/gather.comp", {kUbo, kTex, kTex, kSsbo, kSsbo, kImg}, push);
     pointSampler_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
 
@@ -78,13 +79,14 @@ LightPropagationVolume::LightPropagationVolume(vk::Allocator& alloc, uint32_t wi
     // The sum of the steps in two halves: near (steps before the window of a coarser cascade) and far.
     accum_ = vk::Buffer(alloc, 2 * light, kVolumeUsage, false, "lpv-light-sum");
     geometry_ = vk::Buffer(alloc, cells * cascadeCount_ * 16, kVolumeUsage, false, "lpv-geometry");
+    if (voxels()) faces_ = vk::Buffer(alloc, cells * cascadeCount_ * 16, kVolumeUsage, false, "lpv-faces");
     irradiance_ = vk::Image(alloc, {VK_FORMAT_R32G32B32A32_SFLOAT, width, height, 1,
                                     VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
                                         VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                                     "lpv-irradiance"});
     push_.grid = {settings_.resolution, cascadeCount_, 0, 0};
     push_.counts = {0, settings_.rsmResolution, settings_.vplResolution, 0};
-    push_.params = {settings_.occlusion ? 1.0f : 0.0f, settings_.blendCells, float(settings_.cameraGeometryStep), 0};
+    setSettings(settings_);
 }
 
 void LightPropagationVolume::update(const glm::vec3& eye) {
@@ -101,7 +103,8 @@ void LightPropagationVolume::run(PassContext& c, const vk::ComputeKernel& kernel
 
 void LightPropagationVolume::setSettings(const LpvSettings& settings) {
     settings_ = settings;
-    push_.params = {settings.occlusion ? 1.0f : 0.0f, settings.blendCells, float(settings.cameraGeometryStep), 0};
+    push_.params = {settings.occlusion ? 1.0f : 0.0f, settings.blendCells, float(settings.cameraGeometryStep),
+                    voxels() ? 1.0f : 0.0f};
 }
 
 void LightPropagationVolume::addTo(FrameGraph& graph, uint32_t rsmLayers) {
@@ -171,7 +174,7 @@ void LightPropagationVolume::addInjection(FrameGraph& graph) {
 }
 
 void LightPropagationVolume::addCameraGeometry(FrameGraph& graph) {
-    if (!settings_.cameraGeometry || !settings_.occlusion) return;
+    if (!settings_.cameraGeometry || !settings_.occlusion || voxels()) return;
     const VkSampler point = pointSampler_.handle();
     const uint32_t step = settings_.cameraGeometryStep;
     const glm::uvec3 groups{vk::divUp(vk::divUp(width_, step), 8), vk::divUp(vk::divUp(height_, step), 8), 1};
@@ -188,6 +191,15 @@ void LightPropagationVolume::addPropagation(FrameGraph& graph) {
     const uint32_t r = settings_.resolution;
     const BufferHandle a = graph.import(volumeA_), b = graph.import(volumeB_), sum = graph.import(accum_),
                        geometry = graph.import(geometry_);
+    const BufferHandle faces = voxels() ? graph.import(faces_) : geometry;  // unread without voxels
+    if (voxels())
+        graph.pass("lpv.faces")
+            .pipeline(faceKernel_.pipeline)
+            .storageBuffer(0, graph.buffer("occupancy"))
+            .storageBuffer(1, faces, Use::StorageWrite)
+            .record([this, push = push_, r](PassContext& c) {
+                run(c, faceKernel_, push, {vk::divUp(r, 4), vk::divUp(r, 4), vk::divUp(r * cascadeCount_, 4)});
+            });
     for (uint32_t i = 0; i < settings_.iterations; ++i) {
         gpu::LpvPush push = push_;
         push.grid.z = i;
@@ -201,6 +213,7 @@ void LightPropagationVolume::addPropagation(FrameGraph& graph) {
             .storageBuffer(1, i % 2 ? a : b, Use::StorageWrite)
             .storageBuffer(2, sum, Use::StorageWrite)
             .storageBuffer(3, geometry, Use::StorageRead)
+            .storageBuffer(4, faces, Use::StorageRead)
             .bytes(uint64_t(r) * r * r * cascadeCount_ * (48 + 16 + 48 + 96))
             .record([this, push, r](PassContext& c) {
                 run(c, propagate_, push, {vk::divUp(r, 4), vk::divUp(r, 4), vk::divUp(r * cascadeCount_, 4)});

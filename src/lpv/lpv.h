@@ -3,7 +3,8 @@
 //   lpv.clear             zero the light, accumulation and geometry volumes
 //   lpv.inject            VPLs -> light volume (L1 SH per colour, float atomics) and geometry volume
 //   lpv.inject-camera     camera G-buffer surfels -> geometry volume
-//   lpv.propagate[i]      6 neighbours x 5 faces, occlusion from the geometry volume, running sum
+//   lpv.faces             (--lpv-geometry voxels) the open share of every cell face, from "occupancy"
+//   lpv.propagate[i]      6 neighbours x 5 faces, occlusion from the geometry volume (or the faces), running sum
 //   lpv.gather            per pixel irradiance from the summed volume (trilinear, cascades summed)
 // Cascades: nested grids of the same resolution, each twice as coarse: fit to the scene for scenes
 // under 20 m, else around the camera (snapped to whole cells). Light goes about one cell per step, so
@@ -53,6 +54,7 @@ public:
     const vk::Buffer& accumulated() const { return accum_; }
     const vk::Buffer& lastStep() const { return settings_.iterations % 2 ? volumeB_ : volumeA_; }
     const vk::Buffer& geometry() const { return geometry_; }
+    const vk::Buffer& faces() const { return faces_; }  // --lpv-geometry voxels
     const vk::Buffer& vpls() const { return vpls_; }
 
 private:
@@ -68,9 +70,12 @@ private:
     Bounds bounds_;
     uint32_t width_, height_, cascadeCount_, layers_ = 0;
     gpu::LpvPush push_{};
-    vk::ComputeKernel downsample_, inject_, injectCamera_, propagate_, gather_;
+    bool voxels() const { return settings_.geometry == LpvGeometry::Voxels; }
+
+    vk::ComputeKernel downsample_, inject_, injectCamera_, propagate_, gather_, faceKernel_;
     vk::Sampler pointSampler_;
     vk::Buffer vpls_, volumeA_, volumeB_, accum_, geometry_;
+    vk::Buffer faces_;  // --lpv-geometry voxels: per cell the open share of its -x, -y, -z faces
     vk::Image irradiance_;
 };
 

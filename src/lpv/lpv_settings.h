@@ -4,6 +4,11 @@
 
 namespace penumbra {
 
+// What blocks light between cells: the geometry volume (L1 lobes of the RSM's and the camera's
+// surfels, Kaplanyan & Dachsbacher 2010), or the share of each cell face that the occupancy volume's
+// voxels leave open (lpv/face_transmittance.comp).
+enum class LpvGeometry { Surfels, Voxels };
+
 struct LpvSettings {
     uint32_t resolution = 16;       // cells per side of each cascade (README "LPV": 16 beat 24 and 32)
     uint32_t iterations = 8;        // propagation steps
@@ -11,7 +16,8 @@ struct LpvSettings {
     uint32_t rsmResolution = 2048;  // RSM rendered for injection, per light
     uint32_t vplResolution = 512;   // RSM down-sampled to this many VPLs per side
     bool occlusion = true;          // geometry volume blocks propagation (after the first step)
-    bool cameraGeometry = true;     // also inject occluders seen by the camera (G-buffer)
+    LpvGeometry geometry = LpvGeometry::Surfels;  // `--lpv-geometry`
+    bool cameraGeometry = true;     // also inject occluders seen by the camera (G-buffer; surfels)
     uint32_t cameraGeometryStep = 4;  // one camera surfel per step x step pixels
     float blendCells = 2.0f;        // cascade border blend band, in cells
     uint32_t sliceAxis = 2;         // debug AOVs lpv-slice / gv-slice: axis (0 x, 1 y, 2 z)

@@ -135,7 +135,9 @@ RsmTechnique::RsmTechnique(vk::Allocator& alloc, vk::CommandContext& cmd, GpuSce
           return r;
       }(), s.shadow.resolution) {
     if (gather) gather_ = std::make_unique<RsmGather>(alloc, cmd, s.width, s.height, s.rsm);
-    if (gather && s.rsm.visibility == RsmVisibility::Voxels)
+    // The occupancy volume: the RSM gather's visibility, or what blocks LPV's propagation.
+    if ((gather && s.rsm.visibility == RsmVisibility::Voxels) ||
+        (!gather && s.lpv.geometry == LpvGeometry::Voxels))
         occupancy_ = std::make_unique<OccupancyVolume>(alloc, scene.meshes(), s.rsm.voxelResolution);
 }
 

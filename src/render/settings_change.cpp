@@ -68,6 +68,7 @@ std::vector<SettingsOption> makeTable() {
         option("--lpv-vpl-res", kSizes, kPartGi, [](S s) { return s.lpv.vplResolution; }),
         option("--lpv-occlusion", kFrame, kPartNone, [](S s) { return s.lpv.occlusion; }),
         option("--lpv-camera-geometry", kStructure, kPartNone, [](S s) { return s.lpv.cameraGeometry; }),
+        option("--lpv-geometry", kStructure, kPartGi, [](S s) { return int(s.lpv.geometry); }),
         option("--lpv-slice-axis", kFrame, kPartNone, [](S s) { return s.lpv.sliceAxis; }),
         option("--lpv-slice", kFrame, kPartNone, [](S s) { return s.lpv.sliceIndex; }),
         option("--translucency", kStructure, kPartCamera, [](S s) { return s.translucency; }),
