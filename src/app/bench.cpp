@@ -145,6 +145,50 @@ static BenchRun runFrames(Renderer& renderer, const SceneMotion& motion, const B
     return run;
 }
 
+// Four series of the same frames. The frame's time comes from frames timed as a whole: a timestamp
+// waits for the work before it, so scopes around every pass run the passes one after another
+// (Renderer::setPassScopes). The per-pass times come from the same frames with scopes.
+struct BenchTimings {
+    std::map<std::string, std::vector<double>> perPass;  // scoped cold frames
+    std::vector<std::string> order;                     // the passes in the order they ran
+    std::vector<double> frameMs, serialMs, scopeSumMs, cpuMs, warmFrameMs;
+    std::map<std::string, std::vector<double>> warmPerPass;
+};
+struct BenchSeries {
+    BenchRun whole;  // cold frames timed whole (wall clock)
+    BenchTimings timings;
+};
+
+static BenchSeries measureSeries(Renderer& renderer, const SceneMotion& motion, const BenchOptions& o,
+                                 std::vector<double>& poseMs) {
+    std::vector<double> unused;
+    BenchSeries out;
+    out.whole = runFrames(renderer, motion, o, true, poseMs);
+    const BenchRun warm = runFrames(renderer, motion, o, false, unused);
+    renderer.setPassScopes(true);
+    const BenchRun scoped = runFrames(renderer, motion, o, true, unused);
+    const BenchRun warmScoped = runFrames(renderer, motion, o, false, unused);
+    BenchTimings& t = out.timings;
+    for (const FrameTimings& f : warmScoped.frames)
+        for (const vk::ScopeTiming& p : f.passes) t.warmPerPass[p.name].push_back(p.ms);
+    for (const FrameTimings& f : warm.frames) t.warmFrameMs.push_back(f.gpuMs);
+    for (const FrameTimings& f : scoped.frames) {
+        double sum = 0.0;
+        for (const vk::ScopeTiming& p : f.passes) {
+            if (!t.perPass.count(p.name)) t.order.push_back(p.name);
+            t.perPass[p.name].push_back(p.ms);
+            sum += p.ms;
+        }
+        t.serialMs.push_back(f.gpuMs);
+        t.scopeSumMs.push_back(sum);
+    }
+    for (const FrameTimings& f : out.whole.frames) {
+        t.frameMs.push_back(f.gpuMs);
+        t.cpuMs.push_back(f.cpuMs);
+    }
+    return out;
+}
+
 int runBench(const BenchOptions& o, const vk::ContextOptions& vkOptions, RenderSettings settings, bool dryRun) {
     if (!o.json.empty()) checkWritable(o.json, "--json");
     if (dryRun) return prepareFrame(o.frame, settings), 0;
@@ -156,37 +200,10 @@ int runBench(const BenchOptions& o, const vk::ContextOptions& vkOptions, RenderS
     Renderer renderer(ctx, scene, settings, uint32_t(o.framesInFlight));
     for (const std::string& w : renderer.warnings()) fmt::print(stderr, "penumbra: warning: {}\n", w);
     const SceneMotion motion = frameMotion(o.frame, f);
-    // Four series of the same frames. The frame's time comes from frames timed as a whole: a
-    // timestamp waits for the work before it, so scopes around every pass run the passes one after
-    // another (Renderer::setPassScopes). The per-pass times come from the same frames with scopes.
-    std::vector<double> poseMs, unused;
-    const BenchRun run = runFrames(renderer, motion, o, true, poseMs);
-    const BenchRun warm = runFrames(renderer, motion, o, false, unused);
-    renderer.setPassScopes(true);
-    const BenchRun scoped = runFrames(renderer, motion, o, true, unused);
-    const BenchRun warmScoped = runFrames(renderer, motion, o, false, unused);
-    std::map<std::string, std::vector<double>> warmPerPass;
-    std::vector<double> warmFrameMs;
-    for (const FrameTimings& t : warmScoped.frames)
-        for (const vk::ScopeTiming& p : t.passes) warmPerPass[p.name].push_back(p.ms);
-    for (const FrameTimings& t : warm.frames) warmFrameMs.push_back(t.gpuMs);
-    std::map<std::string, std::vector<double>> perPass;
-    std::vector<std::string> order;
-    std::vector<double> frameMs, serialMs, scopeSumMs, cpuMs;
-    for (const FrameTimings& t : scoped.frames) {
-        double sum = 0.0;
-        for (const vk::ScopeTiming& p : t.passes) {
-            if (!perPass.count(p.name)) order.push_back(p.name);
-            perPass[p.name].push_back(p.ms);
-            sum += p.ms;
-        }
-        serialMs.push_back(t.gpuMs);
-        scopeSumMs.push_back(sum);
-    }
-    for (const FrameTimings& t : run.frames) {
-        frameMs.push_back(t.gpuMs);
-        cpuMs.push_back(t.cpuMs);
-    }
+    std::vector<double> poseMs;
+    const BenchSeries series = measureSeries(renderer, motion, o, poseMs);
+    const BenchRun& run = series.whole;
+    const auto& [perPass, order, frameMs, serialMs, scopeSumMs, cpuMs, warmFrameMs, warmPerPass] = series.timings;
 
     std::map<std::string, uint64_t> bytes;
     for (const PassDesc& p : renderer.passes()) bytes[p.name] = p.bytes;
@@ -195,7 +212,7 @@ int runBench(const BenchOptions& o, const vk::ContextOptions& vkOptions, RenderS
     fmt::print("{:<24} {:>9} {:>9} {:>9} {:>10} {:>8} {:>7}\n", "pass", "median ms", "p5", "p95", "MB moved", "GB/s",
                "/copy");
     for (const std::string& name : order) {
-        Stats s = stats(perPass[name]);
+        Stats s = stats(perPass.at(name));
         nlohmann::json j{{"name", name}, {"median_ms", s.median}, {"p5_ms", s.p5}, {"p95_ms", s.p95}};
         std::string mb, gbps, ratio;
         if (bytes[name]) {
@@ -216,7 +233,7 @@ int runBench(const BenchOptions& o, const vk::ContextOptions& vkOptions, RenderS
     fmt::print("{:<24} {:9.3f} {:9.3f} {:9.3f}\n", "warm frame (cached)", ws.median, ws.p5, ws.p95);
     nlohmann::json warmPasses = nlohmann::json::array();
     for (const std::string& name : order)
-        if (warmPerPass.count(name)) warmPasses.push_back({{"name", name}, {"median_ms", stats(warmPerPass[name]).median}});
+        if (warmPerPass.count(name)) warmPasses.push_back({{"name", name}, {"median_ms", stats(warmPerPass.at(name)).median}});
     fmt::print("{:<24} {:9.3f} {:9.3f} {:9.3f}\n", "sum of pass scopes", sum.median, sum.p5, sum.p95);
     fmt::print("{:<24} {:9.3f} {:9.3f} {:9.3f}\n", "wall clock per frame", wall.median, wall.p5, wall.p95);
     fmt::print("{:<24} {:9.3f} {:9.3f} {:9.3f}\n", "CPU (record + submit)", cpu.median, cpu.p5, cpu.p95);
