@@ -1,9 +1,10 @@
 #version 460
 // DSM resolve, one workgroup per texel with nodes (the work list of dsm.offsets; a fixed grid of
-// workgroups strides over it; each zeroes its texel's bucket counts for the next frame): the texel's `maxList` nearest nodes sorted by depth, each holding the
-// transmittance behind it, T_k = prod_{j<=k} (1 - alpha_j); farther nodes are dropped (dsm.offsets
-// counted them). The texel's fragments (consecutive in its run, the build's) go into shared slots, a
-// bitonic network sorts them and the nearest `maxList` stay; a list longer than the slots comes in
+// workgroups strides over it; each zeroes its texel's bucket counts for the next frame): the
+// texel's `maxList` nearest nodes sorted by depth, each holding the transmittance behind it,
+// T_k = prod_{j<=k} (1 - alpha_j); farther nodes are dropped (dsm.offsets counted them). The
+// texel's fragments (consecutive in its run, the build's) go into shared slots, a bitonic network
+// sorts them and the nearest `maxList` stay; a list longer than the slots comes in
 // batches, and once the cap is full only nodes nearer than the farthest kept take a slot. (One
 // thread per texel walking linked lists into a heap kept 50 heap entries per thread in local memory,
 // which the H100 could not hold in L1: 0.84 of the resolve's 1.16 ms at 25k strands went to the heap;

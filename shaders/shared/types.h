@@ -303,7 +303,8 @@ struct ShadowDrawPush {
 #define OIT_BUCKETS 16
 #define DSM_CULLED 0x80000000u
 // A work-list entry of a texel that was counted but got no run (its tile found no room in the pool):
-// the resolve only zeroes its counts (dsm/offsets.comp).
+// the resolve only zeroes its counts (dsm/offsets.comp). Texel indices stay below 2^31: the maps'
+// 48 bytes a texel must fit half the device's memory (DsmResources), under 1G texels on an 80 GB GPU.
 #define DSM_WORK_UNLISTED 0x80000000u
 #define OIT_HEADER_UINTS 4
 // A camera node's z: a hair fragment's segment (the index of its first point among the hair points),

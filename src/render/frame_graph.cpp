@@ -220,7 +220,8 @@ std::vector<std::vector<uint32_t>> FrameGraph::schedule() const {
         std::vector<uint32_t> readers;
         VkImageLayout layout = VK_IMAGE_LAYOUT_UNDEFINED;
     };
-    std::unordered_map<const void*, Access> accesses;
+    std::unordered_map<const vk::Image*, Access> imageAccesses;
+    std::unordered_map<VkBuffer, Access> bufferAccesses;
     std::vector<uint32_t> level(passes_.size(), 0);
     for (uint32_t j = 0; j < passes_.size(); ++j) {
         const PassDesc& pass = passes_[j];
@@ -228,8 +229,7 @@ std::vector<std::vector<uint32_t>> FrameGraph::schedule() const {
         auto follow = [&](int i) {
             if (i >= 0 && uint32_t(i) != j) lv = std::max(lv, level[i] + 1);
         };
-        auto access = [&](const void* key, const Sync& s, bool image) {
-            Access& a = accesses[key];
+        auto access = [&](Access& a, const Sync& s, bool image) {
             follow(a.writer);
             // A layout change is a write: it must wait for the readers of the old layout.
             const bool modifies = s.writes || (image && !a.readers.empty() && a.layout != s.layout);
@@ -243,8 +243,9 @@ std::vector<std::vector<uint32_t>> FrameGraph::schedule() const {
             a.layout = s.layout;
         };
         for (const auto& [h, use] : pass.images)
-            access(&imageOf(h), syncFor(use, pass.kind, vk::isDepthFormat(imageOf(h).format())), true);
-        for (const auto& [h, use] : pass.buffers) access(bufferOf(h).handle(), syncFor(use, pass.kind, false), false);
+            access(imageAccesses[&imageOf(h)], syncFor(use, pass.kind, vk::isDepthFormat(imageOf(h).format())), true);
+        for (const auto& [h, use] : pass.buffers)
+            access(bufferAccesses[bufferOf(h).handle()], syncFor(use, pass.kind, false), false);
         level[j] = lv;
         if (groups.size() <= lv) groups.resize(lv + 1);
         groups[lv].push_back(j);
