@@ -506,4 +506,11 @@ TEST_F(GpuTest, LpvVoxelFacesAreTheShareOfOpenColumns) {
     EXPECT_GT(blocked, 50u);   // the walls and boxes block whole faces
     EXPECT_GT(open, 1000u);    // the room's air
     EXPECT_LT(ambiguous, compared / 10);
+
+    // The next frame of the static scene keeps the faces: neither the voxels nor the grids moved.
+    const std::vector<float> first = r.readHdr();
+    r.render(scene.cameras[0]);
+    for (const PassDesc& p : r.passes())
+        EXPECT_TRUE(p.name != "lpv.faces" && p.name.rfind("occupancy.", 0) != 0) << p.name << " ran again";
+    EXPECT_EQ(r.readHdr(), first);
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include <fmt/format.h>
 
@@ -107,7 +108,7 @@ void LightPropagationVolume::setSettings(const LpvSettings& settings) {
                     voxels() ? 1.0f : 0.0f};
 }
 
-void LightPropagationVolume::addTo(FrameGraph& graph, uint32_t rsmLayers) {
+void LightPropagationVolume::addTo(FrameGraph& graph, uint32_t rsmLayers, uint64_t occupancyGeneration) {
     if (layers_ != rsmLayers) {
         layers_ = rsmLayers;
         const uint32_t n = settings_.vplResolution;
@@ -119,7 +120,7 @@ void LightPropagationVolume::addTo(FrameGraph& graph, uint32_t rsmLayers) {
     if (layers_ > 0) addDownsample(graph);
     addInjection(graph);
     addCameraGeometry(graph);
-    addPropagation(graph);
+    addPropagation(graph, occupancyGeneration);
     addGather(graph);
 }
 
@@ -187,12 +188,19 @@ void LightPropagationVolume::addCameraGeometry(FrameGraph& graph) {
         .record([this, push = push_, groups](PassContext& c) { run(c, injectCamera_, push, groups); });
 }
 
-void LightPropagationVolume::addPropagation(FrameGraph& graph) {
+void LightPropagationVolume::addPropagation(FrameGraph& graph, uint64_t occupancyGeneration) {
     const uint32_t r = settings_.resolution;
     const BufferHandle a = graph.import(volumeA_), b = graph.import(volumeB_), sum = graph.import(accum_),
                        geometry = graph.import(geometry_);
     const BufferHandle faces = voxels() ? graph.import(faces_) : geometry;  // unread without voxels
-    if (voxels())
+    // The faces stay valid while the voxels and the cascades do (a room-sized scene's grids never move).
+    std::array<gpu::GpuLpvCascade, LPV_MAX_CASCADES> cascades{};
+    std::copy_n(push_.cascades, cascadeCount_, cascades.begin());
+    const auto facesOf = std::make_pair(occupancyGeneration, cascades);
+    const bool sameFaces = facesOf_ && facesOf_->first == facesOf.first &&
+                           std::memcmp(facesOf_->second.data(), cascades.data(), sizeof(cascades)) == 0;
+    if (voxels() && !sameFaces) {
+        facesOf_ = facesOf;
         graph.pass("lpv.faces")
             .pipeline(faceKernel_.pipeline)
             .storageBuffer(0, graph.buffer("occupancy"))
@@ -200,6 +208,7 @@ void LightPropagationVolume::addPropagation(FrameGraph& graph) {
             .record([this, push = push_, r](PassContext& c) {
                 run(c, faceKernel_, push, {vk::divUp(r, 4), vk::divUp(r, 4), vk::divUp(r * cascadeCount_, 4)});
             });
+    }
     for (uint32_t i = 0; i < settings_.iterations; ++i) {
         gpu::LpvPush push = push_;
         push.grid.z = i;

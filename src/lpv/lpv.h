@@ -15,6 +15,8 @@
 // indirect-irradiance image the RSM gather produces.
 #pragma once
 #include <array>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "lpv/lpv_settings.h"
@@ -37,7 +39,9 @@ public:
     void update(const glm::vec3& eye);
     // Reads "frame", "lights", the G-buffer and the RSM ("rsm.*", `rsmLayers` layers); publishes
     // "gi.irradiance".
-    void addTo(FrameGraph& graph, uint32_t rsmLayers);
+    // `occupancyGeneration` (OccupancyVolume::generation, --lpv-geometry voxels): the faces are made
+    // again only when it or the cascades changed.
+    void addTo(FrameGraph& graph, uint32_t rsmLayers, uint64_t occupancyGeneration = 0);
     // Per-frame values (occlusion, blend band, debug slice); sizes and the pass count must not change.
     void setSettings(const LpvSettings& settings);
 
@@ -61,7 +65,7 @@ private:
     void addDownsample(FrameGraph& graph);
     void addInjection(FrameGraph& graph);
     void addCameraGeometry(FrameGraph& graph);
-    void addPropagation(FrameGraph& graph);
+    void addPropagation(FrameGraph& graph, uint64_t occupancyGeneration = 0);
     void addGather(FrameGraph& graph);
     static void run(PassContext& c, const vk::ComputeKernel& kernel, const gpu::LpvPush& push, glm::uvec3 groups);
 
@@ -76,6 +80,7 @@ private:
     vk::Sampler pointSampler_;
     vk::Buffer vpls_, volumeA_, volumeB_, accum_, geometry_;
     vk::Buffer faces_;  // --lpv-geometry voxels: per cell the open share of its -x, -y, -z faces
+    std::optional<std::pair<uint64_t, std::array<gpu::GpuLpvCascade, LPV_MAX_CASCADES>>> facesOf_;  // what they show
     vk::Image irradiance_;
 };
 

@@ -158,12 +158,13 @@ void RsmTechnique::applyPerFrame(const RenderSettings& s) {
     if (gather_) gather_->setSettings(s.rsm);
 }
 
-LpvTechnique::LpvTechnique(vk::Allocator& alloc, const Bounds& bounds, const RenderSettings& s, RsmPass& rsm)
-    : rsm_(rsm), volume_(alloc, s.width, s.height, s.lpv, bounds) {}
+LpvTechnique::LpvTechnique(vk::Allocator& alloc, const Bounds& bounds, const RenderSettings& s, RsmPass& rsm,
+                           const OccupancyVolume* occupancy)
+    : rsm_(rsm), occupancy_(occupancy), volume_(alloc, s.width, s.height, s.lpv, bounds) {}
 
 void LpvTechnique::addPasses(const FrameContext& f) {
     volume_.update(f.camera.eye);
-    volume_.addTo(f.graph, rsm_.layerCount());
+    volume_.addTo(f.graph, rsm_.layerCount(), occupancy_ ? occupancy_->generation() : 0);
 }
 
 LightingTechnique::LightingTechnique(vk::Allocator& alloc, vk::CommandContext& cmd, const RenderSettings& s,

@@ -107,7 +107,9 @@ private:
 
 class LpvTechnique : public Technique {
 public:
-    LpvTechnique(vk::Allocator& alloc, const Bounds& bounds, const RenderSettings& s, RsmPass& rsm);
+    // `occupancy`: the RSM technique's (--lpv-geometry voxels), or null.
+    LpvTechnique(vk::Allocator& alloc, const Bounds& bounds, const RenderSettings& s, RsmPass& rsm,
+                 const OccupancyVolume* occupancy);
     const char* name() const override { return "lpv"; }
     void addPasses(const FrameContext& f) override;
     void applyPerFrame(const RenderSettings& s) override { volume_.setSettings(s.lpv); }
@@ -115,6 +117,7 @@ public:
 
 private:
     RsmPass& rsm_;
+    const OccupancyVolume* occupancy_;
     LightPropagationVolume volume_;
 };
 

@@ -145,7 +145,8 @@ void Renderer::build(uint32_t parts) {
     if ((parts & kPartGi) && settings_.gi != GiMode::None) {
         const bool lpv = settings_.gi == GiMode::Lpv;
         rsm_ = std::make_unique<RsmTechnique>(alloc_, cmd_, scene_, settings_, shadow_->pass(), !lpv);
-        if (lpv) lpv_ = std::make_unique<LpvTechnique>(alloc_, scene_.scene().bounds, settings_, rsm_->pass());
+        if (lpv)
+            lpv_ = std::make_unique<LpvTechnique>(alloc_, scene_.scene().bounds, settings_, rsm_->pass(), rsm_->occupancy());
         if (shadow_->pass().layout().shadowed().empty())
             warnings_.push_back("GI: no directional or spot light casts shadows; no indirect light");
     }

@@ -44,6 +44,7 @@ void OccupancyVolume::addTo(FrameGraph& graph) {
     graph.publish("occupancy", volume);
     if (!stale_) return;
     stale_ = false;
+    ++generation_;
     const BufferHandle chunks = graph.import(chunks_);
     const gpu::GpuOccupancyGrid grid = grid_;
     graph.pass("occupancy.clear", PassKind::Transfer)

@@ -27,6 +27,8 @@ class OccupancyVolume {
 public:
     OccupancyVolume(vk::Allocator& alloc, SceneGpu& scene, uint32_t resolution);
     void invalidate() { stale_ = true; }
+    // How many builds addTo() has declared: what depends on the voxels redoes its work when it changes.
+    uint64_t generation() const { return generation_; }
     // Declares the build when stale and publishes "occupancy".
     void addTo(FrameGraph& graph);
 
@@ -42,6 +44,7 @@ private:
     vk::ComputeKernel voxelize_, bricks_;
     vk::Buffer buffer_, chunks_;  // the bits; the large triangles' chunks (and their dispatch's arguments)
     bool stale_ = true;
+    uint64_t generation_ = 0;
 };
 
 }  // namespace penumbra
