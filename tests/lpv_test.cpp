@@ -76,6 +76,20 @@ double totalFlux(const std::vector<glm::vec4>& v) {
     return sum * kC0 * 4.0 * kPi;
 }
 
+// The summed light (DC) of the cells whose centres lie in 0.05 < x < xMax of the 32^3 unit-cube grid:
+// behind a wall in the plane x = 0, seen from a VPL at x < 0.
+double lightBehindWall(const VolumeRun& r, float xMax = 1e30f) {
+    double sum = 0.0;
+    const float origin = -1.02f - 0.5f * r.cell;
+    for (int z = 0; z < int(kRes); ++z)
+        for (int y = 0; y < int(kRes); ++y)
+            for (int x = 0; x < int(kRes); ++x) {
+                const float centre = origin + (x + 0.5f) * r.cell;
+                if (centre > 0.05f && centre < xMax) sum += r.accum[cellIndex(x, y, z)].x;
+            }
+    return sum;
+}
+
 class LpvVolumeTest : public GpuTest {
 protected:
     // `occluders`: blocking from their occupancy volume (--lpv-geometry voxels), not the geometry volume.
@@ -317,16 +331,7 @@ TEST_F(LpvVolumeTest, WallInTheGeometryVolumeCutsTheLightBehindIt) {
     for (float y = -0.9f; y <= 0.9f; y += cell)
         for (float z = -0.9f; z <= 0.9f; z += cell)
             walled.push_back(vpl({0.0f, y, z}, {-1, 0, 0}, glm::vec3(0.0f), cell * cell));
-    auto behind = [&](const VolumeRun& r) {
-        double sum = 0.0;
-        const float origin = -1.02f - 0.5f * cell;
-        for (int z = 0; z < int(kRes); ++z)
-            for (int y = 0; y < int(kRes); ++y)
-                for (int x = 0; x < int(kRes); ++x)
-                    if (origin + (x + 0.5f) * cell > 0.05f) sum += r.accum[cellIndex(x, y, z)].x;
-        return sum;
-    };
-    const double open = behind(run(light, 8)), blocked = behind(run(walled, 8));
+    const double open = lightBehindWall(run(light, 8)), blocked = lightBehindWall(run(walled, 8));
     std::printf("[ lpv ] light behind the wall: %.3g open, %.3g blocked (%.1f%%)\n", open, blocked,
                 100.0 * blocked / open);
     EXPECT_GT(open, 0.0);
@@ -336,7 +341,6 @@ TEST_F(LpvVolumeTest, WallInTheGeometryVolumeCutsTheLightBehindIt) {
 // The same wall as a quad in the occupancy volume (--lpv-geometry voxels): the faces it crosses are
 // closed, and every step, from the first, stops what would cross them.
 TEST_F(LpvVolumeTest, WallInTheOccupancyVolumeCutsTheLightBehindIt) {
-    const float cell = 2.04f / 31.0f;
     const std::vector<gpu::GpuVpl> light{vpl({-0.3f, 0.0f, 0.0f}, {1, 0, 0}, glm::vec3(1.0f))};
     Scene wall;
     addQuad(wall, {0.0f, -0.9f, -0.9f}, {0.0f, 1.8f, 0.0f}, {0.0f, 0.0f, 1.8f}, addMaterial(wall, glm::vec3(0.5f)));
@@ -346,17 +350,8 @@ TEST_F(LpvVolumeTest, WallInTheOccupancyVolumeCutsTheLightBehindIt) {
         ensureSceneGraph(*sc);  // mesh 0, drawn once
         sc->bounds = unitCube();
     }
-    auto behind = [&](const VolumeRun& r) {
-        double sum = 0.0;
-        const float origin = -1.02f - 0.5f * cell;
-        for (int z = 0; z < int(kRes); ++z)
-            for (int y = 0; y < int(kRes); ++y)
-                for (int x = 0; x < int(kRes); ++x)
-                    if (origin + (x + 0.5f) * cell > 0.05f && origin + (x + 0.5f) * cell < 0.9f)
-                        sum += r.accum[cellIndex(x, y, z)].x;
-        return sum;
-    };
-    const double open = behind(run(light, 8, true, kRes, 1, &far)), blocked = behind(run(light, 8, true, kRes, 1, &wall));
+    const double open = lightBehindWall(run(light, 8, true, kRes, 1, &far), 0.9f),
+                 blocked = lightBehindWall(run(light, 8, true, kRes, 1, &wall), 0.9f);
     std::printf("[ lpv ] light behind the voxel wall: %.3g open, %.3g blocked (%.2f%%)\n", open, blocked,
                 100.0 * blocked / open);
     EXPECT_GT(open, 0.0);
