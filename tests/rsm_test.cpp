@@ -454,3 +454,58 @@ TEST_F(RsmTest, CascadedSunCountsEachSurfaceOnce) {
     ASSERT_GT(mean[0], 0.0);
     EXPECT_NEAR(mean[1] / mean[0], 1.0, 0.25);
 }
+
+// A VPL is lit as the lighting pass and the path tracer light its surface, by the shading normal's
+// cosine, and faces out by its triangle's plane. A floor quad whose vertex normals lean 40 degrees off
+// its plane, under a sun 30 degrees off the vertical (leaning the other way): each texel's flux is
+// cos(70) / cos(30) of the same quad's with true normals (the same footprint, lit at cos(70) instead
+// of the plane's cos(30)), and every VPL's normal is the plane's. With the shading normal for both,
+// VC's backdrop (normals up to 60 degrees off its triangles) sent 1.5x the path tracer's light.
+TEST_F(RsmTest, VplsAreLitByTheShadingNormalAndFaceByTheirTriangle) {
+    const double lean = glm::radians(40.0), sunTilt = glm::radians(30.0);
+    auto floorScene = [&](bool leaning) {
+        Scene scene;
+        const glm::vec3 n = leaning ? glm::vec3(std::sin(lean), std::cos(lean), 0.0) : glm::vec3(0, 1, 0);
+        const Vertex v[4] = {{{-1, 0, -1}, n, {0, 0}}, {{-1, 0, 1}, n, {0, 1}}, {{1, 0, 1}, n, {1, 1}}, {{1, 0, -1}, n, {1, 0}}};
+        const uint32_t idx[6] = {0, 1, 2, 0, 2, 3};
+        addTriangles(scene, v, idx, addMaterial(scene, glm::vec3(0.5f)));
+        Light sun;
+        sun.type = LightType::Directional;
+        sun.direction = glm::vec3(std::sin(sunTilt), -std::cos(sunTilt), 0.0);  // towards the light: (-sin, cos, 0)
+        scene.lights = {sun};
+        Camera cam;
+        cam.eye = {0, 3, 3};
+        scene.cameras = {cam};
+        scene.computeBounds();
+        return scene;
+    };
+    struct Texels {
+        std::vector<double> flux;
+        double worstNormal = 0.0;
+    };
+    auto texels = [&](bool leaning) {
+        const Scene scene = floorScene(leaning);
+        RenderSettings s = exactIndirect(32, 32, 64);
+        Renderer r(ctx(), scene, s);
+        r.render(scene.cameras[0]);
+        const Frame f = readFrame(r);
+        Texels out;
+        for (const Vpl& p : f.vpls) {
+            out.flux.push_back(p.flux.x);
+            out.worstNormal = std::max(out.worstNormal, glm::length(p.normal - dvec3(0, 1, 0)));
+        }
+        return out;
+    };
+    const Texels leaning = texels(true), flat = texels(false);
+    ASSERT_EQ(leaning.flux.size(), flat.flux.size());
+    ASSERT_GT(flat.flux.size(), 1000u);
+    const double expected = std::cos(lean + sunTilt) / std::cos(sunTilt);
+    double worstRatio = 0.0;
+    for (size_t i = 0; i < flat.flux.size(); ++i)
+        worstRatio = std::max(worstRatio, std::abs(leaning.flux[i] / flat.flux[i] - expected));
+    std::printf("[ rsm ] %zu VPLs: flux ratio within %.1e of cos(70)/cos(30) = %.4f; normals within %.1e of the plane's\n",
+                flat.flux.size(), worstRatio, expected, std::max(leaning.worstNormal, flat.worstNormal));
+    EXPECT_LT(worstRatio, 2e-3 * expected);  // half floats: 2^-11 each
+    EXPECT_LT(leaning.worstNormal, 1e-3);    // snorm16 octahedral pairs
+    EXPECT_LT(flat.worstNormal, 1e-3);
+}

@@ -42,7 +42,8 @@ void main() {
     const GpuRsmLayer layer = rsmLayers[texel.z];
     VisRay centre, dx0, dx1, dy0, dy1;
     quadRays(layer.invViewProj, texel.xy, vec2(float(res)), centre, dx0, dx1, dy0, dy1);
-    const VisSurface s = resolveSurface(fetchTriangle(id), centre, dx0, dx1, dy0, dy1);
+    const VisTriangle tri = fetchTriangle(id);
+    const VisSurface s = resolveSurface(tri, centre, dx0, dx1, dy0, dy1);
     const vec4 clip = layer.viewProj * vec4(s.position, 1.0);
     const GpuLight light = lights[uint(layer.params.z)];
     vec3 l;
@@ -53,10 +54,20 @@ void main() {
         const float z = clip.w;
         area *= z * z * clamp(z / max(length(s.position - light.position.xyz), 1e-6), 0.0, 1.0);
     }
-    vec3 n = s.normal;
-    if (dot(n, l) < 0.0) n = -n;  // the side the light sees (two-sided surfaces)
+    // The side the light sees (two-sided surfaces), by the triangle's own plane; the shading normal
+    // turned to that side.
+    const vec3 face = cross(tri.p[1] - tri.p[0], tri.p[2] - tri.p[0]);
+    vec3 n = dot(face, face) > 0.0 ? normalize(face) : s.normal;
+    if (dot(n, l) < 0.0) n = -n;
+    const vec3 shadingNormal = dot(s.normal, n) < 0.0 ? -s.normal : s.normal;
+    // The surface is lit as the lighting pass (and the path tracer) lights it, by its shading
+    // normal's cosine, over the area the texel covers (the footprint over the plane's cosine); it
+    // sends its light out by its plane's normal (the area it shows a direction). With one normal
+    // for both, VC's backdrop, whose shading normals lean up to 60 degrees off its triangles, sent
+    // 1.5x the path tracer's light.
+    const float lit = max(dot(shadingNormal, l), 0.0) / max(dot(n, l), 1e-3);
     // Rounded once, as packed: the separate images then hold the packed texel's values exactly.
-    const vec3 flux = surfaceBaseColor(s).rgb * e * area;
+    const vec3 flux = surfaceBaseColor(s).rgb * e * (area * lit);
     const uvec4 vpl = uvec4(floatBitsToUint(clip.z / clip.w), packSnorm2x16(octEncode(n)), packHalf2x16(flux.rg),
                             packHalf2x16(vec2(flux.b, 0.0)));
     imageStore(outDepth, texel, vec4(uintBitsToFloat(vpl.x)));
