@@ -1,41 +1,24 @@
 // Hair and deep shadow maps beyond the closed-form cases of dsm_test.cpp: the built-in `hair` scene,
 // glTF LINES / LINE_STRIP loading as strands, the invariants of the resolved lists and neighbour
 // links read back from the GPU, soft (partial) hair shadows under a DSM against the binary ones of an
-// ordinary shadow map, and the CLI's bad-input paths of the DSM options.
+// ordinary shadow map, the hair's shadow at its points, the compute raster against the hardware, and
+// frame-to-frame repeatability. The DSM options on the command line: dsm_cli_test.cpp.
 #include <algorithm>
-#include <cstdlib>
-#include <filesystem>
 #include <fstream>
 #include <map>
-#include <unistd.h>
 
 #include <fmt/format.h>
 #include <glm/gtc/packing.hpp>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "cli_run.h"
 #include "gpu_fixture.h"
 
 using namespace penumbra;
 using namespace penumbra::test;
-namespace fs = std::filesystem;
 
 namespace {
-
-struct ScratchDir {
-    fs::path path = fs::temp_directory_path() / fmt::format("penumbra_dsm_test_{}", getpid());
-    ScratchDir() { fs::create_directories(path); }
-    ~ScratchDir() {
-        std::error_code ec;
-        fs::remove_all(path, ec);
-    }
-    std::string file(const std::string& name) const { return (path / name).string(); }
-};
-
-std::string readText(const std::string& path) {
-    std::ifstream f(path);
-    return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
-}
 
 // A glTF with only lines: a LINE_STRIP of 3 points, and LINES [0,1, 1,2, 3,4] over 5 points (one
 // chained strand of 3 points and one of 2), under a node scaled by 2, with a BLEND material.
@@ -69,17 +52,7 @@ std::string writeLinesGltf(const ScratchDir& dir) {
     return dir.file("lines.gltf");
 }
 
-struct Cli {
-    int status;
-    std::string out, err;
-};
 
-// Runs the penumbra executable (on lavapipe: the test environment pins the ICD).
-Cli runCli(const ScratchDir& dir, const std::string& args) {
-    const std::string out = dir.file("out.txt"), err = dir.file("err.txt");
-    const int rc = std::system(fmt::format("timeout 60 {} {} >{} 2>{}", PENUMBRA_BIN, args, out, err).c_str());
-    return {WIFEXITED(rc) ? WEXITSTATUS(rc) : -1, readText(out), readText(err)};
-}
 
 Scene hairScene(uint32_t strands) {
     BuiltinOptions options;
@@ -406,54 +379,6 @@ TEST_F(GpuTest, HairShadowsArePartialWithDsmAndBinaryWithout) {
     EXPECT_LT(partialShare[false], 0.05);
 }
 
-TEST(DsmCli, BadInputGivesOneErrorLine) {
-    ScratchDir dir;
-    const std::string out = dir.file("x.png");
-    const std::vector<std::string> bad{
-        "render hair --strands -1 -o " + out,
-        "render hair --strands 0 -o " + out,
-        "render hair --shadow dsmm -o " + out,
-        "render hair --shadow dsm --dsm-nodes 99999999999 -o " + out,
-        "render hair --shadow dsm --dsm-max-list 500 -o " + out,
-        "render hair --aov transmittance -o " + out,
-        "render hair --dsm-lights 3 --strands 10 --width 8 --height 8 -o " + out,
-        "render hair --shadow dsm --dsm-filter 20 -o " + out,
-        // Six cube faces of 2048^2 need 1152 MiB of heads, work list and buckets: more than lavapipe's half.
-        "render hair --shadow dsm --light point,0.3,1,0.4,3 --dsm-res 2048 --strands 10 -o " + out,
-    };
-    for (const std::string& args : bad) {
-        const Cli r = runCli(dir, args);
-        EXPECT_NE(r.status, 0) << args;
-        EXPECT_EQ(r.err.rfind("penumbra: error: ", 0), 0u) << args << "\n" << r.err;
-        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << "\n" << r.err;
-    }
-}
-
-// A pool far too small: the run succeeds, warns with the number of dropped fragments and reports.
-// A point light's DSM at the shadow maps' resolution (2048^2, six faces) would not fit lavapipe's
-// memory: taken by default, the resolution halves with one warning and the frame renders.
-TEST(DsmCli, DefaultResolutionHalvesWhereTheMapsDoNotFit) {
-    ScratchDir dir;
-    const Cli r = runCli(dir, "render hair --strands 200 --shadow dsm --light point,0.3,1,0.4,3 --width 64 --height 48 "
-                              "-o " + dir.file("hair.png"));
-    EXPECT_EQ(r.status, 0) << r.err;
-    EXPECT_NE(r.err.find("penumbra: warning: --shadow dsm: 6 deep shadow map(s) of 2048^2 would take 1152 MiB"),
-              std::string::npos) << r.err;
-    EXPECT_NE(r.out.find("dsm: 6 map(s) of 1024^2"), std::string::npos) << r.out;
-    EXPECT_TRUE(fs::exists(dir.file("hair.png")));
-}
-
-TEST(DsmCli, SmallPoolWarnsAndReports) {
-    ScratchDir dir;
-    const Cli r = runCli(dir, "render hair --strands 200 --shadow pcf,dsm --dsm-nodes 1000 --width 64 --height 48 "
-                              "--shadow-res 128 -o " + dir.file("hair.png"));
-    EXPECT_EQ(r.status, 0) << r.err;
-    EXPECT_NE(r.err.find("penumbra: warning: deep shadow map node pool overflow: "), std::string::npos) << r.err;
-    EXPECT_NE(r.out.find("dsm: 1 map(s) of 128^2"), std::string::npos) << r.out;
-    EXPECT_NE(r.out.find("dsm.resolve"), std::string::npos) << r.out;
-    EXPECT_TRUE(fs::exists(dir.file("hair.png")));
-}
-
 // Hair ribbons rasterized in compute (`--raster compute`: dsm/ribbon_raster.glsl walks each
 // segment's quad) against the raster hardware drawing the same quads: both builds (the light's DSM
 // and the camera's translucency lists) get the same fragments but for pixel centres within rounding
@@ -580,18 +505,6 @@ TEST_F(GpuTest, CountsStartFromZeroEveryFrame) {
                 worst = std::max(worst, std::abs(double(image[i]) - first[i]) / std::max(1e-3, std::abs(double(first[i]))));
             EXPECT_LT(worst, 1e-4) << "frame " << frame << ", pool " << pool;
         }
-    }
-}
-
-// A deep shadow map with nothing to cast (cornell: no hair, no BLEND material) builds empty maps
-// under both rasterizers: the build once bound a raster pipeline that did not exist and crashed.
-TEST(DsmCli, SceneWithoutTranslucentCastersRenders) {
-    ScratchDir dir;
-    for (const char* raster : {"hardware", "compute"}) {
-        const Cli r = runCli(dir, fmt::format("render cornell --shadow dsm --raster {} --width 32 --height 24 "
-                                              "--shadow-res 64 -o {}", raster, dir.file("cornell.png")));
-        EXPECT_EQ(r.status, 0) << raster << ": " << r.err;
-        EXPECT_NE(r.out.find("dsm: 1 map(s) of 64^2: 0 light-space fragments"), std::string::npos) << r.out;
     }
 }
 

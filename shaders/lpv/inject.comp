@@ -46,7 +46,7 @@ void main() {
             }
         }
         ivec3 g = ivec3(floor(gridCoord(k, v.position.xyz) + 0.5));  // nearest cell corner
-        if (insideGrid(g)) {
+        if (insideGrid(g) && pc.params.w < 0.5) {  // the occupancy volume's faces block instead (--lpv-geometry voxels)
             vec4 blocking = lobe * (min(v.normal.w / (cell * cell), 1.0) / LOBE_PEAK);
             uint base = geometryIndex(k, g) * 4u;
             ADD_COEFFS(geometryCoeffs, base, blocking)

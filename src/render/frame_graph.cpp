@@ -207,9 +207,9 @@ void FrameGraph::execute(VkCommandBuffer cmd, vk::GpuTimer* timer) {
     }
 }
 
-std::vector<std::vector<uint32_t>> FrameGraph::schedule() const {
+std::vector<std::vector<uint32_t>> FrameGraph::schedule(bool overlap) const {
     std::vector<std::vector<uint32_t>> groups;
-    if (!overlap_) {
+    if (!overlap) {
         for (uint32_t i = 0; i < passes_.size(); ++i) groups.push_back({i});
         return groups;
     }
@@ -363,7 +363,7 @@ void PassBuilder::record(std::function<void(PassContext&)> fn) {
 
 std::string FrameGraph::describe() const {
     std::vector<uint32_t> groupOf(passes_.size());
-    const std::vector<std::vector<uint32_t>> groups = schedule();
+    const std::vector<std::vector<uint32_t>> groups = schedule(true);
     for (uint32_t g = 0; g < groups.size(); ++g)
         for (uint32_t i : groups[g]) groupOf[i] = g;
     std::string out;

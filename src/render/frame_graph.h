@@ -141,7 +141,7 @@ public:
     // group, none between its passes, so that independent work (the camera's lists, the light's)
     // overlaps on the GPU instead of each pass waiting for the one before. With overlap off, every
     // pass is a group of its own, in the order added.
-    std::vector<std::vector<uint32_t>> schedule() const;
+    std::vector<std::vector<uint32_t>> schedule() const { return schedule(overlap_); }
     void setOverlap(bool on) { overlap_ = on; }
     // Off: no timestamps between passes (the frame's own scope only): a timestamp may wait for the
     // work before it, which would undo the overlap.
@@ -149,7 +149,8 @@ public:
     const std::vector<PassDesc>& passes() const { return passes_; }
     vk::Image& imageOf(ImageHandle h) const { return *images_.at(h.index); }
     const vk::Buffer& bufferOf(BufferHandle h) const { return *buffers_.at(h.index); }
-    // One line per pass: name, group (schedule()), kind, what it reads and writes (`--print-passes`, the docs).
+    // One line per pass: name, the group it joins when passes overlap (whether or not they do now: pass
+    // scopes run them in order), kind, what it reads and writes (`--print-passes`, the docs).
     std::string describe() const;
 
 private:
@@ -159,6 +160,7 @@ private:
         VkAccessFlags2 access = VK_ACCESS_2_NONE;
     };
     void barriers(VkCommandBuffer cmd, const std::vector<uint32_t>& group);
+    std::vector<std::vector<uint32_t>> schedule(bool overlap) const;
     void bind(VkCommandBuffer cmd, const PassDesc& pass);
     vk::Context& ctx_;
     std::vector<PassDesc> passes_;
