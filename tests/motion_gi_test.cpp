@@ -213,6 +213,7 @@ TEST_F(MotionGiTest, BilinearVplsMoveContinuouslyWithTheLight) {
     s.rsm.mode = RsmMode::Full;  // no interpolation: its own decisions would jump too
     s.rsm.resolution = 128;
     s.rsm.samples = 256;
+    s.rsm.far = RsmFar::Disc;  // flux draws are texels whatever --rsm-vpls says
     s.aov = Aov::Indirect;
     const float h = 0.0625f * 2.0f * std::tan(spot.outerConeAngle) / float(s.rsm.resolution);  // 1/16 texel on the floor
     double ratio[2] = {0.0, 0.0};

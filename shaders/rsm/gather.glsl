@@ -21,9 +21,11 @@ layout(set = 0, binding = 7, std430) readonly buffer Samples { vec4 samples[]; }
 layout(set = 0, binding = 8, rgba32f) uniform writeonly image2D outIrradiance;
 layout(set = 0, binding = 9, std430) readonly buffer PixelList { uvec4 header; uvec2 pixels[]; } list;
 layout(set = 0, binding = 11) uniform usampler2DArray rsmVpls;  // depth, normal and flux in one texel
+layout(set = 0, binding = 12, std430) readonly buffer FluxDrawBuffer { uvec4 blocks[]; } drawn;  // shared/types.h
 layout(push_constant) uniform Push { RsmPush pc; };
 
 #include "rsm/vpl.glsl"
+#include "rsm/flux_luminance.glsl"
 #ifdef RSM_VOXEL_VISIBILITY
 #define OCCUPANCY_BINDING 10
 #include "voxel/occupancy.glsl"
@@ -130,6 +132,59 @@ vec4 patternSample(uint i, float shift) {
     return vec4(r * p.xy, texels / (n * density), r > rMax ? 1.0 : 0.0);
 }
 
+// --rsm-far flux: of a receiver's N samples, the n_near = N - N/2 of even index lie on the r_max disc
+// (radius R = r_max * scale around the receiver's projection, polar: p_near = 1 / (2 pi r R) per uv
+// area) and the n_far = N/2 of odd index are texels drawn by flux luminance (p_far = lum / total,
+// rsm/flux_draw.comp). Either kind weighs its texel by the balance heuristic, 1 / (n_near p_near +
+// n_far p_far), both per texel: unbiased over every texel with flux, and no sample is spent on a
+// dark one. rsm/gather_flux.comp compiles it in (RSM_FAR_FLUX); the shifted and voxel pipelines ask
+// the push constants, and rsm/gather.comp leaves it out.
+#if defined(RSM_FAR_FLUX)
+#define FLUX_FAR true
+#elif defined(RSM_SHIFTED_RADII)
+#define FLUX_FAR (pc.far.x != 0u)
+#else
+#define FLUX_FAR false
+#endif
+
+struct FluxDraws {
+    uint block;          // the layer's block of drawn.blocks
+    float farPerLum;     // n_far / total: n_far p_far per unit of flux luminance
+    float nearRate;      // n_near / (2 pi R texels): n_near p_near times r
+    float radius;        // R, uv units
+    float stride;        // entries per far sample
+};
+
+FluxDraws layerDraws(uint layer, float scale) {
+    FluxDraws d;
+    const uint n = pc.mode.y;
+    d.block = layer * RSM_FLUX_BLOCK;
+    const float total = FLUX_FAR ? uintBitsToFloat(drawn.blocks[d.block].x) : 0.0;
+    d.farPerLum = total > 0.0 ? float(n / 2u) / total : 0.0;
+    d.radius = pc.params.z * scale;
+    d.nearRate = float(n - n / 2u) / (2.0 * PI * d.radius * float(pc.sizes.z * pc.sizes.z));
+    d.stride = float(RSM_FLUX_ENTRIES) / max(float(n / 2u), 1.0);
+    return d;
+}
+
+// Far sample k of a receiver whose offset in [0, 1) is `shift`: entry (k + shift) K / n_far, so that
+// its n_far draws are stratified over the layer's CDF, and receivers with other offsets draw others.
+uint fluxEntry(FluxDraws d, uint k, float shift) {
+    return min(uint((float(k) + shift) * d.stride), RSM_FLUX_ENTRIES - 1u);
+}
+
+ivec2 fluxTexel(FluxDraws d, uint entry) {
+    const uint word = drawn.blocks[d.block + 3u + 2u * entry].x;
+    return ivec2(word & 0xFFFFu, word >> 16);
+}
+
+// The balance heuristic's weight of a texel whose packed VPL is `vpl`, at uv distance r from the
+// disc's centre.
+float balanceWeight(FluxDraws d, float r, uvec4 vpl) {
+    const float density = (r < d.radius ? d.nearRate / max(r, 1e-7) : 0.0) + d.farPerLum * packedFluxLuminance(vpl);
+    return density > 0.0 ? 1.0 / density : 0.0;
+}
+
 #ifdef RSM_VOXEL_VISIBILITY
 // Visibility of the VPL of texel t from x through the occupancy volume: the segment between them,
 // each end lifted off its own surface (x along its normal, or towards the VPL for a hair strand; the
@@ -207,18 +262,36 @@ vec3 gather(vec3 x, vec3 n, bool hair, uint lane, uint lanes) {
         // discs, and lanes that stepped by `lanes` would split a warp between near samples and far
         // ones (which alone test visibility) at every step.
         const uint run = (pc.mode.y + 2u * lanes - 1u) / (2u * lanes) * 2u;
+        const FluxDraws draws = layerDraws(layer, FLUX_FAR ? scale : 1.0);
         for (uint i = lane * run, end = min(i + run, pc.mode.y); i < end; ++i) {
+            vec3 c;
+            ivec2 t;
+            float weight;
+            bool far;
+            if (FLUX_FAR && (i & 1u) == 1u) {  // the far half: a texel drawn by flux
+                const uint entry = fluxEntry(draws, i >> 1u, pattern.shift);
+                const uvec4 vpl = drawn.blocks[draws.block + 2u + 2u * entry];
+                t = fluxTexel(draws, entry);
+                const float r = length((vec2(t) + 0.5) / float(res) - st);
+                weight = balanceWeight(draws, r, vpl);
+                far = r >= draws.radius;
+                c = vplIrradianceOf(vpl, t, layer, x, n, hair);
+            } else {
 #ifdef RSM_SHIFTED_RADII
-            vec4 s = patternSample(i, pattern.shift);
+                vec4 s = patternSample(i, pattern.shift);
 #else
-            vec4 s = samples[i];
+                vec4 s = samples[i];
 #endif
-            vec2 uv = st + pattern.rotation * s.xy * scale;
-            if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) continue;
-            ivec2 t = ivec2(uv * float(res));
-            vec3 c = pc.sizes.w != 0u ? bilinearVplIrradiance(uv, res, layer, x, n, hair) : vplIrradiance(t, layer, x, n, hair);
-            if (pc.sampling.x == RSM_VISIBILITY_DEPTH && s.w > 0.5 && any(greaterThan(c, vec3(0.0)))) c *= farVisibility(L, layer, t, x);
-            c *= s.z * scale * scale;
+                const vec2 uv = st + pattern.rotation * s.xy * scale;
+                if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) continue;
+                t = ivec2(uv * float(res));
+                const uvec4 vpl = texelFetch(rsmVpls, ivec3(t, layer), 0);
+                weight = FLUX_FAR ? balanceWeight(draws, length(s.xy) * scale, vpl) : s.z * scale * scale;
+                far = !FLUX_FAR && s.w > 0.5;
+                c = pc.sizes.w != 0u ? bilinearVplIrradiance(uv, res, layer, x, n, hair) : vplIrradianceOf(vpl, t, layer, x, n, hair);
+            }
+            if (pc.sampling.x == RSM_VISIBILITY_DEPTH && far && any(greaterThan(c, vec3(0.0)))) c *= farVisibility(L, layer, t, x);
+            c *= weight;
 #ifdef RSM_VOXEL_VISIBILITY
             if (i % stride == 0u) {
                 const float lum = dot(c, vec3(0.2126, 0.7152, 0.0722));

@@ -17,11 +17,10 @@ vec3 vplPosition(ivec2 t, uint layer, float depth) {
 // Kajiya-Kay diffuse term (dsm/kajiya_kay.glsl) of the light arriving from w.
 // Written out in one function: a Vpl struct filled by a fetch function and read by a second cost the
 // gather 0.17 ms at 1080p on the H100 (cornell; 0.46 -> 0.63 ms low-res).
-// One fetch of the packed texel (rsm/resolve.comp): the gather is bound by the L2's random reads, and
+// One fetch of the packed texel (rsm/resolve.comp, or a flux draw's copy of it): the gather is bound by the L2's random reads, and
 // three fetches (depth, normal, flux) made the H100's low-res gather 0.43 ms at 1080p on cornell
 // against 0.37 (hair 0.40 against 0.29, VC 0.48 against 0.43).
-vec3 vplIrradiance(ivec2 t, uint layer, vec3 x, vec3 n, bool hair) {
-    uvec4 vpl = texelFetch(rsmVpls, ivec3(t, layer), 0);
+vec3 vplIrradianceOf(uvec4 vpl, ivec2 t, uint layer, vec3 x, vec3 n, bool hair) {
     float depth = uintBitsToFloat(vpl.x);
     if (depth >= 1.0) return vec3(0.0);  // no surface in this texel
     GpuRsmLayer L = rsmLayers[layer];
@@ -39,4 +38,9 @@ vec3 vplIrradiance(ivec2 t, uint layer, vec3 x, vec3 n, bool hair) {
     d2 = max(d2, footprint);
     float geometry = max(dot(np, v), 0.0) * receiver / (d2 * d2);
     return phi * (geometry / PI);
+}
+
+// The same, the VPL fetched from its texel.
+vec3 vplIrradiance(ivec2 t, uint layer, vec3 x, vec3 n, bool hair) {
+    return vplIrradianceOf(texelFetch(rsmVpls, ivec3(t, layer), 0), t, layer, x, n, hair);
 }

@@ -161,8 +161,17 @@ struct RsmPush {
     uvec4 sizes;   // x,y = output size (low-res or full), z = RSM resolution, w = 1: bilinear VPLs
     vec4 params;   // x = normal cos threshold, y = distance threshold in pixel footprints, z = r_max, w unused
     uvec4 sampling;  // x = RSM_VISIBILITY_*, y = samples a pixel tests through the occupancy volume,
-                     // z = 1: the paper's single disc and xi1^2 weights (else the mixture), w unused
+                     // z = 1: the paper's single disc and xi1^2 weights (else the mixture), w = lanes per receiver
+    uvec4 far;     // x = 1: the far half of the samples drawn by flux (rsm/flux_draw.comp), y, z, w unused
 };
+
+// The flux-drawn VPLs of --rsm-far flux (rsm/flux_draw.comp), per layer a block of RSM_FLUX_BLOCK
+// uvec4: the layer's total flux luminance (x, float bits); then RSM_FLUX_ENTRIES texels drawn with
+// probability proportional to their flux luminance, stratified in the order of a Hilbert curve over
+// the map, each as two uvec4 that share one 32-byte sector: its packed VPL (rsm/resolve.comp's
+// texel) and its texel (x | y << 16, in x).
+#define RSM_FLUX_ENTRIES 16384u
+#define RSM_FLUX_BLOCK (2u + 2u * RSM_FLUX_ENTRIES)
 
 // The occupancy volume (src/voxel): one bit per voxel of a box around the scene, set where a surface
 // (opaque or alpha-masked; not blended, not hair) touches the voxel. Voxel (x, y, z) is bit

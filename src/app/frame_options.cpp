@@ -68,6 +68,9 @@ void addGiOptions(CLI::App& cmd, RenderSettings& rs) {
     addChoice<RsmRadii>(cmd, "--rsm-radii", rs.rsm.radii, {{"fixed", RsmRadii::Fixed}, {"shifted", RsmRadii::Shifted}},
                         "The sample pattern's radii: the same for every receiver, or shifted per receiver "
                         "(unbiased; always with --rsm-visibility voxels)");
+    addChoice<RsmFar>(cmd, "--rsm-far", rs.rsm.far, {{"disc", RsmFar::Disc}, {"flux", RsmFar::Flux}},
+                      "The far half of the RSM samples: a disc over the whole map, or texels drawn by their "
+                      "flux (combined with the r_max disc's by the balance heuristic)");
     cmd.add_option("--rsm-visibility-rays", rs.rsm.visibilityRays,
                    "Voxel visibility: samples a pixel tests through the occupancy volume (the visible share "
                    "of their light scales all samples' light)")
@@ -164,6 +167,10 @@ void checkFrameSettings(const FrameOptions& o, RenderSettings& settings) {
     if (settings.aov == Aov::Velocity && settings.cameraPath == CameraPath::Gbuffer)
         fmt::print(stderr, "penumbra: warning: --aov velocity with --camera-path gbuffer shows camera motion only "
                            "(moving objects need the visibility path's triangle IDs)\n");
+    if (settings.gi == GiMode::Rsm && settings.rsm.bilinearVpls && settings.rsm.far == RsmFar::Flux &&
+        settings.rsm.weights == RsmWeights::Unbiased)
+        fmt::print(stderr, "penumbra: warning: --rsm-vpls bilinear applies to the r_max disc's samples only: the flux "
+                           "draws stay texels (--rsm-far disc for a gather continuous in the light's motion)\n");
 }
 
 std::vector<Light> frameLights(const FrameOptions& o, const Scene& loaded) {

@@ -135,6 +135,8 @@ RsmTechnique::RsmTechnique(vk::Allocator& alloc, vk::CommandContext& cmd, GpuSce
           return r;
       }(), s.shadow.resolution) {
     if (gather) gather_ = std::make_unique<RsmGather>(alloc, cmd, s.width, s.height, s.rsm);
+    if (gather && s.rsm.far == RsmFar::Flux)
+        flux_ = std::make_unique<RsmFluxSampler>(alloc, s.rsm.resolution, s.rsm.seed);
     // The occupancy volume: the RSM gather's visibility, or what blocks LPV's propagation.
     if ((gather && s.rsm.visibility == RsmVisibility::Voxels) ||
         (!gather && s.lpv.geometry == LpvGeometry::Voxels))
@@ -150,12 +152,14 @@ void RsmTechnique::update(const FrameContext& f) {
 
 void RsmTechnique::addPasses(const FrameContext& f) {
     pass_.addTo(f.graph);
+    if (flux_ && pass_.layerCount() > 0) flux_->addTo(f.graph, pass_.layerCount());
     if (occupancy_) occupancy_->addTo(f.graph);
     if (gather_) gather_->addTo(f.graph, pass_.layerCount(), f.slot);
 }
 
 void RsmTechnique::applyPerFrame(const RenderSettings& s) {
     if (gather_) gather_->setSettings(s.rsm);
+    if (flux_) flux_->setSeed(s.rsm.seed);
 }
 
 LpvTechnique::LpvTechnique(vk::Allocator& alloc, const Bounds& bounds, const RenderSettings& s, RsmPass& rsm,

@@ -17,6 +17,7 @@
 #include "render/gi_history.h"
 #include "render/lighting_pass.h"
 #include "render/technique.h"
+#include "rsm/rsm_flux.h"
 #include "rsm/rsm_gather.h"
 #include "shadow/shadow_map_pass.h"
 #include "voxel/occupancy_volume.h"
@@ -91,6 +92,7 @@ public:
     void applyPerFrame(const RenderSettings& s) override;
     RsmPass& pass() { return pass_; }
     RsmGather* gather() { return gather_.get(); }
+    RsmFluxSampler* flux() { return flux_.get(); }
     OccupancyVolume* occupancy() { return occupancy_.get(); }
     // Instances moved: the occupancy volume is voxelized again.
     void invalidate() {
@@ -102,6 +104,7 @@ private:
     bool widestCascadeOnly_;
     RsmPass pass_;
     std::unique_ptr<OccupancyVolume> occupancy_;  // --rsm-visibility voxels
+    std::unique_ptr<RsmFluxSampler> flux_;  // --rsm-far flux
     std::unique_ptr<RsmGather> gather_;
 };
 

@@ -115,6 +115,7 @@ public:
     // GI internals, for tests and statistics (null when that GI mode is off).
     RsmPass* rsm() { return rsm_ ? &rsm_->pass() : nullptr; }
     RsmGather* rsmGather() { return rsm_ ? rsm_->gather() : nullptr; }
+    RsmFluxSampler* rsmFlux() { return rsm_ ? rsm_->flux() : nullptr; }
     OccupancyVolume* occupancy() { return rsm_ ? rsm_->occupancy() : nullptr; }  // --rsm-visibility voxels
     LightPropagationVolume* lpv() { return lpv_ ? &lpv_->volume() : nullptr; }
     // Deep shadow maps (always present; inactive unless --shadow dsm) and the hair (null without strands).

@@ -55,6 +55,7 @@ std::vector<SettingsOption> makeTable() {
         option("--rsm-visibility", kStructure, kPartGi, [](S s) { return s.rsm.visibility; }),
         option("--rsm-voxel-res", kSizes, kPartGi, [](S s) { return s.rsm.voxelResolution; }),
         option("--rsm-radii", kStructure, kPartGi, [](S s) { return s.rsm.radii; }),
+        option("--rsm-far", kStructure, kPartGi, [](S s) { return s.rsm.far; }),
         option("--rsm-visibility-rays", kFrame, kPartNone, [](S s) { return s.rsm.visibilityRays; }),
         option("--gi-temporal", kStructure, kPartCamera, [](S s) { return s.giTemporal; }),
         option("--gi-temporal-alpha", kFrame, kPartNone, [](S s) { return s.giTemporalAlpha; }),

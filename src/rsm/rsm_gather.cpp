@@ -65,9 +65,10 @@ RsmGather::RsmGather(vk::Allocator& alloc, vk::CommandContext& cmd, uint32_t wid
     const char* gather = settings.visibility == RsmVisibility::Voxels ? "rsm/gather_voxels.comp"
                          : settings.radii == RsmRadii::Shifted        ? "rsm/gather_shifted.comp"
                                                                       : "rsm/gather.comp";
-    gather_ = vk::ComputeKernel(ctx, gather,
-                                {ubo, tex, tex, tex, tex, tex, ssbo, ssbo, img, ssbo, ssbo, tex},
-                                sizeof(gpu::RsmPush));
+    const std::vector<VkDescriptorType> bindings{ubo, tex, tex, tex, tex, tex, ssbo, ssbo, img, ssbo, ssbo, tex, ssbo};
+    gather_ = vk::ComputeKernel(ctx, gather, bindings, sizeof(gpu::RsmPush));
+    if (settings.far == RsmFar::Flux && gather == std::string("rsm/gather.comp"))
+        gatherFlux_ = vk::ComputeKernel(ctx, "rsm/gather_flux.comp", bindings, sizeof(gpu::RsmPush));
     interpolate_ = vk::ComputeKernel(ctx, "rsm/interpolate.comp", {ubo, tex, tex, tex, img, ssbo, ssbo},
                                      sizeof(gpu::RsmPush));
     args_ = vk::ComputeKernel(ctx, "render/indirect_args.comp", {ssbo, ssbo}, sizeof(uint32_t));
@@ -90,7 +91,8 @@ RsmGather::RsmGather(vk::Allocator& alloc, vk::CommandContext& cmd, uint32_t wid
     } else {
         pixelList_ = vk::Buffer(alloc, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false, "rsm-unused-list");
     }
-    // An empty grid (no voxels): bound when no occupancy volume is published.
+    // An empty grid (no voxels): bound when no occupancy volume is published; it also stands in for
+    // the flux draws under --rsm-far disc.
     noOccupancy_ = vk::Buffer(alloc, sizeof(gpu::GpuOccupancyGrid),
                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, false,
                               "no-occupancy");
@@ -119,7 +121,8 @@ gpu::RsmPush RsmGather::constants(uint32_t mode, uint32_t layers) const {
     return {{mode, settings_.samples, layers, std::max(1u, settings_.lowResFactor)},
             {low ? lowWidth_ : width_, low ? lowHeight_ : height_, settings_.resolution, settings_.bilinearVpls ? 1u : 0u},
             {settings_.normalThreshold, settings_.distanceThreshold, settings_.radius, 0},
-            {visibilityMode(), settings_.visibilityRays, settings_.weights == RsmWeights::Paper ? 1u : 0u, lanes(mode)}};
+            {visibilityMode(), settings_.visibilityRays, settings_.weights == RsmWeights::Paper ? 1u : 0u, lanes(mode)},
+            {drawsByFlux() ? 1u : 0u, 0, 0, 0}};
 }
 
 // The voxel pipeline keeps one invocation per receiver: its visible share is a ratio per receiver.
@@ -136,10 +139,14 @@ uint32_t RsmGather::visibilityMode() const {
     return RSM_VISIBILITY_NONE;
 }
 
+// The far half by flux: drawn this frame, and the unbiased mixture (the paper's disc has no far half).
+bool RsmGather::drawsByFlux() const { return fluxDraws_ && settings_.weights == RsmWeights::Unbiased; }
+
 void RsmGather::addGather(FrameGraph& graph, const char* name, uint32_t mode, ImageHandle out, uint32_t layers) {
     const VkSampler point = pointSampler_.handle();
+    const vk::ComputeKernel& kernel = drawsByFlux() && gatherFlux_.pipeline.handle() ? gatherFlux_ : gather_;
     PassBuilder pass = graph.pass(name);
-    pass.pipeline(gather_.pipeline)
+    pass.pipeline(kernel.pipeline)
         .uniform(0, graph.buffer("frame"))
         .sampled(1, graph.image("gbuffer.normal"), point)
         .sampled(2, graph.image("gbuffer.depth"), point)
@@ -151,18 +158,20 @@ void RsmGather::addGather(FrameGraph& graph, const char* name, uint32_t mode, Im
         .storageImage(8, out)
         .storageBuffer(9, graph.import(pixelList_))
         .storageBuffer(10, graph.hasBuffer("occupancy") ? graph.buffer("occupancy") : graph.import(noOccupancy_))
-        .sampled(11, graph.image("rsm.vpls"), point);
+        .sampled(11, graph.image("rsm.vpls"), point)
+        .storageBuffer(12, fluxDraws_ ? graph.buffer("rsm.flux-draws") : graph.import(noOccupancy_));
     const BufferHandle args = mode == RSM_GATHER_LIST ? graph.import(dispatchArgs_) : BufferHandle{};
     if (args) pass.use(args, Use::IndirectArgs);
     const gpu::RsmPush pc = constants(mode, layers);
-    pass.record([this, pc, args](PassContext& c) {
-        gather_.pipeline.push(c.cmd, pc);
+    pass.record([&kernel, pc, args](PassContext& c) {
+        kernel.pipeline.push(c.cmd, pc);
         if (args) vkCmdDispatchIndirect(c.cmd, c.buffer(args).handle(), 0);
         else vkCmdDispatch(c.cmd, vk::divUp(pc.sizes.x, 8), vk::divUp(pc.sizes.y, 8 / pc.sampling.w), 1);
     });
 }
 
 void RsmGather::addTo(FrameGraph& graph, uint32_t layers, uint32_t slot) {
+    fluxDraws_ = graph.hasBuffer("rsm.flux-draws");
     samples_.select(slot);
     samples_.write(pattern_.data(), pattern_.size() * sizeof(glm::vec4));
     const ImageHandle irradiance = graph.import(irradiance_);

@@ -16,7 +16,8 @@ class RsmGather {
 public:
     RsmGather(vk::Allocator& alloc, vk::CommandContext& cmd, uint32_t width, uint32_t height,
               const RsmSettings& settings);
-    // Reads "frame", the G-buffer, the RSM ("rsm.*"); publishes "gi.irradiance".
+    // Reads "frame", the G-buffer, the RSM ("rsm.*", "rsm.flux-draws" where published); publishes
+    // "gi.irradiance".
     void addTo(FrameGraph& graph, uint32_t layerCount, uint32_t slot);
     // Per-frame values (samples, radius, seed, weights, thresholds); mode, resolution and the low-res
     // factor size resources and must not change.
@@ -29,6 +30,7 @@ public:
 private:
     gpu::RsmPush constants(uint32_t mode, uint32_t layers) const;
     uint32_t visibilityMode() const;
+    bool drawsByFlux() const;
     uint32_t lanes(uint32_t mode) const;  // invocations per receiver of a gather mode
     void addGather(FrameGraph& graph, const char* name, uint32_t mode, ImageHandle out, uint32_t layers);
     vk::Allocator& alloc_;
@@ -41,6 +43,8 @@ private:
     std::vector<glm::vec4> pattern_;
     vk::BufferRing samples_;  // the pattern, rewritten each frame into the frame slot's copy
     vk::Buffer pixelList_, dispatchArgs_, noOccupancy_;
+    bool fluxDraws_ = false;  // "rsm.flux-draws" is published this frame
+    vk::ComputeKernel gatherFlux_;  // --rsm-far flux with fixed radii (rsm/gather_flux.comp)
 };
 
 }  // namespace penumbra

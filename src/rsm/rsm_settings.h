@@ -30,6 +30,11 @@ enum class RsmVisibility {
 // shifting costs 0.15-0.34 ms at 1080p on the H100. Voxel visibility always shifts.
 enum class RsmRadii { Fixed, Shifted };
 
+// Where the unbiased pattern's far half of the samples goes: a polar disc over the whole map (dense
+// near the receiver, blind to where the light is), or texels drawn by their flux luminance
+// (rsm/flux_samples.comp), combined with the r_max disc by the balance heuristic (rsm/gather.glsl).
+enum class RsmFar { Disc, Flux };
+
 inline constexpr uint32_t kMaxRsmSamples = 16384;  // --rsm-samples' range: the pattern buffer's size
 
 struct RsmSettings {
@@ -56,6 +61,7 @@ struct RsmSettings {
     // and street 0.03-0.05 of rel L1 (README, "RSM visibility"): an expert's choice, not the default.
     RsmVisibility visibility = RsmVisibility::Depth;
     RsmRadii radii = RsmRadii::Fixed;
+    RsmFar far = RsmFar::Flux;
     uint32_t voxelResolution = 128;  // occupancy volume: voxels along the scene's longest side
     // Voxels: of a pixel's samples, this many (evenly strided) walk the occupancy volume; the
     // visible share of their light scales the light of all (a ratio estimate of the visibility).
