@@ -99,8 +99,7 @@ ReceiverPattern receiverPattern(GpuRsmLayer L, vec3 x) {
 // each compared with the RSM's depth where it projects; a point behind the surface the light sees
 // there lies in that surface's shadow, so something stands between the VPL and x. Far VPLs are
 // where light would otherwise leak through walls (closed galleries, building interiors).
-float farVisibility(GpuRsmLayer L, uint layer, ivec2 t, vec3 x) {
-    float depth = texelFetch(rsmDepth, ivec3(t, layer), 0).r;
+float farVisibility(GpuRsmLayer L, uint layer, ivec2 t, float depth, vec3 x) {
     if (depth >= 1.0) return 1.0;
     int res = int(pc.sizes.z);
     vec3 xp = unproject(L.invViewProj, (vec2(t) + 0.5) / float(res), depth);
@@ -266,11 +265,12 @@ vec3 gather(vec3 x, vec3 n, bool hair, uint lane, uint lanes) {
         for (uint i = lane * run, end = min(i + run, pc.mode.y); i < end; ++i) {
             vec3 c;
             ivec2 t;
+            uvec4 vpl;  // the texel's packed VPL (its depth in x)
             float weight;
             bool far;
             if (FLUX_FAR && (i & 1u) == 1u) {  // the far half: a texel drawn by flux
                 const uint entry = fluxEntry(draws, i >> 1u, pattern.shift);
-                const uvec4 vpl = drawn.blocks[draws.block + 2u + 2u * entry];
+                vpl = drawn.blocks[draws.block + 2u + 2u * entry];
                 t = fluxTexel(draws, entry);
                 const float r = length((vec2(t) + 0.5) / float(res) - st);
                 weight = balanceWeight(draws, r, vpl);
@@ -285,12 +285,12 @@ vec3 gather(vec3 x, vec3 n, bool hair, uint lane, uint lanes) {
                 const vec2 uv = st + pattern.rotation * s.xy * scale;
                 if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) continue;
                 t = ivec2(uv * float(res));
-                const uvec4 vpl = texelFetch(rsmVpls, ivec3(t, layer), 0);
+                vpl = texelFetch(rsmVpls, ivec3(t, layer), 0);
                 weight = FLUX_FAR ? balanceWeight(draws, length(s.xy) * scale, vpl) : s.z * scale * scale;
                 far = !FLUX_FAR && s.w > 0.5;
                 c = pc.sizes.w != 0u ? bilinearVplIrradiance(uv, res, layer, x, n, hair) : vplIrradianceOf(vpl, t, layer, x, n, hair);
             }
-            if (pc.sampling.x == RSM_VISIBILITY_DEPTH && far && any(greaterThan(c, vec3(0.0)))) c *= farVisibility(L, layer, t, x);
+            if (pc.sampling.x == RSM_VISIBILITY_DEPTH && far && any(greaterThan(c, vec3(0.0)))) c *= farVisibility(L, layer, t, uintBitsToFloat(vpl.x), x);
             c *= weight;
 #ifdef RSM_VOXEL_VISIBILITY
             if (i % stride == 0u) {
