@@ -115,10 +115,10 @@ TEST(GiSuite, MixturePatternWeightsCountEveryTexelOfTheWholeMap) {
 }
 
 // Measured on lavapipe at 64x48 against a 1024-path reference (README, "GI evaluation suite"):
-// RSM (far half drawn by flux) cornell 0.154 / +6.9%, street 0.141 / -0.7%, room 0.067 / +1.3%
-// (with the far disc: 0.199 / +0.8%, 0.169 / -3.7%, 0.103 / -5.7%; cornell's +0.8% was the fixed
-// radii's near-field deficit cancelling the light that no visibility test stops between its boxes,
-// and the flux draws remove the deficit); LPV (16^3 x 8, 3 cascades) cornell 0.380 / +19.7%, street
+// RSM (350 samples, far half drawn by flux, shifted radii) cornell 0.153 / +6.2%, street 0.154 / -0.0%,
+// room 0.069 / +1.9% (400 samples, far disc, fixed radii: 0.199 / +0.8%, 0.169 / -3.7%, 0.103 /
+// -5.7%; cornell's +0.8% was the fixed radii's near-field deficit cancelling the light that no
+// visibility test stops between its boxes, and the flux draws remove the deficit); LPV (16^3 x 8, 3 cascades) cornell 0.380 / +19.7%, street
 // 0.294 / +17.4%, room 0.259 / -8.9% (before: 0.840 / -67.6%, 1.095 / -20.5%, 0.895 / -40.5%).
 // Bounds guard the accuracy reached, with a margin for the reference's noise (0.05-0.08); cornell's
 // RSM bias is held to the 10%.

@@ -2,8 +2,9 @@
 // RSM layer, at the polar sample offsets of Dachsbacher & Stamminger (r_max * xi1 * (sin, cos)(2 pi
 // xi2), generated once from a seed on the CPU with their density-compensating weights), or over
 // every texel (exact mode, for tests). Writes irradiance; lighting multiplies by albedo / pi.
-// Three pipelines, so that the default one stays lean: rsm/gather.comp, gather_shifted.comp
-// (RSM_SHIFTED_RADII) and gather_voxels.comp (that and RSM_VOXEL_VISIBILITY).
+// Four pipelines, so that the default one stays lean: rsm/gather_flux.comp (RSM_FAR_FLUX and
+// RSM_SHIFTED_RADII: the default), gather.comp (fixed radii), gather_shifted.comp (RSM_SHIFTED_RADII)
+// and gather_voxels.comp (that and RSM_VOXEL_VISIBILITY).
 #include "shared/types.h"
 #include "render/lights.glsl"
 #include "render/reconstruct.glsl"
@@ -136,14 +137,12 @@ vec4 patternSample(uint i, float shift) {
 // area) and the n_far = N/2 of odd index are texels drawn by flux luminance (p_far = lum / total,
 // rsm/flux_draw.comp). Either kind weighs its texel by the balance heuristic, 1 / (n_near p_near +
 // n_far p_far), both per texel: unbiased over every texel with flux, and no sample is spent on a
-// dark one. rsm/gather_flux.comp compiles it in (RSM_FAR_FLUX); the shifted and voxel pipelines ask
-// the push constants, and rsm/gather.comp leaves it out.
+// dark one. rsm/gather_flux.comp (the default: shifted radii) compiles it in (RSM_FAR_FLUX); the
+// other pipelines ask the push constants.
 #if defined(RSM_FAR_FLUX)
 #define FLUX_FAR true
-#elif defined(RSM_SHIFTED_RADII)
-#define FLUX_FAR (pc.far.x != 0u)
 #else
-#define FLUX_FAR false
+#define FLUX_FAR (pc.far.x != 0u)
 #endif
 
 struct FluxDraws {

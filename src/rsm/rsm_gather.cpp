@@ -67,7 +67,7 @@ RsmGather::RsmGather(vk::Allocator& alloc, vk::CommandContext& cmd, uint32_t wid
                                                                       : "rsm/gather.comp";
     const std::vector<VkDescriptorType> bindings{ubo, tex, tex, tex, tex, tex, ssbo, ssbo, img, ssbo, ssbo, tex, ssbo};
     gather_ = vk::ComputeKernel(ctx, gather, bindings, sizeof(gpu::RsmPush));
-    if (settings.far == RsmFar::Flux && gather == std::string("rsm/gather.comp"))
+    if (settings.far == RsmFar::Flux && gather == std::string("rsm/gather_shifted.comp"))
         gatherFlux_ = vk::ComputeKernel(ctx, "rsm/gather_flux.comp", bindings, sizeof(gpu::RsmPush));
     interpolate_ = vk::ComputeKernel(ctx, "rsm/interpolate.comp", {ubo, tex, tex, tex, img, ssbo, ssbo},
                                      sizeof(gpu::RsmPush));

@@ -44,7 +44,7 @@ private:
     vk::BufferRing samples_;  // the pattern, rewritten each frame into the frame slot's copy
     vk::Buffer pixelList_, dispatchArgs_, noOccupancy_;
     bool fluxDraws_ = false;  // "rsm.flux-draws" is published this frame
-    vk::ComputeKernel gatherFlux_;  // --rsm-far flux with fixed radii (rsm/gather_flux.comp)
+    vk::ComputeKernel gatherFlux_;  // --rsm-far flux with shifted radii, the default (rsm/gather_flux.comp)
 };
 
 }  // namespace penumbra
