@@ -416,6 +416,10 @@ INSTANTIATE_TEST_SUITE_P(
                  {"render", "cornell", "-o", "{out}", "--light", "point,0.75,0.9,0.6,2", "--gi", "lpv", "--raster",
                   "compute"},
                  "the largest --shadow-res that fits"},
+        // The flux draws' CDF of an 8192^2 RSM: 256 MiB in one buffer, beyond lavapipe's 128 MiB range.
+        BadInput{"RsmFluxCdfBeyondStorageBuffer",
+                 {"render", "cornell", "-o", "{out}", "--gi", "rsm", "--rsm-res", "8192"},
+                 "the largest --rsm-res that fits is 4096"},
         BadInput{"StrandsBeyondStorageBuffer",
                  {"render", "hair", "-o", "{out}", "--strands", "2000000", "--shadow", "dsm"},
                  "the largest --strands that fits"},

@@ -1,6 +1,7 @@
 #include "app/device_budget.h"
 
 #include <algorithm>
+#include <bit>
 #include <functional>
 #include <stdexcept>
 #include <string>
@@ -172,6 +173,11 @@ std::vector<Demand> frameDemands(const RenderSettings& s, const Scene& scene, co
     if (s.gi == GiMode::Rsm)
         d.push_back({"--rsm-res", s.rsm.resolution, 8, fmt::format("the RSM ({} layer(s), 16 bytes per texel)", rsmLayers),
                      [=](uint64_t r) { return r * r * 16 * rsmLayers; }});
+    if (s.gi == GiMode::Rsm && s.rsm.far == RsmFar::Flux)  // rsm/flux_sums.comp: one buffer, bound whole
+        d.push_back({"--rsm-res", s.rsm.resolution, 8,
+                     fmt::format("the RSM's flux CDF ({} layer(s), 4 bytes per texel of the map rounded up to a power "
+                                 "of two)", rsmLayers),
+                     [=](uint64_t r) { const uint64_t n = std::bit_ceil(r); return (n * n + n) * 4 * rsmLayers; }, true});
     if (s.gi == GiMode::Lpv) {
         d.push_back({"--lpv-rsm-res", s.lpv.rsmResolution, 16,
                      fmt::format("the LPV's RSM ({} layer(s), 16 bytes per texel)", rsmLayers),
