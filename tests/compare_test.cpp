@@ -3,17 +3,14 @@
 // the GI rows), and bad input to the reference and compare commands (one error line, non-zero exit).
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <random>
-#include <sstream>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
-#include <sys/wait.h>
-#include <unistd.h>
 
+#include "cli_run.h"
 #include "eval/compare.h"
 #include "eval/eval.h"
 #include "gpu_fixture.h"
@@ -211,53 +208,18 @@ TEST_F(EvalTest, GiRowsOnCornell) {
 
 namespace {
 
-struct CliRun {
-    int code = -1;
-    std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-    std::ifstream f(p);
-    std::stringstream ss;
-    ss << f.rdbuf();
-    return ss.str();
-}
-
-// Runs PENUMBRA_BIN with `args` (shell-quoted by the caller where needed), capturing both streams.
-CliRun runCli(const std::string& args, const fs::path& dir) {
-    const fs::path out = dir / "stdout.txt", err = dir / "stderr.txt";
-    const std::string cmd = std::string(PENUMBRA_BIN) + " " + args + " >" + out.string() + " 2>" + err.string();
-    const int status = std::system(cmd.c_str());
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(out), slurp(err)};
-}
-
-void expectOneErrorLine(const CliRun& r, const std::string& mentions) {
-    EXPECT_NE(r.code, 0) << r.err;
-    EXPECT_EQ(r.err.rfind("penumbra: error: ", 0), 0u) << r.err;
-    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-    EXPECT_NE(r.err.find(mentions), std::string::npos) << "expected '" << mentions << "' in: " << r.err;
-}
-
 class GroundTruthCli : public ::testing::Test {
 protected:
-    void SetUp() override {
-        dir_ = fs::temp_directory_path() / ("penumbra_gt_test_" + std::to_string(getpid()));
-        fs::create_directories(dir_);
-    }
-    void TearDown() override {
-        std::error_code ec;
-        fs::remove_all(dir_, ec);
-    }
-    std::string file(const std::string& name) const { return (dir_ / name).string(); }
-    fs::path dir_;
+    std::string file(const std::string& name) const { return dir_.file(name); }
+    ScratchDir dir_{"gt_test"};
 };
 
 }  // namespace
 
 TEST_F(GroundTruthCli, ReferenceWritesRadianceAndCompareReadsIt) {
     const std::string ref = file("ref.exr"), other = file("other.exr"), heat = file("heat.png");
-    CliRun r = runCli("reference plane -o " + ref + " --width 16 --height 12 --spp 2 -q", dir_);
-    ASSERT_EQ(r.code, 0) << r.err;
+    Cli r = runCli(dir_, "reference plane -o " + ref + " --width 16 --height 12 --spp 2 -q");
+    ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(r.err, "");
     const ImageF img = readExr(ref);
     ASSERT_EQ(img.width, 16u);
@@ -265,14 +227,14 @@ TEST_F(GroundTruthCli, ReferenceWritesRadianceAndCompareReadsIt) {
     ImageF doubled = img;
     for (float& v : doubled.rgba) v *= 2.0f;
     writeExr(other, 16, 12, doubled.rgba);
-    r = runCli("compare " + other + " " + ref + " --json -o " + heat, dir_);
-    ASSERT_EQ(r.code, 0) << r.err;
+    r = runCli(dir_, "compare " + other + " " + ref + " --json -o " + heat);
+    ASSERT_EQ(r.status, 0) << r.err;
     const nlohmann::json j = nlohmann::json::parse(r.out);
     EXPECT_NEAR(j["rel_l1"].get<double>(), 1.0, 1e-6);
     EXPECT_EQ(j["pixels"].get<int>(), 16 * 12);
     EXPECT_TRUE(fs::exists(heat));
-    r = runCli("compare " + other + " " + ref + " --mask " + ref, dir_);
-    ASSERT_EQ(r.code, 0) << r.err;
+    r = runCli(dir_, "compare " + other + " " + ref + " --mask " + ref);
+    ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_NE(r.out.find("SSIM"), std::string::npos);
 }
 
@@ -281,16 +243,16 @@ TEST_F(GroundTruthCli, BadInputGivesOneErrorLine) {
     writeExr(ref, 8, 8, std::vector<float>(8 * 8 * 4, 0.5f));
     writeExr(small, 4, 8, std::vector<float>(4 * 8 * 4, 0.5f));
     std::ofstream(text) << "not an image\n";
-    expectOneErrorLine(runCli("compare " + file("missing.exr") + " " + ref, dir_), "no such file");
-    expectOneErrorLine(runCli("compare " + text + " " + ref, dir_), "not an OpenEXR file");
-    expectOneErrorLine(runCli("compare " + ref + " " + small, dir_), "sizes must match");
-    expectOneErrorLine(runCli("compare " + ref + " " + ref + " --mask " + small, dir_), "--mask");
-    expectOneErrorLine(runCli("compare " + ref + " " + ref + " -o " + file("heat.jpg"), dir_), ".png");
-    expectOneErrorLine(runCli("compare " + ref, dir_), "B");
-    expectOneErrorLine(runCli("reference plane -o " + file("r.exr") + " --spp 0", dir_), "--spp");
-    expectOneErrorLine(runCli("reference plane -o " + file("r.exr") + " --bounces 17", dir_), "--bounces");
-    expectOneErrorLine(runCli("reference plane -o " + file("r.txt"), dir_), ".exr");
-    expectOneErrorLine(runCli("reference plane -o " + file("r.exr") + " --aov albedo", dir_), "albedo");
-    expectOneErrorLine(runCli("reference " + file("missing.gltf") + " -o " + file("r.exr"), dir_), "missing.gltf");
-    expectOneErrorLine(runCli("eval plane --spp 0", dir_), "--spp");
+    expectRefused(dir_, "compare " + file("missing.exr") + " " + ref, "no such file");
+    expectRefused(dir_, "compare " + text + " " + ref, "not an OpenEXR file");
+    expectRefused(dir_, "compare " + ref + " " + small, "sizes must match");
+    expectRefused(dir_, "compare " + ref + " " + ref + " --mask " + small, "--mask");
+    expectRefused(dir_, "compare " + ref + " " + ref + " -o " + file("heat.jpg"), ".png");
+    expectRefused(dir_, "compare " + ref, "B");
+    expectRefused(dir_, "reference plane -o " + file("r.exr") + " --spp 0", "--spp");
+    expectRefused(dir_, "reference plane -o " + file("r.exr") + " --bounces 17", "--bounces");
+    expectRefused(dir_, "reference plane -o " + file("r.txt"), ".exr");
+    expectRefused(dir_, "reference plane -o " + file("r.exr") + " --aov albedo", "albedo");
+    expectRefused(dir_, "reference " + file("missing.gltf") + " -o " + file("r.exr"), "missing.gltf");
+    expectRefused(dir_, "eval plane --spp 0", "--spp");
 }

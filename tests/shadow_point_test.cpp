@@ -2,15 +2,12 @@
 // every filter, on lavapipe with validation; the shadow options' error paths of the CLI.
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
-#include <filesystem>
-#include <fstream>
 #include <set>
-#include <sstream>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
+#include "cli_run.h"
 #include "shadow_test_util.h"
 
 using namespace penumbra;
@@ -156,21 +153,7 @@ TEST(ShadowCliErrors, BadValuesGiveOneErrorLine) {
                                           "--pcf-radius -1",     "--vsm-bleed 1",       "--vsm-blur 33",
                                           "--pcss-light-size 0", "--light-shadow 3=pcf", "--light-shadow 0=soft",
                                           "--light-shadow pcf",  "--raster gpu"};
-    const std::filesystem::path dir = std::filesystem::temp_directory_path() / "penumbra-shadow-cli";
-    std::filesystem::create_directories(dir);
-    for (const std::string& args : bad) {
-        const std::string err = (dir / "err.txt").string();
-        const std::string cmd = fmt::format("VK_DRIVER_FILES=/usr/share/vulkan/icd.d/lvp_icd.x86_64.json '{}' render "
-                                            "cornell -o '{}' --width 8 --height 8 {} >/dev/null 2>'{}'",
-                                            PENUMBRA_BIN, (dir / "out.png").string(), args, err);
-        const int status = std::system(cmd.c_str());
-        std::ifstream in(err);
-        std::stringstream text;
-        text << in.rdbuf();
-        std::vector<std::string> lines;
-        for (std::string line; std::getline(text, line);) lines.push_back(line);
-        EXPECT_NE(status, 0) << args;
-        ASSERT_EQ(lines.size(), 1u) << args << ":\n" << text.str();
-        EXPECT_EQ(lines[0].rfind("penumbra: error: ", 0), 0u) << args << ": " << lines[0];
-    }
+    const ScratchDir dir("shadow_cli");
+    for (const std::string& args : bad)
+        expectRefused(dir, fmt::format("render cornell -o {} --width 8 --height 8 {}", dir.file("out.png"), args));
 }
