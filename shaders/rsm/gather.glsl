@@ -3,8 +3,9 @@
 // xi2), generated once from a seed on the CPU with their density-compensating weights), or over
 // every texel (exact mode, for tests). Writes irradiance; lighting multiplies by albedo / pi.
 // Four pipelines, so that the default one stays lean: rsm/gather_flux.comp (RSM_FAR_FLUX and
-// RSM_SHIFTED_RADII: the default), gather.comp (fixed radii), gather_shifted.comp (RSM_SHIFTED_RADII)
-// and gather_voxels.comp (that and RSM_VOXEL_VISIBILITY).
+// RSM_SHIFTED_RADII: the default), gather.comp (the far disc with fixed radii, the seed's way),
+// gather_shifted.comp (RSM_SHIFTED_RADII: every other choice, told by the push constants) and
+// gather_voxels.comp (that and RSM_VOXEL_VISIBILITY).
 #include "shared/types.h"
 #include "render/lights.glsl"
 #include "render/reconstruct.glsl"
@@ -137,12 +138,15 @@ vec4 patternSample(uint i, float shift) {
 // area) and the n_far = N/2 of odd index are texels drawn by flux luminance (p_far = lum / total,
 // rsm/flux_draw.comp). Either kind weighs its texel by the balance heuristic, 1 / (n_near p_near +
 // n_far p_far), both per texel: unbiased over every texel with flux, and no sample is spent on a
-// dark one. rsm/gather_flux.comp (the default: shifted radii) compiles it in (RSM_FAR_FLUX); the
-// other pipelines ask the push constants.
+// dark one. rsm/gather_flux.comp (the default: shifted radii) compiles it in (RSM_FAR_FLUX), the
+// shifted and voxel pipelines ask the push constants, and rsm/gather.comp (the far disc with fixed
+// radii) leaves it out.
 #if defined(RSM_FAR_FLUX)
 #define FLUX_FAR true
-#else
+#elif defined(RSM_SHIFTED_RADII)
 #define FLUX_FAR (pc.far.x != 0u)
+#else
+#define FLUX_FAR false
 #endif
 
 struct FluxDraws {
@@ -277,7 +281,7 @@ vec3 gather(vec3 x, vec3 n, bool hair, uint lane, uint lanes) {
                 c = vplIrradianceOf(vpl, t, layer, x, n, hair);
             } else {
 #ifdef RSM_SHIFTED_RADII
-                vec4 s = patternSample(i, pattern.shift);
+                vec4 s = patternSample(i, pc.far.y != 0u ? pattern.shift : 0.0);  // y = 0: fixed radii
 #else
                 vec4 s = samples[i];
 #endif

@@ -162,7 +162,8 @@ struct RsmPush {
     vec4 params;   // x = normal cos threshold, y = distance threshold in pixel footprints, z = r_max, w unused
     uvec4 sampling;  // x = RSM_VISIBILITY_*, y = samples a pixel tests through the occupancy volume,
                      // z = 1: the paper's single disc and xi1^2 weights (else the mixture), w = lanes per receiver
-    uvec4 far;     // x = 1: the far half of the samples drawn by flux (rsm/flux_draw.comp), y, z, w unused
+    uvec4 far;     // x = 1: the far half of the samples drawn by flux (rsm/flux_draw.comp), y = 1: radii
+                   // shifted per receiver (pipelines with RSM_SHIFTED_RADII), z, w unused
 };
 
 // The flux-drawn VPLs of --rsm-far flux (rsm/flux_draw.comp), per layer a block of RSM_FLUX_BLOCK

@@ -62,12 +62,15 @@ RsmGather::RsmGather(vk::Allocator& alloc, vk::CommandContext& cmd, uint32_t wid
     vk::Context& ctx = alloc.context();
     const VkDescriptorType ubo = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, tex = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
                            ssbo = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, img = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-    const char* gather = settings.visibility == RsmVisibility::Voxels ? "rsm/gather_voxels.comp"
-                         : settings.radii == RsmRadii::Shifted        ? "rsm/gather_shifted.comp"
-                                                                      : "rsm/gather.comp";
+    // The far disc with fixed radii has a lean pipeline of its own; the default (flux draws, shifted
+    // radii) another, taken in the frames whose weights are unbiased (drawsByFlux).
+    const bool voxels = settings.visibility == RsmVisibility::Voxels, shifted = settings.radii == RsmRadii::Shifted;
+    const char* gather = voxels                                         ? "rsm/gather_voxels.comp"
+                         : shifted || settings.far == RsmFar::Flux ? "rsm/gather_shifted.comp"
+                                                                        : "rsm/gather.comp";
     const std::vector<VkDescriptorType> bindings{ubo, tex, tex, tex, tex, tex, ssbo, ssbo, img, ssbo, ssbo, tex, ssbo};
     gather_ = vk::ComputeKernel(ctx, gather, bindings, sizeof(gpu::RsmPush));
-    if (settings.far == RsmFar::Flux && gather == std::string("rsm/gather_shifted.comp"))
+    if (settings.far == RsmFar::Flux && shifted && !voxels)
         gatherFlux_ = vk::ComputeKernel(ctx, "rsm/gather_flux.comp", bindings, sizeof(gpu::RsmPush));
     interpolate_ = vk::ComputeKernel(ctx, "rsm/interpolate.comp", {ubo, tex, tex, tex, img, ssbo, ssbo},
                                      sizeof(gpu::RsmPush));
@@ -122,7 +125,8 @@ gpu::RsmPush RsmGather::constants(uint32_t mode, uint32_t layers) const {
             {low ? lowWidth_ : width_, low ? lowHeight_ : height_, settings_.resolution, settings_.bilinearVpls ? 1u : 0u},
             {settings_.normalThreshold, settings_.distanceThreshold, settings_.radius, 0},
             {visibilityMode(), settings_.visibilityRays, settings_.weights == RsmWeights::Paper ? 1u : 0u, lanes(mode)},
-            {drawsByFlux() ? 1u : 0u, 0, 0, 0}};
+            {drawsByFlux() ? 1u : 0u, settings_.radii == RsmRadii::Shifted || settings_.visibility == RsmVisibility::Voxels,
+             0, 0}};
 }
 
 // The voxel pipeline keeps one invocation per receiver: its visible share is a ratio per receiver.
