@@ -19,42 +19,7 @@ layout(set = 0, binding = 5, std430) buffer PixelList { uvec4 header; uvec2 pixe
 layout(set = 0, binding = 6, std430) readonly buffer Layers { GpuRsmLayer rsmLayers[]; };
 layout(push_constant) uniform Push { RsmPush pc; };
 
-// The cells a workgroup's 8 x 8 pixels read (each pixel its 4 x 4 nearest): at most 11 x 11 (factor 1),
-// 6 x 6 at the default 4. Each cell's representative pixel (position, normal) and gather are read once
-// into shared memory: 16 reads of the G-buffer per pixel made this pass 0.105-0.157 ms at 1080p.
-const int kTile = 12;
-shared vec4 cellPosition[kTile * kTile];  // w = 1: the representative pixel has a surface
-shared vec3 cellNormal[kTile * kTile], cellIrradiance[kTile * kTile];
-
-// The low-res cell nearest below pixel p's centre in each axis, and p's position in cell units.
-ivec2 baseCell(ivec2 p, int f, out vec2 c) {
-    c = (vec2(p) + 0.5) / float(f) - 0.5;
-    return ivec2(floor(c));
-}
-
-// Fills the tile of cells from `origin`, `extent` of them, with what every pixel's filter reads.
-void loadCells(ivec2 origin, ivec2 extent, int f) {
-    for (int k = int(gl_LocalInvocationIndex); k < extent.x * extent.y; k += 64) {
-        const ivec2 at = ivec2(k % extent.x, k / extent.x), cell = origin + at;
-        const int slot = at.y * kTile + at.x;
-        cellPosition[slot] = vec4(0.0);
-        if (any(lessThan(cell, ivec2(0))) || any(greaterThanEqual(cell, ivec2(pc.sizes.xy)))) continue;
-        const ivec2 rep = min(cell * f + f / 2, ivec2(frame.size.xy) - 1);
-        const float d = texelFetch(gDepth, rep, 0).r;
-        if (d >= 1.0) continue;
-        cellPosition[slot] = vec4(pixelWorldPosition(frame, rep, d), 1.0);
-        cellNormal[slot] = normalize(texelFetch(gNormal, rep, 0).xyz);
-        cellIrradiance[slot] = texelFetch(lowIrradiance, cell, 0).rgb;
-    }
-}
-
 void main() {
-    const int f = int(pc.mode.w);
-    vec2 c;
-    const ivec2 corner = ivec2(gl_WorkGroupID.xy) * 8, origin = baseCell(corner, f, c) - 1;
-    loadCells(origin, baseCell(corner + 7, f, c) + 3 - origin, f);
-    barrier();
-
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(pixel, ivec2(frame.size.xy)))) return;
     float depth = texelFetch(gDepth, pixel, 0).r;
@@ -73,7 +38,10 @@ void main() {
     // screen space times a hard same-surface test (rotated patterns make neighbouring gathers
     // independent, so the filter averages their noise). With fewer than `needed` of the four nearest
     // on the pixel's surface, the pixel is gathered in full instead.
-    const ivec2 base = baseCell(pixel, f, c);
+    int f = int(pc.mode.w);
+    ivec2 lowSize = ivec2(pc.sizes.xy);
+    vec2 c = (vec2(pixel) + 0.5) / float(f) - 0.5;
+    ivec2 base = ivec2(floor(c));
     vec3 sum = vec3(0.0);
     float weight = 0.0;
     int valid = 0;
@@ -88,18 +56,19 @@ void main() {
     for (int k = 0; k < 16; ++k) {
         ivec2 o = ivec2(k & 3, k >> 2) - 1;
         ivec2 cell = base + o;
-        const ivec2 at = cell - origin;
-        const int slot = at.y * kTile + at.x;
-        if (cellPosition[slot].w == 0.0) continue;  // off the grid, or no surface
-        vec3 xi = cellPosition[slot].xyz;
-        vec3 ni = cellNormal[slot];
+        if (any(lessThan(cell, ivec2(0))) || any(greaterThanEqual(cell, lowSize))) continue;
+        ivec2 rep = min(cell * f + f / 2, ivec2(frame.size.xy) - 1);
+        float d = texelFetch(gDepth, rep, 0).r;
+        if (d >= 1.0) continue;
+        vec3 xi = pixelWorldPosition(frame, rep, d);
+        vec3 ni = normalize(texelFetch(gNormal, rep, 0).xyz);
         // Same surface: similar normal, on x's tangent plane (within one cell footprint), not far
         // along it (grazing views stretch a cell's footprint along the surface, hence the slack).
         if (dot(ni, n) < pc.params.x || abs(dot(n, xi - x)) > tolerance || length(xi - x) > 12.0 * tolerance)
             continue;
         vec2 r = vec2(cell) - c;
         float b = exp(-0.5 * dot(r, r));
-        sum += b * cellIrradiance[slot];
+        sum += b * texelFetch(lowIrradiance, cell, 0).rgb;
         weight += b;
         if (all(greaterThanEqual(o, ivec2(0))) && all(lessThanEqual(o, ivec2(1)))) ++valid;
     }
