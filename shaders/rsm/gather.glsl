@@ -101,18 +101,22 @@ ReceiverPattern receiverPattern(GpuRsmLayer L, vec3 x) {
 // each compared with the RSM's depth where it projects; a point behind the surface the light sees
 // there lies in that surface's shadow, so something stands between the VPL and x. Far VPLs are
 // where light would otherwise leak through walls (closed galleries, building interiors).
-float farVisibility(GpuRsmLayer L, uint layer, ivec2 t, float depth, vec3 x) {
+// The projection is linear in homogeneous coordinates: the VPL's clip position is its texel's NDC
+// over the w its unprojection divides by, and x's (`clipX`) is the receiver's, so each point's clip
+// position is a mix of the two, with no matrix per sample.
+float farVisibility(GpuRsmLayer L, uint layer, ivec2 t, float depth, vec4 clipX) {
     if (depth >= 1.0) return 1.0;
     int res = int(pc.sizes.z);
-    vec3 xp = unproject(L.invViewProj, (vec2(t) + 0.5) / float(res), depth);
+    const vec4 ndc = vec4((vec2(t) + 0.5) / float(res) * 2.0 - 1.0, depth, 1.0);
+    const vec4 clipP = ndc / dot(vec4(L.invViewProj[0].w, L.invViewProj[1].w, L.invViewProj[2].w, L.invViewProj[3].w), ndc);
     for (int k = 1; k <= 2; ++k) {
-        vec4 c = L.viewProj * vec4(mix(xp, x, 0.3 * float(k)), 1.0);
+        vec4 c = mix(clipP, clipX, 0.3 * float(k));
         if (c.w <= 0.0) continue;
-        vec3 ndc = c.xyz / c.w;
-        vec2 uv = ndc.xy * 0.5 + 0.5;
+        vec3 p = c.xyz / c.w;
+        vec2 uv = p.xy * 0.5 + 0.5;
         if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) continue;
         float seen = texelFetch(rsmDepth, ivec3(ivec2(uv * float(res)), layer), 0).r;
-        if (ndc.z > seen + 0.01 * (1.0 - seen) + 1e-4) return 0.0;
+        if (p.z > seen + 0.01 * (1.0 - seen) + 1e-4) return 0.0;
     }
     return 1.0;
 }
@@ -265,6 +269,7 @@ vec3 gather(vec3 x, vec3 n, bool hair, uint lane, uint lanes) {
         // ones (which alone test visibility) at every step.
         const uint run = (pc.mode.y + 2u * lanes - 1u) / (2u * lanes) * 2u;
         const FluxDraws draws = layerDraws(layer, FLUX_FAR ? scale : 1.0);
+        const vec4 clipX = L.viewProj * vec4(x, 1.0);
         for (uint i = lane * run, end = min(i + run, pc.mode.y); i < end; ++i) {
             vec3 c;
             ivec2 t;
@@ -293,7 +298,7 @@ vec3 gather(vec3 x, vec3 n, bool hair, uint lane, uint lanes) {
                 far = !FLUX_FAR && s.w > 0.5;
                 c = pc.sizes.w != 0u ? bilinearVplIrradiance(uv, res, layer, x, n, hair) : vplIrradianceOf(vpl, t, layer, x, n, hair);
             }
-            if (pc.sampling.x == RSM_VISIBILITY_DEPTH && far && any(greaterThan(c, vec3(0.0)))) c *= farVisibility(L, layer, t, uintBitsToFloat(vpl.x), x);
+            if (pc.sampling.x == RSM_VISIBILITY_DEPTH && far && any(greaterThan(c, vec3(0.0)))) c *= farVisibility(L, layer, t, uintBitsToFloat(vpl.x), clipX);
             c *= weight;
 #ifdef RSM_VOXEL_VISIBILITY
             if (i % stride == 0u) {
