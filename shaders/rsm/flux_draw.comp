@@ -14,14 +14,7 @@ layout(set = 0, binding = 2, std430) writeonly buffer Draws { uint words[]; } dr
 layout(push_constant) uniform Push { uvec4 sizes; } pc;  // x = RSM resolution, y = layers, z = n, w = seed
 
 #include "rsm/flux_luminance.glsl"
-
-uint hash(uint v) {
-    v ^= v >> 16;
-    v *= 0x7feb352du;
-    v ^= v >> 15;
-    v *= 0x846ca68bu;
-    return v ^ (v >> 16);
-}
+#include "shared/hash.glsl"
 
 // The first of `count` sums from `first` that exceeds `target` (count - 1 when none does: rounding).
 uint firstAbove(uint first, uint count, float target) {
@@ -41,7 +34,7 @@ void main() {
     const float total = sums[runs + n - 1u];
     const uint block = layer * RSM_FLUX_BLOCK;
     if (j == 0u) draws.words[4u * block] = floatBitsToUint(total);
-    const float jitter = float(hash(j ^ hash(pc.sizes.w + 0x9e3779b9u)) >> 8) * (1.0 / 16777216.0);
+    const float jitter = float(hashMix(j ^ hashMix(pc.sizes.w + 0x9e3779b9u)) >> 8) * (1.0 / 16777216.0);
     // Targets are kept below each total: rounding must not carry one past the last lit texel.
     const float below = 1.0 - 1.0 / 1048576.0;
     const float target = min((float(j) + jitter) / float(RSM_FLUX_ENTRIES), below) * total;

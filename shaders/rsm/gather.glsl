@@ -9,6 +9,7 @@
 #include "shared/types.h"
 #include "render/lights.glsl"
 #include "render/reconstruct.glsl"
+#include "shared/hash.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -39,9 +40,8 @@ layout(push_constant) uniform Push { RsmPush pc; };
 // and, as x leaves the map (angle off the axis for a spot, uv distance for an orthographic map),
 // slides to the map centre while growing to the whole map. The result stays continuous across the
 // frustum's border, and the weights scale with the disc's area, so the estimate keeps converging to
-// the sum over its disc.
-float samplingDisc(GpuRsmLayer layer, vec3 x, out vec2 st) {
-    vec4 clip = layer.viewProj * vec4(x, 1.0);
+// the sum over its disc. `clip`: x in the layer's clip space.
+float samplingDisc(GpuRsmLayer layer, vec4 clip, out vec2 st) {
     const float rMax = pc.params.z, whole = max(rMax, 0.70710678);
     float outside;
     vec2 border;
@@ -71,23 +71,16 @@ float samplingDisc(GpuRsmLayer layer, vec3 x, out vec2 st) {
 // position (quantised to RSM texels): neighbouring receivers see different VPLs, so the
 // interpolation's filter averages independent estimates, and the pattern of a surface point stays
 // put when the camera moves.
-uint hash3(uvec3 v) {
-    uint h = v.x * 0x8da6b343u ^ v.y * 0xd8163841u ^ v.z * 0xcb1ab31fu;
-    h ^= h >> 16;
-    h *= 0x7feb352du;
-    h ^= h >> 15;
-    h *= 0x846ca68bu;
-    return h ^ (h >> 16);
-}
+uint hash3(uvec3 v) { return hashMix(v.x * 0x8da6b343u ^ v.y * 0xd8163841u ^ v.z * 0xcb1ab31fu); }
 
 struct ReceiverPattern {
     mat2 rotation;
     float shift;  // added to xi1, modulo 1
 };
 
-ReceiverPattern receiverPattern(GpuRsmLayer L, vec3 x) {
+ReceiverPattern receiverPattern(GpuRsmLayer L, vec3 x, vec4 clip) {
     float texel = L.params.x;
-    if (L.params.y > 0.5) texel *= max(abs((L.viewProj * vec4(x, 1.0)).w), 1e-3);
+    if (L.params.y > 0.5) texel *= max(abs(clip.w), 1e-3);
     ReceiverPattern p;
     const uint seed = hash3(uvec3(ivec3(floor(x / texel))));
     const float angle = float(seed) * (6.28318531 / 4294967296.0), c = cos(angle), s = sin(angle);
@@ -237,10 +230,10 @@ vec3 gather(vec3 x, vec3 n, bool hair, uint lane, uint lanes) {
     for (uint layer = 0; layer < pc.mode.z; ++layer) {
         // Cascades of a light: the first whose map holds x, else the last (seed: SearchCascadeIndex).
         GpuRsmLayer L = rsmLayers[layer];
+        const vec4 clipX = L.viewProj * vec4(x, 1.0);  // x in the layer's clip space
         if (L.cascade.x > 0.0) {
             if (uint(L.params.z) == usedCascadeLight) continue;
-            vec4 c = L.viewProj * vec4(x, 1.0);
-            if (L.cascade.y < 0.5 && any(greaterThan(abs(c.xy / c.w), vec2(1.0)))) continue;
+            if (L.cascade.y < 0.5 && any(greaterThan(abs(clipX.xy / clipX.w), vec2(1.0)))) continue;
             usedCascadeLight = uint(L.params.z);
         }
         if (pc.mode.x == RSM_GATHER_ALL_TEXELS) {
@@ -255,8 +248,8 @@ vec3 gather(vec3 x, vec3 n, bool hair, uint lane, uint lanes) {
             continue;
         }
         vec2 st;
-        float scale = samplingDisc(L, x, st) * L.cascade.z / pc.params.z;
-        const ReceiverPattern pattern = receiverPattern(L, x);
+        float scale = samplingDisc(L, clipX, st) * L.cascade.z / pc.params.z;
+        const ReceiverPattern pattern = receiverPattern(L, x, clipX);
         // Voxel visibility: every stride-th sample walks the occupancy volume; the visible share of
         // those samples' light scales the layer's light. The same samples for every receiver: the
         // lanes of a subgroup walk together (a per-receiver choice made each walk wait for up to
@@ -268,8 +261,7 @@ vec3 gather(vec3 x, vec3 n, bool hair, uint lane, uint lanes) {
         // discs, and lanes that stepped by `lanes` would split a warp between near samples and far
         // ones (which alone test visibility) at every step.
         const uint run = (pc.mode.y + 2u * lanes - 1u) / (2u * lanes) * 2u;
-        const FluxDraws draws = layerDraws(layer, FLUX_FAR ? scale : 1.0);
-        const vec4 clipX = L.viewProj * vec4(x, 1.0);
+        const FluxDraws draws = layerDraws(layer, scale);
         for (uint i = lane * run, end = min(i + run, pc.mode.y); i < end; ++i) {
             vec3 c;
             ivec2 t;

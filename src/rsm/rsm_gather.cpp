@@ -94,13 +94,13 @@ RsmGather::RsmGather(vk::Allocator& alloc, vk::CommandContext& cmd, uint32_t wid
     } else {
         pixelList_ = vk::Buffer(alloc, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false, "rsm-unused-list");
     }
-    // An empty grid (no voxels): bound when no occupancy volume is published; it also stands in for
-    // the flux draws under --rsm-far disc.
-    noOccupancy_ = vk::Buffer(alloc, sizeof(gpu::GpuOccupancyGrid),
+    // Zeros, bound in place of an optional buffer not published this frame: an empty occupancy grid
+    // (no voxels), or the flux draws under --rsm-far disc (never read there).
+    emptyBuffer_ = vk::Buffer(alloc, sizeof(gpu::GpuOccupancyGrid),
                               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, false,
-                              "no-occupancy");
+                              "rsm-empty");
     cmd.submitAndWait([&](VkCommandBuffer c) {
-        vkCmdFillBuffer(c, noOccupancy_.handle(), 0, VK_WHOLE_SIZE, 0);
+        vkCmdFillBuffer(c, emptyBuffer_.handle(), 0, VK_WHOLE_SIZE, 0);
         vk::memoryBarrier(c, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
                           VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
     });
@@ -161,9 +161,9 @@ void RsmGather::addGather(FrameGraph& graph, const char* name, uint32_t mode, Im
         .storageBuffer(7, graph.import(samples_.current()))
         .storageImage(8, out)
         .storageBuffer(9, graph.import(pixelList_))
-        .storageBuffer(10, graph.hasBuffer("occupancy") ? graph.buffer("occupancy") : graph.import(noOccupancy_))
+        .storageBuffer(10, graph.hasBuffer("occupancy") ? graph.buffer("occupancy") : graph.import(emptyBuffer_))
         .sampled(11, graph.image("rsm.vpls"), point)
-        .storageBuffer(12, fluxDraws_ ? graph.buffer("rsm.flux-draws") : graph.import(noOccupancy_));
+        .storageBuffer(12, fluxDraws_ ? graph.buffer("rsm.flux-draws") : graph.import(emptyBuffer_));
     const BufferHandle args = mode == RSM_GATHER_LIST ? graph.import(dispatchArgs_) : BufferHandle{};
     if (args) pass.use(args, Use::IndirectArgs);
     const gpu::RsmPush pc = constants(mode, layers);

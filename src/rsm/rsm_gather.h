@@ -42,7 +42,7 @@ private:
     vk::Image irradiance_, low_;
     std::vector<glm::vec4> pattern_;
     vk::BufferRing samples_;  // the pattern, rewritten each frame into the frame slot's copy
-    vk::Buffer pixelList_, dispatchArgs_, noOccupancy_;
+    vk::Buffer pixelList_, dispatchArgs_, emptyBuffer_;
     bool fluxDraws_ = false;  // "rsm.flux-draws" is published this frame
     vk::ComputeKernel gatherFlux_;  // --rsm-far flux with shifted radii, the default (rsm/gather_flux.comp)
 };
