@@ -115,13 +115,14 @@ TEST(GiSuite, MixturePatternWeightsCountEveryTexelOfTheWholeMap) {
 }
 
 // Measured on lavapipe at 64x48 against a 1024-path reference (README, "GI evaluation suite"):
-// RSM (350 samples, far half drawn by flux, shifted radii) cornell 0.153 / +6.2%, street 0.154 / -0.0%,
-// room 0.069 / +1.9% (400 samples, far disc, fixed radii: 0.199 / +0.8%, 0.169 / -3.7%, 0.103 /
+// RSM (300 samples, views visibility at 3 points, far half drawn by flux, shifted radii) cornell 0.144 /
+// +3.6%, street 0.142 / +1.8%, room 0.069 / +1.8% (350 samples with far samples' depth test: 0.153 /
+// +6.2%, 0.154 / -0.0%, 0.069 / +1.9%; 400 samples, far disc, fixed radii: 0.199 / +0.8%, 0.169 / -3.7%, 0.103 /
 // -5.7%; cornell's +0.8% was the fixed radii's near-field deficit cancelling the light that no
 // visibility test stops between its boxes, and the flux draws remove the deficit); LPV (16^3 x 8, 3 cascades) cornell 0.380 / +19.7%, street
 // 0.294 / +17.4%, room 0.259 / -8.9% (before: 0.840 / -67.6%, 1.095 / -20.5%, 0.895 / -40.5%).
 // Bounds guard the accuracy reached, with a margin for the reference's noise (0.05-0.08); cornell's
-// RSM bias is held to the 10%.
-TEST_F(GiSuiteTest, CornellAtDefaults) { check({"cornell", 0.20, 0.10, 0.43, 0.26}); }
+// RSM bias to 8%.
+TEST_F(GiSuiteTest, CornellAtDefaults) { check({"cornell", 0.19, 0.08, 0.43, 0.26}); }
 TEST_F(GiSuiteTest, StreetAtDefaults) { check({"street", 0.19, 0.06, 0.35, 0.24}); }
 TEST_F(GiSuiteTest, RoomAtDefaults) { check({"room", 0.12, 0.06, 0.31, 0.16}); }

@@ -155,6 +155,7 @@ struct GpuRsmLayer {
 #define RSM_VISIBILITY_NONE 0    // every VPL lights every receiver it faces
 #define RSM_VISIBILITY_DEPTH 1   // far samples: two points of the segment against the RSM's depth
 #define RSM_VISIBILITY_VOXELS 2  // every sample: the segment marched through the occupancy volume
+#define RSM_VISIBILITY_VIEWS 3   // every sample: points of the segment against the RSM's and the camera's depth
 
 struct RsmPush {
     uvec4 mode;    // x = RSM_GATHER_*, y = sample count, z = layer count, w = low-resolution factor
@@ -163,7 +164,8 @@ struct RsmPush {
     uvec4 sampling;  // x = RSM_VISIBILITY_*, y = samples a pixel tests through the occupancy volume,
                      // z = 1: the paper's single disc and xi1^2 weights (else the mixture), w = lanes per receiver
     uvec4 far;     // x = 1: the far half of the samples drawn by flux (rsm/flux_draw.comp), y = 1: radii
-                   // shifted per receiver (pipelines with RSM_SHIFTED_RADII), z, w unused
+                   // shifted per receiver (pipelines with RSM_SHIFTED_RADII), z = points a segment is tested
+                   // at (RSM_VISIBILITY_VIEWS), w unused
 };
 
 // The flux-drawn VPLs of --rsm-far flux (rsm/flux_draw.comp), per layer a block of RSM_FLUX_BLOCK

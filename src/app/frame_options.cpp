@@ -59,9 +59,13 @@ void addGiOptions(CLI::App& cmd, RenderSettings& rs) {
                     "(4x the cost; steadier under moving lights)");
     addChoice<RsmVisibility>(cmd, "--rsm-visibility", rs.rsm.visibility,
                              {{"none", RsmVisibility::None}, {"depth", RsmVisibility::Depth},
-                              {"voxels", RsmVisibility::Voxels}},
+                              {"views", RsmVisibility::Views}, {"voxels", RsmVisibility::Voxels}},
                              "Whether a VPL sees its receiver: not tested, far samples against the RSM's depth, "
-                             "or every sample through the scene's occupancy volume");
+                             "every sample against the RSM's and the camera's depth, or every sample through the "
+                             "scene's occupancy volume");
+    cmd.add_option("--rsm-visibility-points", rs.rsm.visibilityPoints,
+                   "Views visibility: points of a VPL-receiver segment tested against the two depth maps")
+        ->check(CLI::Range(1, 16));
     cmd.add_option("--rsm-voxel-res", rs.rsm.voxelResolution,
                    "Occupancy volume (--rsm-visibility voxels): voxels along the scene's longest side")
         ->check(CLI::Range(8, 1024));

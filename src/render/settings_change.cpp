@@ -57,6 +57,7 @@ std::vector<SettingsOption> makeTable() {
         option("--rsm-radii", kStructure, kPartGi, [](S s) { return s.rsm.radii; }),
         option("--rsm-far", kStructure, kPartGi, [](S s) { return s.rsm.far; }),
         option("--rsm-visibility-rays", kFrame, kPartNone, [](S s) { return s.rsm.visibilityRays; }),
+        option("--rsm-visibility-points", kFrame, kPartNone, [](S s) { return s.rsm.visibilityPoints; }),
         option("--gi-temporal", kStructure, kPartCamera, [](S s) { return s.giTemporal; }),
         option("--gi-temporal-alpha", kFrame, kPartNone, [](S s) { return s.giTemporalAlpha; }),
         option("--rsm-lowres", kSizes, kPartGi, [](S s) { return s.rsm.lowResFactor; }),

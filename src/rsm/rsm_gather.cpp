@@ -126,7 +126,7 @@ gpu::RsmPush RsmGather::constants(uint32_t mode, uint32_t layers) const {
             {settings_.normalThreshold, settings_.distanceThreshold, settings_.radius, 0},
             {visibilityMode(), settings_.visibilityRays, settings_.weights == RsmWeights::Paper ? 1u : 0u, lanes(mode)},
             {drawsByFlux() ? 1u : 0u, settings_.radii == RsmRadii::Shifted || settings_.visibility == RsmVisibility::Voxels,
-             0, 0}};
+             settings_.visibilityPoints, 0}};
 }
 
 // The voxel pipeline keeps one invocation per receiver: its visible share is a ratio per receiver.
@@ -139,6 +139,7 @@ uint32_t RsmGather::visibilityMode() const {
         case RsmVisibility::None: return RSM_VISIBILITY_NONE;
         case RsmVisibility::Depth: return RSM_VISIBILITY_DEPTH;
         case RsmVisibility::Voxels: return RSM_VISIBILITY_VOXELS;
+        case RsmVisibility::Views: return RSM_VISIBILITY_VIEWS;
     }
     return RSM_VISIBILITY_NONE;
 }
