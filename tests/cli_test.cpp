@@ -420,6 +420,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"RsmFluxCdfBeyondStorageBuffer",
                  {"render", "cornell", "-o", "{out}", "--gi", "rsm", "--rsm-res", "8192"},
                  "the largest --rsm-res that fits is 4096"},
+        BadInput{"RsmVisibilityPointsZero",
+                 {"render", "cornell", "-o", "{out}", "--rsm-visibility-points", "0"}, "--rsm-visibility-points"},
         BadInput{"StrandsBeyondStorageBuffer",
                  {"render", "hair", "-o", "{out}", "--strands", "2000000", "--shadow", "dsm"},
                  "the largest --strands that fits"},
