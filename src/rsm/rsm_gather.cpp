@@ -64,7 +64,7 @@ RsmGather::RsmGather(vk::Allocator& alloc, vk::CommandContext& cmd, uint32_t wid
                            ssbo = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, img = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
     // The far disc with fixed radii has a lean pipeline of its own; the default (flux draws, shifted
     // radii) another, taken in the frames whose weights are unbiased (drawsByFlux).
-    const bool voxels = settings.visibility == RsmVisibility::Voxels, shifted = settings.radii == RsmRadii::Shifted;
+    const bool voxels = settings.visibility == RsmVisibility::Voxels, shifted = shiftedRadii(settings);
     const char* gather = voxels                                         ? "rsm/gather_voxels.comp"
                          : shifted || settings.far == RsmFar::Flux ? "rsm/gather_shifted.comp"
                                                                         : "rsm/gather.comp";
@@ -125,8 +125,12 @@ gpu::RsmPush RsmGather::constants(uint32_t mode, uint32_t layers) const {
             {low ? lowWidth_ : width_, low ? lowHeight_ : height_, settings_.resolution, settings_.bilinearVpls ? 1u : 0u},
             {settings_.normalThreshold, settings_.distanceThreshold, settings_.radius, 0},
             {visibilityMode(), settings_.visibilityRays, settings_.weights == RsmWeights::Paper ? 1u : 0u, lanes(mode)},
-            {drawsByFlux() ? 1u : 0u, settings_.radii == RsmRadii::Shifted || settings_.visibility == RsmVisibility::Voxels,
-             settings_.visibilityPoints, 0}};
+            {drawsByFlux() ? 1u : 0u, shiftedRadii(settings_) ? 1u : 0u, settings_.visibilityPoints, 0}};
+}
+
+// Radii shifted per receiver: asked for, or implied by voxel visibility (its pipeline always shifts).
+bool RsmGather::shiftedRadii(const RsmSettings& s) {
+    return s.radii == RsmRadii::Shifted || s.visibility == RsmVisibility::Voxels;
 }
 
 // The voxel pipeline keeps one invocation per receiver: its visible share is a ratio per receiver.

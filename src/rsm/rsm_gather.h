@@ -30,6 +30,7 @@ public:
 private:
     gpu::RsmPush constants(uint32_t mode, uint32_t layers) const;
     uint32_t visibilityMode() const;
+    static bool shiftedRadii(const RsmSettings& s);
     bool drawsByFlux() const;
     uint32_t lanes(uint32_t mode) const;  // invocations per receiver of a gather mode
     void addGather(FrameGraph& graph, const char* name, uint32_t mode, ImageHandle out, uint32_t layers);
