@@ -19,7 +19,8 @@ GBufferPass::GBufferPass(vk::Allocator& alloc, SceneGpu& scene, uint32_t width, 
                                1, target, "gbuffer-albedo"});
     normal = vk::Image(alloc, {VK_FORMAT_R16G16B16A16_SFLOAT, width, height, 1, target, "gbuffer-normal"});
     depth = vk::Image(alloc, {computeDepth ? VK_FORMAT_R32_SFLOAT : VK_FORMAT_D32_SFLOAT, width, height, 1,
-                              (computeDepth ? VK_IMAGE_USAGE_STORAGE_BIT : VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT) |
+                              VkImageUsageFlags(computeDepth ? VK_IMAGE_USAGE_STORAGE_BIT
+                                                             : VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT) |
                                   VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT |
                                   VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                               "gbuffer-depth"});
