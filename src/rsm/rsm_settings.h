@@ -43,7 +43,8 @@ inline constexpr uint32_t kMaxRsmSamples = 16384;  // --rsm-samples' range: the 
 struct RsmSettings {
     uint32_t resolution = 512;   // RSM texels per side (per shadowed light)
     // Gather samples per receiver. 300 with views visibility (3 points a sample): the GI suite's RSM
-    // error within 0.01 of 350's (Sponza 0.387 against 0.383) at a gather 15% cheaper (README, GI suite).
+    // error within 0.01 of 350's (Sponza 0.387 against 0.383) at a gather about 12% cheaper on the H100
+    // (README, "RSM: visibility from two views").
     uint32_t samples = 300;
     float radius = 0.25f;        // r_max in RSM uv units
     uint32_t seed = 1;           // the sample pattern is generated once from it (reproducible)
@@ -65,7 +66,7 @@ struct RsmSettings {
     // +14%) but costs 4-6 ms at 1080p on the H100 with 16 rays, and its ratio's noise costs cornell
     // and street 0.03-0.05 of rel L1 (README, "RSM visibility"): an expert's choice, not the default.
     // Views (the default) takes Sponza's RSM from 0.519 / +40% to 0.387 / +18% on the GI suite, and no
-    // scene's error grows, for 0.3 ms more at 1080p on the H100 (README, "RSM: visibility from two views").
+    // scene's error grows, for 0.35-0.5 ms more at 1080p on the H100 (README, "RSM: visibility from two views").
     RsmVisibility visibility = RsmVisibility::Views;
     RsmRadii radii = RsmRadii::Shifted;
     RsmFar far = RsmFar::Flux;
