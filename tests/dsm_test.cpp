@@ -221,7 +221,9 @@ TEST_F(DsmTest, LongListsKeepTheNearestNodesAcrossBatches) {
         std::printf("[dsm long lists] cap %u: %llu of %llu nodes sorted\n", cap, (unsigned long long)run.stats.sorted,
                     (unsigned long long)(kLayers * run.stats.lists));
         EXPECT_GE(run.stats.sorted, cap * run.stats.lists);
-        if (cap == 50u) EXPECT_LT(run.stats.sorted, kLayers / 2 * run.stats.lists);
+        if (cap == 50u) {
+            EXPECT_LT(run.stats.sorted, kLayers / 2 * run.stats.lists);
+        }
     }
 }
 

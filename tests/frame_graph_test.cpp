@@ -123,7 +123,9 @@ TEST_F(FrameGraphTest, GroupedExecutionGivesTheResultsInOrder) {
         copy("c.to-d", hc, hd);
         fill("a.refill", ha, 3u);  // after a.to-b read it
         copy("d.to-a", hd, ha);    // after a.refill wrote it
-        if (overlap) EXPECT_EQ(g.schedule(), (Groups{{0, 2}, {1, 3}, {4}, {5}}));
+        if (overlap) {
+            EXPECT_EQ(g.schedule(), (Groups{{0, 2}, {1, 3}, {4}, {5}}));
+        }
         cmd.submitAndWait([&](VkCommandBuffer c) { g.execute(c, nullptr); });
         auto first = [&](const vk::Buffer& buf) {
             uint32_t v = 0;
