@@ -89,27 +89,30 @@ ReceiverPattern receiverPattern(GpuRsmLayer L, vec3 x, vec4 clip) {
     return p;
 }
 
-// Whether the camera's depth buffer hides a point (`c`: its camera clip position): it lies behind the
-// surface the camera sees at its pixel. Outside the camera's view it knows nothing: hidden, so that
-// the light's verdict stands (taking such points as seen left Sponza +29% bright against +21%).
+// Whether a point at depth z lies behind the surface a depth map holds there (`seen`), past a margin
+// that grows towards the far plane, where a perspective depth's steps grow; `floorBias` is the margin at
+// the far plane.
+bool behindSurface(float z, float seen, float floorBias) { return z > seen + 0.01 * (1.0 - seen) + floorBias; }
+
+// Whether the camera's depth buffer hides a point (`c`: its camera clip position). Outside the
+// camera's view it knows nothing: hidden, so that the light's verdict stands (taking such points as
+// seen left Sponza +29% bright against +21%).
 bool hiddenFromCamera(vec4 c) {
     if (c.w <= 0.0) return true;
     const vec3 p = c.xyz / c.w;
     if (any(greaterThan(abs(p.xy), vec2(1.0)))) return true;
     const ivec2 pixel = min(ivec2((p.xy * 0.5 + 0.5) * vec2(frame.size.xy)), ivec2(frame.size.xy) - 1);
-    const float seen = texelFetch(gDepth, pixel, 0).r;
-    return p.z > seen + 0.01 * (1.0 - seen) + 1e-5;
+    return behindSurface(p.z, texelFetch(gDepth, pixel, 0).r, 1e-5);
 }
 
-// Whether the RSM layer's depth hides a point (`c`: its clip position in the layer): it lies behind the
-// surface the light sees there, in that surface's shadow. Off the map: not hidden.
+// Whether the RSM layer's depth hides a point (`c`: its clip position in the layer): it lies in the
+// shadow of the surface the light sees there. Off the map: not hidden.
 bool hiddenFromLight(vec4 c, bool perspective, uint layer, int res) {
     if (c.w <= 0.0) return false;
     const vec3 p = perspective ? c.xyz / c.w : c.xyz;  // an orthographic layer's w is 1
     const vec2 uv = p.xy * 0.5 + 0.5;
     if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) return false;
-    const float seen = texelFetch(rsmDepth, ivec3(ivec2(uv * float(res)), layer), 0).r;
-    return p.z > seen + 0.01 * (1.0 - seen) + 1e-4;
+    return behindSurface(p.z, texelFetch(rsmDepth, ivec3(ivec2(uv * float(res)), layer), 0).r, 1e-4);
 }
 
 // Whether the VPL of texel t (RSM depth `depth`) sees x, tested at points of the segment between them
@@ -221,7 +224,7 @@ float balanceWeight(FluxDraws d, float r, uvec4 vpl) {
 // A surface occupies the voxels it meets, which reach up to sqrt(3) voxels from it along its normal
 // (a voxel's extent along n is |n|_1 <= sqrt(3)): lifted by more, an end clears its own surface; the
 // skip clears the shells of surfaces beside it (a receiver in a corner). Against Embree-traced
-// visibility: within 2-4% (tests/rsm_test.cpp).
+// visibility: within 2-4% (tests/rsm_visibility_test.cpp).
 const float kVisibilityLift = 1.8;
 const float kVisibilitySkip = 1.5;
 
@@ -257,10 +260,10 @@ vec3 exactLayerSum(GpuRsmLayer L, uint layer, vec3 x, vec3 n, bool hair, vec4 cl
     vec3 e = vec3(0.0);
     for (uint k = lane; k < uint(res * res); k += lanes) {
         const ivec2 t = ivec2(k % uint(res), k / uint(res));
-        vec3 c = vplIrradiance(t, layer, x, n, hair);
+        const uvec4 vpl = texelFetch(rsmVpls, ivec3(t, layer), 0);
+        vec3 c = vplIrradianceOf(vpl, t, layer, x, n, hair);
         if (pc.sampling.x == RSM_VISIBILITY_VIEWS && any(greaterThan(c, vec3(0.0))))
-            c *= segmentVisibility(L, layer, t, texelFetch(rsmDepth, ivec3(t, layer), 0).r, clipX, camX,
-                                   fract(float(k) * 0.61803399));
+            c *= segmentVisibility(L, layer, t, uintBitsToFloat(vpl.x), clipX, camX, fract(float(k) * 0.61803399));
 #ifdef RSM_VOXEL_VISIBILITY
         if (any(greaterThan(c, vec3(0.0)))) c *= voxelVisibility(layer, t, x, n, hair);
 #endif
