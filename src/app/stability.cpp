@@ -10,6 +10,7 @@
 #include "app/device_budget.h"
 #include "app/option_checks.h"
 #include "reference/path_tracer.h"
+#include "render/render_options.h"
 
 namespace penumbra {
 namespace {
@@ -253,7 +254,8 @@ int runStability(const StabilityOptions& o, const vk::ContextOptions& vkOptions,
                 (aov == Aov::Final ? fin : ind).push_back(std::move(lum));
             }
         }
-        nlohmann::json j{{"technique", c.name}, {"final_flicker", flicker(fin)}, {"final_flicker_rms", flickerRms(fin)}};
+        nlohmann::json j{{"technique", c.name}, {"settings", renderSettingsJson(c.settings)},
+                         {"final_flicker", flicker(fin)}, {"final_flicker_rms", flickerRms(fin)}};
         if (!ind.empty()) j["indirect_flicker"] = flicker(ind), j["indirect_flicker_rms"] = flickerRms(ind);
         const auto cell = [&](const std::vector<std::vector<float>>& v, double (*figure)(const std::vector<std::vector<float>>&)) {
             return v.empty() ? std::string("-") : fmt::format("{:.5f}", figure(v));

@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "render/render_options.h"
+
 namespace penumbra {
 namespace {
 
@@ -175,6 +177,7 @@ nlohmann::json evalRowsJson(const std::vector<EvalRow>& rows) {
     for (const EvalRow& r : rows)
         out.push_back({{"technique", r.variant.technique},
                        {"settings", r.variant.settings},
+                       {"render_settings", renderSettingsJson(r.variant.render)},
                        {"frame_ms", std::isfinite(r.frameMs) ? nlohmann::json(r.frameMs) : nlohmann::json(nullptr)},
                        {"direct", metricsJson(r.direct)},
                        {"total", metricsJson(r.total)},

@@ -173,7 +173,8 @@ void validateSettings(const RenderSettings& s) {
         if (!ok) throw std::invalid_argument(fmt::format("{} {} {}", aov, view, what));
     };
     const bool lpvView = s.aov == Aov::LpvSlice || s.aov == Aov::GvSlice;
-    need(!lpvView || s.gi == GiMode::Lpv, fmt::format("needs {} lpv", gi));
+    if (lpvView && s.gi != GiMode::Lpv)
+        throw std::invalid_argument(fmt::format("{} lpv-slice/gv-slice need {} lpv", aov, gi));
     if (lpvView && s.lpv.sliceIndex >= s.lpv.resolution) {
         const OptionTable& lpv = lpvOptions();
         throw std::invalid_argument(fmt::format(
