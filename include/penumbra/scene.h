@@ -73,8 +73,9 @@ struct Camera {
 };
 
 // A scene in memory. Every draw's range lies inside `indices` and is whole triangles, every index
-// names a vertex, every material index and texture index exists; a scene without materials gets a
-// white one, without lights a sun, without cameras one that frames it.
+// names a vertex, every material index and texture index exists. Without draws, all indices are one
+// draw of material 0; without materials there is a white one, without lights a sun, without cameras
+// one that frames the scene. Normals and light directions not of unit length are scaled (a warning).
 struct SceneDesc {
     std::string name = "memory";
     std::vector<Vertex> vertices;
@@ -94,7 +95,8 @@ struct Frame {
     std::vector<Mat4> instances;
 };
 
-// A loaded scene (immutable, cheap to copy). Throws std::runtime_error with one line for bad input.
+// A loaded scene (immutable, cheap to copy). Bad input throws one line: std::runtime_error for a
+// file or name, std::invalid_argument for arrays (fromMemory).
 class SceneData {
 public:
     static SceneData fromGltf(const std::string& path);
