@@ -113,6 +113,16 @@ TEST(EmbedApi, FrameImageHoldsTheFrameAndWaitsForTheEngine) {
         EXPECT_EQ(secondTexels, renderer.readRgba8());
         EXPECT_NE(secondTexels, firstTexels);
         EXPECT_EQ(secondTexels, renderOnOwnDevice(scene, smallSettings(), 1.5));
+        // Another size: a new image of that size, the frame in it.
+        api::Settings smaller = smallSettings();
+        smaller.width = 40;
+        renderer.apply(smaller);
+        const api::FrameImage third = renderer.submitToImage(scene.frame(1.5));
+        EXPECT_EQ(third.width, 40u);
+        const std::vector<uint8_t> thirdTexels = engine.copyOut(third, VK_NULL_HANDLE);
+        renderer.finish();
+        EXPECT_EQ(thirdTexels, renderer.readRgba8());
+        EXPECT_EQ(thirdTexels.size(), 40u * 48u * 4u);
     }
     expectNoMessages(engine);
 }

@@ -74,7 +74,6 @@ private:
     void createInstance();
     void pickDevice();
     void createDevice();
-    uint32_t hostMemoryType(uint32_t bits) const;
 
     VkInstance instance_ = VK_NULL_HANDLE;
     VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
@@ -154,31 +153,50 @@ inline void Engine::createDevice() {
     ENGINE_CHECK(vkCreateCommandPool(device_, &pool, nullptr, &pool_));
 }
 
-inline uint32_t Engine::hostMemoryType(uint32_t bits) const {
+inline uint32_t hostMemoryType(VkPhysicalDevice physical, uint32_t bits) {
     VkPhysicalDeviceMemoryProperties mem;
-    vkGetPhysicalDeviceMemoryProperties(physical_, &mem);
+    vkGetPhysicalDeviceMemoryProperties(physical, &mem);
     const VkMemoryPropertyFlags need = VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT;
     for (uint32_t i = 0; i < mem.memoryTypeCount; ++i)
         if ((bits & (1u << i)) && (mem.memoryTypes[i].propertyFlags & need) == need) return i;
     throw std::runtime_error("no host-visible memory");
 }
 
+// A host-visible buffer the engine copies an image into.
+struct HostBuffer {
+    VkDevice device;
+    VkBuffer buffer = VK_NULL_HANDLE;
+    VkDeviceMemory memory = VK_NULL_HANDLE;
+    HostBuffer(VkDevice d, VkPhysicalDevice physical, VkDeviceSize bytes) : device(d) {
+        VkBufferCreateInfo bi{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
+        bi.size = bytes;
+        bi.usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+        ENGINE_CHECK(vkCreateBuffer(device, &bi, nullptr, &buffer));
+        VkMemoryRequirements req;
+        vkGetBufferMemoryRequirements(device, buffer, &req);
+        VkMemoryAllocateInfo ai{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+        ai.allocationSize = req.size;
+        ai.memoryTypeIndex = hostMemoryType(physical, req.memoryTypeBits);
+        ENGINE_CHECK(vkAllocateMemory(device, &ai, nullptr, &memory));
+        ENGINE_CHECK(vkBindBufferMemory(device, buffer, memory, 0));
+    }
+    ~HostBuffer() {
+        vkDestroyBuffer(device, buffer, nullptr);
+        vkFreeMemory(device, memory, nullptr);
+    }
+    std::vector<uint8_t> read(VkDeviceSize bytes) const {
+        void* mapped = nullptr;
+        ENGINE_CHECK(vkMapMemory(device, memory, 0, bytes, 0, &mapped));
+        std::vector<uint8_t> out(static_cast<const uint8_t*>(mapped), static_cast<const uint8_t*>(mapped) + bytes);
+        vkUnmapMemory(device, memory);
+        return out;
+    }
+};
+
 inline std::vector<uint8_t> Engine::copyOut(const api::FrameImage& image, VkSemaphore done) {
     const VkDeviceSize bytes = VkDeviceSize(image.width) * image.height * 4;
-    VkBufferCreateInfo bi{VK_STRUCTURE_TYPE_BUFFER_CREATE_INFO};
-    bi.size = bytes;
-    bi.usage = VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-    VkBuffer buffer;
-    ENGINE_CHECK(vkCreateBuffer(device_, &bi, nullptr, &buffer));
-    VkMemoryRequirements req;
-    vkGetBufferMemoryRequirements(device_, buffer, &req);
-    VkMemoryAllocateInfo ai{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-    ai.allocationSize = req.size;
-    ai.memoryTypeIndex = hostMemoryType(req.memoryTypeBits);
-    VkDeviceMemory memory;
-    ENGINE_CHECK(vkAllocateMemory(device_, &ai, nullptr, &memory));
-    ENGINE_CHECK(vkBindBufferMemory(device_, buffer, memory, 0));
-
+    const HostBuffer host(device_, physical_, bytes);
+    const VkBuffer buffer = host.buffer;
     VkCommandBufferAllocateInfo ci{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
     ci.commandPool = pool_;
     ci.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
@@ -209,12 +227,12 @@ inline std::vector<uint8_t> Engine::copyOut(const api::FrameImage& image, VkSema
     vkCmdCopyImageToBuffer(cmd, image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, buffer, 1, &region);
     layout(VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, image.layout, VK_PIPELINE_STAGE_2_TRANSFER_BIT,
            VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_NONE);
-    VkMemoryBarrier2 host{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
-    host.srcStageMask = VK_PIPELINE_STAGE_2_TRANSFER_BIT, host.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
-    host.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT, host.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
+    VkMemoryBarrier2 toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER_2};
+    toHost.srcStageMask = VK_PIPELINE_STAGE_2_TRANSFER_BIT, toHost.srcAccessMask = VK_ACCESS_2_TRANSFER_WRITE_BIT;
+    toHost.dstStageMask = VK_PIPELINE_STAGE_2_HOST_BIT, toHost.dstAccessMask = VK_ACCESS_2_HOST_READ_BIT;
     VkDependencyInfo dep{VK_STRUCTURE_TYPE_DEPENDENCY_INFO};
     dep.memoryBarrierCount = 1;
-    dep.pMemoryBarriers = &host;
+    dep.pMemoryBarriers = &toHost;
     vkCmdPipelineBarrier2(cmd, &dep);
     ENGINE_CHECK(vkEndCommandBuffer(cmd));
 
@@ -238,15 +256,9 @@ inline std::vector<uint8_t> Engine::copyOut(const api::FrameImage& image, VkSema
     ENGINE_CHECK(vkCreateFence(device_, &fi, nullptr, &fence));
     ENGINE_CHECK(vkQueueSubmit2(queue_, 1, &si, fence));
     ENGINE_CHECK(vkWaitForFences(device_, 1, &fence, VK_TRUE, UINT64_MAX));
-    void* mapped = nullptr;
-    ENGINE_CHECK(vkMapMemory(device_, memory, 0, bytes, 0, &mapped));
-    std::vector<uint8_t> texels(static_cast<const uint8_t*>(mapped), static_cast<const uint8_t*>(mapped) + bytes);
-    vkUnmapMemory(device_, memory);
     vkDestroyFence(device_, fence, nullptr);
     vkFreeCommandBuffers(device_, pool_, 1, &cmd);
-    vkDestroyBuffer(device_, buffer, nullptr);
-    vkFreeMemory(device_, memory, nullptr);
-    return texels;
+    return host.read(bytes);
 }
 
 }  // namespace penumbra::test
