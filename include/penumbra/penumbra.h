@@ -64,6 +64,8 @@ struct ExternalDevice {
     std::vector<std::string> enabledExtensions;
 };
 
+class Renderer;
+
 class Device {
 public:
     explicit Device(const DeviceOptions& options = {});
@@ -79,9 +81,9 @@ public:
     std::vector<std::string> validationLog() const;
 
     struct Impl;
-    Impl& impl() { return *impl_; }
 
 private:
+    friend class Renderer;
     std::unique_ptr<Impl> impl_;
 };
 

@@ -95,6 +95,8 @@ struct Frame {
     std::vector<Mat4> instances;
 };
 
+class Renderer;
+
 // A loaded scene (immutable, cheap to copy). Bad input throws one line: std::runtime_error for a
 // file or name, std::invalid_argument for arrays (fromMemory).
 class SceneData {
@@ -112,9 +114,9 @@ public:
     const std::vector<std::string>& warnings() const;
 
     struct Impl;
-    const Impl& impl() const { return *impl_; }
 
 private:
+    friend class Renderer;
     explicit SceneData(std::shared_ptr<const Impl> impl) : impl_(std::move(impl)) {}
     std::shared_ptr<const Impl> impl_;
 };

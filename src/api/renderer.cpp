@@ -87,7 +87,7 @@ struct Renderer::Impl {
 };
 
 Renderer::Renderer(Device& device, const SceneData& scene, const Settings& settings)
-    : impl_(std::make_unique<Impl>(*device.impl().ctx, scene.impl().scene, settings)) {}
+    : impl_(std::make_unique<Impl>(*device.impl_->ctx, scene.impl_->scene, settings)) {}
 
 Renderer::~Renderer() = default;
 
