@@ -3,10 +3,11 @@
 # files (no path of the build or source tree; penumbra::core links none of CLI11, Embree, GLFW,
 # ImGui), builds examples/embed from a copy that sees only the prefix, runs it, and compares its PNG
 # with the installed `penumbra render` of the same scene and settings (equal bytes).
-#   embed_install_test.sh BUILD_DIR SOURCE_DIR
+#   embed_install_test.sh BUILD_DIR SOURCE_DIR BUILD_TYPE
 set -euo pipefail
 build=$(cd "$1" && pwd)
 source=$(cd "$2" && pwd)
+build_type=${3:-Release}
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 fail() { echo "embed_install_test: FAIL: $*" >&2; exit 1; }
@@ -16,7 +17,10 @@ cmake --install "$build" --prefix "$prefix" >/dev/null
 config=$prefix/lib/cmake/penumbra
 [ -f "$config/penumbraConfig.cmake" ] && [ -f "$config/penumbraConfigVersion.cmake" ] || fail "no package config in $config"
 
-if grep -rIl -e "$build" -e "$source" "$prefix"; then fail "the installed files above name the build or source tree"; fi
+# Text files always; the library and the tool too unless built with debug information (which names the sources).
+scan=-rl
+[[ "$build_type" == Debug || "$build_type" == RelWithDebInfo ]] && scan=-rIl
+if grep $scan -e "$build" -e "$source" "$prefix"; then fail "the installed files above name the build or source tree"; fi
 link=$(grep -h "INTERFACE_LINK_LIBRARIES" "$config"/penumbraTargets*.cmake)
 echo "penumbra::core links: $link"
 grep -q "Vulkan::Vulkan" <<<"$link" || fail "the link interface read is not penumbra::core's"
