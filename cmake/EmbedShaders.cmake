@@ -1,4 +1,5 @@
-# Compiles GLSL to SPIR-V with glslc at build time and embeds every module into a static library.
+# Compiles GLSL to SPIR-V with glslc at build time and embeds every module into an object library
+# (folded into penumbra::core).
 # Each shader `shaders/<dir>/<name>.<stage>` becomes the lookup key "<dir>/<name>.<stage>"
 # (see src/vk/shader_registry.h).
 function(penumbra_embed_shaders target shaders)
@@ -39,6 +40,6 @@ ${table}  {nullptr, nullptr, 0}};
 }
 ")
   configure_file(${gen}/shader_table.cpp.in ${gen}/shader_table.cpp COPYONLY)
-  add_library(${target} STATIC ${sources} ${gen}/shader_table.cpp)
+  add_library(${target} OBJECT ${sources} ${gen}/shader_table.cpp)
   target_include_directories(${target} PRIVATE ${CMAKE_SOURCE_DIR}/src)
 endfunction()

@@ -105,7 +105,77 @@ DeviceInfo describe(VkPhysicalDevice device, uint32_t index) {
     return info;
 }
 
+// Every device feature penumbra enables, by the name checkRequiredFeatures reports it under: one list
+// for creating its own device and for checking an engine's.
+struct RequiredFeature {
+    const char* name;
+    VkBool32& (*flag)(FeatureChain&);
+};
+constexpr RequiredFeature kRequiredFeatures[] = {
+    {"dynamicRendering", [](FeatureChain& c) -> VkBool32& { return c.v13.dynamicRendering; }},
+    {"synchronization2", [](FeatureChain& c) -> VkBool32& { return c.v13.synchronization2; }},
+    // glslc's Vulkan 1.3 SPIR-V uses LocalSizeId.
+    {"maintenance4", [](FeatureChain& c) -> VkBool32& { return c.v13.maintenance4; }},
+    {"hostQueryReset", [](FeatureChain& c) -> VkBool32& { return c.v12.hostQueryReset; }},
+    {"shaderOutputLayer", [](FeatureChain& c) -> VkBool32& { return c.v12.shaderOutputLayer; }},
+    {"shaderBufferInt64Atomics", [](FeatureChain& c) -> VkBool32& { return c.v12.shaderBufferInt64Atomics; }},
+    {"shaderDrawParameters", [](FeatureChain& c) -> VkBool32& { return c.v11.shaderDrawParameters; }},
+    {"fragmentStoresAndAtomics", [](FeatureChain& c) -> VkBool32& { return c.features2.features.fragmentStoresAndAtomics; }},
+    {"tessellationShader", [](FeatureChain& c) -> VkBool32& { return c.features2.features.tessellationShader; }},
+    {"shaderClipDistance", [](FeatureChain& c) -> VkBool32& { return c.features2.features.shaderClipDistance; }},
+    {"shaderInt64", [](FeatureChain& c) -> VkBool32& { return c.features2.features.shaderInt64; }},
+    {"geometryShader", [](FeatureChain& c) -> VkBool32& { return c.features2.features.geometryShader; }},
+    {"shaderStorageImageExtendedFormats",
+     [](FeatureChain& c) -> VkBool32& { return c.features2.features.shaderStorageImageExtendedFormats; }},
+    {"shaderBufferFloat32AtomicAdd (VK_EXT_shader_atomic_float)",
+     [](FeatureChain& c) -> VkBool32& { return c.atomicFloat.shaderBufferFloat32AtomicAdd; }},
+};
+
+// Copies `from` over `to` but keeps `to`'s place in its own chain.
+template <class T>
+void copyStruct(T& to, const void* from) {
+    void* next = to.pNext;
+    std::memcpy(&to, from, sizeof(T));
+    to.pNext = next;
+}
+
 }  // namespace
+
+FeatureChain::FeatureChain() {
+    features2.pNext = &v11;
+    v11.pNext = &v12;
+    v12.pNext = &v13;
+    v13.pNext = &atomicFloat;
+}
+
+void FeatureChain::enableRequired(FeatureChain& chain) {
+    for (const RequiredFeature& f : kRequiredFeatures) f.flag(chain) = VK_TRUE;
+}
+
+std::vector<std::string> FeatureChain::missingRequired() {
+    std::vector<std::string> missing;
+    for (const RequiredFeature& f : kRequiredFeatures)
+        if (!f.flag(*this)) missing.push_back(f.name);
+    return missing;
+}
+
+void FeatureChain::copyFrom(const void* pNext, const VkPhysicalDeviceFeatures* features10) {
+    if (features10) features2.features = *features10;
+    for (auto* s = static_cast<const VkBaseInStructure*>(pNext); s; s = s->pNext) {
+        switch (s->sType) {
+            case VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2: copyStruct(features2, s); break;
+            case VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES: copyStruct(v11, s); break;
+            case VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES: copyStruct(v12, s); break;
+            case VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES: copyStruct(v13, s); break;
+            case VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_ATOMIC_FLOAT_FEATURES_EXT: copyStruct(atomicFloat, s); break;
+            default: break;
+        }
+    }
+}
+
+std::vector<const char*> requiredDeviceExtensions() {
+    return {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME, VK_EXT_SHADER_ATOMIC_FLOAT_EXTENSION_NAME};
+}
 
 std::vector<FeatureCheck> checkRequiredFeatures(VkPhysicalDevice device) {
     const bool hasAtomicFloat = hasExtension(device, VK_EXT_SHADER_ATOMIC_FLOAT_EXTENSION_NAME);
@@ -214,9 +284,15 @@ Context::Context(const ContextOptions& options, InstanceOnly) : options_(options
     }
 }
 
+Context::Context(const ExternalDevice& device, const ContextOptions& options) : options_(options) {
+    options_.validate = false;
+    ownsHandles_ = false;
+    adopt(device);
+}
+
 Context::~Context() {
     pipelineCache_.reset();  // its pipelines and layouts go before the device
-    destroyHandles(instance_, messenger_, device_);
+    if (ownsHandles_) destroyHandles(instance_, messenger_, device_);
 }
 
 void Context::createInstance(bool validate) {
@@ -323,38 +399,60 @@ void Context::createDevice() {
     q.queueFamilyIndex = queueFamily_;
     q.queueCount = 1;
     q.pQueuePriorities = &priority;
-    VkPhysicalDeviceVulkan13Features f13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
-    f13.dynamicRendering = VK_TRUE;
-    f13.synchronization2 = VK_TRUE;
-    f13.maintenance4 = VK_TRUE;  // glslc's Vulkan 1.3 SPIR-V uses LocalSizeId
-    VkPhysicalDeviceShaderAtomicFloatFeaturesEXT af{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_ATOMIC_FLOAT_FEATURES_EXT};
-    af.shaderBufferFloat32AtomicAdd = VK_TRUE;
-    f13.pNext = &af;
-    VkPhysicalDeviceVulkan12Features f12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES, &f13};
-    f12.hostQueryReset = VK_TRUE;
-    f12.shaderOutputLayer = VK_TRUE;
-    f12.shaderBufferInt64Atomics = VK_TRUE;
-    VkPhysicalDeviceVulkan11Features f11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES, &f12};
-    f11.shaderDrawParameters = VK_TRUE;
-    VkPhysicalDeviceFeatures2 f{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2, &f11};
-    f.features.fragmentStoresAndAtomics = VK_TRUE;
-    f.features.tessellationShader = VK_TRUE;
-    f.features.shaderClipDistance = VK_TRUE;
-    f.features.shaderInt64 = VK_TRUE;
-    f.features.geometryShader = VK_TRUE;
-    f.features.shaderStorageImageExtendedFormats = VK_TRUE;
-    std::vector<const char*> exts = {VK_KHR_PUSH_DESCRIPTOR_EXTENSION_NAME, VK_EXT_SHADER_ATOMIC_FLOAT_EXTENSION_NAME};
+    FeatureChain features;
+    FeatureChain::enableRequired(features);
+    std::vector<const char*> exts = requiredDeviceExtensions();
     if (options_.presentSupport) exts.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
-    VkDeviceCreateInfo ci{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &f};
+    VkDeviceCreateInfo ci{VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO, &features.features2};
     ci.queueCreateInfoCount = 1;
     ci.pQueueCreateInfos = &q;
     ci.enabledExtensionCount = uint32_t(exts.size());
     ci.ppEnabledExtensionNames = exts.data();
     VK_CHECK(vkCreateDevice(physical_, &ci, nullptr, &device_));
     vkGetDeviceQueue(device_, queueFamily_, 0, &queue_);
+    loadDeviceFunctions();
+}
+
+void Context::loadDeviceFunctions() {
     cmdPushDescriptorSet = reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(
         vkGetDeviceProcAddr(device_, "vkCmdPushDescriptorSetKHR"));
     if (!cmdPushDescriptorSet) throw VulkanError("vkCmdPushDescriptorSetKHR not found");
+}
+
+void Context::adopt(const ExternalDevice& d) {
+    if (!d.instance || !d.physicalDevice || !d.device || !d.queue)
+        throw VulkanError("external device: the instance, physical device, device and queue must all be given");
+    const std::vector<VkPhysicalDevice> devices = physicalDevices(d.instance);
+    const auto found = std::find(devices.begin(), devices.end(), d.physicalDevice);
+    if (found == devices.end()) throw VulkanError("external device: the physical device is not one of the instance's");
+    info_ = describe(d.physicalDevice, uint32_t(found - devices.begin()));
+    std::vector<std::string> problems;
+    for (const std::string& m : info_.missing) problems.push_back(m + " (the device lacks it)");
+    uint32_t n = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(d.physicalDevice, &n, nullptr);
+    std::vector<VkQueueFamilyProperties> families(n);
+    vkGetPhysicalDeviceQueueFamilyProperties(d.physicalDevice, &n, families.data());
+    const VkQueueFlags need = VK_QUEUE_GRAPHICS_BIT | VK_QUEUE_COMPUTE_BIT;
+    if (d.queueFamily >= n)
+        problems.push_back(fmt::format("queue family {} (the device has {})", d.queueFamily, n));
+    else if ((families[d.queueFamily].queueFlags & need) != need || families[d.queueFamily].timestampValidBits == 0)
+        problems.push_back(fmt::format("queue family {} with graphics, compute and timestamps", d.queueFamily));
+    FeatureChain enabled;
+    enabled.copyFrom(d.enabledFeatureChain, d.enabledFeatures);
+    for (const std::string& m : enabled.missingRequired()) problems.push_back(m + " (not enabled)");
+    for (const char* ext : requiredDeviceExtensions())
+        if (std::find(d.enabledExtensions.begin(), d.enabledExtensions.end(), ext) == d.enabledExtensions.end())
+            problems.push_back(fmt::format("{} (not enabled)", ext));
+    if (!problems.empty())
+        throw VulkanError(fmt::format("the engine's device '{}' cannot run penumbra; it needs: {}", info_.name,
+                                      fmt::join(problems, ", ")));
+    instance_ = d.instance;
+    physical_ = d.physicalDevice;
+    device_ = d.device;
+    queue_ = d.queue;
+    queueFamily_ = d.queueFamily;
+    vkGetPhysicalDeviceProperties(physical_, &properties_);
+    loadDeviceFunctions();
 }
 
 void Context::waitIdle() const { VK_CHECK(vkDeviceWaitIdle(device_)); }

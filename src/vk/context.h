@@ -30,6 +30,45 @@ struct ContextOptions {
     std::function<bool(VkInstance, VkPhysicalDevice, uint32_t queueFamily)> presentSupport;
 };
 
+// A device that an embedding engine created: penumbra records its own command buffers, submits them to
+// `queue` and destroys none of these handles. The instance must be created for Vulkan 1.3; the queue
+// family must support graphics, compute and timestamps; the device must have been created with the
+// extensions of requiredDeviceExtensions() and every feature of RequiredFeatures (named in the
+// Vulkan 1.1/1.2/1.3 feature structs and VkPhysicalDeviceShaderAtomicFloatFeaturesEXT of the chain).
+struct ExternalDevice {
+    VkInstance instance = VK_NULL_HANDLE;
+    VkPhysicalDevice physicalDevice = VK_NULL_HANDLE;
+    VkDevice device = VK_NULL_HANDLE;
+    VkQueue queue = VK_NULL_HANDLE;
+    uint32_t queueFamily = 0;
+    const void* enabledFeatureChain = nullptr;                // VkDeviceCreateInfo::pNext as the engine passed it
+    const VkPhysicalDeviceFeatures* enabledFeatures = nullptr;  // VkDeviceCreateInfo::pEnabledFeatures, if used
+    std::vector<std::string> enabledExtensions;
+};
+
+// The feature structs of a device that penumbra reads and enables, chained from `features2`.
+// Not copyable: the chain points into the object itself.
+struct FeatureChain {
+    VkPhysicalDeviceFeatures2 features2{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2};
+    VkPhysicalDeviceVulkan11Features v11{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_1_FEATURES};
+    VkPhysicalDeviceVulkan12Features v12{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES};
+    VkPhysicalDeviceVulkan13Features v13{VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_3_FEATURES};
+    VkPhysicalDeviceShaderAtomicFloatFeaturesEXT atomicFloat{
+        VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_ATOMIC_FLOAT_FEATURES_EXT};
+    FeatureChain();
+    FeatureChain(const FeatureChain&) = delete;
+    FeatureChain& operator=(const FeatureChain&) = delete;
+    // With every feature penumbra needs switched on (what its own device is created with).
+    static void enableRequired(FeatureChain& chain);
+    // The required features that `chain` (copied from a device's creation) leaves off, by name.
+    std::vector<std::string> missingRequired();
+    // Copies the structs of a VkDeviceCreateInfo::pNext chain that it knows; others are skipped.
+    void copyFrom(const void* pNext, const VkPhysicalDeviceFeatures* features10);
+};
+
+// The device extensions penumbra needs.
+std::vector<const char*> requiredDeviceExtensions();
+
 // The limits that resource sizes are checked against before anything is allocated.
 struct DeviceLimits {
     uint64_t storageBufferRange = 0;  // maxStorageBufferRange
@@ -65,6 +104,9 @@ struct FeatureCheck {
 class Context {
 public:
     explicit Context(const ContextOptions& options);
+    // Adopts an engine's device after checking it (VulkanError naming everything it lacks); the
+    // handles stay the engine's. `options.validate` is ignored: validation is the instance's owner's.
+    Context(const ExternalDevice& device, const ContextOptions& options = {});
     ~Context();
     Context(const Context&) = delete;
     Context& operator=(const Context&) = delete;
@@ -109,6 +151,8 @@ private:
     void createInstance(bool validate);
     void pickDevice(const std::string& selector);
     void createDevice();
+    void adopt(const ExternalDevice& device);
+    void loadDeviceFunctions();
 
     ContextOptions options_;
     VkInstance instance_ = VK_NULL_HANDLE;
@@ -117,6 +161,7 @@ private:
     VkDevice device_ = VK_NULL_HANDLE;
     VkQueue queue_ = VK_NULL_HANDLE;
     uint32_t queueFamily_ = 0;
+    bool ownsHandles_ = true;  // false for an adopted device
     VkPhysicalDeviceProperties properties_{};
     DeviceInfo info_;
     std::atomic<uint32_t> validationMessages_{0};
