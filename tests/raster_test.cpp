@@ -442,4 +442,23 @@ TEST(RasterMode, AutoPicksByDeviceKind) {
     }
 }
 
+// The size half of the rule (README "Rasterizer choice"): on H100/H200 the compute rasterizer at
+// every --shadow-res it accepts (measured faster than the hardware at every point of the sweep), the
+// hardware beyond the measured range and on every other device at any size.
+TEST(RasterMode, AutoPicksBySizeWithinTheMeasuredRange) {
+    VkPhysicalDeviceProperties h100{}, lavapipe{};
+    h100.vendorID = 0x10DE;
+    h100.deviceType = VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU;
+    std::snprintf(h100.deviceName, sizeof(h100.deviceName), "NVIDIA H100 80GB HBM3");
+    lavapipe.vendorID = 0x10005;
+    lavapipe.deviceType = VK_PHYSICAL_DEVICE_TYPE_CPU;
+    for (uint32_t size : {16u, 512u, 2048u, 3072u, 4096u, 8192u, 16384u}) {
+        EXPECT_TRUE(computeRasterFor(RasterMode::Auto, h100, size)) << size;
+        EXPECT_FALSE(computeRasterFor(RasterMode::Auto, lavapipe, size)) << size;
+        EXPECT_TRUE(computeRasterFor(RasterMode::Compute, lavapipe, size)) << size;
+        EXPECT_FALSE(computeRasterFor(RasterMode::Hardware, h100, size)) << size;
+    }
+    EXPECT_FALSE(computeRasterFor(RasterMode::Auto, h100, 16385));
+}
+
 }  // namespace penumbra::test
