@@ -47,7 +47,7 @@ for d in sys.argv[1:]:
         elif os.path.exists(js):
             j = json.load(open(js))
             p.update(status="ok", device=j["device"], command=j["command"], frame_ms=j["frame_ms"]["median"],
-                     raster=j["settings"]["raster"], triangles=j["scene"]["triangles"],
+                     raster=j["settings"].get("raster"), triangles=j["scene"]["triangles"],
                      shadow_passes={q["name"]: q["median_ms"] for q in j["passes"] if q["name"].startswith("shadow")})
         else: p["status"] = "failed"
         points[name] = p  # a later directory's run of the same point replaces an earlier one
