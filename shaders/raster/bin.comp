@@ -17,8 +17,8 @@ void main() {
     const uint count = min(counters.counts.x, push.capacity.x);
     for (uint r = gl_WorkGroupID.x; r < count; r += gl_NumWorkGroups.x) {
         const RasterTriangle t = records[r];
-        if (t.origin.w < 0.0) continue;  // no entries: its setup thread rasterized it
-        const uint first = uint(t.origin.w);
+        if (t.origin.w < 0.0) continue;  // no entries: the overflow pass rasterizes it
+        const uint first = t.ids.z;
         const Edges e = edgesOf(t, bits, size);
         const ivec4 tiles = ivec4(e.bbox.xy / RASTER_TILE_SIZE, e.bbox.zw / RASTER_TILE_SIZE);
         const int w = tiles.z - tiles.x + 1;

@@ -22,7 +22,11 @@ layout(set = 0, binding = 1, std430) readonly buffer Materials { GpuMaterial mat
 layout(set = 0, binding = 3, std430) buffer Depth { uint depthBits[]; };
 layout(set = 0, binding = 4, std430) buffer Records { RasterTriangle records[]; };
 layout(set = 0, binding = 5, std430) buffer TileEntries { uvec2 tileEntries[]; };
-layout(set = 0, binding = 6, std430) buffer Counters { RasterCounters counters; };
+// After the binning counts, the work counters (ComputeRaster::Work): work.x = the most pixels a setup
+// thread tested for one triangle, y = (triangle, layer) pairs queued for the overflow pass, z = the most
+// pixels an overflow thread tested for one triangle, w = the largest box (tiles) in the huge queue;
+// queues.x, y = the pairs in the medium and the huge queue (raster/overflow.comp).
+layout(set = 0, binding = 6, std430) buffer Counters { RasterCounters counters; uvec4 work; uvec4 queues; };
 layout(set = 0, binding = 16, std430) buffer DepthIds { uint64_t depthIds[]; };  // per texel of the ID layers
 // Per tile of every target layer (layer-major, rows of tiles): the bin pass counts its triangles
 // (count), the place pass puts its list in the list buffer (offset), the scatter pass fills the
@@ -36,6 +40,8 @@ uint tilesDown(ivec2 size) { return uint((size.y + RASTER_TILE_SIZE - 1) / RASTE
 uint tileIndex(uint layer, ivec2 tile, ivec2 size) {
     return (layer * tilesDown(size) + uint(tile.y)) * tilesAcross(size) + uint(tile.x);
 }
+
+#include "raster/overflow_limits.glsl"
 
 // Edge functions of a triangle with positive area: E_i(p) = d_i x (p - a_i) > 0 inside.
 struct Edges {

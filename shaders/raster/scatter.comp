@@ -2,7 +2,7 @@
 // Tile lists of the compute rasterizer (src/raster): each (triangle, tile) entry of the bin pass puts
 // its record into its tile's list, at the tile's offset (place pass) plus a slot from the tile's cursor.
 // One thread per entry; the workgroups stride over the rest. Entries of triangles whose lists did
-// not fit were never written (their setup thread rasterized them): a stale one still names a record
+// not fit were never written (the overflow pass rasterized them): a stale one still names a record
 // of this frame in a tile of its layer (the tile pass tests its edges), and none writes past its
 // tile's count.
 #extension GL_GOOGLE_include_directive : require

@@ -243,7 +243,8 @@ void checkDeviceBudget(const vk::DeviceLimits& limits, const RenderSettings& set
 
 void checkDeviceBudget(const vk::Context& ctx, const RenderSettings& settings, const Scene& scene,
                        const std::vector<Light>& lights) {
-    checkDeviceBudget(ctx.limits(), settings, scene, lights, computeRasterFor(settings.shadow.raster, ctx.properties()));
+    checkDeviceBudget(ctx.limits(), settings, scene, lights, computeRasterFor(settings.shadow.raster, ctx.properties(),
+                                                                      settings.shadow.resolution));
 }
 
 void checkBuiltinSceneBudget(const vk::DeviceLimits& limits, const FrameOptions& frame) {

@@ -2,26 +2,53 @@
 
 #include <algorithm>
 
+#include "vk/commands.h"
+
 namespace penumbra {
 namespace {
 
 constexpr VkDescriptorType kBuffer = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
 constexpr uint32_t kMaxGroups = 65535;  // the smallest maxComputeWorkGroupCount Vulkan allows
 
-// Bin capacities: a quarter of the (triangle, layer) pairs may be large, each in 8 tiles on average;
-// beyond that triangles are rasterized by their setup thread (correct, slower). Every pair of a scene
-// of up to 16384 gets a record (1.5 MiB; see smallExtent). Capped at 64 MiB.
-uint32_t recordCapacityFor(uint64_t triangles, uint32_t layers) {
-    const uint64_t pairs = triangles * layers;
-    return uint32_t(std::clamp<uint64_t>(std::max<uint64_t>(pairs / 4, std::min<uint64_t>(pairs, 16384)), 4096, 1u << 19));
+constexpr uint64_t kMaxRecords = 1u << 19;  // 64 MiB of triangle records
+
+// The record capacity up to 2048^2: a quarter of the (triangle, layer) pairs may be large, each in 8
+// tiles on average; every pair of a scene of up to 16384 gets a record (1.5 MiB; see smallExtent).
+uint64_t baseRecordCapacity(uint64_t pairs) {
+    return std::clamp<uint64_t>(std::max<uint64_t>(pairs / 4, std::min<uint64_t>(pairs, 16384)), 4096, kMaxRecords);
+}
+
+// A triangle's box grows with the layer's area, so the share of pairs that are large does too: from
+// the base quarter at 2048^2 to every pair at 4096^2 and above (up to 256 MiB, within the device's
+// storage-buffer range). Beyond the capacity, large triangles go to the overflow pass (correct, slower;
+// never one thread per triangle).
+uint32_t recordCapacityFor(uint64_t triangles, uint32_t layers, VkExtent2D size, uint64_t maxRange) {
+    const uint64_t pairs = triangles * layers, base = baseRecordCapacity(pairs);
+    const double growth = double(size.width) * size.height / (2048.0 * 2048.0);
+    if (growth <= 1.0) return uint32_t(base);
+    const uint64_t grown = std::min<uint64_t>(pairs, uint64_t(double(pairs / 4) * growth));
+    const uint64_t cap = std::min<uint64_t>(uint64_t(1) << 21, maxRange / sizeof(gpu::RasterTriangle));
+    return uint32_t(std::max(base, std::min(grown, cap)));
+}
+
+// The overflow queues (medium and huge, raster/overflow.comp): a slot per (triangle, layer) pair in
+// each, so that neither can fill (16 MiB at most; a pair beyond is set up again by its setup thread,
+// which then rasterizes its large triangles itself).
+uint32_t overflowCapacityFor(uint64_t triangles, uint32_t layers) {
+    return 2 * uint32_t(std::clamp<uint64_t>(triangles * layers, 1, 1u << 20));
 }
 
 // Tile entries: 8 per record, and at least 16 times every layer's tiles, so that a few triangles as
-// large as a layer (a ground plane under a cascade) do not fill the list: a triangle rasterized by its
-// setup thread instead costs a whole layer's texels in one thread. Capped at 64 MiB.
-uint32_t entryCapacityFor(uint32_t records, VkExtent2D size, uint32_t layers) {
+// large as a layer (a ground plane under a cascade) do not fill the list: one that does not fit goes
+// to the overflow pass, which sets it up again. Above 4096^2 a triangle's box holds more tiles (as the
+// layer's area), and so do the entries: up to 256 MiB within the device's range; 64 MiB up to 4096^2.
+uint32_t entryCapacityFor(uint32_t records, VkExtent2D size, uint32_t layers, uint64_t maxRange) {
     const uint64_t tiles = uint64_t(vk::divUp(size.width, RASTER_TILE_SIZE)) * vk::divUp(size.height, RASTER_TILE_SIZE);
-    return uint32_t(std::min<uint64_t>(std::max<uint64_t>(uint64_t(records) * 8, tiles * layers * 16), 1u << 23));
+    const uint64_t wanted = std::max<uint64_t>(uint64_t(records) * 8, tiles * layers * 16);
+    const double growth = double(size.width) * size.height / (4096.0 * 4096.0);
+    if (growth <= 1.0) return uint32_t(std::min<uint64_t>(wanted, 1u << 23));
+    const uint64_t cap = std::min<uint64_t>(uint64_t(1) << 25, maxRange / 8);
+    return uint32_t(std::min<uint64_t>(uint64_t(double(wanted) * growth), std::max<uint64_t>(cap, 1u << 23)));
 }
 
 
@@ -35,8 +62,11 @@ ComputeRaster::ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, VkExtent2D s
       kind_(kind),
       layers_(std::max(layers, 1u)),
       subpixelBits_(alloc.context().properties().limits.subPixelPrecisionBits),
-      recordCapacity_(recordCapacityFor(scene.drawnTriangleCount(), layers_)),
-      entryCapacity_(entryCapacityFor(recordCapacity_, size, layers_)) {
+      recordCapacity_(recordCapacityFor(scene.drawnTriangleCount(), layers_, size,
+                                        alloc.context().properties().limits.maxStorageBufferRange)),
+      entryCapacity_(entryCapacityFor(recordCapacity_, size, layers_,
+                                      alloc.context().properties().limits.maxStorageBufferRange)),
+      overflowCapacity_(overflowCapacityFor(scene.drawnTriangleCount(), layers_)) {
     vk::Context& ctx = alloc.context();
     const uint32_t pushBytes = sizeof(gpu::RasterPush);
     // The scene's draw set (bindings 0-1 and the instance table; set 1 its texture table); 3-6: depth, records, tile entries,
@@ -56,9 +86,11 @@ ComputeRaster::ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, VkExtent2D s
     scatter_ = vk::ComputeKernel(ctx, "raster/scatter.comp", tiles, pushBytes, table);
     place_ = vk::ComputeKernel(ctx, "raster/place.comp", {kBuffer, kBuffer}, sizeof(gpu::uvec4));
     std::vector<vk::Binding> setup = tiles;
-    for (uint32_t b = 7; b <= 11; ++b) setup.push_back({b, kBuffer});  // vertices, indices, materials, layers, drawn triangles
+    // vertices, indices, materials, layers, drawn triangles; 19: the overflow queue
+    for (uint32_t b : {7u, 8u, 9u, 10u, 11u, 19u}) setup.push_back({b, kBuffer});
     setup_ = vk::ComputeKernel(ctx, "raster/setup.comp", setup, pushBytes, table);
-    args_ = vk::ComputeKernel(ctx, "raster/args.comp", {kBuffer, kBuffer}, pushBytes);
+    overflow_ = vk::ComputeKernel(ctx, "raster/overflow.comp", setup, pushBytes, table);
+    args_ = vk::ComputeKernel(ctx, "raster/args.comp", {kBuffer, kBuffer, kBuffer}, pushBytes);
     idSplit_ = vk::ComputeKernel(ctx, camera ? "raster/ids_2d.comp" : "raster/ids.comp",
                                  {kBuffer, kBuffer, kBuffer, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, pushBytes);
     // Bound as the ID image where a frame draws no layer with IDs into an R32_SFLOAT target.
@@ -74,8 +106,10 @@ ComputeRaster::ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, VkExtent2D s
     tileBins_ = vk::Buffer(alloc, VkDeviceSize(binCount()) * sizeof(gpu::uvec4), storage | transfer, false,
                            "raster-tile-bins");
     tileLists_ = vk::Buffer(alloc, VkDeviceSize(entryCapacity_) * 4, storage, false, "raster-tile-lists");
-    counters_ = vk::Buffer(alloc, sizeof(gpu::RasterCounters), storage | transfer, false, "raster-counters");
-    dispatchArgs_ = vk::Buffer(alloc, 2 * sizeof(gpu::uvec4), storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, false,
+    counters_ = vk::Buffer(alloc, sizeof(gpu::RasterCounters) + sizeof(Work), storage | transfer, false,
+                           "raster-counters");
+    overflowPairs_ = vk::Buffer(alloc, VkDeviceSize(overflowCapacity_) * 8, storage, false, "raster-overflow-pairs");
+    dispatchArgs_ = vk::Buffer(alloc, 4 * sizeof(gpu::uvec4), storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, false,
                                "raster-dispatch");
     layerTable_ = vk::BufferRing(alloc, sizeof(gpu::RasterLayer) * layers_, storage, "raster-layers");
 }
@@ -110,8 +144,8 @@ void ComputeRaster::setViews(const std::vector<RasterViews>& views, uint32_t slo
 // 0.32 ms; at 8 for every scene Sponza's frame went 2.16 -> 2.47 ms, and at 4 the bins overflowed
 // (`session27/raster_exp9-small-extent-not-kept/`).
 uint32_t ComputeRaster::smallExtent() const {
-    return uint64_t(scene_.drawnTriangleCount()) * layers_ <= recordCapacity_ ? RASTER_SMALL_EXTENT / 2
-                                                                              : RASTER_SMALL_EXTENT;
+    const uint64_t pairs = uint64_t(scene_.drawnTriangleCount()) * layers_;
+    return pairs <= baseRecordCapacity(pairs) ? RASTER_SMALL_EXTENT / 2 : RASTER_SMALL_EXTENT;
 }
 
 gpu::RasterPush ComputeRaster::push(RasterBias bias) const {
@@ -121,17 +155,18 @@ gpu::RasterPush ComputeRaster::push(RasterBias bias) const {
             {bias.constant, bias.slope, kind_ == Views::Camera ? 1.0f : 0.0f, 0.0f}};
 }
 
-void ComputeRaster::addSetup(FrameGraph& graph, const std::string& name, BufferHandle viewRows,
-                             const gpu::RasterPush& p) {
-    const BufferHandle depth = graph.import(depth_), counters = graph.import(counters_);
-    PassBuilder setup = graph.pass(name + ".setup");
-    setup.pipeline(setup_.pipeline);
+// The setup pass (one thread per (triangle, layer)) and the overflow pass (one workgroup per queued
+// pair and part of its large triangles, an indirect dispatch from args row 2): the same bindings.
+PassBuilder ComputeRaster::addSetupPass(FrameGraph& graph, const std::string& name, BufferHandle viewRows,
+                                        const vk::ComputeKernel& kernel, Use overflowQueue) {
+    PassBuilder setup = graph.pass(name);
+    setup.pipeline(kernel.pipeline);
     scene_.declareDrawSet(setup, viewRows);
-    setup.storageBuffer(3, depth, Use::StorageWrite)
+    setup.storageBuffer(3, graph.import(depth_), Use::StorageWrite)
         .storageBuffer(16, graph.import(depthIds_), Use::StorageWrite)
         .storageBuffer(4, graph.import(records_), Use::StorageWrite)
         .storageBuffer(5, graph.import(entries_), Use::StorageWrite)
-        .storageBuffer(6, counters, Use::StorageWrite)
+        .storageBuffer(6, graph.import(counters_), Use::StorageWrite)
         .storageBuffer(7, graph.import(scene_.vertices()))
         .storageBuffer(8, graph.import(scene_.indices()))
         .storageBuffer(9, graph.import(scene_.triangleMaterials()))
@@ -139,11 +174,8 @@ void ComputeRaster::addSetup(FrameGraph& graph, const std::string& name, BufferH
         .storageBuffer(11, graph.import(scene_.drawnTriangles()))
         .storageBuffer(12, graph.import(tileBins_), Use::StorageWrite)  // marks the tiles it draws into
         .storageBuffer(13, graph.import(tileLists_), Use::StorageRead)   // in the layout, not used by setup
-        .record([this, p](PassContext& c) {
-            setup_.pipeline.push(c.cmd, p);
-            const uint32_t groups = std::min(vk::divUp(p.target.z, RASTER_SETUP_GROUP), kMaxGroups);
-            vkCmdDispatch(c.cmd, groups, layerRows_, 1);
-        });
+        .storageBuffer(19, graph.import(overflowPairs_), overflowQueue);
+    return setup;
 }
 
 void ComputeRaster::addTo(FrameGraph& graph, const std::string& name, ImageHandle target, BufferHandle viewRows,
@@ -165,14 +197,29 @@ void ComputeRaster::addTo(FrameGraph& graph, const std::string& name, ImageHandl
             if (idBytes) vkCmdFillBuffer(c.cmd, depthIds_.handle(), 0, idBytes, RASTER_ID_CLEAR_BITS);
         });
     const gpu::RasterPush p = push(bias);
-    addSetup(graph, name, viewRows, p);
+    addSetupPass(graph, name + ".setup", viewRows, setup_, Use::StorageWrite).record([this, p](PassContext& c) {
+        setup_.pipeline.push(c.cmd, p);
+        const uint32_t groups = std::min(vk::divUp(p.target.z, RASTER_SETUP_GROUP), kMaxGroups);
+        vkCmdDispatch(c.cmd, groups, layerRows_, 1);
+    });
     graph.pass(name + ".args")
         .pipeline(args_.pipeline)
         .storageBuffer(0, counters, Use::StorageRead)
         .storageBuffer(1, args, Use::StorageWrite)
+        .storageBuffer(2, graph.import(overflowPairs_), Use::StorageRead)
         .record([this, p](PassContext& c) {
             args_.pipeline.push(c.cmd, p);
             vkCmdDispatch(c.cmd, 1, 1, 1);
+        });
+    addSetupPass(graph, name + ".overflow", viewRows, overflow_, Use::StorageRead)
+        .use(args, Use::IndirectArgs)
+        .record([this, p](PassContext& c) {  // the medium queue, then the huge one (args rows 2 and 3)
+            overflow_.pipeline.push(c.cmd, p);
+            vkCmdDispatchIndirect(c.cmd, dispatchArgs_.handle(), 2 * sizeof(gpu::uvec4));
+            // Atomics only, but the queues' passes write the same buffers: ordered for the validation.
+            const VkAccessFlags2 rw = VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT;
+            vk::memoryBarrier(c.cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, rw, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, rw);
+            vkCmdDispatchIndirect(c.cmd, dispatchArgs_.handle(), 3 * sizeof(gpu::uvec4));
         });
     addTileLists(graph, name, viewRows, p);
     addFineRaster(graph, name, viewRows, target, ids, p);

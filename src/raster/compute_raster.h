@@ -4,7 +4,9 @@
 //   <name>.clear   fill the depth buffer with 1.0 and the bin counters with 0 (transfer)
 //   <name>.setup   one thread per (triangle, layer), all layers in one dispatch: transform, clip,
 //                  cull, snap; small triangles rasterized right there, large ones binned into tiles
-//   <name>.args    the bin and scatter passes' indirect dispatch sizes
+//   <name>.args    the overflow, bin and scatter passes' indirect dispatch sizes
+//   <name>.overflow large triangles that did not fit the lists: one workgroup per (triangle, part of at
+//                  most RASTER_OVERFLOW_TILES tiles of its box), depth by atomicMin
 //   <name>.bin     one workgroup per large triangle: which tiles of its box its edges may cover (an
 //                  entry per tile), and a count per tile
 //   <name>.place   each tile's list placed in the list buffer (its offset)
@@ -18,8 +20,10 @@
 // Small triangles (setup) take a 32-bit atomicMin on the float bits in a storage buffer (depths in
 // [0, 1] order like their bits); layers with IDs (an RSM's, resolved from them) a 64-bit atomicMin of
 // depth << 32 | ID, so one pass gives both, as the hardware's depth + R32_UINT colour pass does. The
-// tile pass keeps the same minimum per pixel in registers. When a bin list is full its triangle is
-// rasterized by its setup thread: slower, never wrong. See shaders/raster/; Laine & Karras (HPG 2011)
+// tile pass keeps the same minimum per pixel in registers. When a bin list is full its (triangle,
+// layer) pair is queued for the overflow pass: slower, never wrong, and no thread's work grows with the
+// layer's size (a setup thread tests at most RASTER_SMALL_EXTENT^2 pixels per triangle; one thread
+// through a layer-sized triangle was the cost that did). See shaders/raster/; Laine & Karras (HPG 2011)
 // for the binning and the tiled fine stage, Nanite for the small-triangle path.
 #pragma once
 #include <vector>
@@ -61,7 +65,18 @@ public:
     void addTo(FrameGraph& graph, const std::string& name, ImageHandle target, BufferHandle viewRows, RasterBias bias,
                ImageHandle ids = {});
 
-    // Read-backs for tests: depth bits per texel (layer-major), and this frame's RasterCounters.
+    // The work counters, after RasterCounters in the counters buffer (raster/raster.glsl).
+    struct Work {
+        uint32_t mostSetupPixels;     // the most pixels a setup thread tested for one triangle
+        uint32_t overflowPairs;       // (triangle, layer) pairs queued for the overflow pass
+        uint32_t mostOverflowPixels;  // the most pixels an overflow thread tested for one triangle
+        uint32_t mostHugeTiles;       // the largest box (in tiles) of a pair in the huge queue
+        uint32_t mediumPairs;         // queued pairs whose large triangles' boxes are small enough for one
+                                      // workgroup each (at most RASTER_OVERFLOW_TILES tiles)
+        uint32_t hugePairs;           // the others: split into parts of RASTER_OVERFLOW_TILES tiles
+        uint32_t unused[2];
+    };
+    // Read-backs for tests: depth bits per texel (layer-major), and this frame's RasterCounters and Work.
     const vk::Buffer& depth() const { return depth_; }
     const vk::Buffer& counters() const { return counters_; }
     uint32_t recordCapacity() const { return recordCapacity_; }
@@ -69,7 +84,8 @@ public:
 
 private:
     gpu::RasterPush push(RasterBias bias) const;
-    void addSetup(FrameGraph& graph, const std::string& name, BufferHandle viewRows, const gpu::RasterPush& p);
+    PassBuilder addSetupPass(FrameGraph& graph, const std::string& name, BufferHandle viewRows,
+                             const vk::ComputeKernel& kernel, Use overflowQueue);
     void addFineRaster(FrameGraph& graph, const std::string& name, BufferHandle viewRows, ImageHandle target,
                        ImageHandle ids, const gpu::RasterPush& p);
     void addIdSplit(FrameGraph& graph, const std::string& name, ImageHandle ids, const gpu::RasterPush& p);
@@ -86,9 +102,9 @@ private:
     VkExtent2D size_;
     Views kind_;
     uint32_t layers_, subpixelBits_;
-    uint32_t recordCapacity_, entryCapacity_;
-    vk::ComputeKernel setup_, bin_, place_, scatter_, tiles_, tilesImage_, args_, idSplit_;
-    vk::Buffer depth_, records_, entries_, tileBins_, tileLists_, counters_, dispatchArgs_;
+    uint32_t recordCapacity_, entryCapacity_, overflowCapacity_;
+    vk::ComputeKernel setup_, overflow_, bin_, place_, scatter_, tiles_, tilesImage_, args_, idSplit_;
+    vk::Buffer depth_, records_, entries_, tileBins_, tileLists_, counters_, overflowPairs_, dispatchArgs_;
     vk::Image noIds_;       // the ID image of frames without ID layers (R32_SFLOAT targets)
     vk::Buffer depthIds_;     // uint64 per texel of each ID layer, grown to the most requested
     uint32_t idLayers_ = 0;  // ID layers this frame's views write

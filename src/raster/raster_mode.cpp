@@ -20,16 +20,20 @@ RasterMode parseRasterMode(const std::string& name, const std::string& option) {
 
 std::string rasterModeName(RasterMode mode) { return rasterModeNames().at(size_t(mode)); }
 
-// The auto rule, by device kind only (never by timing, so one device always gives the same images):
-// the compute rasterizer on the datacenter GPUs where it was measured faster on every scene (H100:
-// Sponza's full frame 9.26 -> 5.80 ms, VC's 4.70 -> 3.53; README, "Compute rasterizer"), and on H200
-// (the same Hopper die); the hardware everywhere else, CPU devices (lavapipe) included.
-bool computeRasterFor(RasterMode mode, const VkPhysicalDeviceProperties& device) {
+// The auto rule, by device kind and layer size, never by timing (one device and size always give the
+// same images; README "Rasterizer choice"): the compute rasterizer on NVIDIA H100 and H200 for
+// layers up to kComputeMeasuredUpTo texels a side, where it was measured faster than the hardware at
+// every point of the sweep (H100: 2.0x to 16x; 512^2 to 8192^2 over five scenes, 16384^2 where the
+// device takes it), the hardware above that and on every other device, CPU devices (lavapipe) included.
+constexpr uint32_t kComputeMeasuredUpTo = 16384;
+
+bool computeRasterFor(RasterMode mode, const VkPhysicalDeviceProperties& device, uint32_t layerSize) {
     if (mode != RasterMode::Auto) return mode == RasterMode::Compute;
     constexpr uint32_t kNvidia = 0x10DE;
     const std::string name = device.deviceName;
-    return device.vendorID == kNvidia && device.deviceType == VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU &&
-           (name.find("H100") != std::string::npos || name.find("H200") != std::string::npos);
+    const bool hopper = device.vendorID == kNvidia && device.deviceType == VK_PHYSICAL_DEVICE_TYPE_DISCRETE_GPU &&
+                        (name.find("H100") != std::string::npos || name.find("H200") != std::string::npos);
+    return hopper && layerSize <= kComputeMeasuredUpTo;
 }
 
 }  // namespace penumbra

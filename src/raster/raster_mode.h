@@ -1,6 +1,6 @@
 // Which rasterizer draws depth-only light views: the hardware's (a layered depth-only raster pass)
-// or the compute rasterizer (src/raster/compute_raster.h). `auto` picks by the device's kind, never
-// by timing, so that one device always gives the same images (computeRasterFor says the rule).
+// or the compute rasterizer (src/raster/compute_raster.h). `auto` picks by the device's kind and the
+// layer size, never by timing, so that one device always gives the same images (computeRasterFor).
 #pragma once
 #include <string>
 #include <vector>
@@ -16,7 +16,8 @@ RasterMode parseRasterMode(const std::string& name, const std::string& option);
 std::string rasterModeName(RasterMode mode);
 std::vector<std::string> rasterModeNames();
 
-// Whether `mode` means the compute rasterizer on this device. Auto: see raster_mode.cpp.
-bool computeRasterFor(RasterMode mode, const VkPhysicalDeviceProperties& device);
+// Whether `mode` means the compute rasterizer on this device for layers of `layerSize`^2 texels (0: a
+// size the rule does not look at). Auto: see raster_mode.cpp and README "Rasterizer choice".
+bool computeRasterFor(RasterMode mode, const VkPhysicalDeviceProperties& device, uint32_t layerSize = 0);
 
 }  // namespace penumbra

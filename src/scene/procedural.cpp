@@ -1,5 +1,5 @@
-// Built-in scenes that need no asset files: the default Cornell box, a plane for unit tests and a
-// head with procedural hair (deep shadow maps).
+// Built-in scenes that need no asset files: the default Cornell box, a plane for unit tests, a
+// head with procedural hair (deep shadow maps) and a terrain of large ground triangles under trees.
 #include <cmath>
 #include <optional>
 #include <random>
@@ -205,9 +205,83 @@ Scene makeHair(const BuiltinOptions& options) {
     return s;
 }
 
+// Ground height of the terrain scene: two gentle hills, so that its few large triangles are not coplanar.
+float terrainHeight(float x, float z) {
+    return 1.5f * std::exp(-((x - 12) * (x - 12) + (z + 8) * (z + 8)) / 300.0f) +
+           1.0f * std::exp(-((x + 15) * (x + 15) + (z - 14) * (z - 14)) / 200.0f);
+}
+
+// A cone of `segments` side triangles and a base (a tree's crown layer), apex up.
+void addCone(Scene& s, const glm::vec3& base, float radius, float height, uint32_t segments, uint32_t material) {
+    std::vector<Vertex> verts;
+    std::vector<uint32_t> idx;
+    const glm::vec3 apex = base + glm::vec3(0, height, 0);
+    for (uint32_t k = 0; k < segments; ++k) {
+        const float a0 = glm::two_pi<float>() * float(k) / segments, a1 = glm::two_pi<float>() * float(k + 1) / segments;
+        const glm::vec3 p0 = base + radius * glm::vec3(std::cos(a0), 0, -std::sin(a0));
+        const glm::vec3 p1 = base + radius * glm::vec3(std::cos(a1), 0, -std::sin(a1));
+        const glm::vec3 n = glm::normalize(glm::cross(p1 - p0, apex - p0));
+        const uint32_t first = uint32_t(verts.size());
+        verts.insert(verts.end(), {{p0, n, {0, 0}}, {p1, n, {1, 0}}, {apex, n, {0.5f, 1}}, {p0, {0, -1, 0}, {0, 0}},
+                                   {base, {0, -1, 0}, {0.5f, 0.5f}}, {p1, {0, -1, 0}, {1, 0}}});
+        idx.insert(idx.end(), {first, first + 1, first + 2, first + 3, first + 4, first + 5});
+    }
+    addTriangles(s, verts, idx, material);
+}
+
+// The compute rasterizer's hardest case: 18 ground triangles of about 20 m that each cover many
+// tiles of every cascade, under 60 small trees (about 11k triangles: trunks and three-layer crowns)
+// and a low sun, so that the trees' shadows fall long across the ground.
+Scene makeTerrain() {
+    Scene s;
+    s.name = "terrain";
+    const uint32_t grass = addMaterial(s, {0.30f, 0.42f, 0.18f});
+    const uint32_t bark = addMaterial(s, {0.32f, 0.22f, 0.14f});
+    const uint32_t leaves = addMaterial(s, {0.10f, 0.30f, 0.10f});
+    constexpr int kCells = 3;
+    constexpr float kSize = 60.0f, kCell = kSize / kCells;
+    std::vector<Vertex> ground;
+    std::vector<uint32_t> idx;
+    for (int j = 0; j <= kCells; ++j)
+        for (int i = 0; i <= kCells; ++i) {
+            const float x = -0.5f * kSize + i * kCell, z = -0.5f * kSize + j * kCell;
+            ground.push_back({{x, terrainHeight(x, z), z}, {0, 1, 0}, {float(i), float(j)}});
+        }
+    for (int j = 0; j < kCells; ++j)
+        for (int i = 0; i < kCells; ++i) {
+            const uint32_t a = uint32_t(j * (kCells + 1) + i), b = a + kCells + 1;
+            idx.insert(idx.end(), {a, b, a + 1, a + 1, b, b + 1});  // counter-clockwise seen from above
+        }
+    addTriangles(s, ground, idx, grass);
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    for (int t = 0; t < 60; ++t) {
+        const float x = -25.0f + 50.0f * u(rng), z = -25.0f + 50.0f * u(rng), scale = 0.7f + 0.6f * u(rng);
+        const glm::vec3 foot(x, terrainHeight(x, z), z);
+        addBox(s, foot + glm::vec3(0, 0.8f * scale, 0), glm::vec3(0.12f, 0.8f, 0.12f) * scale, u(rng), bark);
+        for (int layer = 0; layer < 3; ++layer)
+            addCone(s, foot + glm::vec3(0, (1.2f + 0.9f * layer) * scale, 0), (1.4f - 0.35f * layer) * scale,
+                    1.6f * scale, 32, leaves);
+    }
+
+    Light sun;
+    sun.type = LightType::Directional;
+    sun.direction = glm::normalize(glm::vec3(0.5f, -0.45f, 0.35f));
+    sun.intensity = 4.0f;
+    sun.name = "sun";
+    s.lights.push_back(sun);
+
+    Camera cam;
+    cam.eye = {-22.0f, 6.0f, 24.0f};
+    cam.target = {4.0f, 0.0f, -6.0f};
+    cam.fovy = glm::radians(55.0f);
+    s.cameras.push_back(cam);
+    return s;
+}
+
 }  // namespace
 
-std::vector<std::string> builtinSceneNames() { return {"cornell", "plane", "hair", "street", "room"}; }
+std::vector<std::string> builtinSceneNames() { return {"cornell", "plane", "hair", "street", "room", "terrain"}; }
 
 Scene makeBuiltinScene(const std::string& name, const BuiltinOptions& options) {
     Scene s;
@@ -221,6 +295,8 @@ Scene makeBuiltinScene(const std::string& name, const BuiltinOptions& options) {
         s = makeStreet();
     } else if (name == "room") {
         s = makeRoom();
+    } else if (name == "terrain") {
+        s = makeTerrain();
     } else {
         throw SceneError(fmt::format("unknown scene '{}': not a file and not a built-in scene ({})", name,
                                      fmt::join(builtinSceneNames(), ", ")));

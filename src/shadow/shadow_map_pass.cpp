@@ -20,7 +20,7 @@ ShadowMapPass::ShadowMapPass(vk::Allocator& alloc, SceneGpu& scene, const Shadow
       settings_(validated(settings)),
       layout_(settings, scene.scene().bounds),
       raster_(alloc.context(), scene, settings, drawLayout),
-      useCompute_(computeRasterFor(settings.raster, alloc.context().properties())),
+      useCompute_(computeRasterFor(settings.raster, alloc.context().properties(), settings.resolution)),
       moments_(alloc, settings.resolution),
       filter_(alloc) {
     assign({});
