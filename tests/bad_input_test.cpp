@@ -193,3 +193,42 @@ TEST(BadInput, EvalCacheImageOfAnotherSizeIsNamed) {
     expectOneErrorLine(r, "cache", cache + "/mask.exr");
     EXPECT_NE(r.err.find("16x32, expected 16x16"), std::string::npos) << r.err;
 }
+
+// The strongest light --light takes over a 2 km ground: an RSM texel covers about 16 m^2, and its
+// flux, 65504 x 0.8 x 16, is more than a half float holds. It is clamped at 65504 in the RSM (it was
+// stored as infinity: NaN indirect light, a black image with RSM, no indirect light with LPV).
+TEST(BadInput, StrongestLightOverALargeSceneStaysFinite) {
+    TempDir files;
+    std::vector<uint8_t> bin;
+    for (float f : {-1000.f, 0.f, -1000.f, 1000.f, 0.f, -1000.f, -1000.f, 0.f, 1000.f, 1000.f, 0.f, 1000.f,
+                    -100.f, 0.f, 0.f, 100.f, 0.f, 0.f, -100.f, 200.f, 0.f, 100.f, 200.f, 0.f})
+        append(bin, f);
+    for (uint16_t i : {0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6}) append(bin, uint16_t(i));
+    const json doc{
+        {"asset", {{"version", "2.0"}}},
+        {"scenes", {{{"nodes", {0}}}}},
+        {"nodes", {{{"mesh", 0}}}},
+        {"meshes", {{{"primitives", {{{"attributes", {{"POSITION", 0}}}, {"indices", 1}, {"material", 0}}}}}}},
+        {"materials", {{{"doubleSided", true}, {"pbrMetallicRoughness", {{"baseColorFactor", {0.8, 0.8, 0.8, 1}}}}}}},
+        {"accessors", {{{"bufferView", 0}, {"componentType", 5126}, {"count", 8}, {"type", "VEC3"},
+                        {"min", {-1000, 0, -1000}}, {"max", {1000, 200, 1000}}},
+                       {{"bufferView", 1}, {"componentType", 5123}, {"count", 12}, {"type", "SCALAR"}}}},
+        {"bufferViews", {{{"buffer", 0}, {"byteOffset", 0}, {"byteLength", 96}},
+                         {{"buffer", 0}, {"byteOffset", 96}, {"byteLength", 24}}}},
+        {"buffers", {{{"byteLength", bin.size()}, {"uri", dataUri(bin)}}}}};
+    const std::string scene = writeGltf(files, "ground.gltf", doc);
+    ScratchDir dir("large_scene");
+    for (const char* gi : {"rsm", "lpv"}) {
+        const std::string out = dir.file(std::string(gi) + ".exr");
+        const Cli r = runCli(dir, "render " + scene + " --width 16 --height 16 --gi " + gi + " --aov indirect "
+                                  "--camera 0,300,800,0,50,0,0,1,0,45 --light directional,-0.3,-1,-0.5,65504,1,1,1 -o " + out);
+        ASSERT_EQ(r.status, 0) << r.err;
+        const ImageF img = readExr(out);
+        double sum = 0.0;
+        for (float v : img.rgba) {
+            ASSERT_TRUE(std::isfinite(v)) << gi;
+            sum += v;
+        }
+        EXPECT_GT(sum, 0.0) << gi;  // the ground lights the wall
+    }
+}
