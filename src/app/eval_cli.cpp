@@ -333,7 +333,9 @@ void checkReferenceSignal(const GroundTruth& truth, const ReferenceSettings& s) 
             indirectSq += double(truth.indirect.rgba[c]) * truth.indirect.rgba[c];
         }
     }
-    const char* missing = covered == 0 || finalSq == 0.0 ? "black" : s.bounces > 0 && indirectSq == 0.0 ? "without indirect light" : nullptr;
+    const char* missing = covered == 0 || finalSq == 0.0           ? "black"
+                          : s.bounces > 0 && indirectSq == 0.0 ? "without indirect light"
+                                                               : nullptr;
     if (missing)
         throw std::runtime_error(fmt::format("eval: the reference ({}x{}, {} paths/pixel) is {} over the {} pixels with "
                                              "geometry: nothing to measure; give more --spp or another --camera",
