@@ -66,8 +66,10 @@ void main() {
     // for both, VC's backdrop, whose shading normals lean up to 60 degrees off its triangles, sent
     // 1.5x the path tracer's light.
     const float lit = max(dot(shadingNormal, l), 0.0) / max(dot(n, l), 1e-3);
-    // Rounded once, as packed: the separate images then hold the packed texel's values exactly.
-    const vec3 flux = surfaceBaseColor(s).rgb * e * (area * lit);
+    // Rounded once, as packed: the separate images then hold the packed texel's values exactly. A
+    // half float holds at most 65504: a brighter texel (a strong sun over texels of many square
+    // metres) is clamped there, not stored as infinity, which turned the indirect light NaN.
+    const vec3 flux = min(surfaceBaseColor(s).rgb * e * (area * lit), vec3(65504.0));
     const uvec4 vpl = uvec4(floatBitsToUint(clip.z / clip.w), packSnorm2x16(octEncode(n)), packHalf2x16(flux.rg),
                             packHalf2x16(vec2(flux.b, 0.0)));
     imageStore(outDepth, texel, vec4(uintBitsToFloat(vpl.x)));

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <ctime>
 #include <fstream>
@@ -17,15 +18,19 @@
 
 #include "app/device_budget.h"
 #include "app/option_checks.h"
+#include "io/file_write.h"
 
 namespace penumbra {
 namespace {
 
+// A series with no samples (one measured frame leaves no wall-clock interval; a pass that ran in no
+// measured frame) has NaN statistics: printed as "-", written to JSON as null.
 struct Stats {
     double median, p5, p95;
 };
 
 Stats stats(std::vector<double> v) {
+    if (v.empty()) return {std::nan(""), std::nan(""), std::nan("")};
     std::sort(v.begin(), v.end());
     auto at = [&](double q) { return v[std::min(v.size() - 1, size_t(q * double(v.size() - 1) + 0.5))]; };
     return {at(0.5), at(0.05), at(0.95)};
@@ -61,6 +66,12 @@ nlohmann::json settingsJson(const RenderSettings& s, const FrameOptions& f) {
     j["inputs"] = optionsJson(frameInputOptions(), &f);
     j["motion"] = optionsJson(motionOptions(), &f);
     return j;
+}
+
+std::string cell(double v) { return std::isnan(v) ? "-" : fmt::format("{:.3f}", v); }
+
+void printRow(const std::string& label, const Stats& s, const std::string& tail = "") {
+    fmt::print("{:<24} {:>9} {:>9} {:>9}{}\n", label, cell(s.median), cell(s.p5), cell(s.p95), tail);
 }
 
 std::string today() {
@@ -147,7 +158,7 @@ static BenchRun runFrames(Renderer& renderer, const SceneMotion& motion, const B
     renderer.finish();
     if (progress) fmt::print(stderr, "\n");
     run.frames = renderer.takeCompletedTimings();
-    run.wallMs.erase(run.wallMs.begin());  // the first interval includes the warm-up's drain
+    if (!run.wallMs.empty()) run.wallMs.erase(run.wallMs.begin());  // the first includes the warm-up's drain
     return run;
 }
 
@@ -229,24 +240,23 @@ int runBench(const BenchOptions& o, const vk::ContextOptions& vkOptions, RenderS
             mb = fmt::format("{:.2f}", bytes[name] / 1e6), gbps = fmt::format("{:.0f}", g);
             ratio = fmt::format("{:.2f}", g / copyGbps);
         }
-        fmt::print("{:<24} {:9.3f} {:9.3f} {:9.3f} {:>10} {:>8} {:>7}\n", name, s.median, s.p5, s.p95, mb, gbps, ratio);
+        printRow(name, s, fmt::format(" {:>10} {:>8} {:>7}", mb, gbps, ratio));
         passes.push_back(j);
     }
     const Stats fs = stats(frameMs), sum = stats(scopeSumMs), cpu = stats(cpuMs), wall = stats(run.wallMs);
     const Stats ws = stats(warmFrameMs), serial = stats(serialMs);
-    fmt::print("{:<24} {:9.3f} {:9.3f} {:9.3f}\n", "frame (GPU, whole)", fs.median, fs.p5, fs.p95);
-    fmt::print("{:<24} {:9.3f} {:9.3f} {:9.3f}\n", "frame, pass scopes", serial.median, serial.p5, serial.p95);
-    fmt::print("{:<24} {:9.3f} {:9.3f} {:9.3f}\n", "warm frame (cached)", ws.median, ws.p5, ws.p95);
+    printRow("frame (GPU, whole)", fs);
+    printRow("frame, pass scopes", serial);
+    printRow("warm frame (cached)", ws);
     nlohmann::json warmPasses = nlohmann::json::array();
     for (const std::string& name : order)
         if (warmPerPass.count(name)) warmPasses.push_back({{"name", name}, {"median_ms", stats(warmPerPass.at(name)).median}});
-    fmt::print("{:<24} {:9.3f} {:9.3f} {:9.3f}\n", "sum of pass scopes", sum.median, sum.p5, sum.p95);
-    fmt::print("{:<24} {:9.3f} {:9.3f} {:9.3f}\n", "wall clock per frame", wall.median, wall.p5, wall.p95);
-    fmt::print("{:<24} {:9.3f} {:9.3f} {:9.3f}\n", "CPU (record + submit)", cpu.median, cpu.p5, cpu.p95);
+    printRow("sum of pass scopes", sum);
+    printRow("wall clock per frame", wall);
+    printRow("CPU (record + submit)", cpu);
     const Stats pose = stats(poseMs);
     if (motion.moves())
-        fmt::print("{:<24} {:9.3f} {:9.3f} {:9.3f}   (geometry uploads: {})\n", "CPU (motion at t)", pose.median,
-                   pose.p5, pose.p95, scene.geometryUploads());
+        printRow("CPU (motion at t)", pose, fmt::format("   (geometry uploads: {})", scene.geometryUploads()));
     fmt::print("device {} | copy bandwidth {:.0f} GB/s | GPU memory {:.1f} MiB | {} triangles, {} strands\n",
                ctx.info().name, copyGbps, renderer.allocator().bytesReserved() / 1048576.0,
                f.scene.drawnTriangleCount(), f.scene.strands.size());
@@ -274,7 +284,7 @@ int runBench(const BenchOptions& o, const vk::ContextOptions& vkOptions, RenderS
                            // the same frames again with the caches kept (cached shadow layers not drawn)
                            {"warm", {{"frame_ms", {{"median", ws.median}, {"p5", ws.p5}, {"p95", ws.p95}}},
                                      {"passes", warmPasses}}}};
-        std::ofstream(o.json) << out.dump(2) << "\n";
+        writeTextFile(o.json, out.dump(2));
     }
     device.checkValidation();
     return 0;

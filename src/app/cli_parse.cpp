@@ -1,10 +1,13 @@
 #include "app/cli_parse.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
 
 #include <fmt/format.h>
+
+#include "scene/light_limits.h"
 
 namespace penumbra {
 namespace {
@@ -34,6 +37,19 @@ float radians(float degrees) { return degrees * 3.14159265358979f / 180.0f; }
 glm::vec3 unit(const glm::vec3& v, const std::string& option) {
     if (glm::length(v) < 1e-6f) throw std::invalid_argument(option + ": direction must not be zero");
     return glm::normalize(v);
+}
+
+// Intensity x colour above kMaxLightStrength overflows the RGBA16F lighting targets to infinity (a
+// black image). The suggestion, rounded down to 4 significant digits, lies inside the bound.
+void checkLightStrength(const Light& l) {
+    const float brightest = std::max({l.color.x, l.color.y, l.color.z});
+    if (double(l.intensity) * brightest <= kMaxLightStrength) return;
+    const double largest = double(kMaxLightStrength) / brightest;
+    const double step = std::pow(10.0, std::floor(std::log10(largest)) - 3.0);
+    throw std::invalid_argument(fmt::format(
+        "--light: intensity {:g} x colour {:g} = {:g} exceeds {:g}, the largest value of the RGBA16F lighting targets; "
+        "the largest intensity with this colour is {:g}", l.intensity, brightest, double(l.intensity) * brightest,
+        kMaxLightStrength, std::floor(largest / step) * step));
 }
 
 }  // namespace
@@ -88,6 +104,7 @@ Light parseLight(const std::string& value) {
             "point,px,py,pz,I");
     }
     if (l.intensity < 0.0f) throw std::invalid_argument("--light: intensity must not be negative");
+    checkLightStrength(l);
     return l;
 }
 

@@ -10,6 +10,7 @@
 
 #include "app/ground_truth_cli.h"
 #include "app/option_checks.h"
+#include "io/file_write.h"
 #include "eval/eval.h"
 #include "eval/hair_eval.h"
 #include "eval/suite.h"
@@ -20,6 +21,9 @@ namespace penumbra {
 namespace {
 
 namespace fs = std::filesystem;
+
+// The smallest image eval measures: the SSIM window (eval/compare.cpp) fits inside it.
+constexpr uint32_t kMinEvalSize = 16;
 
 // Everything the reference image depends on: a cache entry is reused only when all of it matches.
 nlohmann::json referenceKey(const EvalCliOptions& o, const PreparedFrame& f) {
@@ -58,11 +62,13 @@ GroundTruth groundTruth(const EvalCliOptions& o, const PreparedFrame& f) {
         nlohmann::json stored = nlohmann::json::parse(std::ifstream(dir / "reference.json"), nullptr, false);
         if (!stored.is_discarded() && stored.is_object() && stored.value("key", nlohmann::json()) == key) {
             if (o.reference.settings.progress) fmt::print("penumbra: reference read from {}\n", o.referenceDir);
-            return fromImages(readExrChecked((dir / "direct.exr").string(), "--reference"),
-                              readExrChecked((dir / "indirect.exr").string(), "--reference"),
-                              readExrChecked((dir / "mask.exr").string(), "--reference"),
-                              readExrChecked((dir / "shadow.exr").string(), "--reference"),
-                              readExrChecked((dir / "hair.exr").string(), "--reference"),
+            // The key names the size: an image of another size is a damaged cache, named in the error.
+            const auto cached = [&](const char* name) {
+                return readExrSized((dir / name).string(), "--reference", o.reference.settings.width,
+                                    o.reference.settings.height);
+            };
+            return fromImages(cached("direct.exr"), cached("indirect.exr"), cached("mask.exr"), cached("shadow.exr"),
+                              cached("hair.exr"),
                               stored.value("noise", nlohmann::json::object()));
         }
     }
@@ -84,7 +90,7 @@ GroundTruth groundTruth(const EvalCliOptions& o, const PreparedFrame& f) {
         writeExr((dir / "mask.exr").string(), w, h, img.rgba(ReferenceAov::Mask));
         writeExr((dir / "shadow.exr").string(), w, h, img.rgba(ReferenceAov::Shadow));
         writeExr((dir / "hair.exr").string(), w, h, img.rgba(ReferenceAov::Hair));
-        std::ofstream(dir / "reference.json") << nlohmann::json{{"key", key}, {"noise", noise}}.dump(2) << "\n";
+        writeTextFile((dir / "reference.json").string(), nlohmann::json{{"key", key}, {"noise", noise}}.dump(2));
     }
     return fromImages({w, h, img.rgba(ReferenceAov::Direct)}, {w, h, img.rgba(ReferenceAov::Indirect)},
                       {w, h, img.rgba(ReferenceAov::Mask)}, {w, h, img.rgba(ReferenceAov::Shadow)},
@@ -207,8 +213,8 @@ int runSuite(const EvalCliOptions& o, const vk::ContextOptions& vkOptions, bool 
     if (!o.images.empty()) fmt::print("figures {}/<scene>.png: columns reference, RSM, LPV; rows final, indirect, "
                                       "indirect error (auto-exposed)\n", o.images);
     if (!o.json.empty())
-        std::ofstream(o.json) << nlohmann::json{{"command", o.command}, {"device", ctx.info().name},
-                                                {"scenes", suiteJson(results)}}.dump(2) << "\n";
+        writeTextFile(o.json, nlohmann::json{{"command", o.command}, {"device", ctx.info().name},
+                                             {"scenes", suiteJson(results)}}.dump(2));
     if (ctx.validationMessages() > 0)
         throw std::runtime_error(fmt::format("{} validation message(s) reported", ctx.validationMessages()));
     return 0;
@@ -294,11 +300,46 @@ int runHairEvalCommand(const EvalCliOptions& given, const vk::ContextOptions& vk
                          {"mask_pixels", count(h.mask)}, {"hair_pixels", count(h.hairPixels)},
                          {"floor_shadow_pixels", count(h.shadowPixels)}, {"reference_mean_transmittance", refT},
                          {"rows", hairEvalRowsJson(rows)}};
-        std::ofstream(o.json) << j.dump(2) << "\n";
+        writeTextFile(o.json, j.dump(2));
     }
     if (ctx.validationMessages() > 0)
         throw std::runtime_error(fmt::format("{} validation message(s) reported", ctx.validationMessages()));
     return 0;
+}
+
+// The errors eval reports are relative to the reference, and its noise floor is a variance: one path
+// per pixel estimates no variance (a noise of 0), and an image smaller than the SSIM window leaves
+// the windowed metrics without a window.
+void checkMeasurable(const ReferenceSettings& s) {
+    if (s.spp < 2)
+        throw std::invalid_argument(fmt::format("eval --spp {}: the reference's noise is estimated from the variance of "
+                                                "its paths, which needs at least 2 per pixel (e.g. --spp 16)", s.spp));
+    if (s.width < kMinEvalSize || s.height < kMinEvalSize)
+        throw std::invalid_argument(fmt::format("eval --width {} --height {}: the image must be at least {}x{} to "
+                                                "measure (e.g. --width 32 --height 24)", s.width, s.height,
+                                                kMinEvalSize, kMinEvalSize));
+}
+
+// A reference that is black where the camera sees geometry (or, with bounces, has no indirect light
+// there) leaves the relative errors infinite.
+void checkReferenceSignal(const GroundTruth& truth, const ReferenceSettings& s) {
+    size_t covered = 0;
+    double finalSq = 0.0, indirectSq = 0.0;
+    for (size_t i = 0; i < truth.mask.size(); ++i) {
+        if (!truth.mask[i]) continue;
+        ++covered;
+        for (size_t c = i * 4; c < i * 4 + 3; ++c) {
+            finalSq += double(truth.final.rgba[c]) * truth.final.rgba[c];
+            indirectSq += double(truth.indirect.rgba[c]) * truth.indirect.rgba[c];
+        }
+    }
+    const char* missing = covered == 0 || finalSq == 0.0           ? "black"
+                          : s.bounces > 0 && indirectSq == 0.0 ? "without indirect light"
+                                                               : nullptr;
+    if (missing)
+        throw std::runtime_error(fmt::format("eval: the reference ({}x{}, {} paths/pixel) is {} over the {} pixels with "
+                                             "geometry: nothing to measure; give more --spp or another --camera",
+                                             s.width, s.height, s.spp, missing, covered));
 }
 
 }  // namespace
@@ -313,9 +354,11 @@ int runEvalCommand(const EvalCliOptions& o, const vk::ContextOptions& vkOptions,
     if (o.suite && o.hair) throw std::invalid_argument("--suite and --hair: one evaluation at a time");
     if (o.suite) return runSuite(o, vkOptions, dryRun);
     if (o.hair) return runHairEvalCommand(o, vkOptions, dryRun);
+    checkMeasurable(o.reference.settings);
     PreparedFrame f = prepareReferenceFrame(o.reference);
     if (dryRun) return 0;
     const GroundTruth truth = groundTruth(o, f);
+    checkReferenceSignal(truth, o.reference.settings);
 
     vk::Context ctx(vkOptions);
     RenderSettings base;
@@ -363,7 +406,7 @@ int runEvalCommand(const EvalCliOptions& o, const vk::ContextOptions& vkOptions,
                                         {"seed", o.reference.settings.seed},
                                         {"noise_final", truth.noiseFinal}, {"noise_indirect", truth.noiseIndirect}}},
                          {"mask_pixels", covered}, {"rows", evalRowsJson(rows)}};
-        std::ofstream(o.json) << j.dump(2) << "\n";
+        writeTextFile(o.json, j.dump(2));
     }
     if (ctx.validationMessages() > 0)
         throw std::runtime_error(fmt::format("{} validation message(s) reported", ctx.validationMessages()));

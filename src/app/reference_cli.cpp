@@ -111,7 +111,8 @@ int runCompareCommand(const CompareCliOptions& o, bool dryRun) {
     const ImageF b = readExrChecked(o.b, "B");
     if (a.width != b.width || a.height != b.height)
         throw std::invalid_argument(
-            fmt::format("A is {}x{}, B is {}x{}: the sizes must match", a.width, a.height, b.width, b.height));
+            fmt::format("A {} is {}x{}, B {} is {}x{}: the sizes must match", o.a, a.width, a.height, o.b, b.width,
+                        b.height));
     const std::vector<uint8_t> mask = o.mask.empty() ? std::vector<uint8_t>{} : loadMask(o.mask, a.width, a.height);
     if (dryRun) return 0;
     const ImageMetrics m = compareImages(a, b, mask);

@@ -9,6 +9,7 @@
 
 #include "app/device_budget.h"
 #include "app/option_checks.h"
+#include "io/file_write.h"
 #include "reference/path_tracer.h"
 #include "render/render_options.h"
 
@@ -275,7 +276,7 @@ int runStability(const StabilityOptions& o, const vk::ContextOptions& vkOptions,
                    ref["spp"].get<uint32_t>(), ref["converged"].get<bool>() ? "settled" : "NOT settled: it includes noise");
         out["reference"] = ref;
     }
-    if (!o.json.empty()) std::ofstream(o.json) << out.dump(2) << "\n";
+    if (!o.json.empty()) writeTextFile(o.json, out.dump(2));
     device.checkValidation();
     return 0;
 }

@@ -169,6 +169,14 @@ ImageF readExrChecked(const std::string& path, const std::string& what) {
     return readExr(path);
 }
 
+ImageF readExrSized(const std::string& path, const std::string& what, uint32_t width, uint32_t height) {
+    ImageF image = readExrChecked(path, what);
+    if (image.width != width || image.height != height)
+        throw std::invalid_argument(fmt::format("{} {}: the image is {}x{}, expected {}x{}", what, path, image.width,
+                                                image.height, width, height));
+    return image;
+}
+
 std::vector<uint8_t> loadMask(const std::string& path, uint32_t width, uint32_t height) {
     if (!std::ifstream(path)) throw std::invalid_argument(fmt::format("--mask {}: no such file", path));
     ImageF img;

@@ -46,6 +46,8 @@ std::vector<uint8_t> loadMask(const std::string& path, uint32_t width, uint32_t 
 
 // Reads an EXR that must exist and be an EXR: one clear line otherwise ("A.exr: not an EXR file").
 ImageF readExrChecked(const std::string& path, const std::string& what);
+// readExrChecked, and the image must be width x height: the error names the file and both sizes.
+ImageF readExrSized(const std::string& path, const std::string& what, uint32_t width, uint32_t height);
 
 // The renderer's PNG tone mapping on the CPU: exposure, ACES fit (Narkowicz 2015), sRGB.
 std::vector<uint8_t> toneMap(const ImageF& image, float exposure);

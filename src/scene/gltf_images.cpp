@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <climits>
 #include <thread>
 
 #include <fmt/format.h>
@@ -22,6 +23,16 @@ std::optional<Texture> decode(const tinygltf::Image& img, std::string& error) {
         return std::nullopt;
     }
     int w = 0, h = 0, channels = 0;
+    // The header's size first (gltf_images.h: kMaxTextureTexels).
+    if (!stbi_info_from_memory(img.image.data(), int(img.image.size()), &w, &h, &channels)) {
+        error = fmt::format("it cannot be decoded ({})", stbi_failure_reason());
+        return std::nullopt;
+    }
+    if (w > int(kMaxTextureSize) || h > int(kMaxTextureSize) || uint64_t(w) * uint64_t(h) > kMaxTextureTexels) {
+        error = fmt::format("it is {}x{}, more than the largest texture penumbra loads ({} on a side, {}x{} texels)",
+                            w, h, kMaxTextureSize, 8192, 8192);
+        return std::nullopt;
+    }
     // The file's own channels, widened to RGBA here in one pass: asking stb for 4 costs one more
     // image-sized buffer (64 MB at 4096^2), and fresh memory is what a large texture's load spends on.
     stbi_uc* texels = stbi_load_from_memory(img.image.data(), int(img.image.size()), &w, &h, &channels, 0);
@@ -50,8 +61,22 @@ std::optional<Texture> decode(const tinygltf::Image& img, std::string& error) {
 
 }  // namespace
 
-bool keepEncodedImage(tinygltf::Image* image, int, std::string*, std::string*, int, int, const unsigned char* bytes,
-                      int size, void*) {
+bool keepEncodedImage(tinygltf::Image* image, int index, std::string* err, std::string*, int, int,
+                      const unsigned char* bytes, int size, void* user) {
+    // tinygltf hands over an image's bufferView without checking it against its buffer; `user` is the
+    // model being loaded, whose buffers are read by then.
+    if (image->bufferView >= 0 && user) {
+        const auto* model = static_cast<const tinygltf::Model*>(user);
+        const tinygltf::BufferView& view = model->bufferViews[size_t(image->bufferView)];
+        const size_t bufferSize = model->buffers[size_t(view.buffer)].data.size();
+        if (view.byteLength > bufferSize || view.byteOffset > bufferSize - view.byteLength ||
+            view.byteLength > size_t(INT_MAX)) {
+            if (err)
+                *err += fmt::format("image {}: bufferView {} (offset {}, length {}) exceeds its buffer of {} bytes",
+                                    index, image->bufferView, view.byteOffset, view.byteLength, bufferSize);
+            return false;
+        }
+    }
     image->image.assign(bytes, bytes + std::max(size, 0));
     image->as_is = true;
     return true;

@@ -23,6 +23,9 @@
 #include "scene/gltf_accessor.h"
 #include "scene/gltf_checks.h"
 #include "scene/gltf_images.h"
+#include "scene/gltf_lights.h"
+#include "scene/gltf_primitives.h"
+#include "scene/gltf_texture_transform.h"
 #include "scene/scene.h"
 
 namespace penumbra {
@@ -30,6 +33,9 @@ namespace penumbra {
 namespace {
 
 constexpr int kMaxNodeDepth = 1024;  // deeper hierarchies are treated as malformed (and spare the stack)
+// World coordinates beyond this overflow lengths, bounds and matrices in single precision (NaN
+// images); the CLI's numbers have the same limit.
+constexpr float kMaxCoordinate = 1e9f;
 
 // Required extensions that change nothing we read, or whose data we read anyway.
 bool isTolerableRequiredExtension(const std::string& name) {
@@ -77,11 +83,11 @@ tinygltf::Model parseFile(const std::string& path) {
     } catch (const SceneError& e) {
         throw SceneError(fmt::format("{}: {}", path, e.what()));
     }
+    tinygltf::Model model;
     tinygltf::TinyGLTF loader;
-    loader.SetImageLoader(gltf::keepEncodedImage, nullptr);  // decoded later, in parallel, if used
+    loader.SetImageLoader(gltf::keepEncodedImage, &model);  // decoded later, in parallel, if used
     loader.SetFsCallbacks({&tinygltf::FileExists, &tinygltf::ExpandFilePath, &readRegularFile,
                            &tinygltf::WriteWholeFile, nullptr});
-    tinygltf::Model model;
     std::string err, warn;
     bool ok = false;
     const std::string baseDir = std::filesystem::path(path).parent_path().string();
@@ -109,53 +115,6 @@ glm::vec3 safeNormalize(const glm::vec3& v, const glm::vec3& fallback) {
     return v / std::sqrt(len2);
 }
 
-// Converts strips and fans to a plain triangle list (glTF 2.0 spec, section 3.7.2.1).
-std::vector<uint32_t> toTriangleList(const std::vector<uint32_t>& idx, int mode) {
-    if (mode == TINYGLTF_MODE_TRIANGLES) {
-        std::vector<uint32_t> out(idx.begin(), idx.begin() + ptrdiff_t(idx.size() / 3 * 3));
-        return out;
-    }
-    std::vector<uint32_t> out;
-    for (size_t i = 0; i + 2 < idx.size(); ++i) {
-        if (mode == TINYGLTF_MODE_TRIANGLE_STRIP) {
-            // Every other strip triangle swaps its first two vertices to keep a consistent winding.
-            const bool odd = (i & 1) != 0;
-            out.insert(out.end(), {idx[odd ? i + 1 : i], idx[odd ? i : i + 1], idx[i + 2]});
-        } else {  // fan
-            out.insert(out.end(), {idx[i + 1], idx[i + 2], idx[0]});
-        }
-    }
-    return out;
-}
-
-// Line primitives as polylines (index lists): a LINE_STRIP is one, a LINE_LOOP one closed by its first
-// point, and LINES segments are chained into one while each starts where the previous one ended.
-std::vector<std::vector<uint32_t>> toPolylines(const std::vector<uint32_t>& idx, int mode) {
-    std::vector<std::vector<uint32_t>> out;
-    if (mode != TINYGLTF_MODE_LINE) {
-        if (idx.size() >= 2) out.push_back(idx);
-        if (mode == TINYGLTF_MODE_LINE_LOOP && idx.size() >= 3) out.back().push_back(idx.front());
-        return out;
-    }
-    for (size_t i = 0; i + 1 < idx.size(); i += 2) {
-        if (out.empty() || out.back().back() != idx[i]) out.push_back({idx[i]});
-        out.back().push_back(idx[i + 1]);
-    }
-    return out;
-}
-
-// Area-weighted smooth normals: the unnormalised face cross product has length 2 * area.
-void generateNormals(std::vector<Vertex>& verts, const std::vector<uint32_t>& tris) {
-    for (Vertex& v : verts) v.normal = glm::vec3(0.0f);
-    for (size_t t = 0; t + 2 < tris.size(); t += 3) {
-        Vertex &a = verts[tris[t]], &b = verts[tris[t + 1]], &c = verts[tris[t + 2]];
-        const glm::vec3 n = glm::cross(b.position - a.position, c.position - a.position);
-        a.normal += n;
-        b.normal += n;
-        c.normal += n;
-    }
-}
-
 // Walks the node hierarchy once, appending world-space geometry, lights and cameras to the scene.
 class Loader {
 public:
@@ -165,6 +124,7 @@ public:
           quantized_(std::count(model.extensionsUsed.begin(), model.extensionsUsed.end(), "KHR_mesh_quantization")) {}
 
     void run() {
+        checkVersion();
         loadMaterials();
         readAnimations();
         for (int root : withoutRepeats(rootNodes(), "the scene")) visitTree(root);
@@ -174,6 +134,17 @@ public:
 
 private:
     static constexpr int32_t kNotConverted = -2;
+
+    // glTF 2.x is what this loader reads; another major version (or a newer minVersion) is read as 2.0.
+    void checkVersion() {
+        const auto major = [](const std::string& v) { return v.substr(0, v.find('.')); };
+        const std::string& version = m_.asset.version;
+        if (major(version) != "2")
+            warn(fmt::format("asset.version '{}' is not 2.x: read as glTF 2.0", version));
+        const std::string& minVersion = m_.asset.minVersion;
+        if (!minVersion.empty() && minVersion != "2.0")
+            warn(fmt::format("asset.minVersion '{}' is newer than glTF 2.0: read as glTF 2.0", minVersion));
+    }
 
     std::vector<int> rootNodes() const {
         if (!m_.scenes.empty()) {
@@ -199,6 +170,8 @@ private:
             const auto& f = gm.pbrMetallicRoughness.baseColorFactor;
             if (f.size() == 4) mat.baseColor = glm::vec4(f[0], f[1], f[2], f[3]);
             mat.baseColorTexture = textureFor(gm.pbrMetallicRoughness.baseColorTexture.index);
+            uvTransforms_.push_back(gltf::readUvTransform(gm.pbrMetallicRoughness.baseColorTexture,
+                                                          fmt::format("material {} baseColorTexture", s_.materials.size() - 1)));
             if (gm.alphaMode == "MASK") mat.alphaMode = AlphaMode::Mask;
             else if (gm.alphaMode == "BLEND") mat.alphaMode = AlphaMode::Blend;
             mat.alphaCutoff = float(gm.alphaCutoff);
@@ -284,6 +257,9 @@ private:
         if (node.scale.size() == 3) n.scale = glm::vec3(node.scale[0], node.scale[1], node.scale[2]);
         const int32_t self = int32_t(s_.nodes.size());
         restWorld_.push_back(parent >= 0 ? restWorld_[size_t(parent)] * n.local() : n.local());
+        const glm::mat4& world = restWorld_.back();
+        if (!std::all_of(&world[0][0], &world[0][0] + 16, [](float x) { return std::isfinite(x); }))
+            throw SceneError(fmt::format("node {}: its world transform is not finite", index));
         moving_.push_back(animatedSource_[size_t(index)] || (parent >= 0 && moving_[size_t(parent)]));
         s_.nodes.push_back(std::move(n));
         return self;
@@ -335,8 +311,12 @@ private:
                 else if (gc.target_path == "rotation") ch.path = AnimationPath::Rotation;
                 else if (gc.target_path == "scale") ch.path = AnimationPath::Scale;
                 else throw SceneError(fmt::format("{}: unknown target path '{}'", what, gc.target_path));
-                if (gc.target_node < 0 || size_t(gc.target_node) >= m_.nodes.size())
-                    continue;  // glTF allows a channel without a node (an extension may target something else)
+                if (gc.target_node < 0) continue;  // glTF allows a channel without a node (an extension's target)
+                if (size_t(gc.target_node) >= m_.nodes.size()) {
+                    warn(fmt::format("{}: target node {} does not exist ({} nodes): the channel is dropped", what,
+                                     gc.target_node, m_.nodes.size()));
+                    continue;
+                }
                 if (gc.sampler < 0 || size_t(gc.sampler) >= ga.samplers.size())
                     throw SceneError(fmt::format("{}: sampler {} does not exist", what, gc.sampler));
                 readSampler(ga.samplers[size_t(gc.sampler)], ch, what);
@@ -392,6 +372,26 @@ private:
         return data;
     }
 
+    // The primitive's texture coordinates as its material's base-colour texture reads them: the set
+    // it names, transformed (gltf_texture_transform.h); non-finite ones become 0 with a warning. A
+    // textured material naming a set the primitive lacks reads its texture at (0, 0), with a warning.
+    std::vector<float> texCoords(const tinygltf::Primitive& p, size_t n, uint32_t material, const std::string& what) {
+        const gltf::UvTransform uvt = p.material >= 0 ? uvTransforms_[size_t(p.material)] : gltf::UvTransform{};
+        const std::string set = fmt::format("TEXCOORD_{}", uvt.texCoord);
+        std::vector<float> uv = optionalAttribute(p, set.c_str(), 2, n, what);
+        if (uv.empty() && s_.materials[material].baseColorTexture >= 0)
+            warn(fmt::format("{}: material {} reads {}, which the primitive lacks: its texture is read at (0, 0)",
+                             what, p.material, set));
+        size_t nonFinite = 0;
+        for (size_t i = 0; i + 1 < uv.size(); i += 2) {
+            glm::vec2 t = uvt.apply(glm::vec2(uv[i], uv[i + 1]));
+            if (!std::isfinite(t.x + t.y)) t = glm::vec2(0.0f), ++nonFinite;
+            uv[i] = t.x, uv[i + 1] = t.y;
+        }
+        if (nonFinite) warn(fmt::format("{}: {} texture coordinate(s) are not finite: set to 0", what, nonFinite));
+        return uv;
+    }
+
     // Vertex indices of a primitive (0..n-1 when it has none), each checked against n.
     std::vector<uint32_t> primitiveIndices(const tinygltf::Primitive& p, size_t n, const std::string& what) {
         std::vector<uint32_t> idx(n);
@@ -411,7 +411,7 @@ private:
         style.color = glm::vec3(mat.baseColor);
         if (mat.alphaMode == AlphaMode::Blend) style.opacity = mat.baseColor.a;
         style.width *= std::cbrt(std::abs(glm::determinant(glm::mat3(world))));
-        for (const std::vector<uint32_t>& line : toPolylines(primitiveIndices(p, pos.size() / 3, what), mode)) {
+        for (const std::vector<uint32_t>& line : gltf::toPolylines(primitiveIndices(p, pos.size() / 3, what), mode)) {
             std::vector<glm::vec3> points;
             for (uint32_t i : line)
                 points.push_back(glm::vec3(world * glm::vec4(pos[3 * i], pos[3 * i + 1], pos[3 * i + 2], 1.0f)));
@@ -436,8 +436,9 @@ private:
             mode != TINYGLTF_MODE_TRIANGLE_FAN)
             return;  // unknown mode
         const std::vector<float> nrm = optionalAttribute(p, "NORMAL", 3, n, what);
-        const std::vector<float> uv = optionalAttribute(p, "TEXCOORD_0", 2, n, what);
-        std::vector<uint32_t> tris = toTriangleList(primitiveIndices(p, n, what), mode);
+        const uint32_t material = uint32_t(p.material + 1);
+        const std::vector<float> uv = texCoords(p, n, material, what);
+        std::vector<uint32_t> tris = gltf::toTriangleList(primitiveIndices(p, n, what), mode);
         // A mirroring transform turns counter-clockwise triangles clockwise; swap to keep them front-facing.
         const glm::mat3 linear(world);
         if (glm::determinant(linear) < 0.0f)
@@ -449,10 +450,15 @@ private:
             verts[i].position = glm::vec3(world * glm::vec4(pos[3 * i], pos[3 * i + 1], pos[3 * i + 2], 1.0f));
             if (!nrm.empty()) verts[i].normal = normalMatrix * glm::vec3(nrm[3 * i], nrm[3 * i + 1], nrm[3 * i + 2]);
             verts[i].uv = uv.empty() ? glm::vec2(0.0f) : glm::vec2(uv[2 * i], uv[2 * i + 1]);
+            if (!std::isfinite(verts[i].position.x + verts[i].position.y + verts[i].position.z) ||
+                glm::any(glm::greaterThan(glm::abs(verts[i].position), glm::vec3(kMaxCoordinate))))
+                throw SceneError(fmt::format("{}: vertex {} lies at ({}, {}, {}) in the world, not finite or beyond "
+                                             "+-{:g}", what, i, verts[i].position.x, verts[i].position.y,
+                                             verts[i].position.z, kMaxCoordinate));
         }
-        if (nrm.empty()) generateNormals(verts, tris);
+        if (nrm.empty()) gltf::generateNormals(verts, tris);
         for (Vertex& v : verts) v.normal = safeNormalize(v.normal, glm::vec3(0, 1, 0));
-        addTriangles(s_, verts, tris, uint32_t(p.material + 1), !newDraw_);
+        addTriangles(s_, verts, tris, material, !newDraw_);
         newDraw_ = false;
     }
 
@@ -463,56 +469,26 @@ private:
         const int index = v.IsNumber() ? v.GetNumberAsInt() : -1;
         if (index < 0 || size_t(index) >= m_.lights.size())
             throw SceneError(fmt::format("node '{}' refers to missing light {}", node.name, index));
-        const tinygltf::Light& gl = m_.lights[size_t(index)];
-        Light l;
-        if (gl.type == "directional") l.type = LightType::Directional;
-        else if (gl.type == "spot") l.type = LightType::Spot;
-        else if (gl.type == "point") l.type = LightType::Point;
-        else return;  // unknown light type: ignore, like an unknown extension
-        l.name = gl.name.empty() ? node.name : gl.name;
-        if (gl.color.size() == 3) l.color = glm::vec3(gl.color[0], gl.color[1], gl.color[2]);
-        if (glm::any(glm::lessThan(l.color, glm::vec3(0.0f))) || !std::isfinite(l.color.x + l.color.y + l.color.z)) {
-            warn(fmt::format("light {} '{}': colour ({}, {}, {}) clamped to [0, inf)", index, l.name, l.color.x,
-                             l.color.y, l.color.z));
-            l.color = glm::vec3(std::isfinite(l.color.x) ? std::max(l.color.x, 0.0f) : 0.0f,
-                                std::isfinite(l.color.y) ? std::max(l.color.y, 0.0f) : 0.0f,
-                                std::isfinite(l.color.z) ? std::max(l.color.z, 0.0f) : 0.0f);
-        }
-        l.intensity = float(gl.intensity);
-        if (!(l.intensity >= 0.0f) || !std::isfinite(l.intensity)) {
-            warn(fmt::format("light {} '{}': intensity {} clamped to 0", index, l.name, gl.intensity));
-            l.intensity = 0.0f;
-        }
-        l.range = gl.range > 0.0 ? float(gl.range) : 0.0f;
-        // Keep cones valid for the shader: 0 <= inner < outer <= pi/2.
-        l.outerConeAngle = std::clamp(float(gl.spot.outerConeAngle), 1e-4f, glm::half_pi<float>());
-        l.innerConeAngle = std::clamp(float(gl.spot.innerConeAngle), 0.0f, l.outerConeAngle * 0.999f);
+        std::optional<Light> light = gltf::readLight(m_, index, node.name, warner());
+        if (!light) return;
+        Light& l = *light;
         // Lights shine down their node's -Z; position is the node origin.
         l.position = glm::vec3(world[3]);
         l.direction = safeNormalize(glm::mat3(world) * glm::vec3(0, 0, -1), glm::vec3(0, -1, 0));
         l.node = sceneNode;
-        s_.lights.push_back(l);
+        s_.lights.push_back(std::move(l));
     }
 
     void addCamera(int index, const glm::mat4& world, int32_t sceneNode) {
         if (size_t(index) >= m_.cameras.size()) throw SceneError(fmt::format("camera {} does not exist", index));
-        const tinygltf::Camera& gc = m_.cameras[size_t(index)];
-        if (gc.type != "perspective") {  // Camera is perspective only; --camera-index counts the ones kept
-            warn(fmt::format("camera {}{} is {}: skipped (only perspective cameras are supported; --camera-index "
-                             "counts the perspective ones)",
-                             index, gc.name.empty() ? "" : " '" + gc.name + "'", gc.type));
-            return;
-        }
-        Camera cam;
+        std::optional<Camera> camera = gltf::readCamera(m_, index, warner());
+        if (!camera) return;
+        Camera& cam = *camera;
         cam.node = sceneNode;
         cam.eye = glm::vec3(world[3]);
         const glm::vec3 forward = safeNormalize(glm::mat3(world) * glm::vec3(0, 0, -1), glm::vec3(0, 0, -1));
         cam.target = cam.eye + forward;  // distance fixed up once the bounds are known
         cam.up = safeNormalize(glm::mat3(world) * glm::vec3(0, 1, 0), glm::vec3(0, 1, 0));
-        const auto& pc = gc.perspective;
-        if (pc.yfov > 0.0 && pc.yfov < glm::pi<double>()) cam.fovy = float(pc.yfov);
-        if (pc.znear > 0.0) cam.znear = float(pc.znear);
-        cam.zfar = pc.zfar > pc.znear ? float(pc.zfar) : 0.0f;  // 0 (infinite in glTF) = derive from bounds
         s_.cameras.push_back(cam);
     }
 
@@ -534,6 +510,9 @@ private:
     void warn(const std::string& line) {
         if (std::find(s_.warnings.begin(), s_.warnings.end(), line) == s_.warnings.end()) s_.warnings.push_back(line);
     }
+    gltf::Warn warner() {
+        return [this](const std::string& line) { warn(line); };
+    }
 
     const tinygltf::Model& m_;
     Scene& s_;
@@ -546,6 +525,7 @@ private:
     std::vector<bool> moving_;                    // per Scene node: it or an ancestor is animated
     bool newDraw_ = false;                        // the next triangles start a draw of their own
     bool quantized_;                              // KHR_mesh_quantization: integer positions, normals, uvs
+    std::vector<gltf::UvTransform> uvTransforms_;   // per glTF material: its base-colour texture's uv set
 };
 
 // The glTF images that materials use as base colour: the only ones decoded.

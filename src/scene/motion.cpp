@@ -72,6 +72,35 @@ std::pair<size_t, Keyframes> parseLightPath(const std::string& text) {
     return {size_t(n[0]), k};
 }
 
+// The camera must see along a defined direction at every time of its path, as --camera requires of
+// one view: eye apart from target and the view not along `up` (lookAt degenerates: a black image).
+// Between keys eye - target moves linearly, d(u) = mix(d0, d1, u), and so does c(u) = d(u) x up; both
+// are checked at the keys and where each comes closest to zero.
+void checkCameraPath(const Keyframes& eye, const Keyframes& target, const glm::vec3& cameraUp) {
+    const glm::vec3 up = glm::length(cameraUp) > 0.0f ? glm::normalize(cameraUp) : glm::vec3(0.0f, 1.0f, 0.0f);
+    const auto degenerate = [&](const glm::vec3& d) {
+        const float length = glm::length(d);
+        return !(length >= 1e-6f) || glm::length(glm::cross(d / length, up)) < 1e-3f;
+    };
+    const auto closestToZero = [](const glm::vec3& a, const glm::vec3& b) {
+        const glm::vec3 ab = b - a;
+        const float len2 = glm::dot(ab, ab);
+        return len2 > 0.0f ? std::clamp(-glm::dot(a, ab) / len2, 0.0f, 1.0f) : 0.0f;
+    };
+    for (size_t k = 0; k < eye.times.size(); ++k) {
+        const glm::vec3 d0 = target.values[k] - eye.values[k];
+        const glm::vec3 d1 = k + 1 < eye.times.size() ? target.values[k + 1] - eye.values[k + 1] : d0;
+        for (float u : {0.0f, closestToZero(d0, d1), closestToZero(glm::cross(d0, up), glm::cross(d1, up))}) {
+            if (!degenerate(glm::mix(d0, d1, u))) continue;
+            const double t = eye.times[k] + double(u) * (k + 1 < eye.times.size() ? eye.times[k + 1] - eye.times[k] : 0.0);
+            throw std::invalid_argument(fmt::format(
+                "--camera-keys: at t = {:.4g} s the {}", t,
+                glm::length(glm::mix(d0, d1, u)) < 1e-6f ? "eye and target coincide"
+                                                          : "view direction (target - eye) is parallel to the up vector"));
+        }
+    }
+}
+
 glm::vec3 rotateY(const glm::vec3& v, float angle) {
     const float c = std::cos(angle), s = std::sin(angle);
     return {c * v.x + s * v.z, v.y, -s * v.x + c * v.z};
@@ -118,6 +147,7 @@ SceneMotion::SceneMotion(const Scene& scene, const Camera& camera, const std::ve
         lightPaths_.push_back(std::move(path));
     }
     if (!paths.camera.empty()) parseKeys(paths.camera, "--camera-keys", camera_, &cameraTarget_);
+    if (!paths.camera.empty()) checkCameraPath(camera_, cameraTarget_, camera.up);
     const bool anyPath = !sun_.empty() || !lightPaths_.empty() || !camera_.times.empty();
     // Built-in scenes move their own light by default (never lights given with --light).
     if (paths.builtinDefault && !anyPath && !animated_ && !lights.empty() && lights[0].name == scene.lights[0].name &&

@@ -1,6 +1,8 @@
 #include "view/script.h"
 
 #include <charconv>
+#include <cmath>
+#include <type_traits>
 #include <sstream>
 #include <vector>
 
@@ -19,12 +21,27 @@ std::vector<std::string> split(const std::string& s) {
     return out;
 }
 
-// The whole word as a number, or an error naming what was expected.
+// As `render --frames` and `--time` take them: a script cannot ask for more work than the CLI can.
+constexpr int kMaxScriptFrames = 100000;
+constexpr float kMaxScriptTime = 1e6f;
+
+// The whole word as a number, or an error naming what was expected; a floating-point number must be
+// finite (from_chars reads "nan" and "inf").
 template <class T> T number(const std::string& word, const char* what) {
     T value{};
     const auto [end, ec] = std::from_chars(word.data(), word.data() + word.size(), value);
-    if (ec != std::errc() || end != word.data() + word.size())
+    bool finite = true;
+    if constexpr (std::is_floating_point_v<T>) finite = std::isfinite(value);
+    if (ec != std::errc() || end != word.data() + word.size() || !finite)
         throw std::invalid_argument(fmt::format("{}: expected {}, got '{}'", what, what, word));
+    return value;
+}
+
+// `number` within [lo, hi], or an error naming the range.
+template <class T> T numberIn(const std::string& word, const char* what, T lo, T hi) {
+    const T value = number<T>(word, what);
+    if (value < lo || value > hi)
+        throw std::invalid_argument(fmt::format("{} {} is out of range [{}, {}]", what, word, lo, hi));
     return value;
 }
 
@@ -81,7 +98,7 @@ ScriptStep Script::execute(const std::string& command, const std::string& args, 
         session.setLight(number<size_t>(words[0], "a light index"), parseLight(words[1]));
     } else if (command == "time") {
         expectWords(words, 1, "time T");
-        session.time = number<float>(words[0], "a time in seconds");
+        session.time = numberIn<float>(words[0], "a time in seconds", -kMaxScriptTime, kMaxScriptTime);
     } else if (command == "play" || command == "pause") {
         expectWords(words, 0, command.c_str());
         session.playing = command == "play";
@@ -97,8 +114,7 @@ ScriptStep Script::execute(const std::string& command, const std::string& args, 
         }
     } else if (command == "frames") {
         expectWords(words, 1, "frames N");
-        step.frames = number<int>(words[0], "a frame count");
-        if (step.frames < 0) throw std::invalid_argument("frames: the count must not be negative");
+        step.frames = numberIn<int>(words[0], "a frame count", 0, kMaxScriptFrames);
     } else if (command == "screenshot" || command == "screenshot-ui") {
         const bool ui = command == "screenshot-ui";
         return {ui ? ScriptStep::ScreenshotUi : ScriptStep::Screenshot, 0, screenshotPath(words, ui)};

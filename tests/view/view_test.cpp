@@ -171,6 +171,11 @@ TEST(ViewScript, BadLineIsOneErrorWithFileAndLine) {
         {"warp 9", "unknown command 'warp'"},
         {"set rsm-per-cascade maybe", "on or off"},
         {"probe 12", "probe X Y"},
+        {"time nan", "a time in seconds"},
+        {"time inf", "a time in seconds"},
+        {"time 1e7", "out of range"},
+        {"frames 100001", "out of range [0, 100000]"},
+        {"light 0 directional,0,-1,0,1e9,3,3,3", "65504"},
     };
     ASSERT_TRUE(haveDisplay());
     for (const auto& [line, expected] : cases) {
@@ -184,6 +189,20 @@ TEST(ViewScript, BadLineIsOneErrorWithFileAndLine) {
         EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << line << ": " << r.err;
         EXPECT_FALSE(fs::exists(dir / "x.png")) << line;
     }
+}
+
+// A screenshot the disk cannot hold stops the viewer with one error naming the file.
+TEST(ViewScript, ScreenshotToAFullDiskIsOneError) {
+    const Scratch scratch("full");
+    const fs::path& dir = scratch.dir;
+    ASSERT_TRUE(haveDisplay());
+    fs::create_symlink("/dev/full", dir / "full.png");
+    const fs::path script = dir / "full.txt";
+    std::ofstream(script) << "set width 64\nset height 48\nscreenshot " << (dir / "full.png").string() << "\n";
+    const ShellResult r = shell(viewCommand(script), dir);
+    EXPECT_NE(r.status, 0);
+    EXPECT_EQ(r.err.rfind("penumbra: error: cannot write " + (dir / "full.png").string(), 0), 0u) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
 }
 
 TEST(ViewScript, NoDisplayIsOneError) {
