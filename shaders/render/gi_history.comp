@@ -48,14 +48,14 @@ void main() {
     const float viewDepth = (frame.viewProj * vec4(p, 1.0)).w;
     vec4 result = e;
     const vec4 clip = previousClip(pixel, depth, p);
-    if (pc.params.y > 0.5 && clip.w > 0.0) {
+    if (pc.historyValid != 0u && clip.w > 0.0) {
         const vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
         const ivec2 then = ivec2(floor(uv * vec2(frame.size.xy)));
         if (all(greaterThanEqual(then, ivec2(0))) && all(lessThan(then, ivec2(frame.size.xy)))) {
             const float stored = texelFetch(historyDepth, then, 0).r;
             if (abs(stored - clip.w) <= 0.02 * clip.w) {
                 const vec4 h = historyAt(uv);
-                result = h + pc.params.x * (e - h);
+                result = h + pc.alpha * (e - h);
             }
         }
     }

@@ -30,7 +30,7 @@ void declarePreviousFrameInputs(PassBuilder& pass, uint32_t first, VkSampler nea
 void GiHistory::addTo(FrameGraph& graph, float alpha) {
     const uint32_t write = next_, read = 1 - next_;
     const ImageHandle out = graph.import(irradiance_[write]), outDepth = graph.import(depth_[write]);
-    const gpu::GiHistoryPush push{{alpha, valid_ ? 1.0f : 0.0f, 0.0f, 0.0f}};
+    const gpu::GiHistoryPush push{alpha, valid_ ? 1u : 0u, 0, 0};
     PassBuilder pass = graph.pass("gi.temporal");
     declarePreviousFrameInputs(pass, 7, nearest_.handle());
     pass.pipeline(kernel_.pipeline)
