@@ -49,7 +49,8 @@ TEST_F(DebugLabelTest, OneLabelPerFrameGraphPass) {
     EXPECT_EQ(ctx().debugUtils().unnamedObjects(), 0u) << "every image and buffer has a name";
 }
 
-// Labels and names change no result: a context that records none renders the same bytes.
+// Labels and names change no result: a context that records none renders the same bytes. (Not
+// LPV: its injection adds floats atomically, in an order lavapipe's threads vary from run to run.)
 TEST_F(DebugLabelTest, ImagesEqualWithoutTheExtension) {
     vk::ContextOptions plain;
     plain.debugLabels = false;
@@ -57,7 +58,7 @@ TEST_F(DebugLabelTest, ImagesEqualWithoutTheExtension) {
     ASSERT_FALSE(bare.debugUtils().enabled());
     const Scene scene = makeBuiltinScene("cornell");
     const Camera camera = scene.cameras[0];
-    for (GiMode gi : {GiMode::Rsm, GiMode::Lpv}) {
+    for (GiMode gi : {GiMode::None, GiMode::Rsm}) {
         std::vector<float> labelled, unlabelled;
         {
             Renderer renderer(ctx(), scene, settings(gi, ShadowFilter::Pcss));
