@@ -130,8 +130,8 @@ protected:
 // G-buffer: irradiance at x (normal n) from the summed volume, over every cascade.
 double gatherIrradiance(const VolumeRun& r, const dvec3& x, const dvec3& n, int channel = 0) {
     const gpu::LpvPush& pc = r.push;
-    const int res = int(pc.grid.x);
-    const size_t cells = size_t(res) * res * res, half = 3 * pc.grid.y * cells;
+    const int res = int(pc.resolution);
+    const size_t cells = size_t(res) * res * res, half = 3 * pc.cascadeCount * cells;
     auto at = [&](uint32_t k, size_t offset, const dvec3& p) {
         const dvec3 g = (p - dvec3(pc.cascades[k].origin)) / double(pc.cascades[k].origin.w) - 0.5;
         const glm::ivec3 base = glm::ivec3(glm::floor(g));
@@ -149,10 +149,10 @@ double gatherIrradiance(const VolumeRun& r, const dvec3& x, const dvec3& n, int 
         return std::max(e, 0.0) / (cell * cell);
     };
     double e = 0.0, finer = 0.0;
-    for (uint32_t k = 0; k < pc.grid.y; ++k) {
+    for (uint32_t k = 0; k < pc.cascadeCount; ++k) {
         const dvec3 g = (x - dvec3(pc.cascades[k].origin)) / double(pc.cascades[k].origin.w);
         const double inside = std::min({g.x, g.y, g.z, res - g.x, res - g.y, res - g.z});
-        const double weight = k + 1 == pc.grid.y ? 1.0 : std::clamp((inside - 1.0) / pc.params.y, 0.0, 1.0);
+        const double weight = k + 1 == pc.cascadeCount ? 1.0 : std::clamp((inside - 1.0) / pc.blendCells, 0.0, 1.0);
         const dvec3 p = x + double(pc.cascades[k].origin.w) * n;
         if (weight > 0.0) e += weight * ((k > 0 ? at(k, half, p) : 0.0) + (1.0 - finer) * at(k, 0, p));
         finer = weight;
@@ -455,9 +455,9 @@ TEST_F(GpuTest, LpvVoxelFacesAreTheShareOfOpenColumns) {
     };
     auto nearBoundary = [](double v) { return std::abs(v - std::round(v)) < 1e-4; };
     const gpu::LpvPush& pc = r.lpv()->constants();
-    const int res = int(pc.grid.x), n = LPV_FACE_COLUMNS;
+    const int res = int(pc.resolution), n = LPV_FACE_COLUMNS;
     size_t compared = 0, differing = 0, ambiguous = 0, blocked = 0, open = 0;
-    for (uint32_t k = 0; k < pc.grid.y; ++k) {
+    for (uint32_t k = 0; k < pc.cascadeCount; ++k) {
         const double size = pc.cascades[k].origin.w;
         for (int z = 0; z < res; ++z)
             for (int y = 0; y < res; ++y)

@@ -75,8 +75,8 @@ inline Frame readFrame(Renderer& r) {
             vpl.position = unproject(inv, (t % res + 0.5) / res, (t / res + 0.5) / res, d);
             vpl.normal = octDecode(std::max(e[0] / 32767.0, -1.0), std::max(e[1] / 32767.0, -1.0));
             vpl.flux = {half(rf, t * 4), half(rf, t * 4 + 1), half(rf, t * 4 + 2)};
-            double texel = table[layer].params.x;
-            if (table[layer].params.y > 0.5) texel *= std::abs((vp * glm::dvec4(vpl.position, 1.0)).w);
+            double texel = table[layer].texelSize;
+            if (table[layer].perspective != 0u) texel *= std::abs((vp * glm::dvec4(vpl.position, 1.0)).w);
             vpl.footprint = texel * texel;
             f.vpls.push_back(vpl);
         }

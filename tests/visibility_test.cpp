@@ -232,7 +232,7 @@ TEST_F(VisibilityTest, CornellRsmEqualsRaysFromTheLight) {
             const double cosAxis = glm::dot(-glm::normalize(toLight), dvec3(glm::normalize(light.direction)));
             const double cosOuter = std::cos(double(light.outerConeAngle)), cosInner = std::cos(double(light.innerConeAngle));
             const double cone = std::pow(std::clamp((cosAxis - cosOuter) / (cosInner - cosOuter), 0.0, 1.0), 2.0);
-            const double texel = layer.params.x;
+            const double texel = layer.texelSize;
             const double area = texel * texel * z * z * std::clamp(z / std::sqrt(d2), 0.0, 1.0);
             const dvec3 flux = dvec3(sp.albedo) * dvec3(light.color) * double(light.intensity) / d2 * cone * area;
             const dvec3 got(half(rf, t * 4), half(rf, t * 4 + 1), half(rf, t * 4 + 2));

@@ -5,17 +5,18 @@
 // across a depth discontinuity. Merged: position and normal averaged, flux and surfel area summed.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
+#include "lpv/bindings.h"
 #include "render/lights.glsl"
 #include "render/reconstruct.glsl"
 #include "shared/octahedral.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(set = 0, binding = 0) uniform sampler2DArray rsmDepth;
-layout(set = 0, binding = 1) uniform sampler2DArray rsmNormal;
-layout(set = 0, binding = 2) uniform sampler2DArray rsmFlux;
-layout(set = 0, binding = 3, std430) readonly buffer Layers { GpuRsmLayer rsmLayers[]; };
-layout(set = 0, binding = 4, std430) readonly buffer Lights { GpuLight lights[]; };
-layout(set = 0, binding = 5, std430) writeonly buffer Vpls { GpuVpl vpls[]; };
+layout(set = 0, binding = LPV_DOWNSAMPLE_RSM_DEPTH) uniform sampler2DArray rsmDepth;
+layout(set = 0, binding = LPV_DOWNSAMPLE_RSM_NORMAL) uniform sampler2DArray rsmNormal;
+layout(set = 0, binding = LPV_DOWNSAMPLE_RSM_FLUX) uniform sampler2DArray rsmFlux;
+layout(set = 0, binding = LPV_DOWNSAMPLE_LAYERS, std430) readonly buffer Layers { GpuRsmLayer rsmLayers[]; };
+layout(set = 0, binding = LPV_DOWNSAMPLE_LIGHTS, std430) readonly buffer Lights { GpuLight lights[]; };
+layout(set = 0, binding = LPV_DOWNSAMPLE_VPLS, std430) writeonly buffer Vpls { GpuVpl vpls[]; };
 layout(push_constant) uniform Push { LpvPush pc; };
 
 #include "lpv/volume.glsl"
@@ -32,15 +33,15 @@ Texel readTexel(ivec2 t, uint layer) {
     r.valid = depth < 1.0;
     if (!r.valid) return r;
     GpuRsmLayer L = rsmLayers[layer];
-    r.position = unproject(L.invViewProj, (vec2(t) + 0.5) / float(pc.counts.y), depth);
+    r.position = unproject(L.invViewProj, (vec2(t) + 0.5) / float(pc.rsmResolution), depth);
     r.normal = octDecode(texelFetch(rsmNormal, ivec3(t, layer), 0).xy);
     r.flux = texelFetch(rsmFlux, ivec3(t, layer), 0).rgb;
     vec3 l;
-    incidentIrradiance(lights[uint(L.params.z)], r.position, l);
+    incidentIrradiance(lights[L.light], r.position, l);
     float cosine = max(dot(r.normal, l), 0.0);
     // Surfel area on the surface: the texel's footprint across the light over the incidence cosine.
-    float t2 = L.params.x * L.params.x;
-    if (L.params.y > 0.5) {
+    float t2 = L.texelSize * L.texelSize;
+    if (L.perspective != 0u) {
         float z = abs((L.viewProj * vec4(r.position, 1.0)).w);
         t2 *= z * z;
     }
@@ -51,16 +52,16 @@ Texel readTexel(ivec2 t, uint layer) {
 
 // The cell of x in the finest cascade that holds it (the 26-neighbourhood test is done there).
 ivec3 finestCell(vec3 x, out uint cascade) {
-    for (cascade = 0; cascade + 1 < pc.grid.y; ++cascade)
+    for (cascade = 0; cascade + 1 < pc.cascadeCount; ++cascade)
         if (insideGrid(ivec3(floor(gridCoord(cascade, x))))) break;
     return ivec3(floor(gridCoord(cascade, x)));
 }
 
 void main() {
     uvec3 id = gl_GlobalInvocationID;
-    uint ds = pc.counts.z;
+    uint ds = pc.vplResolution;
     if (id.x >= ds || id.y >= ds) return;
-    int block = int(pc.counts.y / ds);
+    int block = int(pc.rsmResolution / ds);
     ivec2 base = ivec2(id.xy) * block;
     int brightest = -1;
     float best = -1.0;

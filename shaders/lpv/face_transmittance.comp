@@ -9,11 +9,12 @@
 // leaves a cell's light that runs beside it alone.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
+#include "lpv/bindings.h"
 
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
-#define OCCUPANCY_BINDING 0
+#define OCCUPANCY_BINDING LPV_FACES_OCCUPANCY
 #include "voxel/occupancy.glsl"
-layout(set = 0, binding = 1, std430) writeonly buffer Faces { vec4 faces[]; };
+layout(set = 0, binding = LPV_FACES_OUT, std430) writeonly buffer Faces { vec4 faces[]; };
 layout(push_constant) uniform Push { LpvPush pc; };
 
 #include "lpv/volume.glsl"
@@ -30,9 +31,9 @@ bool columnBlocked(vec3 from, int axis, float length) {
 }
 
 void main() {
-    ivec3 cell = ivec3(gl_GlobalInvocationID.x, gl_GlobalInvocationID.y, gl_GlobalInvocationID.z % pc.grid.x);
-    uint cascade = gl_GlobalInvocationID.z / pc.grid.x;
-    if (any(greaterThanEqual(cell, ivec3(pc.grid.x))) || cascade >= pc.grid.y) return;
+    ivec3 cell = ivec3(gl_GlobalInvocationID.x, gl_GlobalInvocationID.y, gl_GlobalInvocationID.z % pc.resolution);
+    uint cascade = gl_GlobalInvocationID.z / pc.resolution;
+    if (any(greaterThanEqual(cell, ivec3(pc.resolution))) || cascade >= pc.cascadeCount) return;
     const float size = pc.cascades[cascade].origin.w;
     const vec3 centre = pc.cascades[cascade].origin.xyz + (vec3(cell) + 0.5) * size;
     vec4 open = vec4(1.0);

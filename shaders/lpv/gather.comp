@@ -8,15 +8,16 @@
 // Debug modes show a volume slice.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
+#include "lpv/bindings.h"
 #include "render/reconstruct.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(set = 0, binding = 0) uniform Frame { FrameUniforms frame; };
-layout(set = 0, binding = 1) uniform sampler2D gNormal;
-layout(set = 0, binding = 2) uniform sampler2D gDepth;
-layout(set = 0, binding = 3, std430) readonly buffer Accumulated { vec4 accum[]; };
-layout(set = 0, binding = 4, std430) readonly buffer GeometryVolume { vec4 geometry[]; };
-layout(set = 0, binding = 5, rgba32f) uniform writeonly image2D outIrradiance;
+layout(set = 0, binding = LPV_GATHER_FRAME) uniform Frame { FrameUniforms frame; };
+layout(set = 0, binding = LPV_GATHER_GBUFFER_NORMAL) uniform sampler2D gNormal;
+layout(set = 0, binding = LPV_GATHER_GBUFFER_DEPTH) uniform sampler2D gDepth;
+layout(set = 0, binding = LPV_GATHER_SUM, std430) readonly buffer Accumulated { vec4 accum[]; };
+layout(set = 0, binding = LPV_GATHER_GEOMETRY, std430) readonly buffer GeometryVolume { vec4 geometry[]; };
+layout(set = 0, binding = LPV_GATHER_IRRADIANCE, rgba32f) uniform writeonly image2D outIrradiance;
 layout(push_constant) uniform Push { LpvPush pc; };
 
 #include "lpv/sh.glsl"
@@ -24,7 +25,7 @@ layout(push_constant) uniform Push { LpvPush pc; };
 
 // `half_` 0: the near half of the running sum (every step of cascade 0), 1: the far half (lpv.h).
 vec3 irradianceIn(uint k, uint half_, vec3 x, vec3 n, bool hair) {
-    uint offset = half_ * 3u * pc.grid.y * cellsPerVolume();
+    uint offset = half_ * 3u * pc.cascadeCount * cellsPerVolume();
     vec3 g = gridCoord(k, x) - 0.5;
     ivec3 base = ivec3(floor(g));
     vec3 f = g - vec3(base);
@@ -32,7 +33,7 @@ vec3 irradianceIn(uint k, uint half_, vec3 x, vec3 n, bool hair) {
     vec3 e = vec3(0.0);
     for (int i = 0; i < 8; ++i) {
         ivec3 o = ivec3(i & 1, (i >> 1) & 1, i >> 2);
-        ivec3 c = clamp(base + o, ivec3(0), ivec3(pc.grid.x) - 1);
+        ivec3 c = clamp(base + o, ivec3(0), ivec3(pc.resolution) - 1);
         vec3 w3 = mix(1.0 - f, f, vec3(o));
         float w = w3.x * w3.y * w3.z;
         for (uint ch = 0; ch < 3u; ++ch) e[ch] += w * dot(accum[offset + lightIndex(k, ch, c)], lobe);
@@ -44,8 +45,8 @@ vec3 irradianceIn(uint k, uint half_, vec3 x, vec3 n, bool hair) {
 // 1 deep inside cascade k, falling to 0 over the last `band` cells before its border.
 float insideWeight(uint k, vec3 x) {
     vec3 g = gridCoord(k, x);
-    float inside = min(min(g.x, min(g.y, g.z)), float(pc.grid.x) - max(g.x, max(g.y, g.z)));
-    return clamp((inside - 1.0) / pc.params.y, 0.0, 1.0);
+    float inside = min(min(g.x, min(g.y, g.z)), float(pc.resolution) - max(g.x, max(g.y, g.z)));
+    return clamp((inside - 1.0) / pc.blendCells, 0.0, 1.0);
 }
 
 // Cascades add up: each coarser one carries only the light that has gone beyond the reach of the
@@ -55,8 +56,8 @@ float insideWeight(uint k, vec3 x) {
 vec3 lpvIrradiance(vec3 x, vec3 n, bool hair) {
     vec3 e = vec3(0.0);
     float finer = 0.0;  // how much the next finer cascade holds x
-    for (uint k = 0; k < pc.grid.y; ++k) {
-        float inside = k + 1u == pc.grid.y ? 1.0 : insideWeight(k, x);
+    for (uint k = 0; k < pc.cascadeCount; ++k) {
+        float inside = k + 1u == pc.cascadeCount ? 1.0 : insideWeight(k, x);
         vec3 p = hair ? x : x + pc.cascades[k].origin.w * n;
         if (k > 0u && inside > 0.0) e += inside * irradianceIn(k, 1u, p, n, hair);
         if (finer < 1.0 && inside > 0.0) e += inside * (1.0 - finer) * irradianceIn(k, 0u, p, n, hair);
@@ -68,11 +69,11 @@ vec3 lpvIrradiance(vec3 x, vec3 n, bool hair) {
 // Debug slice of cascade 0: the image spans the slice; light shows mean intensity, geometry the
 // peak blocking.
 vec3 slice(ivec2 pixel) {
-    uint axis = pc.grid.z;
+    uint axis = pc.sliceAxis;
     vec2 uv = (vec2(pixel) + 0.5) / vec2(frame.size.xy);
-    ivec2 p = ivec2(uv * float(pc.grid.x));
-    ivec3 c = axis == 0u ? ivec3(pc.grid.w, p.x, p.y) : axis == 1u ? ivec3(p.x, pc.grid.w, p.y)
-                                                                    : ivec3(p.x, p.y, pc.grid.w);
+    ivec2 p = ivec2(uv * float(pc.resolution));
+    ivec3 c = axis == 0u ? ivec3(pc.sliceIndex, p.x, p.y) : axis == 1u ? ivec3(p.x, pc.sliceIndex, p.y)
+                                                                    : ivec3(p.x, p.y, pc.sliceIndex);
     if (frame.size.w == AOV_GV_SLICE) return vec3(geometry[geometryIndex(0u, c)].x * SH_C0 * LOBE_PEAK / (LOBE_C0 * SH_C0));
     return vec3(accum[lightIndex(0u, 0u, c)].x, accum[lightIndex(0u, 1u, c)].x, accum[lightIndex(0u, 2u, c)].x) * SH_C0;
 }

@@ -15,11 +15,12 @@
 #extension GL_KHR_shader_subgroup_ballot : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
 #include "shared/types.h"
+#include "lpv/bindings.h"
 
 layout(local_size_x = 64) in;
-layout(set = 0, binding = 0, std430) readonly buffer Vpls { GpuVpl vpls[]; };
-layout(set = 0, binding = 1, std430) buffer LightVolume { float lightCoeffs[]; };
-layout(set = 0, binding = 2, std430) buffer GeometryVolume { float geometryCoeffs[]; };
+layout(set = 0, binding = LPV_INJECT_VPLS, std430) readonly buffer Vpls { GpuVpl vpls[]; };
+layout(set = 0, binding = LPV_INJECT_LIGHT, std430) buffer LightVolume { float lightCoeffs[]; };
+layout(set = 0, binding = LPV_INJECT_GEOMETRY, std430) buffer GeometryVolume { float geometryCoeffs[]; };
 layout(push_constant) uniform Push { LpvPush pc; };
 
 #include "lpv/sh.glsl"
@@ -30,12 +31,12 @@ const float PI = 3.14159265358979;
 
 void main() {
     uint i = gl_GlobalInvocationID.x;
-    if (i >= pc.counts.x) return;
+    if (i >= pc.vplCount) return;
     GpuVpl v = vpls[i];
     if (v.position.w < 0.5) return;
     vec3 n = v.normal.xyz;
     vec4 lobe = cosineLobe(n);
-    for (uint k = 0; k < pc.grid.y; ++k) {
+    for (uint k = 0; k < pc.cascadeCount; ++k) {
         float cell = pc.cascades[k].origin.w;
         ivec3 c = ivec3(floor(gridCoord(k, v.position.xyz + 0.5 * cell * n)));
         if (insideGrid(c)) {
@@ -46,7 +47,7 @@ void main() {
             }
         }
         ivec3 g = ivec3(floor(gridCoord(k, v.position.xyz) + 0.5));  // nearest cell corner
-        if (insideGrid(g) && pc.params.w < 0.5) {  // the occupancy volume's faces block instead (--lpv-geometry voxels)
+        if (insideGrid(g) && pc.voxelFaces == 0u) {  // the occupancy volume's faces block instead (--lpv-geometry voxels)
             vec4 blocking = lobe * (min(v.normal.w / (cell * cell), 1.0) / LOBE_PEAK);
             uint base = geometryIndex(k, g) * 4u;
             ADD_COEFFS(geometryCoeffs, base, blocking)

@@ -8,13 +8,14 @@
 #extension GL_KHR_shader_subgroup_ballot : require
 #extension GL_KHR_shader_subgroup_arithmetic : require
 #include "shared/types.h"
+#include "lpv/bindings.h"
 #include "render/reconstruct.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(set = 0, binding = 0) uniform Frame { FrameUniforms frame; };
-layout(set = 0, binding = 1) uniform sampler2D gNormal;
-layout(set = 0, binding = 2) uniform sampler2D gDepth;
-layout(set = 0, binding = 3, std430) buffer GeometryVolume { float geometryCoeffs[]; };
+layout(set = 0, binding = LPV_CAMERA_FRAME) uniform Frame { FrameUniforms frame; };
+layout(set = 0, binding = LPV_CAMERA_GBUFFER_NORMAL) uniform sampler2D gNormal;
+layout(set = 0, binding = LPV_CAMERA_GBUFFER_DEPTH) uniform sampler2D gDepth;
+layout(set = 0, binding = LPV_CAMERA_GEOMETRY, std430) buffer GeometryVolume { float geometryCoeffs[]; };
 layout(push_constant) uniform Push { LpvPush pc; };
 
 #include "lpv/sh.glsl"
@@ -22,7 +23,7 @@ layout(push_constant) uniform Push { LpvPush pc; };
 #include "lpv/subgroup_add.glsl"
 
 void main() {
-    int step = int(pc.params.z);
+    int step = int(pc.cameraGeometryStep);
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy) * step + step / 2;
     if (any(greaterThanEqual(pixel, ivec2(frame.size.xy)))) return;
     float depth = texelFetch(gDepth, pixel, 0).r;
@@ -39,7 +40,7 @@ void main() {
     float side = dist * frame.lens.x * float(step);
     float area = side * side / max(dot(n, toEye / dist), 0.2);
     vec4 lobe = cosineLobe(n) / LOBE_PEAK;
-    for (uint k = 0; k < pc.grid.y; ++k) {
+    for (uint k = 0; k < pc.cascadeCount; ++k) {
         float cell = pc.cascades[k].origin.w;
         ivec3 g = ivec3(floor(gridCoord(k, x) + 0.5));
         if (!insideGrid(g)) continue;

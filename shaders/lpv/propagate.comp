@@ -6,7 +6,7 @@
 // (skipped on the first step, where the light would block itself), or (--lpv-geometry voxels) by the
 // share of the face that the occupancy volume leaves open (lpv/face_transmittance.comp), every step. Output: this step's light, and
 // the running sum in two halves: near (and every step of cascade 0) and far (the steps of a coarser
-// cascade from pc.grid.w on, the light that has left the finer cascade's reach; lpv.h).
+// cascade from pc.farFromIteration on, the light that has left the finer cascade's reach; lpv.h).
 //
 // Unlike the paper, the flux through a face goes on in the direction it travelled (from the
 // neighbour's centre to the face) and is re-emitted as the L1 projection of that direction, not as a
@@ -15,13 +15,14 @@
 // reaches about 4 cells; README "LPV: where the light goes").
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
+#include "lpv/bindings.h"
 
 layout(local_size_x = 4, local_size_y = 4, local_size_z = 4) in;
-layout(set = 0, binding = 0, std430) readonly buffer Source { vec4 src[]; };
-layout(set = 0, binding = 1, std430) writeonly buffer Destination { vec4 dst[]; };
-layout(set = 0, binding = 2, std430) buffer Accumulated { vec4 accum[]; };
-layout(set = 0, binding = 3, std430) readonly buffer GeometryVolume { vec4 geometry[]; };
-layout(set = 0, binding = 4, std430) readonly buffer Faces { vec4 faces[]; };  // --lpv-geometry voxels
+layout(set = 0, binding = LPV_PROPAGATE_SOURCE, std430) readonly buffer Source { vec4 src[]; };
+layout(set = 0, binding = LPV_PROPAGATE_DESTINATION, std430) writeonly buffer Destination { vec4 dst[]; };
+layout(set = 0, binding = LPV_PROPAGATE_SUM, std430) buffer Accumulated { vec4 accum[]; };
+layout(set = 0, binding = LPV_PROPAGATE_GEOMETRY, std430) readonly buffer GeometryVolume { vec4 geometry[]; };
+layout(set = 0, binding = LPV_PROPAGATE_FACES, std430) readonly buffer Faces { vec4 faces[]; };  // --lpv-geometry voxels
 layout(push_constant) uniform Push { LpvPush pc; };
 
 #include "lpv/sh.glsl"
@@ -79,13 +80,13 @@ float outflowScale(vec4 intensity) {
 }
 
 void main() {
-    ivec3 cell = ivec3(gl_GlobalInvocationID.x, gl_GlobalInvocationID.y, gl_GlobalInvocationID.z % pc.grid.x);
-    uint cascade = gl_GlobalInvocationID.z / pc.grid.x;
-    if (any(greaterThanEqual(cell, ivec3(pc.grid.x))) || cascade >= pc.grid.y) return;
-    const bool first = pc.grid.z == 0u;
-    const bool far = cascade > 0u && pc.grid.z + 1u >= pc.grid.w;
-    const bool voxelFaces = pc.params.x > 0.5 && pc.params.w > 0.5;
-    const bool occlusion = pc.params.x > 0.5 && !first && !voxelFaces;
+    ivec3 cell = ivec3(gl_GlobalInvocationID.x, gl_GlobalInvocationID.y, gl_GlobalInvocationID.z % pc.resolution);
+    uint cascade = gl_GlobalInvocationID.z / pc.resolution;
+    if (any(greaterThanEqual(cell, ivec3(pc.resolution))) || cascade >= pc.cascadeCount) return;
+    const bool first = pc.iteration == 0u;
+    const bool far = cascade > 0u && pc.iteration + 1u >= pc.farFromIteration;
+    const bool voxelFaces = pc.occlusion != 0u && pc.voxelFaces != 0u;
+    const bool occlusion = pc.occlusion != 0u && !first && !voxelFaces;
     vec4 result[3] = vec4[](vec4(0.0), vec4(0.0), vec4(0.0));
     for (int a = 0; a < 6; ++a) {
         ivec3 d = AXES[a];  // direction of travel: from the neighbour into this cell
@@ -118,7 +119,7 @@ void main() {
         dst[i] = result[ch];
         if (far) {
             if (first) accum[i] = src[i];
-            uint f = i + 3u * pc.grid.y * cellsPerVolume();
+            uint f = i + 3u * pc.cascadeCount * cellsPerVolume();
             accum[f] += result[ch];
         } else {
             accum[i] = (first ? src[i] : accum[i]) + result[ch];

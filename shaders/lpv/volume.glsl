@@ -1,9 +1,9 @@
 // Cascaded volume addressing (layouts in shared/types.h, LPV section). Needs `pc` (LpvPush).
-uint cellsPerVolume() { return pc.grid.x * pc.grid.x * pc.grid.x; }
+uint cellsPerVolume() { return pc.resolution * pc.resolution * pc.resolution; }
 
-bool insideGrid(ivec3 c) { return all(greaterThanEqual(c, ivec3(0))) && all(lessThan(c, ivec3(pc.grid.x))); }
+bool insideGrid(ivec3 c) { return all(greaterThanEqual(c, ivec3(0))) && all(lessThan(c, ivec3(pc.resolution))); }
 
-uint cellIndex(ivec3 c) { return (uint(c.z) * pc.grid.x + uint(c.y)) * pc.grid.x + uint(c.x); }
+uint cellIndex(ivec3 c) { return (uint(c.z) * pc.resolution + uint(c.y)) * pc.resolution + uint(c.x); }
 
 uint lightIndex(uint cascade, uint channel, ivec3 c) {
     return (cascade * 3u + channel) * cellsPerVolume() + cellIndex(c);

@@ -3,11 +3,12 @@
 // of the source, letterboxed as a square into the output image before tone mapping.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
+#include "render/lighting_bindings.h"
 #include "shared/octahedral.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(set = 0, binding = 0) uniform sampler2DArray source;
-layout(set = 0, binding = 1, rgba32f) uniform writeonly image2D outImage;
+layout(set = 0, binding = DEBUG_VIEW_SOURCE) uniform sampler2DArray source;
+layout(set = 0, binding = DEBUG_VIEW_OUT, rgba32f) uniform writeonly image2D outImage;
 layout(push_constant) uniform Push { DebugViewPush pc; };
 
 void main() {

@@ -6,18 +6,19 @@
 // stored with the history differs from the point's by more than 2%.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
+#include "render/gi_history_bindings.h"
 #include "render/reconstruct.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(set = 0, binding = 0) uniform Frame { FrameUniforms frame; };
-layout(set = 0, binding = 1) uniform sampler2D current;        // gi.irradiance of this frame
-layout(set = 0, binding = 2) uniform sampler2D gDepth;
-layout(set = 0, binding = 3) uniform sampler2D history;
-layout(set = 0, binding = 4) uniform sampler2D historyDepth;   // view depth of each history pixel
-layout(set = 0, binding = 5, rgba16f) uniform writeonly image2D outHistory;
-layout(set = 0, binding = 6, r32f) uniform writeonly image2D outDepth;
+layout(set = 0, binding = GI_HISTORY_FRAME) uniform Frame { FrameUniforms frame; };
+layout(set = 0, binding = GI_HISTORY_CURRENT) uniform sampler2D current;        // gi.irradiance of this frame
+layout(set = 0, binding = GI_HISTORY_GBUFFER_DEPTH) uniform sampler2D gDepth;
+layout(set = 0, binding = GI_HISTORY_HISTORY) uniform sampler2D history;
+layout(set = 0, binding = GI_HISTORY_HISTORY_DEPTH) uniform sampler2D historyDepth;   // view depth of each history pixel
+layout(set = 0, binding = GI_HISTORY_OUT, rgba16f) uniform writeonly image2D outHistory;
+layout(set = 0, binding = GI_HISTORY_OUT_DEPTH, r32f) uniform writeonly image2D outDepth;
 layout(push_constant) uniform Push { GiHistoryPush pc; };
-#define MOTION_FIRST_BINDING 7
+#define MOTION_FIRST_BINDING GI_HISTORY_MOTION_FIRST
 #include "render/motion.glsl"
 
 // Bilinear in float weights (a sampler's filter may round them to a few bits: a point reprojected onto
@@ -48,14 +49,14 @@ void main() {
     const float viewDepth = (frame.viewProj * vec4(p, 1.0)).w;
     vec4 result = e;
     const vec4 clip = previousClip(pixel, depth, p);
-    if (pc.params.y > 0.5 && clip.w > 0.0) {
+    if (pc.historyValid != 0u && clip.w > 0.0) {
         const vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
         const ivec2 then = ivec2(floor(uv * vec2(frame.size.xy)));
         if (all(greaterThanEqual(then, ivec2(0))) && all(lessThan(then, ivec2(frame.size.xy)))) {
             const float stored = texelFetch(historyDepth, then, 0).r;
             if (abs(stored - clip.w) <= 0.02 * clip.w) {
                 const vec4 h = historyAt(uv);
-                result = h + pc.params.x * (e - h);
+                result = h + pc.alpha * (e - h);
             }
         }
     }

@@ -4,22 +4,23 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
 #include "shared/types.h"
+#include "render/lighting_bindings.h"
 #include "render/lights.glsl"
 #include "render/reconstruct.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(set = 0, binding = 0) uniform Frame { FrameUniforms frame; };
-layout(set = 0, binding = 1, std430) readonly buffer Lights { GpuLight lights[]; };
-layout(set = 0, binding = 2) uniform sampler2D gAlbedo;
-layout(set = 0, binding = 3) uniform sampler2D gNormal;
-layout(set = 0, binding = 4) uniform sampler2D gDepth;
-layout(set = 0, binding = 5) uniform sampler2DArray shadowMask;  // shadow.filter: visibility per shadowed light
-layout(set = 0, binding = 6, rgba32f) uniform writeonly image2D outImage;
-layout(set = 0, binding = 7) uniform sampler2D indirectIrradiance;  // GI (frame.options.x != 0)
-layout(set = 0, binding = 12, std430) writeonly buffer Probe { PixelProbe probe; };  // pixel options.zw
+layout(set = 0, binding = LIGHTING_FRAME) uniform Frame { FrameUniforms frame; };
+layout(set = 0, binding = LIGHTING_LIGHTS, std430) readonly buffer Lights { GpuLight lights[]; };
+layout(set = 0, binding = LIGHTING_GBUFFER_ALBEDO) uniform sampler2D gAlbedo;
+layout(set = 0, binding = LIGHTING_GBUFFER_NORMAL) uniform sampler2D gNormal;
+layout(set = 0, binding = LIGHTING_GBUFFER_DEPTH) uniform sampler2D gDepth;
+layout(set = 0, binding = LIGHTING_SHADOW_MASK) uniform sampler2DArray shadowMask;  // shadow.filter: visibility per shadowed light
+layout(set = 0, binding = LIGHTING_HDR, rgba32f) uniform writeonly image2D outImage;
+layout(set = 0, binding = LIGHTING_INDIRECT) uniform sampler2D indirectIrradiance;  // GI (frame.options.x != 0)
+layout(set = 0, binding = LIGHTING_PROBE, std430) writeonly buffer Probe { PixelProbe probe; };  // pixel options.zw
 // Velocity: which instance a pixel shows (visibility IDs, frame.options.y) and where it was.
-#define MOTION_FIRST_BINDING 13
+#define MOTION_FIRST_BINDING LIGHTING_MOTION_FIRST
 #include "render/motion.glsl"
 
 #include "shadow/shadow_lookup.glsl"

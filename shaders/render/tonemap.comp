@@ -3,10 +3,11 @@
 // f(x) = x(2.51x + 0.03) / (x(2.43x + 0.59) + 0.14), clamped to [0,1], then the sRGB transfer curve.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
+#include "render/lighting_bindings.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(set = 0, binding = 0, rgba32f) uniform readonly image2D hdrImage;
-layout(set = 0, binding = 1, rgba8) uniform writeonly image2D ldrImage;
+layout(set = 0, binding = TONEMAP_HDR, rgba32f) uniform readonly image2D hdrImage;
+layout(set = 0, binding = TONEMAP_LDR, rgba8) uniform writeonly image2D ldrImage;
 layout(push_constant) uniform Push { TonemapPush pc; };
 
 vec3 acesFit(vec3 x) {
@@ -22,9 +23,9 @@ void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(pixel, imageSize(ldrImage)))) return;
     vec3 c = imageLoad(hdrImage, pixel).rgb;
-    int mode = int(pc.params.z);
-    if (mode == TONEMAP_ACES) c = srgbEncode(acesFit(c * pc.params.x));
+    uint mode = pc.mode;
+    if (mode == TONEMAP_ACES) c = srgbEncode(acesFit(c * pc.scale));
     else if (mode == TONEMAP_SRGB) c = srgbEncode(c);
-    else c = clamp(c * pc.params.x + pc.params.y, 0.0, 1.0);
+    else c = clamp(c * pc.scale + pc.bias, 0.0, 1.0);
     imageStore(ldrImage, pixel, vec4(c, 1.0));
 }

@@ -5,14 +5,15 @@
 // interpolated world normal (w = SHADING_SURFACE). No ID: zeros, as the raster path clears.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
+#include "render/gbuffer_bindings.h"
 #include "render/material.glsl"
 #include "render/visibility.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(set = 0, binding = 3) uniform Frame { FrameUniforms frame; };
-layout(set = 0, binding = 5) uniform usampler2D ids;
-layout(set = 0, binding = 6, rgba16f) uniform writeonly image2D outAlbedo;
-layout(set = 0, binding = 7, rgba16f) uniform writeonly image2D outNormal;
+layout(set = 0, binding = VISIBILITY_RESOLVE_FRAME) uniform Frame { FrameUniforms frame; };
+layout(set = 0, binding = VISIBILITY_RESOLVE_IDS) uniform usampler2D ids;
+layout(set = 0, binding = VISIBILITY_RESOLVE_ALBEDO, rgba16f) uniform writeonly image2D outAlbedo;
+layout(set = 0, binding = VISIBILITY_RESOLVE_NORMAL, rgba16f) uniform writeonly image2D outNormal;
 layout(push_constant) uniform Push { VisibilityResolvePush pc; };
 
 void main() {

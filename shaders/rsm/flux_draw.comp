@@ -5,13 +5,14 @@
 // texel's packed VPL, so that the gather reads it without first reading where it is.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
+#include "rsm/bindings.h"
 
 layout(local_size_x = 256) in;
 
-layout(set = 0, binding = 0) uniform usampler2DArray rsmVpls;
-layout(set = 0, binding = 1, std430) readonly buffer Sums { float sums[]; };
-layout(set = 0, binding = 2, std430) writeonly buffer Draws { uint words[]; } draws;  // shared/types.h, 4 words per uvec4
-layout(push_constant) uniform Push { uvec4 sizes; } pc;  // x = RSM resolution, y = layers, z = n, w = seed
+layout(set = 0, binding = RSM_FLUX_VPLS) uniform usampler2DArray rsmVpls;
+layout(set = 0, binding = RSM_FLUX_SUMS, std430) readonly buffer Sums { float sums[]; };
+layout(set = 0, binding = RSM_FLUX_DRAWS, std430) writeonly buffer Draws { uint words[]; } draws;  // shared/types.h, 4 words per uvec4
+layout(push_constant) uniform Push { RsmFluxPush pc; };
 
 #include "rsm/flux_luminance.glsl"
 #include "shared/hash.glsl"
@@ -28,20 +29,20 @@ uint firstAbove(uint first, uint count, float target) {
 }
 
 void main() {
-    const uint j = gl_GlobalInvocationID.x, layer = gl_WorkGroupID.y, n = pc.sizes.z;
+    const uint j = gl_GlobalInvocationID.x, layer = gl_WorkGroupID.y, n = pc.curve;
     if (j >= RSM_FLUX_ENTRIES) return;
-    const uint runs = pc.sizes.y * n * n + layer * n;  // running sums of the runs' totals
+    const uint runs = pc.layerCount * n * n + layer * n;  // running sums of the runs' totals
     const float total = sums[runs + n - 1u];
     const uint block = layer * RSM_FLUX_BLOCK;
     if (j == 0u) draws.words[4u * block] = floatBitsToUint(total);
-    const float jitter = float(hashMix(j ^ hashMix(pc.sizes.w + 0x9e3779b9u)) >> 8) * (1.0 / 16777216.0);
+    const float jitter = float(hashMix(j ^ hashMix(pc.seed + 0x9e3779b9u)) >> 8) * (1.0 / 16777216.0);
     // Targets are kept below each total: rounding must not carry one past the last lit texel.
     const float below = 1.0 - 1.0 / 1048576.0;
     const float target = min((float(j) + jitter) / float(RSM_FLUX_ENTRIES), below) * total;
     const uint run = firstAbove(runs, n, target), first = (layer * n + run) * n;
     const float before = run > 0u ? sums[runs + run - 1u] : 0.0;
     const uint i = firstAbove(first, n, min(target - before, below * sums[first + n - 1u]));
-    const uvec2 t = min(hilbertTexel(n, run * n + i), uvec2(pc.sizes.x - 1u));
+    const uvec2 t = min(hilbertTexel(n, run * n + i), uvec2(pc.rsmResolution - 1u));
     const uvec4 vpl = texelFetch(rsmVpls, ivec3(t, layer), 0);
     const uint at = 4u * (block + 2u + 2u * j);
     draws.words[at] = vpl.x;

@@ -5,13 +5,14 @@
 // runs' totals become running sums in place, the last of them the layer's total.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
+#include "rsm/bindings.h"
 
 layout(local_size_x = 256) in;
 
-layout(set = 0, binding = 0) uniform usampler2DArray rsmVpls;
+layout(set = 0, binding = RSM_FLUX_VPLS) uniform usampler2DArray rsmVpls;
 // [layer][run][i]: inclusive sums along each run; then [layer][run]: the runs' totals, then sums.
-layout(set = 0, binding = 1, std430) buffer Sums { float sums[]; };
-layout(push_constant) uniform Push { uvec4 sizes; } pc;  // x = RSM resolution, y = layers, z = n, w = step
+layout(set = 0, binding = RSM_FLUX_SUMS, std430) buffer Sums { float sums[]; };
+layout(push_constant) uniform Push { RsmFluxPush pc; };
 
 #include "rsm/flux_luminance.glsl"
 
@@ -35,17 +36,17 @@ float workgroupScan(float value, out float total) {
 }
 
 float value(uint i) {
-    const uint res = pc.sizes.x, n = pc.sizes.z;
-    if (pc.sizes.w == 1u) return sums[pc.sizes.y * n * n + gl_WorkGroupID.x * n + i];
+    const uint res = pc.rsmResolution, n = pc.curve;
+    if (pc.step == 1u) return sums[pc.layerCount * n * n + gl_WorkGroupID.x * n + i];
     const uvec2 t = hilbertTexel(n, gl_WorkGroupID.x * n + i);
     if (any(greaterThanEqual(t, uvec2(res)))) return 0.0;
     return packedFluxLuminance(texelFetch(rsmVpls, ivec3(t, gl_WorkGroupID.y), 0));
 }
 
 void main() {
-    const uint n = pc.sizes.z, layer = pc.sizes.w == 1u ? gl_WorkGroupID.x : gl_WorkGroupID.y;
-    const uint totals = pc.sizes.y * n * n + layer * n;
-    const uint out0 = pc.sizes.w == 1u ? totals : (layer * n + gl_WorkGroupID.x) * n;
+    const uint n = pc.curve, layer = pc.step == 1u ? gl_WorkGroupID.x : gl_WorkGroupID.y;
+    const uint totals = pc.layerCount * n * n + layer * n;
+    const uint out0 = pc.step == 1u ? totals : (layer * n + gl_WorkGroupID.x) * n;
     float carry = 0.0;
     for (uint i0 = 0u; i0 < n; i0 += 256u) {
         const uint i = i0 + gl_LocalInvocationID.x;
@@ -56,5 +57,5 @@ void main() {
         if (i < n) sums[out0 + i] = sum;
         carry += total;
     }
-    if (pc.sizes.w == 0u && gl_LocalInvocationID.x == 0u) sums[totals + gl_WorkGroupID.x] = carry;
+    if (pc.step == 0u && gl_LocalInvocationID.x == 0u) sums[totals + gl_WorkGroupID.x] = carry;
 }

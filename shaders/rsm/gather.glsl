@@ -7,30 +7,31 @@
 // gather_shifted.comp (RSM_SHIFTED_RADII: every other choice, told by the push constants) and
 // gather_voxels.comp (that and RSM_VOXEL_VISIBILITY).
 #include "shared/types.h"
+#include "rsm/bindings.h"
 #include "render/lights.glsl"
 #include "render/reconstruct.glsl"
 #include "shared/hash.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(set = 0, binding = 0) uniform Frame { FrameUniforms frame; };
-layout(set = 0, binding = 1) uniform sampler2D gNormal;
-layout(set = 0, binding = 2) uniform sampler2D gDepth;
-layout(set = 0, binding = 3) uniform sampler2DArray rsmDepth;
-layout(set = 0, binding = 4) uniform sampler2DArray rsmNormal;
-layout(set = 0, binding = 5) uniform sampler2DArray rsmFlux;
-layout(set = 0, binding = 6, std430) readonly buffer Layers { GpuRsmLayer rsmLayers[]; };
-layout(set = 0, binding = 7, std430) readonly buffer Samples { vec4 samples[]; };  // two per sample (rsm_gather.cpp)
-layout(set = 0, binding = 8, rgba32f) uniform writeonly image2D outIrradiance;
-layout(set = 0, binding = 9, std430) readonly buffer PixelList { uvec4 header; uvec2 pixels[]; } list;
-layout(set = 0, binding = 11) uniform usampler2DArray rsmVpls;  // depth, normal and flux in one texel
-layout(set = 0, binding = 12, std430) readonly buffer FluxDrawBuffer { uvec4 blocks[]; } drawn;  // shared/types.h
+layout(set = 0, binding = RSM_GATHER_FRAME) uniform Frame { FrameUniforms frame; };
+layout(set = 0, binding = RSM_GATHER_GBUFFER_NORMAL) uniform sampler2D gNormal;
+layout(set = 0, binding = RSM_GATHER_GBUFFER_DEPTH) uniform sampler2D gDepth;
+layout(set = 0, binding = RSM_GATHER_RSM_DEPTH) uniform sampler2DArray rsmDepth;
+layout(set = 0, binding = RSM_GATHER_RSM_NORMAL) uniform sampler2DArray rsmNormal;
+layout(set = 0, binding = RSM_GATHER_RSM_FLUX) uniform sampler2DArray rsmFlux;
+layout(set = 0, binding = RSM_GATHER_LAYERS, std430) readonly buffer Layers { GpuRsmLayer rsmLayers[]; };
+layout(set = 0, binding = RSM_GATHER_SAMPLES, std430) readonly buffer Samples { vec4 samples[]; };  // two per sample (rsm_gather.cpp)
+layout(set = 0, binding = RSM_GATHER_IRRADIANCE, rgba32f) uniform writeonly image2D outIrradiance;
+layout(set = 0, binding = RSM_GATHER_PIXEL_LIST, std430) readonly buffer PixelList { uvec4 header; uvec2 pixels[]; } list;
+layout(set = 0, binding = RSM_GATHER_VPLS) uniform usampler2DArray rsmVpls;  // depth, normal and flux in one texel
+layout(set = 0, binding = RSM_GATHER_FLUX_DRAWS, std430) readonly buffer FluxDrawBuffer { uvec4 blocks[]; } drawn;  // shared/types.h
 layout(push_constant) uniform Push { RsmPush pc; };
 
 #include "rsm/vpl.glsl"
 #include "rsm/flux_luminance.glsl"
 #ifdef RSM_VOXEL_VISIBILITY
-#define OCCUPANCY_BINDING 10
+#define OCCUPANCY_BINDING RSM_GATHER_OCCUPANCY
 #include "voxel/occupancy.glsl"
 #endif
 
@@ -42,10 +43,10 @@ layout(push_constant) uniform Push { RsmPush pc; };
 // frustum's border, and the weights scale with the disc's area, so the estimate keeps converging to
 // the sum over its disc. `clip`: x in the layer's clip space.
 float samplingDisc(GpuRsmLayer layer, vec4 clip, out vec2 st) {
-    const float rMax = pc.params.z, whole = max(rMax, 0.70710678);
+    const float rMax = pc.radius, whole = max(rMax, 0.70710678);
     float outside;
     vec2 border;
-    if (layer.params.y > 0.5) {
+    if (layer.perspective != 0u) {
         float m = max(abs(clip.x), abs(clip.y));
         float angle = atan(m, clip.w);  // 0 on the axis, pi/4 at the map's border, pi straight behind
         if (angle <= 0.78539816) {
@@ -79,8 +80,8 @@ struct ReceiverPattern {
 };
 
 ReceiverPattern receiverPattern(GpuRsmLayer L, vec3 x, vec4 clip) {
-    float texel = L.params.x;
-    if (L.params.y > 0.5) texel *= max(abs(clip.w), 1e-3);
+    float texel = L.texelSize;
+    if (L.perspective != 0u) texel *= max(abs(clip.w), 1e-3);
     ReceiverPattern p;
     const uint seed = hash3(uvec3(ivec3(floor(x / texel))));
     const float angle = float(seed) * (6.28318531 / 4294967296.0), c = cos(angle), s = sin(angle);
@@ -120,7 +121,7 @@ bool hiddenFromLight(vec4 c, bool perspective, uint layer, int res) {
 // that surface's shadow.
 // - RSM_VISIBILITY_DEPTH (far samples only): two points, 0.3 and 0.6 of the way from the VPL (one
 //   nearer x finds x's own shadow, not an occluder); a point in shadow is solid.
-// - RSM_VISIBILITY_VIEWS (every sample): pc.far.z points spread evenly over 0.05-0.95 of the way,
+// - RSM_VISIBILITY_VIEWS (every sample): pc.visibilityPoints points spread evenly over 0.05-0.95 of the way,
 //   their offset `jitter` per sample; a point in shadow is solid only where the camera's surface hides
 //   it too. Air in a shadow (a street's, a receiver's own) is seen by the camera; the inside of a wall
 //   or floor is seen by neither view. A thin occluder between two points is missed; jittered points
@@ -130,16 +131,16 @@ bool hiddenFromLight(vec4 c, bool perspective, uint layer, int res) {
 // clip position is a mix of the two, with no matrix per point.
 float segmentVisibility(GpuRsmLayer L, uint layer, ivec2 t, float depth, vec4 clipX, vec4 camX, float jitter) {
     if (depth >= 1.0) return 1.0;
-    const int res = int(pc.sizes.z);
-    const bool views = pc.sampling.x == RSM_VISIBILITY_VIEWS;
+    const int res = int(pc.rsmResolution);
+    const bool views = pc.visibility == RSM_VISIBILITY_VIEWS;
     const vec4 ndc = vec4((vec2(t) + 0.5) / float(res) * 2.0 - 1.0, depth, 1.0);
     const vec4 clipP = ndc / dot(vec4(L.invViewProj[0].w, L.invViewProj[1].w, L.invViewProj[2].w, L.invViewProj[3].w), ndc);
-    const uint points = views ? pc.far.z : 2u;
+    const uint points = views ? pc.visibilityPoints : 2u;
     const float step = views ? 0.9 / float(points) : 0.3, first = views ? 0.05 + step * jitter : 0.3;
     vec4 camP = vec4(0.0);  // the VPL in the camera's clip space, once a point needs it
     for (uint k = 0u; k < points; ++k) {
         const float a = first + step * float(k);
-        if (!hiddenFromLight(mix(clipP, clipX, a), L.params.y > 0.5, layer, res)) continue;
+        if (!hiddenFromLight(mix(clipP, clipX, a), L.perspective != 0u, layer, res)) continue;
         if (!views) return 0.0;
         if (camP.w == 0.0) camP = frame.viewProj * (L.invViewProj * clipP);
         if (hiddenFromCamera(mix(camP, camX, a))) return 0.0;
@@ -155,9 +156,9 @@ float segmentVisibility(GpuRsmLayer L, uint layer, ivec2 t, float depth, vec4 cl
 // near field, dark by 8% at 400 samples on cornell (15% at 100). The paper's disc keeps its xi1^2
 // weights (E[xi1^2] = 1/3).
 vec4 patternSample(uint i, float shift) {
-    const vec4 p = samples[pc.mode.y + i];
-    const float rMax = pc.params.z, texels = float(pc.sizes.z * pc.sizes.z), n = float(pc.mode.y);
-    if (pc.sampling.z != 0u) return vec4(p.z * rMax * p.xy, PI * rMax * rMax * texels / n * 3.0 * p.z * p.z, 0.0);
+    const vec4 p = samples[pc.sampleCount + i];
+    const float rMax = pc.radius, texels = float(pc.rsmResolution * pc.rsmResolution), n = float(pc.sampleCount);
+    if (pc.paperWeights != 0u) return vec4(p.z * rMax * p.xy, PI * rMax * rMax * texels / n * 3.0 * p.z * p.z, 0.0);
     const float whole = max(rMax, 1.41421356), r = max(fract(p.z + shift), 1e-6) * p.w;
     const float density = (0.5 / whole + (r < rMax ? 0.5 / rMax : 0.0)) / (2.0 * PI * r);
     return vec4(r * p.xy, texels / (n * density), r > rMax ? 1.0 : 0.0);
@@ -174,7 +175,7 @@ vec4 patternSample(uint i, float shift) {
 #if defined(RSM_FAR_FLUX)
 #define FLUX_FAR true
 #elif defined(RSM_SHIFTED_RADII)
-#define FLUX_FAR (pc.far.x != 0u)
+#define FLUX_FAR (pc.farByFlux != 0u)
 #else
 #define FLUX_FAR false
 #endif
@@ -189,12 +190,12 @@ struct FluxDraws {
 
 FluxDraws layerDraws(uint layer, float scale) {
     FluxDraws d;
-    const uint n = pc.mode.y;
+    const uint n = pc.sampleCount;
     d.block = layer * RSM_FLUX_BLOCK;
     const float total = FLUX_FAR ? uintBitsToFloat(drawn.blocks[d.block].x) : 0.0;
     d.farPerLum = total > 0.0 ? float(n / 2u) / total : 0.0;
-    d.radius = pc.params.z * scale;
-    d.nearRate = float(n - n / 2u) / (2.0 * PI * d.radius * float(pc.sizes.z * pc.sizes.z));
+    d.radius = pc.radius * scale;
+    d.nearRate = float(n - n / 2u) / (2.0 * PI * d.radius * float(pc.rsmResolution * pc.rsmResolution));
     d.stride = float(RSM_FLUX_ENTRIES) / max(float(n / 2u), 1.0);
     return d;
 }
@@ -256,13 +257,13 @@ vec3 bilinearVplIrradiance(vec2 uv, int res, uint layer, vec3 x, vec3 n, bool ha
 
 // The exact sum over every texel of a layer (RSM_GATHER_ALL_TEXELS, for tests), this lane's share.
 vec3 exactLayerSum(GpuRsmLayer L, uint layer, vec3 x, vec3 n, bool hair, vec4 clipX, vec4 camX, uint lane, uint lanes) {
-    const int res = int(pc.sizes.z);
+    const int res = int(pc.rsmResolution);
     vec3 e = vec3(0.0);
     for (uint k = lane; k < uint(res * res); k += lanes) {
         const ivec2 t = ivec2(k % uint(res), k / uint(res));
         const uvec4 vpl = texelFetch(rsmVpls, ivec3(t, layer), 0);
         vec3 c = vplIrradianceOf(vpl, t, layer, x, n, hair);
-        if (pc.sampling.x == RSM_VISIBILITY_VIEWS && any(greaterThan(c, vec3(0.0))))
+        if (pc.visibility == RSM_VISIBILITY_VIEWS && any(greaterThan(c, vec3(0.0))))
             c *= segmentVisibility(L, layer, t, uintBitsToFloat(vpl.x), clipX, camX, fract(float(k) * 0.61803399));
 #ifdef RSM_VOXEL_VISIBILITY
         if (any(greaterThan(c, vec3(0.0)))) c *= voxelVisibility(layer, t, x, n, hair);
@@ -276,39 +277,39 @@ vec3 exactLayerSum(GpuRsmLayer L, uint layer, vec3 x, vec3 n, bool hair, vec4 cl
 // texels) and main() adds the lanes' sums.
 vec3 gather(vec3 x, vec3 n, bool hair, uint lane, uint lanes) {
     vec3 e = vec3(0.0);
-    const int res = int(pc.sizes.z);
-    const bool views = pc.sampling.x == RSM_VISIBILITY_VIEWS;
+    const int res = int(pc.rsmResolution);
+    const bool views = pc.visibility == RSM_VISIBILITY_VIEWS;
     const vec4 camX = views ? frame.viewProj * vec4(x, 1.0) : vec4(0.0);  // x in the camera's clip space
     uint usedCascadeLight = 0xFFFFFFFFu;
-    for (uint layer = 0; layer < pc.mode.z; ++layer) {
+    for (uint layer = 0; layer < pc.layerCount; ++layer) {
         // Cascades of a light: the first whose map holds x, else the last (seed: SearchCascadeIndex).
         GpuRsmLayer L = rsmLayers[layer];
         const vec4 clipX = L.viewProj * vec4(x, 1.0);  // x in the layer's clip space
-        if (L.cascade.x > 0.0) {
-            if (uint(L.params.z) == usedCascadeLight) continue;
-            if (L.cascade.y < 0.5 && any(greaterThan(abs(clipX.xy / clipX.w), vec2(1.0)))) continue;
-            usedCascadeLight = uint(L.params.z);
+        if (L.cascade != 0u) {
+            if (L.light == usedCascadeLight) continue;
+            if (L.lastCascade == 0u && any(greaterThan(abs(clipX.xy / clipX.w), vec2(1.0)))) continue;
+            usedCascadeLight = L.light;
         }
-        if (pc.mode.x == RSM_GATHER_ALL_TEXELS) {
+        if (pc.mode == RSM_GATHER_ALL_TEXELS) {
             e += exactLayerSum(L, layer, x, n, hair, clipX, camX, lane, lanes);
             continue;
         }
         vec2 st;
-        float scale = samplingDisc(L, clipX, st) * L.cascade.z / pc.params.z;
+        float scale = samplingDisc(L, clipX, st) * L.radiusScale / pc.radius;
         const ReceiverPattern pattern = receiverPattern(L, x, clipX);
         // Voxel visibility: every stride-th sample walks the occupancy volume; the visible share of
         // those samples' light scales the layer's light. The same samples for every receiver: the
         // lanes of a subgroup walk together (a per-receiver choice made each walk wait for up to
         // `stride` others': 4x the cost on the H100). The pattern's rotation and shift still differ.
-        const uint stride = max(pc.mode.y / max(pc.sampling.y, 1u), 1u) | 1u;  // odd: both discs' samples
+        const uint stride = max(pc.sampleCount / max(pc.visibilityRays, 1u), 1u) | 1u;  // odd: both discs' samples
         vec3 layerLight = vec3(0.0);
         vec2 tested = vec2(0.0);  // luminance of the tested samples' light: all of it, the visible part
         // A lane takes a run of consecutive samples, of even length: the pattern alternates its two
         // discs, and lanes that stepped by `lanes` would split a warp between near samples and far
         // ones (which alone test visibility) at every step.
-        const uint run = (pc.mode.y + 2u * lanes - 1u) / (2u * lanes) * 2u;
+        const uint run = (pc.sampleCount + 2u * lanes - 1u) / (2u * lanes) * 2u;
         const FluxDraws draws = layerDraws(layer, scale);
-        for (uint i = lane * run, end = min(i + run, pc.mode.y); i < end; ++i) {
+        for (uint i = lane * run, end = min(i + run, pc.sampleCount); i < end; ++i) {
             vec3 c;
             ivec2 t;
             uvec4 vpl;  // the texel's packed VPL (its depth in x)
@@ -324,7 +325,7 @@ vec3 gather(vec3 x, vec3 n, bool hair, uint lane, uint lanes) {
                 c = vplIrradianceOf(vpl, t, layer, x, n, hair);
             } else {
 #ifdef RSM_SHIFTED_RADII
-                vec4 s = patternSample(i, pc.far.y != 0u ? pattern.shift : 0.0);  // y = 0: fixed radii
+                vec4 s = patternSample(i, pc.shiftedRadii != 0u ? pattern.shift : 0.0);  // 0: fixed radii
 #else
                 vec4 s = samples[i];
 #endif
@@ -334,9 +335,9 @@ vec3 gather(vec3 x, vec3 n, bool hair, uint lane, uint lanes) {
                 vpl = texelFetch(rsmVpls, ivec3(t, layer), 0);
                 weight = FLUX_FAR ? balanceWeight(draws, length(s.xy) * scale, vpl) : s.z * scale * scale;
                 far = !FLUX_FAR && s.w > 0.5;
-                c = pc.sizes.w != 0u ? bilinearVplIrradiance(uv, res, layer, x, n, hair) : vplIrradianceOf(vpl, t, layer, x, n, hair);
+                c = pc.bilinearVpls != 0u ? bilinearVplIrradiance(uv, res, layer, x, n, hair) : vplIrradianceOf(vpl, t, layer, x, n, hair);
             }
-            if ((views || (pc.sampling.x == RSM_VISIBILITY_DEPTH && far)) && any(greaterThan(c, vec3(0.0))))
+            if ((views || (pc.visibility == RSM_VISIBILITY_DEPTH && far)) && any(greaterThan(c, vec3(0.0))))
                 c *= segmentVisibility(L, layer, t, uintBitsToFloat(vpl.x), clipX, camX,
                                        fract(pattern.shift * 13.0 + float(i) * 0.61803399));
             c *= weight;
@@ -361,22 +362,22 @@ vec3 gather(vec3 x, vec3 n, bool hair, uint lane, uint lanes) {
 shared vec3 laneSums[64];
 
 void main() {
-    const uint lanes = max(pc.sampling.w, 1u), local = gl_LocalInvocationIndex, lane = local % lanes;
+    const uint lanes = max(pc.lanesPerReceiver, 1u), local = gl_LocalInvocationIndex, lane = local % lanes;
     const uint receiver = local / lanes, perGroup = 64u / lanes;
     ivec2 out_;
     bool valid;
-    if (pc.mode.x == RSM_GATHER_LIST) {
+    if (pc.mode == RSM_GATHER_LIST) {
         const uint group = gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x;
         const uint index = group * perGroup + receiver;
         valid = index < list.header.x;
         out_ = valid ? ivec2(list.pixels[index]) : ivec2(0);
     } else {  // a workgroup covers 8 x (8 / lanes) receivers
         out_ = ivec2(gl_WorkGroupID.xy) * ivec2(8, perGroup / 8u) + ivec2(receiver % 8u, receiver / 8u);
-        valid = all(lessThan(out_, ivec2(pc.sizes.xy)));
+        valid = all(lessThan(out_, ivec2(pc.width, pc.height)));
     }
     ivec2 pixel = out_;
-    if (pc.mode.x == RSM_GATHER_LOWRES)  // the cell's representative (centre) full-res pixel
-        pixel = min(out_ * int(pc.mode.w) + int(pc.mode.w) / 2, ivec2(frame.size.xy) - 1);
+    if (pc.mode == RSM_GATHER_LOWRES)  // the cell's representative (centre) full-res pixel
+        pixel = min(out_ * int(pc.lowResFactor) + int(pc.lowResFactor) / 2, ivec2(frame.size.xy) - 1);
     vec3 e = vec3(0.0);
     float depth = valid ? texelFetch(gDepth, pixel, 0).r : 1.0;
     if (depth < 1.0) {

@@ -9,26 +9,27 @@
 // it is E_perp * A, and the surface reflects albedo times that (Lambertian).
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
+#include "rsm/bindings.h"
 #include "render/material.glsl"
 #include "render/lights.glsl"
 #include "render/visibility.glsl"
 #include "shared/octahedral.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(set = 0, binding = 3, std430) readonly buffer Lights { GpuLight lights[]; };
-layout(set = 0, binding = 4, std430) readonly buffer Layers { GpuRsmLayer rsmLayers[]; };
-layout(set = 0, binding = 5) uniform usampler2DArray ids;
-layout(set = 0, binding = 6, r32f) uniform writeonly image2DArray outDepth;
-layout(set = 0, binding = 7, rg16_snorm) uniform writeonly image2DArray outNormal;
-layout(set = 0, binding = 8, rgba16f) uniform writeonly image2DArray outFlux;
+layout(set = 0, binding = RSM_RESOLVE_LIGHTS, std430) readonly buffer Lights { GpuLight lights[]; };
+layout(set = 0, binding = RSM_RESOLVE_LAYERS, std430) readonly buffer Layers { GpuRsmLayer rsmLayers[]; };
+layout(set = 0, binding = RSM_RESOLVE_SHADOW_IDS) uniform usampler2DArray ids;
+layout(set = 0, binding = RSM_RESOLVE_DEPTH, r32f) uniform writeonly image2DArray outDepth;
+layout(set = 0, binding = RSM_RESOLVE_NORMAL, rg16_snorm) uniform writeonly image2DArray outNormal;
+layout(set = 0, binding = RSM_RESOLVE_FLUX, rgba16f) uniform writeonly image2DArray outFlux;
 // The same texel packed, for the gather's one fetch per VPL (rsm/vpl.glsl): depth bits, the
 // normal's octahedral snorm16 pair, the flux's halves (r, g), (b, 0).
-layout(set = 0, binding = 9, rgba32ui) uniform writeonly uimage2DArray outVpls;
+layout(set = 0, binding = RSM_RESOLVE_VPLS, rgba32ui) uniform writeonly uimage2DArray outVpls;
 layout(push_constant) uniform Push { RsmResolvePush pc; };
 
 void main() {
     const ivec3 texel = ivec3(gl_GlobalInvocationID);
-    const uint res = pc.sizes.x, idRes = pc.sizes.y;
+    const uint res = pc.rsmResolution, idRes = pc.idResolution;
     if (texel.x >= int(res) || texel.y >= int(res)) return;
     const ivec2 idTexel = min(ivec2((vec2(texel.xy) + 0.5) * float(idRes) / float(res)), ivec2(idRes - 1u));
     const uint id = texelFetch(ids, ivec3(idTexel, texel.z), 0).r;
@@ -45,12 +46,12 @@ void main() {
     const VisTriangle tri = fetchTriangle(id);
     const VisSurface s = resolveSurface(tri, centre, dx0, dx1, dy0, dy1);
     const vec4 clip = layer.viewProj * vec4(s.position, 1.0);
-    const GpuLight light = lights[uint(layer.params.z)];
+    const GpuLight light = lights[layer.light];
     vec3 l;
     const vec3 e = incidentIrradiance(light, s.position, l);
-    const float t = layer.params.x;
+    const float t = layer.texelSize;
     float area = t * t;
-    if (layer.params.y > 0.5) {  // the layer's own axis (spot cone, or a point light's cube face)
+    if (layer.perspective != 0u) {  // the layer's own axis (spot cone, or a point light's cube face)
         const float z = clip.w;
         area *= z * z * clamp(z / max(length(s.position - light.position.xyz), 1e-6), 0.0, 1.0);
     }

@@ -29,8 +29,8 @@ vec3 vplIrradianceOf(uvec4 vpl, ivec2 t, uint layer, vec3 x, vec3 n, bool hair) 
     vec3 phi = vec3(unpackHalf2x16(vpl.z), unpackHalf2x16(vpl.w).x);
     vec3 v = x - xp;
     float d2 = dot(v, v);
-    float footprint = L.params.x * L.params.x;
-    if (L.params.y > 0.5) {
+    float footprint = L.texelSize * L.texelSize;
+    if (L.perspective != 0u) {
         float z = abs((L.viewProj * vec4(xp, 1.0)).w);  // clip w = depth along the axis
         footprint *= z * z;
     }

@@ -4,6 +4,7 @@
 #define PENUMBRA_SHARED_TYPES_H
 
 #ifdef __cplusplus
+#include <cstddef>
 #include <cstdint>
 #include <glm/glm.hpp>
 namespace penumbra::gpu {
@@ -134,15 +135,24 @@ struct DebugViewPush {
 };
 
 struct TonemapPush {
-    vec4 params;  // x = exposure or scale, y = bias, z = TONEMAP_* mode, w unused
+    float scale;  // the exposure (radiance) or the linear scale
+    float bias;   // TONEMAP_LINEAR: added after the scale
+    uint mode;    // TONEMAP_*
+    uint pad0;
 };
 
 // Reflective shadow maps (src/rsm): one RSM layer per shadow layer that has one.
 struct GpuRsmLayer {
     mat4 viewProj;
     mat4 invViewProj;
-    vec4 params;  // x = texel world size (ortho) or per unit depth (perspective), y = perspective, z = light index
-    vec4 cascade; // x = cascade index + 1 (0: not a cascade), y = 1 on a light's last cascade, z = r_max scale
+    float texelSize;    // texel world size (orthographic) or per unit depth (perspective)
+    uint perspective;   // 1: a perspective layer (spot, cube face), 0: orthographic
+    uint light;         // the layer's light (index into the lights)
+    uint cascade;       // cascade index + 1 (0: not a cascade)
+    uint lastCascade;   // 1 on a light's last cascade
+    float radiusScale;  // r_max scale
+    uint pad0;
+    uint pad1;
 };
 
 // RSM gather modes (rsm/gather.comp).
@@ -158,14 +168,26 @@ struct GpuRsmLayer {
 #define RSM_VISIBILITY_VIEWS 3   // every sample: points of the segment against the RSM's and the camera's depth
 
 struct RsmPush {
-    uvec4 mode;    // x = RSM_GATHER_*, y = sample count, z = layer count, w = low-resolution factor
-    uvec4 sizes;   // x,y = output size (low-res or full), z = RSM resolution, w = 1: bilinear VPLs
-    vec4 params;   // x = normal cos threshold, y = distance threshold in pixel footprints, z = r_max, w unused
-    uvec4 sampling;  // x = RSM_VISIBILITY_*, y = samples a pixel tests through the occupancy volume,
-                     // z = 1: the paper's single disc and xi1^2 weights (else the mixture), w = lanes per receiver
-    uvec4 far;     // x = 1: the far half of the samples drawn by flux (rsm/flux_draw.comp), y = 1: radii
-                   // shifted per receiver (pipelines with RSM_SHIFTED_RADII), z = points a segment is tested
-                   // at (RSM_VISIBILITY_VIEWS), w unused
+    uint mode;                // RSM_GATHER_*
+    uint sampleCount;
+    uint layerCount;
+    uint lowResFactor;
+    uint width;               // output size (the low-resolution grid's or the full image's)
+    uint height;
+    uint rsmResolution;
+    uint bilinearVpls;        // 1: VPLs interpolated bilinearly
+    float normalThreshold;    // normal cos threshold (interpolation)
+    float distanceThreshold;  // in pixel footprints (interpolation)
+    float radius;             // r_max
+    uint pad0;
+    uint visibility;          // RSM_VISIBILITY_*
+    uint visibilityRays;      // samples a pixel tests through the occupancy volume
+    uint paperWeights;        // 1: the paper's single disc and xi1^2 weights (else the mixture)
+    uint lanesPerReceiver;
+    uint farByFlux;           // 1: the far half of the samples drawn by flux (rsm/flux_draw.comp)
+    uint shiftedRadii;        // 1: radii shifted per receiver (pipelines with RSM_SHIFTED_RADII)
+    uint visibilityPoints;    // points a segment is tested at (RSM_VISIBILITY_VIEWS)
+    uint pad1;
 };
 
 // The flux-drawn VPLs of --rsm-far flux (rsm/flux_draw.comp), per layer a block of RSM_FLUX_BLOCK
@@ -175,6 +197,18 @@ struct RsmPush {
 // texel) and its texel (x | y << 16, in x).
 #define RSM_FLUX_ENTRIES 16384u
 #define RSM_FLUX_BLOCK (2u + 2u * RSM_FLUX_ENTRIES)
+
+// Push constants of rsm/flux_sums.comp and rsm/flux_draw.comp.
+struct RsmFluxPush {
+    uint rsmResolution;
+    uint layerCount;
+    uint curve;  // n: the Hilbert curve's side (n runs of n texels per layer)
+    uint step;   // flux_sums.comp: 0 sums along the runs, 1 the runs' totals
+    uint seed;   // flux_draw.comp: the draws' jitter
+    uint pad0;
+    uint pad1;
+    uint pad2;
+};
 
 // The occupancy volume (src/voxel): one bit per voxel of a box around the scene, set where a surface
 // (opaque or alpha-masked; not blended, not hair) touches the voxel. Voxel (x, y, z) is bit
@@ -196,12 +230,18 @@ struct OccupancyPush {
 
 // render/gi_history.comp: temporal accumulation of the indirect irradiance.
 struct GiHistoryPush {
-    vec4 params;  // x = weight of the new frame (alpha), y = 1: the history holds the previous frame, zw unused
+    float alpha;       // weight of the new frame
+    uint historyValid; // 1: the history holds the previous frame
+    uint pad0;
+    uint pad1;
 };
 
 // Push constants of the RSM resolve (rsm/resolve.comp): RSM texels from the shadow pass's visibility IDs.
 struct RsmResolvePush {
-    uvec4 sizes;  // x = RSM resolution, y = resolution of the ID layers (the shadow map's), zw unused
+    uint rsmResolution;
+    uint idResolution;  // resolution of the ID layers (the shadow map's)
+    uint pad0;
+    uint pad1;
 };
 
 // Push constants of the camera's visibility resolve (render/visibility_resolve.comp).
@@ -227,10 +267,22 @@ struct GpuVpl {
 };
 
 struct LpvPush {
-    uvec4 grid;     // x = resolution, y = cascade count, z = first-iteration flag / slice axis, w = slice index
-    uvec4 counts;   // x = VPL count, y = RSM source resolution, z = down-sampled resolution, w = layer count
-    vec4 params;    // x = occlusion on (1) or off (0), y = gather blend band in cells, z = G-buffer injection step,
-                    // w = occlusion from the occupancy volume's faces (1) or the geometry volume (0)
+    uint resolution;        // cells per axis
+    uint cascadeCount;
+    uint iteration;         // propagate.comp: this step (0: the first)
+    uint farFromIteration;  // propagate.comp: the step from which a coarser cascade's light sums as far
+    uint vplCount;
+    uint rsmResolution;     // the RSM source's resolution
+    uint vplResolution;     // the down-sampled resolution
+    uint layerCount;
+    uint occlusion;         // 1: geometry blocks the light
+    float blendCells;       // gather blend band in cells
+    uint cameraGeometryStep;  // G-buffer injection step (pixels)
+    uint voxelFaces;        // 1: occlusion from the occupancy volume's faces, 0: from the geometry volume
+    uint sliceAxis;         // gather.comp's slice views
+    uint sliceIndex;
+    uint pad0;
+    uint pad1;
     GpuLpvCascade cascades[LPV_MAX_CASCADES];
 };
 
@@ -461,6 +513,24 @@ struct RasterCounters {
 };
 
 #ifdef __cplusplus
+// The layouts the shaders see (std430, push constants likewise): scalars pack in fours after a mat4
+// or vec4, a struct rounds up to 16 bytes. tests/spirv_reflection_test.cpp compares every member
+// with the compiled SPIR-V; these catch a C++-only edit at compile time.
+static_assert(sizeof(GpuRsmLayer) == 160 && offsetof(GpuRsmLayer, texelSize) == 128 &&
+              offsetof(GpuRsmLayer, cascade) == 140 && offsetof(GpuRsmLayer, radiusScale) == 148);
+static_assert(sizeof(RsmPush) == 80 && offsetof(RsmPush, width) == 16 && offsetof(RsmPush, normalThreshold) == 32 &&
+              offsetof(RsmPush, visibility) == 48 && offsetof(RsmPush, farByFlux) == 64 &&
+              offsetof(RsmPush, visibilityPoints) == 72);
+static_assert(sizeof(RsmFluxPush) == 32 && offsetof(RsmFluxPush, seed) == 16);
+static_assert(sizeof(RsmResolvePush) == 16 && offsetof(RsmResolvePush, idResolution) == 4);
+static_assert(sizeof(LpvPush) == 128 && offsetof(LpvPush, vplCount) == 16 && offsetof(LpvPush, occlusion) == 32 &&
+              offsetof(LpvPush, sliceAxis) == 48 && offsetof(LpvPush, cascades) == 64);
+static_assert(sizeof(TonemapPush) == 16 && offsetof(TonemapPush, mode) == 8);
+static_assert(sizeof(GiHistoryPush) == 16 && offsetof(GiHistoryPush, historyValid) == 4);
+static_assert(sizeof(GpuVpl) == 48 && sizeof(GpuHairPoint) == 32 && sizeof(GpuLight) == 144 &&
+              sizeof(FrameUniforms) == 320 && sizeof(GpuInstance) == 208 && sizeof(DrawPush) == 16 &&
+              sizeof(ShadowDrawPush) == 48 && sizeof(HairDrawPush) == 64 && sizeof(GpuShadowParams) == 304 &&
+              sizeof(GpuShadowLayer) == 112 && sizeof(GpuDsmLight) == 128);
 }  // namespace penumbra::gpu
 #endif
 #endif

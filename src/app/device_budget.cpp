@@ -16,13 +16,14 @@
 #include "render/scene_gpu.h"
 #include "render/texture_upload.h"
 #include "shadow/shadow_layout.h"
+#include "shared/types.h"
 
 namespace penumbra {
 namespace {
 
 constexpr double kMiB = 1024.0 * 1024.0;
-constexpr uint64_t kVplBytes = 48;         // gpu::GpuVpl
-constexpr uint64_t kHairPointBytes = 32;   // gpu::GpuHairPoint
+constexpr uint64_t kVplBytes = sizeof(gpu::GpuVpl);
+constexpr uint64_t kHairPointBytes = sizeof(gpu::GpuHairPoint);
 constexpr uint64_t kStrandRecordBytes = 16;
 
 // One large resource: its size as a function of the option that scales it (monotone).

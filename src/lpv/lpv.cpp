@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "lpv/bindings.h"
+
 namespace penumbra {
 namespace {
 
@@ -65,12 +67,31 @@ LightPropagationVolume::LightPropagationVolume(vk::Allocator& alloc, uint32_t wi
                                           settings_.rsmResolution, settings_.vplResolution));
     vk::Context& ctx = alloc.context();
     const uint32_t push = sizeof(gpu::LpvPush);
-    downsample_ = vk::ComputeKernel(ctx, "lpv/downsample.comp", {kTex, kTex, kTex, kSsbo, kSsbo, kSsbo}, push);
-    inject_ = vk::ComputeKernel(ctx, "lpv/inject.comp", {kSsbo, kSsbo, kSsbo}, push);
-    injectCamera_ = vk::ComputeKernel(ctx, "lpv/inject_camera.comp", {kUbo, kTex, kTex, kSsbo}, push);
-    propagate_ = vk::ComputeKernel(ctx, "lpv/propagate.comp", {kSsbo, kSsbo, kSsbo, kSsbo, kSsbo}, push);
-    if (voxels()) faceKernel_ = vk::ComputeKernel(ctx, "lpv/face_transmittance.comp", {kSsbo, kSsbo}, push);
-    gather_ = vk::ComputeKernel(ctx, "lpv/gather.comp", {kUbo, kTex, kTex, kSsbo, kSsbo, kImg}, push);
+    downsample_ = vk::ComputeKernel(ctx, "lpv/downsample.comp",
+                                    {{LPV_DOWNSAMPLE_RSM_DEPTH, kTex}, {LPV_DOWNSAMPLE_RSM_NORMAL, kTex},
+                                     {LPV_DOWNSAMPLE_RSM_FLUX, kTex}, {LPV_DOWNSAMPLE_LAYERS, kSsbo},
+                                     {LPV_DOWNSAMPLE_LIGHTS, kSsbo}, {LPV_DOWNSAMPLE_VPLS, kSsbo}},
+                                    push);
+    inject_ = vk::ComputeKernel(
+        ctx, "lpv/inject.comp", {{LPV_INJECT_VPLS, kSsbo}, {LPV_INJECT_LIGHT, kSsbo}, {LPV_INJECT_GEOMETRY, kSsbo}},
+        push);
+    injectCamera_ = vk::ComputeKernel(ctx, "lpv/inject_camera.comp",
+                                      {{LPV_CAMERA_FRAME, kUbo}, {LPV_CAMERA_GBUFFER_NORMAL, kTex},
+                                       {LPV_CAMERA_GBUFFER_DEPTH, kTex}, {LPV_CAMERA_GEOMETRY, kSsbo}},
+                                      push);
+    propagate_ = vk::ComputeKernel(ctx, "lpv/propagate.comp",
+                                   {{LPV_PROPAGATE_SOURCE, kSsbo}, {LPV_PROPAGATE_DESTINATION, kSsbo},
+                                    {LPV_PROPAGATE_SUM, kSsbo}, {LPV_PROPAGATE_GEOMETRY, kSsbo},
+                                    {LPV_PROPAGATE_FACES, kSsbo}},
+                                   push);
+    if (voxels())
+        faceKernel_ = vk::ComputeKernel(ctx, "lpv/face_transmittance.comp",
+                                        {{LPV_FACES_OCCUPANCY, kSsbo}, {LPV_FACES_OUT, kSsbo}}, push);
+    gather_ = vk::ComputeKernel(ctx, "lpv/gather.comp",
+                                {{LPV_GATHER_FRAME, kUbo}, {LPV_GATHER_GBUFFER_NORMAL, kTex},
+                                 {LPV_GATHER_GBUFFER_DEPTH, kTex}, {LPV_GATHER_SUM, kSsbo},
+                                 {LPV_GATHER_GEOMETRY, kSsbo}, {LPV_GATHER_IRRADIANCE, kImg}},
+                                push);
     pointSampler_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
 
     const VkDeviceSize cells = VkDeviceSize(settings_.resolution) * settings_.resolution * settings_.resolution;
@@ -85,8 +106,10 @@ LightPropagationVolume::LightPropagationVolume(vk::Allocator& alloc, uint32_t wi
                                     VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
                                         VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
                                     "lpv-irradiance"});
-    push_.grid = {settings_.resolution, cascadeCount_, 0, 0};
-    push_.counts = {0, settings_.rsmResolution, settings_.vplResolution, 0};
+    push_.resolution = settings_.resolution;
+    push_.cascadeCount = cascadeCount_;
+    push_.rsmResolution = settings_.rsmResolution;
+    push_.vplResolution = settings_.vplResolution;
     setSettings(settings_);
 }
 
@@ -104,8 +127,10 @@ void LightPropagationVolume::run(PassContext& c, const vk::ComputeKernel& kernel
 
 void LightPropagationVolume::setSettings(const LpvSettings& settings) {
     settings_ = settings;
-    push_.params = {settings.occlusion ? 1.0f : 0.0f, settings.blendCells, float(settings.cameraGeometryStep),
-                    voxels() ? 1.0f : 0.0f};
+    push_.occlusion = settings.occlusion ? 1u : 0u;
+    push_.blendCells = settings.blendCells;
+    push_.cameraGeometryStep = settings.cameraGeometryStep;
+    push_.voxelFaces = voxels() ? 1u : 0u;
 }
 
 void LightPropagationVolume::addTo(FrameGraph& graph, uint32_t rsmLayers, uint64_t occupancyGeneration) {
@@ -114,8 +139,8 @@ void LightPropagationVolume::addTo(FrameGraph& graph, uint32_t rsmLayers, uint64
         const uint32_t n = settings_.vplResolution;
         vpls_ = vk::Buffer(alloc_, VkDeviceSize(std::max(layers_, 1u)) * n * n * sizeof(gpu::GpuVpl),
                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, false, "lpv-vpls");
-        push_.counts.x = layers_ * n * n;
-        push_.counts.w = layers_;
+        push_.vplCount = layers_ * n * n;
+        push_.layerCount = layers_;
     }
     if (layers_ > 0) addDownsample(graph);
     addInjection(graph);
@@ -128,7 +153,7 @@ void LightPropagationVolume::setVpls(vk::CommandContext& cmd, const std::vector<
     vpls_ = cmd.createDeviceBuffer(vpls.data(), vpls.size() * sizeof(gpu::GpuVpl),
                                    VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, "lpv-vpls");
     layers_ = 1;
-    push_.counts.x = uint32_t(vpls.size());
+    push_.vplCount = uint32_t(vpls.size());
 }
 
 void LightPropagationVolume::addPropagationFromVpls(FrameGraph& graph) {
@@ -143,13 +168,13 @@ void LightPropagationVolume::addDownsample(FrameGraph& graph) {
     const uint32_t n = vk::divUp(settings_.vplResolution, 8);
     graph.pass("lpv.downsample")
         .pipeline(downsample_.pipeline)
-        .sampled(0, graph.image("rsm.depth"), point)
-        .sampled(1, graph.image("rsm.normal"), point)
-        .sampled(2, graph.image("rsm.flux"), point)
-        .storageBuffer(3, graph.buffer("rsm.layers"))
-        .storageBuffer(4, graph.buffer("lights"))
-        .storageBuffer(5, graph.import(vpls_), Use::StorageWrite)
-        .bytes(texels * 16 + uint64_t(push_.counts.x) * sizeof(gpu::GpuVpl))
+        .sampled(LPV_DOWNSAMPLE_RSM_DEPTH, graph.image("rsm.depth"), point)
+        .sampled(LPV_DOWNSAMPLE_RSM_NORMAL, graph.image("rsm.normal"), point)
+        .sampled(LPV_DOWNSAMPLE_RSM_FLUX, graph.image("rsm.flux"), point)
+        .storageBuffer(LPV_DOWNSAMPLE_LAYERS, graph.buffer("rsm.layers"))
+        .storageBuffer(LPV_DOWNSAMPLE_LIGHTS, graph.buffer("lights"))
+        .storageBuffer(LPV_DOWNSAMPLE_VPLS, graph.import(vpls_), Use::StorageWrite)
+        .bytes(texels * 16 + uint64_t(push_.vplCount) * sizeof(gpu::GpuVpl))
         .record([this, push = push_, n](PassContext& c) { run(c, downsample_, push, {n, n, layers_}); });
 }
 
@@ -167,11 +192,11 @@ void LightPropagationVolume::addInjection(FrameGraph& graph) {
     // Each VPL read once; per cascade 16 atomic read-modify-writes of 4 bytes.
     graph.pass("lpv.inject")
         .pipeline(inject_.pipeline)
-        .storageBuffer(0, graph.import(vpls_))
-        .storageBuffer(1, a, Use::StorageWrite)
-        .storageBuffer(2, geometry, Use::StorageWrite)
-        .bytes(uint64_t(push_.counts.x) * (sizeof(gpu::GpuVpl) + cascadeCount_ * 16 * 8))
-        .record([this, push = push_](PassContext& c) { run(c, inject_, push, {vk::divUp(push.counts.x, 64), 1, 1}); });
+        .storageBuffer(LPV_INJECT_VPLS, graph.import(vpls_))
+        .storageBuffer(LPV_INJECT_LIGHT, a, Use::StorageWrite)
+        .storageBuffer(LPV_INJECT_GEOMETRY, geometry, Use::StorageWrite)
+        .bytes(uint64_t(push_.vplCount) * (sizeof(gpu::GpuVpl) + cascadeCount_ * 16 * 8))
+        .record([this, push = push_](PassContext& c) { run(c, inject_, push, {vk::divUp(push.vplCount, 64), 1, 1}); });
 }
 
 void LightPropagationVolume::addCameraGeometry(FrameGraph& graph) {
@@ -181,10 +206,10 @@ void LightPropagationVolume::addCameraGeometry(FrameGraph& graph) {
     const glm::uvec3 groups{vk::divUp(vk::divUp(width_, step), 8), vk::divUp(vk::divUp(height_, step), 8), 1};
     graph.pass("lpv.inject-camera")
         .pipeline(injectCamera_.pipeline)
-        .uniform(0, graph.buffer("frame"))
-        .sampled(1, graph.image("gbuffer.normal"), point)
-        .sampled(2, graph.image("gbuffer.depth"), point)
-        .storageBuffer(3, graph.import(geometry_), Use::StorageWrite)
+        .uniform(LPV_CAMERA_FRAME, graph.buffer("frame"))
+        .sampled(LPV_CAMERA_GBUFFER_NORMAL, graph.image("gbuffer.normal"), point)
+        .sampled(LPV_CAMERA_GBUFFER_DEPTH, graph.image("gbuffer.depth"), point)
+        .storageBuffer(LPV_CAMERA_GEOMETRY, graph.import(geometry_), Use::StorageWrite)
         .record([this, push = push_, groups](PassContext& c) { run(c, injectCamera_, push, groups); });
 }
 
@@ -203,26 +228,26 @@ void LightPropagationVolume::addPropagation(FrameGraph& graph, uint64_t occupanc
         facesOf_ = facesOf;
         graph.pass("lpv.faces")
             .pipeline(faceKernel_.pipeline)
-            .storageBuffer(0, graph.buffer("occupancy"))
-            .storageBuffer(1, faces, Use::StorageWrite)
+            .storageBuffer(LPV_FACES_OCCUPANCY, graph.buffer("occupancy"))
+            .storageBuffer(LPV_FACES_OUT, faces, Use::StorageWrite)
             .record([this, push = push_, r](PassContext& c) {
                 run(c, faceKernel_, push, {vk::divUp(r, 4), vk::divUp(r, 4), vk::divUp(r * cascadeCount_, 4)});
             });
     }
     for (uint32_t i = 0; i < settings_.iterations; ++i) {
         gpu::LpvPush push = push_;
-        push.grid.z = i;
+        push.iteration = i;
         // A coarser cascade's far half starts where the finer one's steps end: after half its steps
         // (cells twice as large), light has gone as far as the finer cascade's last step took it.
-        push.grid.w = std::max(1u, (settings_.iterations + 1) / 2);
+        push.farFromIteration = std::max(1u, (settings_.iterations + 1) / 2);
         // Per cell, once: source 48, geometry 16, destination 48, running sum read + written 96.
         graph.pass(fmt::format("lpv.propagate[{}]", i))
             .pipeline(propagate_.pipeline)
-            .storageBuffer(0, i % 2 ? b : a, Use::StorageRead)
-            .storageBuffer(1, i % 2 ? a : b, Use::StorageWrite)
-            .storageBuffer(2, sum, Use::StorageWrite)
-            .storageBuffer(3, geometry, Use::StorageRead)
-            .storageBuffer(4, faces, Use::StorageRead)
+            .storageBuffer(LPV_PROPAGATE_SOURCE, i % 2 ? b : a, Use::StorageRead)
+            .storageBuffer(LPV_PROPAGATE_DESTINATION, i % 2 ? a : b, Use::StorageWrite)
+            .storageBuffer(LPV_PROPAGATE_SUM, sum, Use::StorageWrite)
+            .storageBuffer(LPV_PROPAGATE_GEOMETRY, geometry, Use::StorageRead)
+            .storageBuffer(LPV_PROPAGATE_FACES, faces, Use::StorageRead)
             .bytes(uint64_t(r) * r * r * cascadeCount_ * (48 + 16 + 48 + 96))
             .record([this, push, r](PassContext& c) {
                 run(c, propagate_, push, {vk::divUp(r, 4), vk::divUp(r, 4), vk::divUp(r * cascadeCount_, 4)});
@@ -235,17 +260,17 @@ void LightPropagationVolume::addGather(FrameGraph& graph) {
     const ImageHandle irradiance = graph.import(irradiance_);
     graph.publish("gi.irradiance", irradiance);
     gpu::LpvPush push = push_;
-    push.grid.z = settings_.sliceAxis;
-    push.grid.w = std::min(settings_.sliceIndex, settings_.resolution - 1);
+    push.sliceAxis = settings_.sliceAxis;
+    push.sliceIndex = std::min(settings_.sliceIndex, settings_.resolution - 1);
     // Per pixel: depth 4 + normal 8 read, irradiance 16 written; the summed volume read once.
     graph.pass("lpv.gather")
         .pipeline(gather_.pipeline)
-        .uniform(0, graph.buffer("frame"))
-        .sampled(1, graph.image("gbuffer.normal"), point)
-        .sampled(2, graph.image("gbuffer.depth"), point)
-        .storageBuffer(3, graph.import(accum_))
-        .storageBuffer(4, graph.import(geometry_))
-        .storageImage(5, irradiance)
+        .uniform(LPV_GATHER_FRAME, graph.buffer("frame"))
+        .sampled(LPV_GATHER_GBUFFER_NORMAL, graph.image("gbuffer.normal"), point)
+        .sampled(LPV_GATHER_GBUFFER_DEPTH, graph.image("gbuffer.depth"), point)
+        .storageBuffer(LPV_GATHER_SUM, graph.import(accum_))
+        .storageBuffer(LPV_GATHER_GEOMETRY, graph.import(geometry_))
+        .storageImage(LPV_GATHER_IRRADIANCE, irradiance)
         .bytes(uint64_t(width_) * height_ * 28 + accum_.size())
         .record([this, push](PassContext& c) { run(c, gather_, push, {vk::divUp(width_, 8), vk::divUp(height_, 8), 1}); });
 }

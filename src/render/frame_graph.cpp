@@ -198,11 +198,13 @@ void FrameGraph::execute(VkCommandBuffer cmd, vk::GpuTimer* timer) {
         barriers(cmd, group);
         for (uint32_t i : group) {
             const PassDesc& pass = passes_[i];
+            ctx_.debugUtils().beginLabel(cmd, pass.name.c_str());
             uint32_t scope = timer ? timer->begin(cmd, pass.name) : 0;
             bind(cmd, pass);
             PassContext context(cmd, *this, i);
             if (pass.record) pass.record(context);
             if (timer) timer->end(cmd, scope);
+            ctx_.debugUtils().endLabel(cmd);
         }
     }
 }
@@ -274,8 +276,16 @@ BufferHandle FrameGraph::import(const vk::Buffer& buffer) {
     return BufferHandle{it->second};
 }
 
-void FrameGraph::publish(const std::string& name, ImageHandle image) { imageNames_[name] = image; }
-void FrameGraph::publish(const std::string& name, BufferHandle buffer) { bufferNames_[name] = buffer; }
+// A capture tool shows a published resource under its published name.
+void FrameGraph::publish(const std::string& name, ImageHandle image) {
+    imageNames_[name] = image;
+    ctx_.debugUtils().name(VK_OBJECT_TYPE_IMAGE, imageOf(image).handle(), name.c_str());
+}
+
+void FrameGraph::publish(const std::string& name, BufferHandle buffer) {
+    bufferNames_[name] = buffer;
+    ctx_.debugUtils().name(VK_OBJECT_TYPE_BUFFER, bufferOf(buffer).handle(), name.c_str());
+}
 
 ImageHandle FrameGraph::image(const std::string& name) const {
     auto it = imageNames_.find(name);

@@ -191,19 +191,19 @@ gpu::TonemapPush LightingTechnique::tonemapParams(const RenderSettings& s, float
         case Aov::Final:
         case Aov::Indirect:
         case Aov::LpvSlice:
-        case Aov::RsmFlux: return {{s.exposure, 0.0f, float(TONEMAP_ACES), 0.0f}};
+        case Aov::RsmFlux: return {s.exposure, 0.0f, TONEMAP_ACES, 0};
         case Aov::RsmDepth:
         case Aov::RsmNormal:
-        case Aov::ShadowMap: return {{1.0f, 0.0f, float(TONEMAP_LINEAR), 0.0f}};
-        case Aov::GvSlice: return {{1.0f, 0.0f, float(TONEMAP_LINEAR), 0.0f}};
+        case Aov::ShadowMap: return {1.0f, 0.0f, TONEMAP_LINEAR, 0};
+        case Aov::GvSlice: return {1.0f, 0.0f, TONEMAP_LINEAR, 0};
         case Aov::Albedo:
-        case Aov::Cascade: return {{1.0f, 0.0f, float(TONEMAP_SRGB), 0.0f}};
-        case Aov::Normal: return {{0.5f, 0.5f, float(TONEMAP_LINEAR), 0.0f}};
-        case Aov::Depth: return {{1.0f / depthFar, 0.0f, float(TONEMAP_LINEAR), 0.0f}};
+        case Aov::Cascade: return {1.0f, 0.0f, TONEMAP_SRGB, 0};
+        case Aov::Normal: return {0.5f, 0.5f, TONEMAP_LINEAR, 0};
+        case Aov::Depth: return {1.0f / depthFar, 0.0f, TONEMAP_LINEAR, 0};
         case Aov::Shadow:
-        case Aov::Transmittance: return {{1.0f, 0.0f, float(TONEMAP_LINEAR), 0.0f}};
-        case Aov::DsmLists: return {{1.0f / float(s.dsm.maxList), 0.0f, float(TONEMAP_LINEAR), 0.0f}};
-        case Aov::Velocity: return {{1.0f / 32.0f, 0.5f, float(TONEMAP_LINEAR), 0.0f}};  // +-16 pixels
+        case Aov::Transmittance: return {1.0f, 0.0f, TONEMAP_LINEAR, 0};
+        case Aov::DsmLists: return {1.0f / float(s.dsm.maxList), 0.0f, TONEMAP_LINEAR, 0};
+        case Aov::Velocity: return {1.0f / 32.0f, 0.5f, TONEMAP_LINEAR, 0};  // +-16 pixels
     }
     return {};
 }

@@ -1,5 +1,6 @@
 #include "render/gbuffer_pass.h"
 
+#include "render/gbuffer_bindings.h"
 #include "render/raster.h"
 
 namespace penumbra {
@@ -51,10 +52,10 @@ GBufferPass::GBufferPass(vk::Allocator& alloc, SceneGpu& scene, uint32_t width, 
         masked_ = vk::Pipeline::graphics(ctx, d, SceneGpu::drawLayouts(ctx, drawLayout), sizeof(gpu::DrawPush));
     }
     std::vector<vk::Binding> bindings = SceneGpu::resolveSetBindings();
-    bindings.push_back({3, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER});
-    bindings.push_back({5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
-    bindings.push_back({6, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
-    bindings.push_back({7, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
+    bindings.push_back({VISIBILITY_RESOLVE_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER});
+    bindings.push_back({VISIBILITY_RESOLVE_IDS, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
+    bindings.push_back({VISIBILITY_RESOLVE_ALBEDO, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
+    bindings.push_back({VISIBILITY_RESOLVE_NORMAL, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
     resolveLayout_ = vk::DescriptorLayout(ctx, bindings);
     resolve_ = vk::Pipeline::compute(ctx, "render/visibility_resolve.comp",
                                      SceneGpu::drawLayouts(ctx, resolveLayout_.handle()),
@@ -125,10 +126,10 @@ void GBufferPass::addResolve(FrameGraph& graph, ImageHandle a, ImageHandle n, Im
     resolve.pipeline(resolve_);
     scene_.declareDrawSet(resolve, graph.buffer("views"));
     scene_.declareTriangles(resolve);
-    resolve.uniform(3, graph.buffer("frame"))
-        .sampled(5, id, nearest_.handle())
-        .storageImage(6, a)
-        .storageImage(7, n)
+    resolve.uniform(VISIBILITY_RESOLVE_FRAME, graph.buffer("frame"))
+        .sampled(VISIBILITY_RESOLVE_IDS, id, nearest_.handle())
+        .storageImage(VISIBILITY_RESOLVE_ALBEDO, a)
+        .storageImage(VISIBILITY_RESOLVE_NORMAL, n)
         .bytes(VkDeviceSize(w) * h * (4 + 8 + 8))
         .record([this, w, h](PassContext& c) {
             resolve_.push(c.cmd, gpu::VisibilityResolvePush{{w, h, 0, 0}});

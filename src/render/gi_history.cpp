@@ -1,5 +1,6 @@
 #include "render/gi_history.h"
 
+#include "render/gi_history_bindings.h"
 #include "shared/types.h"
 
 namespace penumbra {
@@ -10,7 +11,16 @@ GiHistory::GiHistory(vk::Allocator& alloc, uint32_t width, uint32_t height) {
     constexpr VkDescriptorType kImg = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
     constexpr VkDescriptorType kBuf = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     kernel_ = vk::ComputeKernel(ctx, "render/gi_history.comp",
-                                {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kTex, kTex, kTex, kTex, kImg, kImg, kTex, kBuf, kBuf},
+                                {{GI_HISTORY_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
+                                 {GI_HISTORY_CURRENT, kTex},
+                                 {GI_HISTORY_GBUFFER_DEPTH, kTex},
+                                 {GI_HISTORY_HISTORY, kTex},
+                                 {GI_HISTORY_HISTORY_DEPTH, kTex},
+                                 {GI_HISTORY_OUT, kImg},
+                                 {GI_HISTORY_OUT_DEPTH, kImg},
+                                 {GI_HISTORY_MOTION_FIRST, kTex},
+                                 {GI_HISTORY_MOTION_FIRST + 1, kBuf},
+                                 {GI_HISTORY_MOTION_FIRST + 2, kBuf}},
                                 sizeof(gpu::GiHistoryPush));
     nearest_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
     const VkImageUsageFlags usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
@@ -30,17 +40,17 @@ void declarePreviousFrameInputs(PassBuilder& pass, uint32_t first, VkSampler nea
 void GiHistory::addTo(FrameGraph& graph, float alpha) {
     const uint32_t write = next_, read = 1 - next_;
     const ImageHandle out = graph.import(irradiance_[write]), outDepth = graph.import(depth_[write]);
-    const gpu::GiHistoryPush push{{alpha, valid_ ? 1.0f : 0.0f, 0.0f, 0.0f}};
+    const gpu::GiHistoryPush push{alpha, valid_ ? 1u : 0u, 0, 0};
     PassBuilder pass = graph.pass("gi.temporal");
-    declarePreviousFrameInputs(pass, 7, nearest_.handle());
+    declarePreviousFrameInputs(pass, GI_HISTORY_MOTION_FIRST, nearest_.handle());
     pass.pipeline(kernel_.pipeline)
-        .uniform(0, graph.buffer("frame"))
-        .sampled(1, graph.image("gi.irradiance"), nearest_.handle())
-        .sampled(2, graph.image("gbuffer.depth"), nearest_.handle())
-        .sampled(3, graph.import(irradiance_[read]), nearest_.handle())
-        .sampled(4, graph.import(depth_[read]), nearest_.handle())
-        .storageImage(5, out)
-        .storageImage(6, outDepth)
+        .uniform(GI_HISTORY_FRAME, graph.buffer("frame"))
+        .sampled(GI_HISTORY_CURRENT, graph.image("gi.irradiance"), nearest_.handle())
+        .sampled(GI_HISTORY_GBUFFER_DEPTH, graph.image("gbuffer.depth"), nearest_.handle())
+        .sampled(GI_HISTORY_HISTORY, graph.import(irradiance_[read]), nearest_.handle())
+        .sampled(GI_HISTORY_HISTORY_DEPTH, graph.import(depth_[read]), nearest_.handle())
+        .storageImage(GI_HISTORY_OUT, out)
+        .storageImage(GI_HISTORY_OUT_DEPTH, outDepth)
         .record([this, out, push](PassContext& c) {
             kernel_.pipeline.push(c.cmd, push);
             const vk::Image& image = c.image(out);

@@ -5,14 +5,19 @@
 
 #include <glm/glm.hpp>
 
+#include "rsm/bindings.h"
+
 namespace penumbra {
 
 RsmFluxSampler::RsmFluxSampler(vk::Allocator& alloc, uint32_t resolution, uint32_t seed)
     : alloc_(alloc), resolution_(resolution), curve_(std::bit_ceil(resolution)), seed_(seed) {
     vk::Context& ctx = alloc.context();
     const VkDescriptorType ssbo = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, tex = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    sums_ = vk::ComputeKernel(ctx, "rsm/flux_sums.comp", {tex, ssbo}, sizeof(glm::uvec4));
-    draw_ = vk::ComputeKernel(ctx, "rsm/flux_draw.comp", {tex, ssbo, ssbo}, sizeof(glm::uvec4));
+    sums_ = vk::ComputeKernel(ctx, "rsm/flux_sums.comp", {{RSM_FLUX_VPLS, tex}, {RSM_FLUX_SUMS, ssbo}},
+                              sizeof(gpu::RsmFluxPush));
+    draw_ = vk::ComputeKernel(ctx, "rsm/flux_draw.comp",
+                              {{RSM_FLUX_VPLS, tex}, {RSM_FLUX_SUMS, ssbo}, {RSM_FLUX_DRAWS, ssbo}},
+                              sizeof(gpu::RsmFluxPush));
     point_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
 }
 
@@ -30,26 +35,26 @@ void RsmFluxSampler::addTo(FrameGraph& graph, uint32_t layers) {
     graph.publish("rsm.flux-draws", draws);
     const VkSampler point = point_.handle();
     for (uint32_t step : {0u, 1u}) {
-        const glm::uvec4 pc{resolution_, layers, curve_, step};
+        const gpu::RsmFluxPush pc{resolution_, layers, curve_, step, seed_};
         graph.pass(step == 0 ? "rsm.flux-runs" : "rsm.flux-cdf")
             .pipeline(sums_.pipeline)
-            .sampled(0, vpls, point)
-            .storageBuffer(1, cdf, Use::StorageWrite)
+            .sampled(RSM_FLUX_VPLS, vpls, point)
+            .storageBuffer(RSM_FLUX_SUMS, cdf, Use::StorageWrite)
             .record([this, pc](PassContext& c) {
                 sums_.pipeline.push(c.cmd, pc);
-                if (pc.w == 0) vkCmdDispatch(c.cmd, pc.z, pc.y, 1);
-                else vkCmdDispatch(c.cmd, pc.y, 1, 1);
+                if (pc.step == 0) vkCmdDispatch(c.cmd, pc.curve, pc.layerCount, 1);
+                else vkCmdDispatch(c.cmd, pc.layerCount, 1, 1);
             });
     }
-    const glm::uvec4 pc{resolution_, layers, curve_, seed_};
+    const gpu::RsmFluxPush pc{resolution_, layers, curve_, 0, seed_};
     graph.pass("rsm.flux-draw")
         .pipeline(draw_.pipeline)
-        .sampled(0, vpls, point)
-        .storageBuffer(1, cdf, Use::StorageRead)
-        .storageBuffer(2, draws, Use::StorageWrite)
+        .sampled(RSM_FLUX_VPLS, vpls, point)
+        .storageBuffer(RSM_FLUX_SUMS, cdf, Use::StorageRead)
+        .storageBuffer(RSM_FLUX_DRAWS, draws, Use::StorageWrite)
         .record([this, pc](PassContext& c) {
             draw_.pipeline.push(c.cmd, pc);
-            vkCmdDispatch(c.cmd, vk::divUp(RSM_FLUX_ENTRIES, 256), pc.y, 1);
+            vkCmdDispatch(c.cmd, vk::divUp(RSM_FLUX_ENTRIES, 256), pc.layerCount, 1);
         });
 }
 

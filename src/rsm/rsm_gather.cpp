@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include "rsm/bindings.h"
+
 namespace penumbra {
 namespace {
 
@@ -68,12 +70,21 @@ RsmGather::RsmGather(vk::Allocator& alloc, vk::CommandContext& cmd, uint32_t wid
     const char* gather = voxels                                         ? "rsm/gather_voxels.comp"
                          : shifted || settings.far == RsmFar::Flux ? "rsm/gather_shifted.comp"
                                                                         : "rsm/gather.comp";
-    const std::vector<VkDescriptorType> bindings{ubo, tex, tex, tex, tex, tex, ssbo, ssbo, img, ssbo, ssbo, tex, ssbo};
+    const std::vector<vk::Binding> bindings{
+        {RSM_GATHER_FRAME, ubo},          {RSM_GATHER_GBUFFER_NORMAL, tex}, {RSM_GATHER_GBUFFER_DEPTH, tex},
+        {RSM_GATHER_RSM_DEPTH, tex},      {RSM_GATHER_RSM_NORMAL, tex},     {RSM_GATHER_RSM_FLUX, tex},
+        {RSM_GATHER_LAYERS, ssbo},        {RSM_GATHER_SAMPLES, ssbo},       {RSM_GATHER_IRRADIANCE, img},
+        {RSM_GATHER_PIXEL_LIST, ssbo},    {RSM_GATHER_OCCUPANCY, ssbo},     {RSM_GATHER_VPLS, tex},
+        {RSM_GATHER_FLUX_DRAWS, ssbo}};
     gather_ = vk::ComputeKernel(ctx, gather, bindings, sizeof(gpu::RsmPush));
     if (settings.far == RsmFar::Flux && shifted && !voxels)
         gatherFlux_ = vk::ComputeKernel(ctx, "rsm/gather_flux.comp", bindings, sizeof(gpu::RsmPush));
-    interpolate_ = vk::ComputeKernel(ctx, "rsm/interpolate.comp", {ubo, tex, tex, tex, img, ssbo, ssbo},
-                                     sizeof(gpu::RsmPush));
+    interpolate_ = vk::ComputeKernel(
+        ctx, "rsm/interpolate.comp",
+        {{RSM_INTERPOLATE_FRAME, ubo}, {RSM_INTERPOLATE_GBUFFER_NORMAL, tex}, {RSM_INTERPOLATE_GBUFFER_DEPTH, tex},
+         {RSM_INTERPOLATE_LOW_IRRADIANCE, tex}, {RSM_INTERPOLATE_IRRADIANCE, img}, {RSM_INTERPOLATE_PIXEL_LIST, ssbo},
+         {RSM_INTERPOLATE_LAYERS, ssbo}},
+        sizeof(gpu::RsmPush));
     args_ = vk::ComputeKernel(ctx, "render/indirect_args.comp", {ssbo, ssbo}, sizeof(uint32_t));
     pointSampler_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
 
@@ -121,11 +132,26 @@ void RsmGather::setSettings(const RsmSettings& s) {
 // for RSM_GATHER_LOWRES (which the interpolation reads), the full image's otherwise.
 gpu::RsmPush RsmGather::constants(uint32_t mode, uint32_t layers) const {
     const bool low = mode == RSM_GATHER_LOWRES;
-    return {{mode, settings_.samples, layers, std::max(1u, settings_.lowResFactor)},
-            {low ? lowWidth_ : width_, low ? lowHeight_ : height_, settings_.resolution, settings_.bilinearVpls ? 1u : 0u},
-            {settings_.normalThreshold, settings_.distanceThreshold, settings_.radius, 0},
-            {visibilityMode(), settings_.visibilityRays, settings_.weights == RsmWeights::Paper ? 1u : 0u, lanes(mode)},
-            {drawsByFlux() ? 1u : 0u, shiftedRadii(settings_) ? 1u : 0u, settings_.visibilityPoints, 0}};
+    gpu::RsmPush pc{};
+    pc.mode = mode;
+    pc.sampleCount = settings_.samples;
+    pc.layerCount = layers;
+    pc.lowResFactor = std::max(1u, settings_.lowResFactor);
+    pc.width = low ? lowWidth_ : width_;
+    pc.height = low ? lowHeight_ : height_;
+    pc.rsmResolution = settings_.resolution;
+    pc.bilinearVpls = settings_.bilinearVpls ? 1u : 0u;
+    pc.normalThreshold = settings_.normalThreshold;
+    pc.distanceThreshold = settings_.distanceThreshold;
+    pc.radius = settings_.radius;
+    pc.visibility = visibilityMode();
+    pc.visibilityRays = settings_.visibilityRays;
+    pc.paperWeights = settings_.weights == RsmWeights::Paper ? 1u : 0u;
+    pc.lanesPerReceiver = lanes(mode);
+    pc.farByFlux = drawsByFlux() ? 1u : 0u;
+    pc.shiftedRadii = shiftedRadii(settings_) ? 1u : 0u;
+    pc.visibilityPoints = settings_.visibilityPoints;
+    return pc;
 }
 
 // Radii shifted per receiver: asked for, or implied by voxel visibility (its pipeline always shifts).
@@ -156,26 +182,27 @@ void RsmGather::addGather(FrameGraph& graph, const char* name, uint32_t mode, Im
     const vk::ComputeKernel& kernel = drawsByFlux() && gatherFlux_.pipeline.handle() ? gatherFlux_ : gather_;
     PassBuilder pass = graph.pass(name);
     pass.pipeline(kernel.pipeline)
-        .uniform(0, graph.buffer("frame"))
-        .sampled(1, graph.image("gbuffer.normal"), point)
-        .sampled(2, graph.image("gbuffer.depth"), point)
-        .sampled(3, graph.image("rsm.depth"), point)
-        .sampled(4, graph.image("rsm.normal"), point)
-        .sampled(5, graph.image("rsm.flux"), point)
-        .storageBuffer(6, graph.buffer("rsm.layers"))
-        .storageBuffer(7, graph.import(samples_.current()))
-        .storageImage(8, out)
-        .storageBuffer(9, graph.import(pixelList_))
-        .storageBuffer(10, graph.hasBuffer("occupancy") ? graph.buffer("occupancy") : graph.import(emptyBuffer_))
-        .sampled(11, graph.image("rsm.vpls"), point)
-        .storageBuffer(12, fluxDraws_ ? graph.buffer("rsm.flux-draws") : graph.import(emptyBuffer_));
+        .uniform(RSM_GATHER_FRAME, graph.buffer("frame"))
+        .sampled(RSM_GATHER_GBUFFER_NORMAL, graph.image("gbuffer.normal"), point)
+        .sampled(RSM_GATHER_GBUFFER_DEPTH, graph.image("gbuffer.depth"), point)
+        .sampled(RSM_GATHER_RSM_DEPTH, graph.image("rsm.depth"), point)
+        .sampled(RSM_GATHER_RSM_NORMAL, graph.image("rsm.normal"), point)
+        .sampled(RSM_GATHER_RSM_FLUX, graph.image("rsm.flux"), point)
+        .storageBuffer(RSM_GATHER_LAYERS, graph.buffer("rsm.layers"))
+        .storageBuffer(RSM_GATHER_SAMPLES, graph.import(samples_.current()))
+        .storageImage(RSM_GATHER_IRRADIANCE, out)
+        .storageBuffer(RSM_GATHER_PIXEL_LIST, graph.import(pixelList_))
+        .storageBuffer(RSM_GATHER_OCCUPANCY,
+                       graph.hasBuffer("occupancy") ? graph.buffer("occupancy") : graph.import(emptyBuffer_))
+        .sampled(RSM_GATHER_VPLS, graph.image("rsm.vpls"), point)
+        .storageBuffer(RSM_GATHER_FLUX_DRAWS, fluxDraws_ ? graph.buffer("rsm.flux-draws") : graph.import(emptyBuffer_));
     const BufferHandle args = mode == RSM_GATHER_LIST ? graph.import(dispatchArgs_) : BufferHandle{};
     if (args) pass.use(args, Use::IndirectArgs);
     const gpu::RsmPush pc = constants(mode, layers);
     pass.record([&kernel, pc, args](PassContext& c) {
         kernel.pipeline.push(c.cmd, pc);
         if (args) vkCmdDispatchIndirect(c.cmd, c.buffer(args).handle(), 0);
-        else vkCmdDispatch(c.cmd, vk::divUp(pc.sizes.x, 8), vk::divUp(pc.sizes.y, 8 / pc.sampling.w), 1);
+        else vkCmdDispatch(c.cmd, vk::divUp(pc.width, 8), vk::divUp(pc.height, 8 / pc.lanesPerReceiver), 1);
     });
 }
 
@@ -202,13 +229,13 @@ void RsmGather::addTo(FrameGraph& graph, uint32_t layers, uint32_t slot) {
     const gpu::RsmPush pc = constants(RSM_GATHER_LOWRES, layers);  // sizes = the low-res grid
     graph.pass("rsm.interpolate")
         .pipeline(interpolate_.pipeline)
-        .uniform(0, graph.buffer("frame"))
-        .sampled(1, graph.image("gbuffer.normal"), point)
-        .sampled(2, graph.image("gbuffer.depth"), point)
-        .sampled(3, low, point)
-        .storageImage(4, irradiance)
-        .storageBuffer(5, list, Use::StorageWrite)
-        .storageBuffer(6, graph.buffer("rsm.layers"))
+        .uniform(RSM_INTERPOLATE_FRAME, graph.buffer("frame"))
+        .sampled(RSM_INTERPOLATE_GBUFFER_NORMAL, graph.image("gbuffer.normal"), point)
+        .sampled(RSM_INTERPOLATE_GBUFFER_DEPTH, graph.image("gbuffer.depth"), point)
+        .sampled(RSM_INTERPOLATE_LOW_IRRADIANCE, low, point)
+        .storageImage(RSM_INTERPOLATE_IRRADIANCE, irradiance)
+        .storageBuffer(RSM_INTERPOLATE_PIXEL_LIST, list, Use::StorageWrite)
+        .storageBuffer(RSM_INTERPOLATE_LAYERS, graph.buffer("rsm.layers"))
         .record([this, pc](PassContext& c) {
             interpolate_.pipeline.push(c.cmd, pc);
             vkCmdDispatch(c.cmd, vk::divUp(width_, 8), vk::divUp(height_, 8), 1);

@@ -2,16 +2,19 @@
 
 #include <glm/gtc/matrix_inverse.hpp>
 
+#include "rsm/bindings.h"
+
 namespace penumbra {
 
 RsmPass::RsmPass(vk::Allocator& alloc, SceneGpu& scene, const RsmSettings& settings, uint32_t idResolution)
     : alloc_(alloc), scene_(scene), settings_(settings), idResolution_(idResolution) {
     vk::Context& ctx = alloc.context();
     std::vector<vk::Binding> bindings = SceneGpu::resolveSetBindings();
-    bindings.push_back({3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});  // lights
-    bindings.push_back({4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});  // RSM layer table
-    bindings.push_back({5, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});  // shadow.ids
-    for (uint32_t k : {6u, 7u, 8u, 9u}) bindings.push_back({k, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
+    bindings.push_back({RSM_RESOLVE_LIGHTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
+    bindings.push_back({RSM_RESOLVE_LAYERS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
+    bindings.push_back({RSM_RESOLVE_SHADOW_IDS, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
+    for (uint32_t k : {RSM_RESOLVE_DEPTH, RSM_RESOLVE_NORMAL, RSM_RESOLVE_FLUX, RSM_RESOLVE_VPLS})
+        bindings.push_back({k, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
     layout_ = vk::DescriptorLayout(ctx, bindings);
     pipeline_ = vk::Pipeline::compute(ctx, "rsm/resolve.comp", SceneGpu::drawLayouts(ctx, layout_.handle()), sizeof(gpu::RsmResolvePush));
     nearest_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
@@ -38,9 +41,15 @@ void RsmPass::setLayers(const std::vector<RsmLayerSource>& layers, uint32_t slot
         const RsmLayerSource& s = layers[i];
         // The projection's texel size is for the shadow map; RSM texels are larger by the ratio.
         const float texel = s.projection.texelSize * float(s.shadowResolution) / float(r);
-        table[i] = {s.projection.viewProj, glm::inverse(s.projection.viewProj),
-                    {texel, s.projection.perspective ? 1.0f : 0.0f, float(s.light), 0.0f},
-                    {float(s.cascade), s.lastCascade ? 1.0f : 0.0f, s.radiusScale, 0.0f}};
+        gpu::GpuRsmLayer& row = table[i];
+        row.viewProj = s.projection.viewProj;
+        row.invViewProj = glm::inverse(s.projection.viewProj);
+        row.texelSize = texel;
+        row.perspective = s.projection.perspective ? 1u : 0u;
+        row.light = s.light;
+        row.cascade = s.cascade;
+        row.lastCascade = s.lastCascade ? 1u : 0u;
+        row.radiusScale = s.radiusScale;
     }
     layerTable_.write(table.data(), table.size() * sizeof(gpu::GpuRsmLayer));
 }
@@ -65,17 +74,17 @@ void RsmPass::addTo(FrameGraph& graph) {
     pass.pipeline(pipeline_);
     scene_.declareDrawSet(pass, graph.buffer("views"));
     scene_.declareTriangles(pass);
-    pass.storageBuffer(3, graph.buffer("lights"))
-        .storageBuffer(4, table)
-        .sampled(5, graph.image("shadow.ids"), nearest_.handle())
-        .storageImage(6, depth)
-        .storageImage(7, normal)
-        .storageImage(8, flux)
-        .storageImage(9, vpls);
+    pass.storageBuffer(RSM_RESOLVE_LIGHTS, graph.buffer("lights"))
+        .storageBuffer(RSM_RESOLVE_LAYERS, table)
+        .sampled(RSM_RESOLVE_SHADOW_IDS, graph.image("shadow.ids"), nearest_.handle())
+        .storageImage(RSM_RESOLVE_DEPTH, depth)
+        .storageImage(RSM_RESOLVE_NORMAL, normal)
+        .storageImage(RSM_RESOLVE_FLUX, flux)
+        .storageImage(RSM_RESOLVE_VPLS, vpls);
     const uint32_t r = settings_.resolution;
     pass.bytes(VkDeviceSize(r) * r * sources_.size() * (4 + 4 + 4 + 8 + 16));
     pass.record([this, r](PassContext& c) {
-        pipeline_.push(c.cmd, gpu::RsmResolvePush{{r, idResolution_, 0, 0}});
+        pipeline_.push(c.cmd, gpu::RsmResolvePush{r, idResolution_, 0, 0});
         vkCmdDispatch(c.cmd, vk::divUp(r, 8), vk::divUp(r, 8), uint32_t(sources_.size()));
     });
 }

@@ -94,7 +94,7 @@ Buffer CommandContext::createDeviceBuffer(const void* data, VkDeviceSize bytes, 
                                           const char* name) {
     Buffer dst(alloc_, bytes, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, false, name);
     if (bytes == 0) return dst;
-    Buffer staging(alloc_, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true);
+    Buffer staging(alloc_, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true, "upload-staging");
     staging.write(data, bytes);
     submitAndWait([&](VkCommandBuffer cmd) {
         VkBufferCopy region{0, 0, bytes};
@@ -112,7 +112,7 @@ void CommandContext::uploadImage(Image& image, const void* data, VkDeviceSize by
 
 void CommandContext::uploadImage(Image& image, const void* data, VkDeviceSize bytes,
                                  const std::vector<VkBufferImageCopy>& regions) {
-    Buffer staging(alloc_, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true);
+    Buffer staging(alloc_, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true, "upload-staging");
     staging.write(data, bytes);
     submitAndWait([&](VkCommandBuffer cmd) {
         transitionImage(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT,
@@ -127,7 +127,7 @@ void CommandContext::uploadImage(Image& image, const void* data, VkDeviceSize by
 
 std::vector<uint8_t> CommandContext::readImage(Image& image, uint32_t texelBytes, uint32_t layer) {
     const VkDeviceSize bytes = VkDeviceSize(image.width()) * image.height() * texelBytes;
-    Buffer staging(alloc_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
+    Buffer staging(alloc_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true, "readback-staging");
     submitAndWait([&](VkCommandBuffer cmd) {
         transitionImage(cmd, image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_PIPELINE_STAGE_2_COPY_BIT,
                         VK_ACCESS_2_TRANSFER_READ_BIT);
@@ -143,7 +143,7 @@ std::vector<uint8_t> CommandContext::readImage(Image& image, uint32_t texelBytes
 }
 
 std::vector<uint8_t> CommandContext::readBuffer(const Buffer& buffer, VkDeviceSize bytes) {
-    Buffer staging(alloc_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
+    Buffer staging(alloc_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true, "readback-staging");
     submitAndWait([&](VkCommandBuffer cmd) {
         memoryBarrier(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
                       VK_PIPELINE_STAGE_2_COPY_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);

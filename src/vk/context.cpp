@@ -43,6 +43,15 @@ bool hidden(const std::string& name) {
     return false;
 }
 
+bool instanceOffers(const char* name) {
+    uint32_t n = 0;
+    VK_CHECK(vkEnumerateInstanceExtensionProperties(nullptr, &n, nullptr));
+    std::vector<VkExtensionProperties> exts(n);
+    VK_CHECK(vkEnumerateInstanceExtensionProperties(nullptr, &n, exts.data()));
+    return std::any_of(exts.begin(), exts.end(),
+                       [&](const VkExtensionProperties& e) { return std::strcmp(e.extensionName, name) == 0; });
+}
+
 bool hasExtension(VkPhysicalDevice device, const char* name) {
     uint32_t n = 0;
     VK_CHECK(vkEnumerateDeviceExtensionProperties(device, nullptr, &n, nullptr));
@@ -312,7 +321,11 @@ void Context::createInstance(bool validate) {
     app.apiVersion = VK_API_VERSION_1_3;
     std::vector<const char*> exts;
     for (const std::string& e : options_.instanceExtensions) exts.push_back(e.c_str());
-    if (validate) exts.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+    // Debug utils carry the validation messages, and labels and names for capture tools.
+    debugUtilsEnabled_ = validate || (options_.debugLabels && instanceOffers(VK_EXT_DEBUG_UTILS_EXTENSION_NAME));
+    const auto isDebugUtils = [](const char* e) { return std::strcmp(e, VK_EXT_DEBUG_UTILS_EXTENSION_NAME) == 0; };
+    if (debugUtilsEnabled_ && std::none_of(exts.begin(), exts.end(), isDebugUtils))
+        exts.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
     VkDebugUtilsMessengerCreateInfoEXT dbg{VK_STRUCTURE_TYPE_DEBUG_UTILS_MESSENGER_CREATE_INFO_EXT};
     dbg.messageSeverity =
         VK_DEBUG_UTILS_MESSAGE_SEVERITY_WARNING_BIT_EXT | VK_DEBUG_UTILS_MESSAGE_SEVERITY_ERROR_BIT_EXT;
@@ -417,6 +430,7 @@ void Context::loadDeviceFunctions() {
     cmdPushDescriptorSet = reinterpret_cast<PFN_vkCmdPushDescriptorSetKHR>(
         vkGetDeviceProcAddr(device_, "vkCmdPushDescriptorSetKHR"));
     if (!cmdPushDescriptorSet) throw VulkanError("vkCmdPushDescriptorSetKHR not found");
+    if (debugUtilsEnabled_ && options_.debugLabels) debugUtils_.load(instance_, device_);
 }
 
 void Context::adopt(const ExternalDevice& d) {

@@ -10,6 +10,7 @@
 #include <vulkan/vulkan.h>
 
 #include "vk/check.h"
+#include "vk/debug_utils.h"
 
 namespace penumbra::vk {
 
@@ -23,6 +24,9 @@ struct ContextOptions {
     std::string device;        // "" = best (discrete GPU first, lavapipe last); index or name substring
     bool quiet = false;        // do not echo validation messages to stderr
     bool syncValidation = false;  // with `validate`: also the layer's synchronization validation
+    // Command-buffer labels and object names (VK_EXT_debug_utils, where the instance offers it) for
+    // capture tools; off: none are recorded, as on an instance without the extension.
+    bool debugLabels = true;
     // Presentation (a viewer; headless when unset): the window system's instance extensions, and a
     // test that a queue family of a device can present to it. With it, VK_KHR_swapchain is enabled
     // and a device whose queue cannot present is an error. src/vk stays free of window libraries.
@@ -142,6 +146,8 @@ public:
 
     // Extension entry point (the loader exports core functions only).
     PFN_vkCmdPushDescriptorSetKHR cmdPushDescriptorSet = nullptr;
+    // Labels and object names, live when the instance offers VK_EXT_debug_utils.
+    const DebugUtils& debugUtils() const { return debugUtils_; }
 
 private:
     struct InstanceOnly {};
@@ -169,6 +175,8 @@ private:
     std::atomic<int64_t> pipelinesAlive_{0};
     std::unique_ptr<PipelineCache, void (*)(PipelineCache*)> pipelineCache_{nullptr, destroyPipelineCache};
     std::vector<std::string> validationLog_;
+    bool debugUtilsEnabled_ = false;
+    DebugUtils debugUtils_;
 };
 
 // The features penumbra needs, checked on one physical device. Names listed in the environment

@@ -54,7 +54,26 @@ struct PipelineCache {
     VkDevice device;
     std::map<std::string, VkDescriptorSetLayout> layouts;
     std::map<std::string, std::pair<VkPipeline, VkPipelineLayout>> pipelines;
+    std::map<VkDescriptorSetLayout, std::vector<Binding>> layoutBindings;
+    std::vector<PipelineInterface> interfaces;
 };
+
+namespace {
+
+void recordInterface(Context& ctx, std::vector<std::string> shaders, const std::vector<VkDescriptorSetLayout>& sets,
+                     uint32_t pushBytes) {
+    PipelineCache& cache = ctx.pipelineCache();
+    PipelineInterface declared{std::move(shaders), {}, pushBytes};
+    for (VkDescriptorSetLayout set : sets) {
+        auto it = cache.layoutBindings.find(set);  // every layout made by DescriptorLayout is there
+        declared.sets.push_back(it != cache.layoutBindings.end() ? it->second : std::vector<Binding>{});
+    }
+    cache.interfaces.push_back(std::move(declared));
+}
+
+}  // namespace
+
+const std::vector<PipelineInterface>& declaredInterfaces(Context& ctx) { return ctx.pipelineCache().interfaces; }
 
 void destroyPipelineCache(PipelineCache* cache) {
     if (!cache) return;
@@ -88,6 +107,7 @@ DescriptorLayout::DescriptorLayout(Context& ctx, const std::vector<Binding>& bin
     ci.pBindings = b.data();
     VK_CHECK(vkCreateDescriptorSetLayout(device_, &ci, nullptr, &layout_));
     cache.layouts[key] = layout_;
+    cache.layoutBindings[layout_] = bindings;
 }
 
 DescriptorLayout& DescriptorLayout::operator=(DescriptorLayout&& o) noexcept {
@@ -136,7 +156,7 @@ Pipeline Pipeline::compute(Context& ctx, const std::string& shader, const std::v
     const std::string key = "C " + shader + " " + layoutsKey(sets, pushBytes);
     if (p.fromCache(ctx, key)) return p;
     p.createLayout(ctx, sets, pushBytes);
-    p.bindPoint_ = VK_PIPELINE_BIND_POINT_COMPUTE;
+    recordInterface(ctx, {shader}, sets, pushBytes);
     VkShaderModule m = createModule(ctx.device(), shader);
     VkComputePipelineCreateInfo ci{VK_STRUCTURE_TYPE_COMPUTE_PIPELINE_CREATE_INFO};
     ci.stage = stage(VK_SHADER_STAGE_COMPUTE_BIT, m);
@@ -155,6 +175,9 @@ Pipeline Pipeline::graphics(Context& ctx, const GraphicsDesc& d, const std::vect
     const std::string key = graphicsKey(d) + " " + layoutsKey(sets, pushBytes);
     if (p.fromCache(ctx, key)) return p;
     p.createLayout(ctx, sets, pushBytes);
+    std::vector<std::string> shaders{d.vertexShader, d.fragmentShader, d.tessControlShader, d.tessEvalShader};
+    std::erase(shaders, std::string());
+    recordInterface(ctx, shaders, sets, pushBytes);
     std::vector<VkShaderModule> modules{createModule(ctx.device(), d.vertexShader)};
     std::vector<VkPipelineShaderStageCreateInfo> stages{stage(VK_SHADER_STAGE_VERTEX_BIT, modules[0])};
     if (!d.fragmentShader.empty()) {

@@ -20,6 +20,16 @@ struct Binding {
     uint32_t count = 1;
 };
 
+// What the C++ side declared for one pipeline: its shaders (keys of the embedded SPIR-V), the
+// bindings of each descriptor set (set 0 first) and the push-constant bytes. Recorded when the
+// pipeline is created; a test reflects the SPIR-V and compares (tests/spirv_reflection_test.cpp).
+struct PipelineInterface {
+    std::vector<std::string> shaders;
+    std::vector<std::vector<Binding>> sets;
+    uint32_t pushBytes = 0;
+};
+const std::vector<PipelineInterface>& declaredInterfaces(Context& ctx);
+
 class DescriptorLayout {
 public:
     DescriptorLayout() = default;

@@ -19,6 +19,7 @@ Buffer::Buffer(Allocator& alloc, VkDeviceSize size, VkBufferUsageFlags usage, bo
                                   VK_MEMORY_PROPERTY_HOST_CACHED_BIT)
                  : alloc.allocate(req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     VK_CHECK(vkBindBufferMemory(dev, buffer_, alloc_.memory, alloc_.offset));
+    alloc.context().debugUtils().name(VK_OBJECT_TYPE_BUFFER, buffer_, name);
 }
 
 Buffer& Buffer::operator=(Buffer&& o) noexcept {
@@ -78,6 +79,7 @@ Image::Image(Allocator& alloc, const ImageDesc& desc) : allocator_(&alloc), desc
     vkGetImageMemoryRequirements(dev, image_, &req);
     alloc_ = alloc.allocate(req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
     VK_CHECK(vkBindImageMemory(dev, image_, alloc_.memory, alloc_.offset));
+    alloc.context().debugUtils().name(VK_OBJECT_TYPE_IMAGE, image_, desc.name);
 
     VkImageViewCreateInfo vi{VK_STRUCTURE_TYPE_IMAGE_VIEW_CREATE_INFO};
     vi.image = image_;
