@@ -12,7 +12,7 @@
 
 #include "app/frame_options.h"
 #include "gpu_fixture.h"
-#include "render/settings_change.h"
+#include "renderer/settings_change.h"
 
 namespace penumbra::test {
 namespace {

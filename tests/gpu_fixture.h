@@ -13,7 +13,7 @@
 #include <gtest/gtest.h>
 #include <glm/glm.hpp>
 
-#include "render/renderer.h"
+#include "renderer/renderer.h"
 #include "scene/scene.h"
 #include "vk/context.h"
 

@@ -10,7 +10,7 @@
 
 #include "app/cli_parse.h"
 #include "gpu_fixture.h"
-#include "render/scene_gpu.h"
+#include "core/scene_gpu.h"
 #include "scene/builders.h"
 #include "shadow/shadow_map_pass.h"
 

@@ -12,7 +12,7 @@
 #include "app/option_checks.h"
 #include "app/sequence.h"
 #include "io/image_io.h"
-#include "render/renderer.h"
+#include "renderer/renderer.h"
 
 namespace penumbra {
 namespace {

@@ -13,8 +13,8 @@
 #include "dsm/dsm_resources.h"
 #include "lpv/lpv.h"
 #include "raster/raster_mode.h"
-#include "render/scene_gpu.h"
-#include "render/texture_upload.h"
+#include "core/scene_gpu.h"
+#include "core/texture_upload.h"
 #include "shadow/shadow_layout.h"
 
 namespace penumbra {

@@ -8,7 +8,7 @@
 #include <cstdint>
 
 #include "app/frame_options.h"
-#include "render/renderer.h"
+#include "renderer/renderer.h"
 #include "vk/context.h"
 
 namespace penumbra {

@@ -3,7 +3,7 @@
 #pragma once
 #include <CLI/CLI.hpp>
 
-#include "render/renderer.h"
+#include "renderer/renderer.h"
 
 namespace penumbra {
 

@@ -8,7 +8,7 @@
 #include "app/cli_parse.h"
 #include "app/option_checks.h"
 #include "app/shadow_cli.h"
-#include "render/texture_upload.h"
+#include "core/texture_upload.h"
 
 namespace penumbra {
 namespace {

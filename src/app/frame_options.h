@@ -7,7 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/dsm_cli.h"
-#include "render/renderer.h"
+#include "renderer/renderer.h"
 #include "scene/motion.h"
 
 namespace penumbra {

@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "render/raster.h"
+#include "core/raster.h"
 
 namespace penumbra {
 namespace {

@@ -2,8 +2,8 @@
 // map: there hair is an opaque caster, which gives the binary shadows DSM is compared against).
 #pragma once
 #include "dsm/hair_gpu.h"
-#include "render/frame_graph.h"
-#include "render/gbuffer_pass.h"
+#include "core/frame_graph.h"
+#include "lighting/gbuffer_pass.h"
 
 namespace penumbra {
 

@@ -7,7 +7,7 @@
 
 #include "dsm/deep_shadow_maps.h"
 #include "dsm/translucency.h"
-#include "render/gpu_scene.h"
+#include "core/gpu_scene.h"
 
 namespace penumbra {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <imgui.h>
 
-#include "shadow/light_space.h"
+#include "core/light_space.h"
 
 namespace penumbra::view {
 namespace {

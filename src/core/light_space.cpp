@@ -1,4 +1,4 @@
-#include "shadow/light_space.h"
+#include "core/light_space.h"
 
 #include <algorithm>
 #include <cmath>

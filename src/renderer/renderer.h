@@ -2,7 +2,7 @@
 // lighting -> tone map, each a Technique declaring its passes on a FrameGraph, over a long-lived
 // GpuScene. Frames in flight (2 by default): per-slot command buffers, fences, timestamp pools and
 // host-written buffers; the loop never waits for the device to idle. Settings changes rebuild only
-// what they invalidate (render/settings_change.h).
+// what they invalidate (renderer/settings_change.h).
 #pragma once
 #include <functional>
 #include <memory>
@@ -10,10 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "render/frame_techniques.h"
-#include "render/gpu_scene.h"
-#include "render/render_settings.h"
-#include "render/settings_change.h"
+#include "renderer/frame_techniques.h"
+#include "core/gpu_scene.h"
+#include "renderer/render_settings.h"
+#include "renderer/settings_change.h"
 
 namespace penumbra {
 

@@ -1,4 +1,4 @@
-#include "render/raster.h"
+#include "core/raster.h"
 
 namespace penumbra {
 

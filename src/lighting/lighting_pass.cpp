@@ -1,6 +1,6 @@
-#include "render/lighting_pass.h"
+#include "lighting/lighting_pass.h"
 
-#include "render/gi_history.h"
+#include "temporal_gi/gi_history.h"
 
 namespace penumbra {
 

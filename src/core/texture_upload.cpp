@@ -1,4 +1,4 @@
-#include "render/texture_upload.h"
+#include "core/texture_upload.h"
 
 #include <algorithm>
 #include <map>

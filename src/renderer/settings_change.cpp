@@ -1,4 +1,4 @@
-#include "render/settings_change.h"
+#include "renderer/settings_change.h"
 
 namespace penumbra {
 namespace {

@@ -5,8 +5,8 @@
 #pragma once
 #include <vector>
 
-#include "render/frame_graph.h"
-#include "render/render_settings.h"
+#include "core/frame_graph.h"
+#include "renderer/render_settings.h"
 #include "scene/scene.h"
 #include "shared/types.h"
 
@@ -32,7 +32,7 @@ public:
     virtual void update(const FrameContext&) {}
     // Declares this frame's passes.
     virtual void addPasses(const FrameContext& frame) = 0;
-    // Takes per-frame values of new settings (render/settings_change.h): no allocation.
+    // Takes per-frame values of new settings (renderer/settings_change.h): no allocation.
     virtual void applyPerFrame(const RenderSettings&) {}
 };
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "render/render_settings.h"
+#include "renderer/render_settings.h"
 
 namespace penumbra {
 

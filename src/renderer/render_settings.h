@@ -1,6 +1,6 @@
 // The settings of a frame pipeline: image size, output, and each technique's own settings.
 // The CLI, `bench`, the viewer and tests fill it; Renderer::apply takes changes of it at run time
-// (render/settings_change.h says what each change costs).
+// (renderer/settings_change.h says what each change costs).
 #pragma once
 #include <cstdint>
 
@@ -34,7 +34,7 @@ enum class Aov {
 
 enum class GiMode { None, Rsm, Lpv };
 
-// The camera's G-buffer (render/gbuffer_pass.h): visibility buffer + compute resolve, or classic raster.
+// The camera's G-buffer (lighting/gbuffer_pass.h): visibility buffer + compute resolve, or classic raster.
 enum class CameraPath { Visibility, Gbuffer };
 
 struct RenderSettings {
@@ -43,10 +43,10 @@ struct RenderSettings {
     Aov aov = Aov::Final;
     uint32_t aovLayer = 0;  // the layer the rsm-* and shadow-map AOVs show (clamped to the layers there are)
     float exposure = 1.0f;  // linear multiplier before the tone mapper
-    CameraPath cameraPath = CameraPath::Visibility;  // how the camera's G-buffer is made (render/gbuffer_pass.h)
+    CameraPath cameraPath = CameraPath::Visibility;  // how the camera's G-buffer is made (lighting/gbuffer_pass.h)
     ShadowSettings shadow;
     GiMode gi = GiMode::None;
-    // Temporal accumulation of the indirect irradiance (render/gi_history.h): off by default, it trades
+    // Temporal accumulation of the indirect irradiance (temporal_gi/gi_history.h): off by default, it trades
     // flicker under moving lights for lag (README "Temporal stability"); alpha = the new frame's weight.
     bool giTemporal = false;
     float giTemporalAlpha = 0.1f;
@@ -56,7 +56,7 @@ struct RenderSettings {
     // `--translucency`: hair and alphaMode BLEND surfaces composited over the opaque image in depth
     // order (src/dsm/translucency.h); off: both are drawn opaque into the G-buffer.
     bool translucency = true;
-    // The frame graph (render/frame_graph.h) runs passes that do not depend on one another together
+    // The frame graph (core/frame_graph.h) runs passes that do not depend on one another together
     // (`bench --overlap`; off: one after another, a barrier before each that needs one).
     bool overlapPasses = true;
 };

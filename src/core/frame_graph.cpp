@@ -1,4 +1,4 @@
-#include "render/frame_graph.h"
+#include "core/frame_graph.h"
 
 #include <algorithm>
 

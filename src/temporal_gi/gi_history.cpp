@@ -1,4 +1,4 @@
-#include "render/gi_history.h"
+#include "temporal_gi/gi_history.h"
 
 #include "shared/types.h"
 

@@ -1,11 +1,11 @@
-#include "render/scene_gpu.h"
+#include "core/scene_gpu.h"
 
 #include <algorithm>
 #include <stdexcept>
 
 #include <fmt/format.h>
 
-#include "render/texture_upload.h"
+#include "core/texture_upload.h"
 #include "scene/animation.h"
 
 namespace penumbra {
@@ -181,7 +181,7 @@ void SceneGpu::declareTriangles(PassBuilder& pass) {
 }
 
 void SceneGpu::uploadTextures(vk::CommandContext& cmd) {
-    // Each slot an array of one size, its mips blitted on the GPU (render/texture_upload.h).
+    // Each slot an array of one size, its mips blitted on the GPU (core/texture_upload.h).
     for (const TextureSlot& slot : texturePlan_.slots)
         textures_.push_back(uploadTextureSlot(cmd, scene_.textures, slot, "material-textures"));
     const std::vector<Texture> white{{1, 1, {255, 255, 255, 255}}};

@@ -3,7 +3,7 @@
 // to where each pixel's surface point was (render/gi_history.comp), and publishes the result as
 // "gi.irradiance". Two history images alternate: one is read while the other is written.
 #pragma once
-#include "render/frame_graph.h"
+#include "core/frame_graph.h"
 #include "vk/pipeline.h"
 
 namespace penumbra {

@@ -1,4 +1,4 @@
-#include "render/renderer.h"
+#include "renderer/renderer.h"
 
 #include <algorithm>
 #include <chrono>

@@ -1,11 +1,11 @@
 // The long-lived GPU copy of a scene: geometry, materials, textures, samplers and hair strands,
 // uploaded once and shared by every Renderer (and every settings change) that draws the scene.
-// Frame pipelines (src/render/renderer.h) are built per settings on top of it.
+// Frame pipelines (src/renderer/renderer.h) are built per settings on top of it.
 #pragma once
 #include <memory>
 
 #include "dsm/hair_gpu.h"
-#include "render/scene_gpu.h"
+#include "core/scene_gpu.h"
 #include "scene/scene.h"
 #include "vk/commands.h"
 

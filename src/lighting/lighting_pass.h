@@ -1,8 +1,8 @@
 // Deferred direct lighting in compute (render/lighting.comp): every light, shadow-map visibility,
 // writes the HDR image or the selected AOV.
 #pragma once
-#include "render/frame_graph.h"
-#include "render/render_settings.h"
+#include "core/frame_graph.h"
+#include "renderer/render_settings.h"
 #include "shared/types.h"
 #include "vk/pipeline.h"
 

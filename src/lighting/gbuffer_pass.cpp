@@ -1,6 +1,6 @@
-#include "render/gbuffer_pass.h"
+#include "lighting/gbuffer_pass.h"
 
-#include "render/raster.h"
+#include "core/raster.h"
 
 namespace penumbra {
 

@@ -1,4 +1,4 @@
-#include "render/frame_techniques.h"
+#include "renderer/frame_techniques.h"
 #include <algorithm>
 
 #include "raster/raster_mode.h"

@@ -1,4 +1,4 @@
-#include "render/gpu_scene.h"
+#include "core/gpu_scene.h"
 
 namespace penumbra {
 

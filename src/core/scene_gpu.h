@@ -6,8 +6,8 @@
 #pragma once
 #include <vector>
 
-#include "render/frame_graph.h"
-#include "render/texture_upload.h"
+#include "core/frame_graph.h"
+#include "core/texture_upload.h"
 #include "scene/scene.h"
 #include "shared/types.h"
 #include "vk/commands.h"

@@ -11,9 +11,9 @@
 #include <memory>
 
 #include "raster/compute_raster.h"
-#include "render/frame_graph.h"
-#include "render/render_settings.h"
-#include "render/scene_gpu.h"
+#include "core/frame_graph.h"
+#include "renderer/render_settings.h"
+#include "core/scene_gpu.h"
 
 namespace penumbra {
 
