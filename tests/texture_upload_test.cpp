@@ -13,7 +13,7 @@
 #include <gtest/gtest.h>
 #include <stb_image_write.h>
 
-#include "app/device_budget.h"
+#include "renderer/device_budget.h"
 #include "gltf_test_util.h"
 #include "gpu_fixture.h"
 #include "core/scene_gpu.h"

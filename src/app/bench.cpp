@@ -12,7 +12,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "app/device_budget.h"
+#include "app/frame_setup.h"
 #include "app/option_checks.h"
 
 namespace penumbra {
@@ -192,7 +192,7 @@ static BenchSeries measureSeries(Renderer& renderer, const SceneMotion& motion, 
 int runBench(const BenchOptions& o, const vk::ContextOptions& vkOptions, RenderSettings settings, bool dryRun) {
     if (!o.json.empty()) checkWritable(o.json, "--json");
     if (dryRun) return prepareFrame(o.frame, settings), 0;
-    DeviceFrame device(o.frame, settings, vkOptions);
+    CliDeviceFrame device(o.frame, settings, vkOptions);
     vk::Context& ctx = device.ctx;
     const PreparedFrame& f = device.frame;
     const double copyGbps = copyBandwidth(ctx);

@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/dsm_cli.h"
+#include "renderer/device_frame.h"
 #include "renderer/renderer.h"
 #include "scene/motion.h"
 
@@ -30,11 +31,6 @@ struct FrameOptions {
 void addFrameOptions(CLI::App& cmd, FrameOptions& o, RenderSettings& rs);
 // The time and motion options alone (also on `reference` and `eval`).
 void addMotionOptions(CLI::App& cmd, FrameOptions& o);
-
-struct PreparedFrame {
-    Scene scene;
-    Camera camera;
-};
 
 // Checks the settings' combinations, loads the scene, applies light overrides, picks the camera.
 // Throws std::invalid_argument / SceneError with one clear line.

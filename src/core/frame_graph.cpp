@@ -260,6 +260,7 @@ void FrameGraph::clear() {
     indexOf_.clear();
     imageNames_.clear();
     bufferNames_.clear();
+    contributions_.clear();
 }
 
 ImageHandle FrameGraph::import(vk::Image& image) {

@@ -14,6 +14,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "core/blackboard.h"
 #include "vk/commands.h"
 #include "vk/pipeline.h"
 #include "vk/timestamps.h"
@@ -123,6 +124,24 @@ public:
     BufferHandle buffer(const std::string& name) const;
     bool hasImage(const std::string& name) const { return imageNames_.count(name) > 0; }
     bool hasBuffer(const std::string& name) const { return bufferNames_.count(name) > 0; }
+    // The same by typed name (core/names.h).
+    void publish(ImageName name, ImageHandle image) { publish(std::string(name.id), image); }
+    void publish(BufferName name, BufferHandle buffer) { publish(std::string(name.id), buffer); }
+    ImageHandle image(ImageName name) const { return image(std::string(name.id)); }
+    BufferHandle buffer(BufferName name) const { return buffer(std::string(name.id)); }
+    bool has(ImageName name) const { return hasImage(name.id); }
+    bool has(BufferName name) const { return hasBuffer(name.id); }
+    // Names that any number of passes publish under, each adding one image (the indirect irradiance
+    // contributions): the reader takes the list, in the order contributed.
+    void contribute(ImageName name, ImageHandle image) { contributions_[name.id].push_back(image); }
+    std::vector<ImageHandle> contributions(ImageName name) const {
+        const auto it = contributions_.find(name.id);
+        return it == contributions_.end() ? std::vector<ImageHandle>{} : it->second;
+    }
+    // Replaces the list (a pass that folded the contributions into one image).
+    void setContributions(ImageName name, std::vector<ImageHandle> images) {
+        contributions_[name.id] = std::move(images);
+    }
 
     PassBuilder pass(std::string name, PassKind kind = PassKind::Compute) {
         return PassBuilder(*this, std::move(name), kind);
@@ -169,6 +188,7 @@ private:
     std::unordered_map<const void*, uint32_t> indexOf_;
     std::map<std::string, ImageHandle> imageNames_;
     std::map<std::string, BufferHandle> bufferNames_;
+    std::map<std::string, std::vector<ImageHandle>> contributions_;
     std::unordered_map<VkBuffer, BufferState> bufferStates_;
     bool overlap_ = true, passTimings_ = true;
 };

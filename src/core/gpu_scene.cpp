@@ -6,10 +6,11 @@ GpuScene::GpuScene(vk::Context& ctx, Scene scene)
     : ctx_(ctx), scene_(std::move(scene)), alloc_(ctx), cmd_(alloc_) {
     ensureSceneGraph(scene_);
     meshes_ = std::make_unique<SceneGpu>(cmd_, scene_);
-    if (!scene_.strands.empty()) hair_ = std::make_unique<HairGpu>(cmd_, scene_);
     ++geometryUploads_;
 }
 
-GpuScene::~GpuScene() = default;
+GpuScene::~GpuScene() {
+    attachments_.clear();  // before the allocator they were made with
+}
 
 }  // namespace penumbra

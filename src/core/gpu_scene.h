@@ -1,10 +1,13 @@
-// The long-lived GPU copy of a scene: geometry, materials, textures, samplers and hair strands,
-// uploaded once and shared by every Renderer (and every settings change) that draws the scene.
+// The long-lived GPU copy of a scene: geometry, materials, textures and samplers, uploaded once and
+// shared by every Renderer (and every settings change) that draws the scene, plus per-scene data a
+// module owns (hair strands: src/dsm), made on first use and kept as long as the scene.
 // Frame pipelines (src/renderer/renderer.h) are built per settings on top of it.
 #pragma once
+#include <functional>
+#include <map>
 #include <memory>
+#include <typeindex>
 
-#include "dsm/hair_gpu.h"
 #include "core/scene_gpu.h"
 #include "scene/scene.h"
 #include "vk/commands.h"
@@ -20,12 +23,23 @@ public:
 
     const Scene& scene() const { return scene_; }
     SceneGpu& meshes() { return *meshes_; }
-    const HairGpu* hair() const { return hair_.get(); }
     vk::Context& context() { return ctx_; }
     // How many times geometry (vertices, indices, strands) was uploaded: 1 for the scene's lifetime.
     uint32_t geometryUploads() const { return geometryUploads_; }
     // Device memory the scene holds.
     VkDeviceSize bytes() const { return alloc_.bytesInUse(); }
+
+    // The module's data of type T for this scene: made by `make` (with the scene's upload context)
+    // the first time any renderer asks, the same object after. `make` may return null (nothing to
+    // upload), which is kept too.
+    template <class T>
+    T* attachment(const std::function<std::unique_ptr<T>(vk::CommandContext&, const Scene&)>& make) {
+        const std::type_index key(typeid(T));
+        auto it = attachments_.find(key);
+        if (it == attachments_.end())
+            it = attachments_.emplace(key, std::shared_ptr<T>(make(cmd_, scene_))).first;
+        return static_cast<T*>(it->second.get());
+    }
 
 private:
     vk::Context& ctx_;
@@ -33,7 +47,7 @@ private:
     vk::Allocator alloc_;
     vk::CommandContext cmd_;
     std::unique_ptr<SceneGpu> meshes_;
-    std::unique_ptr<HairGpu> hair_;
+    std::map<std::type_index, std::shared_ptr<void>> attachments_;
     uint32_t geometryUploads_ = 0;
 };
 

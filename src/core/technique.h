@@ -1,23 +1,43 @@
 // The interface every technique of a frame implements (camera G-buffer, shadow maps, deep shadow
-// maps, RSM, LPV, lighting): a per-frame host update, then its passes, declared on the frame graph.
-// Techniques read each other's outputs by name from the graph (FrameGraph::image/buffer) and publish
-// their own; none includes another's header.
+// maps, RSM, LPV, lighting, and any registered from outside): a per-frame host update, then its
+// passes, declared on the frame graph in three stages. Techniques read each other's outputs by
+// typed name (core/names.h: GPU resources from the frame graph, host values from the blackboard)
+// and publish their own; none includes another's header. Each keeps its own settings struct: what
+// all share is CoreSettings.
 #pragma once
+#include <string>
 #include <vector>
 
+#include "core/blackboard.h"
+#include "core/core_settings.h"
 #include "core/frame_graph.h"
-#include "renderer/render_settings.h"
 #include "scene/scene.h"
 #include "shared/types.h"
 
 namespace penumbra {
 
+class GpuScene;
+
+// What a technique is built from: the device, the long-lived scene, the frame's lights and the
+// blackboard, where techniques built before it published what it may need at build time.
+struct TechniqueBuild {
+    vk::Allocator& alloc;
+    vk::CommandContext& cmd;
+    GpuScene& scene;
+    VkDescriptorSetLayout drawLayout;  // set 0 of draws over the scene (SceneGpu::drawSetBindings)
+    const std::vector<Light>& lights;
+    const CoreSettings& core;
+    Blackboard& board;
+    std::vector<std::string>& warnings;  // things the user should know, collected once
+};
+
 struct FrameContext {
     FrameGraph& graph;
+    Blackboard& board;
     uint32_t slot;                   // frame-in-flight slot: selects host-written ring copies
     const Camera& camera;
     const std::vector<Light>& lights;
-    const RenderSettings& settings;
+    const CoreSettings& core;
     float aspect, zfar;
     float sceneFar;  // distance to the scene bounds' farthest corner: the depth AOV's PNG scale
     const gpu::FrameUniforms& uniforms;  // valid in addPasses (written after every update)
@@ -30,10 +50,19 @@ public:
     // Host-side per-frame work: tables into this slot's ring copies, projections (before the frame's
     // views buffer is written).
     virtual void update(const FrameContext&) {}
-    // Declares this frame's passes.
+    // The frame's passes, in three stages that each run over every technique in order: the scene
+    // passes up to the lighting, passes that rewrite "hdr" after it (translucency), and the output
+    // (debug views, tone map).
     virtual void addPasses(const FrameContext& frame) = 0;
-    // Takes per-frame values of new settings (renderer/settings_change.h): no allocation.
-    virtual void applyPerFrame(const RenderSettings&) {}
+    virtual void addCompositePasses(const FrameContext&) {}
+    virtual void addOutputPasses(const FrameContext&) {}
+    // Takes per-frame values of new core settings: no allocation. (Its own settings come through
+    // the registry's apply.)
+    virtual void applyPerFrame(const CoreSettings&) {}
+    // Whether it contributes indirect irradiance (names::kIrradianceContribution) to the frames.
+    virtual bool contributesIrradiance() const { return false; }
+    // Casters moved or the caller asked for cold frames: drop what frames keep for the next.
+    virtual void invalidateCaches() {}
 };
 
 }  // namespace penumbra

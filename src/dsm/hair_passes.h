@@ -3,7 +3,6 @@
 #pragma once
 #include "dsm/hair_gpu.h"
 #include "core/frame_graph.h"
-#include "lighting/gbuffer_pass.h"
 
 namespace penumbra {
 
@@ -11,11 +10,12 @@ namespace penumbra {
 // normal = tangent with SHADING_HAIR in w.
 class HairGBufferPass {
 public:
-    HairGBufferPass(vk::Allocator& alloc, const HairGpu& hair, const GBufferPass& gbuffer);
-    // Draws into the published G-buffer ("gbuffer.*"), row 0 of "views".
+    HairGBufferPass(vk::Allocator& alloc, const HairGpu& hair);
+    // Draws into the published G-buffer ("gbuffer.*"; its depth D32_SFLOAT), row 0 of "views".
     void addTo(FrameGraph& graph, const RibbonView& camera);
 
 private:
+    void makePipeline(const vk::Image& albedo, const vk::Image& normal, const vk::Image& depth);
     vk::Allocator& alloc_;
     const HairGpu& hair_;
     vk::DescriptorLayout layout_;

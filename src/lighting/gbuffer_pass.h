@@ -12,7 +12,7 @@
 
 #include "raster/compute_raster.h"
 #include "core/frame_graph.h"
-#include "renderer/render_settings.h"
+#include "core/core_settings.h"
 #include "core/scene_gpu.h"
 
 namespace penumbra {

@@ -1,6 +1,6 @@
 #include "lighting/lighting_pass.h"
 
-#include "temporal_gi/gi_history.h"
+#include "core/previous_frame.h"
 
 namespace penumbra {
 

@@ -2,7 +2,7 @@
 // writes the HDR image or the selected AOV.
 #pragma once
 #include "core/frame_graph.h"
-#include "renderer/render_settings.h"
+#include "core/core_settings.h"
 #include "shared/types.h"
 #include "vk/pipeline.h"
 

@@ -1,9 +1,16 @@
-// The settings of a frame pipeline: image size, output, and each technique's own settings.
+// The settings of a frame pipeline: the core's (image size, output, camera path) and each
+// technique's own, named members for the built-in modules and an extension store for techniques
+// registered from outside (renderer/technique_registry.h).
 // The CLI, `bench`, the viewer and tests fill it; Renderer::apply takes changes of it at run time
 // (renderer/settings_change.h says what each change costs).
 #pragma once
+#include <any>
 #include <cstdint>
+#include <map>
+#include <stdexcept>
+#include <string>
 
+#include "core/core_settings.h"
 #include "dsm/dsm_settings.h"
 #include "lpv/lpv_settings.h"
 #include "rsm/rsm_settings.h"
@@ -12,30 +19,7 @@
 
 namespace penumbra {
 
-enum class Aov {
-    Direct = AOV_DIRECT,
-    Albedo = AOV_ALBEDO,
-    Normal = AOV_NORMAL,
-    Depth = AOV_DEPTH,
-    Shadow = AOV_SHADOW,
-    Final = AOV_FINAL,
-    Indirect = AOV_INDIRECT,
-    LpvSlice = AOV_LPV_SLICE,
-    GvSlice = AOV_GV_SLICE,
-    Cascade = AOV_CASCADE,
-    Transmittance = AOV_TRANSMITTANCE,
-    DsmLists = AOV_DSM_LISTS,
-    RsmDepth = AOV_RSM_DEPTH,
-    RsmNormal = AOV_RSM_NORMAL,
-    RsmFlux = AOV_RSM_FLUX,
-    ShadowMap = AOV_SHADOW_MAP,
-    Velocity = AOV_VELOCITY,
-};
-
 enum class GiMode { None, Rsm, Lpv };
-
-// The camera's G-buffer (lighting/gbuffer_pass.h): visibility buffer + compute resolve, or classic raster.
-enum class CameraPath { Visibility, Gbuffer };
 
 struct RenderSettings {
     uint32_t width = 1280;
@@ -59,6 +43,26 @@ struct RenderSettings {
     // The frame graph (core/frame_graph.h) runs passes that do not depend on one another together
     // (`bench --overlap`; off: one after another, a barrier before each that needs one).
     bool overlapPasses = true;
+    // Settings of registered techniques outside src/, by their registry name.
+    std::map<std::string, std::any> extensions;
+
+    // The extension's settings of type T (default-made on first use).
+    template <class T>
+    T& extension(const std::string& name) {
+        std::any& a = extensions[name];
+        if (!a.has_value()) a = T{};
+        return std::any_cast<T&>(a);
+    }
+    // Null when never set.
+    template <class T>
+    const T* extension(const std::string& name) const {
+        const auto it = extensions.find(name);
+        return it == extensions.end() ? nullptr : std::any_cast<T>(&it->second);
+    }
+    // The part that every technique shares; `computeRaster` resolved for the device.
+    CoreSettings core(bool computeRaster) const {
+        return {width, height, aov, aovLayer, exposure, cameraPath, translucency, computeRaster};
+    }
 };
 
 }  // namespace penumbra

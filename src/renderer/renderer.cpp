@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "raster/raster_mode.h"
+
 
 namespace penumbra {
 namespace {
@@ -113,66 +115,56 @@ Renderer::~Renderer() {
     slots_.clear();
 }
 
-// Re-creates the techniques in `parts` (the caller made sure no frame in flight uses them). Shadow
-// maps, deep shadow maps and GI depend on one another's layout: any of the first two rebuilds all three.
+// Re-creates the techniques whose registry entry names a part in `parts`, and builds or drops those
+// the settings now enable or disable (the caller made sure no frame in flight uses them). Shadow
+// maps, deep shadow maps and GI depend on one another's layout: any of the first two rebuilds all
+// three, and the camera's size rebuilds GI.
 void Renderer::build(uint32_t parts) {
     if (parts & (kPartShadow | kPartDsm)) parts |= kPartShadow | kPartDsm | kPartGi;
-    if ((parts & kPartShadowFilters) && !(parts & kPartShadow)) shadow_->setFilters(settings_, lights_);
     if (parts & kPartCamera) parts |= kPartGi;
     warnings_.clear();
-    if (parts & kPartGi) {
-        rsm_.reset(), lpv_.reset();
-        if (lighting_) lighting_->resetHistory();  // it accumulated the old GI
+    core_ = settings_.core(computeRasterFor(settings_.shadow.raster, ctx_.properties()));
+    const TechniqueRegistry& registry = TechniqueRegistry::instance();
+    std::vector<std::unique_ptr<Technique>> kept(registry.entries().size());
+    for (Built& b : techniques_) {
+        const size_t i = size_t(b.entry - registry.entries().data());
+        if ((b.entry->adjustParts & parts) && !(b.entry->parts & parts)) b.entry->adjust(*b.technique, settings_, lights_);
+        if (!(b.entry->parts & parts) && b.entry->enabled(settings_)) kept[i] = std::move(b.technique);
     }
-    if (parts & kPartShadow) shadow_.reset(), dsm_.reset();
-    if (parts & kPartCamera) camera_.reset(), lighting_.reset();
-
-    if (parts & kPartDsm) dsm_ = std::make_unique<DsmTechnique>(alloc_, scene_, settings_, lights_, warnings_);
-    if (parts & kPartShadow) {
-        shadow_ = std::make_unique<ShadowTechnique>(
-            alloc_, scene_, settings_, drawLayout_.handle(), lights_,
-            [this](uint32_t light) { return dsm_ && dsm_->maps().covers(light); }, warnings_);
-        const size_t layers = shadow_->pass().layers().size();
-        views_ = vk::BufferRing(alloc_, sizeof(glm::mat4) * (1 + layers), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "views");
+    // Destroyed in reverse frame order (consumers before producers), then built anew in build order.
+    while (!techniques_.empty()) techniques_.pop_back();
+    const TechniqueBuild context{alloc_, cmd_, scene_, drawLayout_.handle(), lights_, core_, board_, warnings_};
+    for (const TechniqueEntry* e : registry.buildOrder()) {
+        const size_t i = size_t(e - registry.entries().data());
+        if (!kept[i] && e->enabled(settings_)) kept[i] = e->create(context, settings_);
+    }
+    for (size_t i = 0; i < kept.size(); ++i)
+        if (kept[i]) techniques_.push_back({&registry.entries()[i], std::move(kept[i])});
+    if (parts & (kPartShadow | kPartDsm)) {
+        views_ = vk::BufferRing(alloc_, sizeof(glm::mat4) * (1 + shadowLayerCount()), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
+                                "views");
         lightBuffer_ = vk::BufferRing(alloc_, sizeof(gpu::GpuLight) * std::max<size_t>(lights_.size(), 1),
-                                        VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "lights");
-    }
-    if (parts & kPartCamera) {
-        camera_ = std::make_unique<CameraTechnique>(alloc_, scene_, settings_, drawLayout_.handle());
-        lighting_ = std::make_unique<LightingTechnique>(alloc_, cmd_, settings_,
-                                                        [this](FrameGraph& g) { camera_->addCompositeTo(g); });
-    }
-    if ((parts & kPartGi) && settings_.gi != GiMode::None) {
-        const bool lpv = settings_.gi == GiMode::Lpv;
-        rsm_ = std::make_unique<RsmTechnique>(alloc_, cmd_, scene_, settings_, shadow_->pass(), !lpv);
-        if (lpv)
-            lpv_ = std::make_unique<LpvTechnique>(alloc_, scene_.scene().bounds, settings_, rsm_->pass(), rsm_->occupancy());
-        if (shadow_->pass().layout().shadowed().empty())
-            warnings_.push_back("GI: no directional or spot light casts shadows; no indirect light");
+                                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "lights");
     }
     graph_.forgetStates();
 }
 
-std::vector<Technique*> Renderer::techniques() const {
-    std::vector<Technique*> out{camera_.get(), shadow_.get(), dsm_.get()};
-    if (rsm_) out.push_back(rsm_.get());
-    if (lpv_) out.push_back(lpv_.get());
-    out.push_back(lighting_.get());
-    return out;
+uint32_t Renderer::shadowLayerCount() const {
+    const ShadowLayers* layers = board_.get(names::kShadowLayers);
+    return layers ? uint32_t(layers->layers.size()) : 0u;
 }
 
 SettingsChange Renderer::apply(const RenderSettings& settings) {
     const SettingsDiff diff = diffSettings(settings_, settings);
     if (diff.change == SettingsChange::None) return diff.change;
-    if (diff.change == SettingsChange::PerFrame) {
-        settings_ = settings;
-        for (Technique* t : techniques()) t->applyPerFrame(settings_);
-        return diff.change;
-    }
-    finish();  // what is rebuilt may be in use by the frames in flight
+    if (diff.change != SettingsChange::PerFrame) finish();  // what is rebuilt may be in use by the frames in flight
     settings_ = settings;
-    if (diff.parts != kPartNone) build(diff.parts);
-    for (Technique* t : techniques()) t->applyPerFrame(settings_);
+    if (diff.change != SettingsChange::PerFrame && diff.parts != kPartNone) build(diff.parts);
+    core_ = settings_.core(core_.computeRaster);
+    for (const Built& b : techniques_) {
+        b.technique->applyPerFrame(core_);
+        if (b.entry->apply) b.entry->apply(*b.technique, settings_);
+    }
     return diff.change;
 }
 
@@ -234,19 +226,23 @@ void Renderer::writeFrameData(const FrameInputs& in) {
     f.size = {settings_.width, settings_.height, uint32_t(in.lights.size()), uint32_t(settings_.aov)};
     const glm::uvec2 probe = in.probePixel.value_or(glm::uvec2(PROBE_OFF));
     const bool ids = settings_.cameraPath == CameraPath::Visibility;
-    f.options = {settings_.gi != GiMode::None ? 1u : 0u, ids ? 1u : 0u, probe.x, probe.y};
+    bool indirect = false;  // a technique contributes indirect irradiance
+    for (const Built& b : techniques_) indirect |= b.technique->contributesIrradiance();
+    f.options = {indirect ? 1u : 0u, ids ? 1u : 0u, probe.x, probe.y};
     f.lens = {2.0f * std::tan(0.5f * camera.fovy) / float(settings_.height), 0.0f, 0.0f, 0.0f};
     frame_.write(&f, sizeof(f));
     frameConstants_ = f;
 
+    const ShadowLayers* shadow = board_.get(names::kShadowLayers);
     std::vector<glm::mat4> views{f.viewProj};
-    for (const ShadowLayer& l : shadow_->pass().layers()) views.push_back(l.projection.viewProj);
+    if (shadow)
+        for (const ShadowLayerView& l : shadow->layers) views.push_back(l.projection.viewProj);
     views_.write(views.data(), views.size() * sizeof(glm::mat4));
 
     std::vector<gpu::GpuLight> lights;
     for (uint32_t i = 0; i < in.lights.size(); ++i) {
         lights.push_back(toGpu(in.lights[i]));
-        shadow_->pass().fillGpuLight(i, lights.back());
+        if (shadow && shadow->fillGpuLight) shadow->fillGpuLight(i, lights.back());
     }
     if (!lights.empty()) lightBuffer_.write(lights.data(), lights.size() * sizeof(gpu::GpuLight));
     const std::vector<glm::mat4>& transforms = frameInstances(in);
@@ -274,17 +270,18 @@ void Renderer::recordFrame(FrameSlot& slot, const FrameInputs& in, const FrameHo
     graph_.setPassTimings(passScopes_);
     const float aspect = float(settings_.width) / float(settings_.height);
     const float depthFar = std::min(zfar_, boundsFar(in.camera, scene_.scene().bounds));
-    FrameContext context{graph_, index, in.camera, in.lights, settings_, aspect, zfar_, depthFar, frameConstants_};
-    const std::vector<Technique*> list = techniques();
-    for (Technique* t : list) t->update(context);
+    FrameContext context{graph_, board_, index, in.camera, in.lights, core_, aspect, zfar_, depthFar, frameConstants_};
+    for (const Built& b : techniques_) b.technique->update(context);
     writeFrameData(in);
-    graph_.publish("frame", graph_.import(frame_.current()));
-    graph_.publish("views", graph_.import(views_.current()));
-    graph_.publish("lights", graph_.import(lightBuffer_.current()));
-    graph_.publish("instances", graph_.import(instances_.current()));
-    graph_.publish("drawn-triangles", graph_.import(scene_.meshes().drawnTriangles()));
-    graph_.publish("probe", graph_.import(probe_.current()));
-    for (Technique* t : list) t->addPasses(context);
+    graph_.publish(names::kFrame, graph_.import(frame_.current()));
+    graph_.publish(names::kViews, graph_.import(views_.current()));
+    graph_.publish(names::kLights, graph_.import(lightBuffer_.current()));
+    graph_.publish(names::kInstances, graph_.import(instances_.current()));
+    graph_.publish(names::kDrawnTriangles, graph_.import(scene_.meshes().drawnTriangles()));
+    graph_.publish(names::kProbe, graph_.import(probe_.current()));
+    for (const Built& b : techniques_) b.technique->addPasses(context);
+    for (const Built& b : techniques_) b.technique->addCompositePasses(context);
+    for (const Built& b : techniques_) b.technique->addOutputPasses(context);
 
     VK_CHECK(vkResetCommandPool(ctx_.device(), slot.pool, VK_COMMAND_POOL_RESET_RELEASE_RESOURCES_BIT));
     VkCommandBufferBeginInfo bi{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
@@ -298,7 +295,7 @@ void Renderer::recordFrame(FrameSlot& slot, const FrameInputs& in, const FrameHo
     if (slot.probed)  // the probe's shader write, made visible to the host read after the fence
         vk::memoryBarrier(slot.cmd, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_WRITE_BIT,
                           VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
-    if (hooks.record) hooks.record(slot.cmd, lighting_->tonemap().ldr);
+    if (hooks.record) hooks.record(slot.cmd, ldr());
     VK_CHECK(vkEndCommandBuffer(slot.cmd));
 }
 
@@ -338,7 +335,7 @@ void Renderer::render(const Camera& camera) { render(FrameInputs{camera, scene_.
 
 std::vector<float> Renderer::readHdr() {
     finish();
-    std::vector<uint8_t> bytes = cmd_.readImage(lighting_->lighting().hdr, 16);
+    std::vector<uint8_t> bytes = cmd_.readImage(board_.require(names::kHdrImage), 16);
     std::vector<float> out(bytes.size() / 4);
     std::memcpy(out.data(), bytes.data(), bytes.size());
     return out;
@@ -346,7 +343,7 @@ std::vector<float> Renderer::readHdr() {
 
 std::vector<uint8_t> Renderer::readLdr() {
     finish();
-    return cmd_.readImage(lighting_->tonemap().ldr, 4);
+    return cmd_.readImage(ldr(), 4);
 }
 
 }  // namespace penumbra

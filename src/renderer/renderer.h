@@ -1,6 +1,7 @@
-// The frame pipeline: G-buffer -> shadow maps -> deep shadow maps -> RSM (gather or LPV) -> deferred
-// lighting -> tone map, each a Technique declaring its passes on a FrameGraph, over a long-lived
-// GpuScene. Frames in flight (2 by default): per-slot command buffers, fences, timestamp pools and
+// The frame pipeline: the techniques the registry (renderer/technique_registry.h) builds for the
+// settings, in its frame order (G-buffer -> shadow maps -> deep shadow maps -> RSM (gather or LPV)
+// -> deferred lighting -> translucency -> tone map for the built-in ones), each behind the one
+// Technique interface declaring its passes on a FrameGraph, over a long-lived GpuScene. Frames in flight (2 by default): per-slot command buffers, fences, timestamp pools and
 // host-written buffers; the loop never waits for the device to idle. Settings changes rebuild only
 // what they invalidate (renderer/settings_change.h).
 #pragma once
@@ -10,10 +11,14 @@
 #include <string>
 #include <vector>
 
-#include "renderer/frame_techniques.h"
+#include "core/blackboard.h"
+#include "core/frame_graph.h"
 #include "core/gpu_scene.h"
+#include "core/names.h"
+#include "core/technique.h"
 #include "renderer/render_settings.h"
 #include "renderer/settings_change.h"
+#include "renderer/technique_registry.h"
 
 namespace penumbra {
 
@@ -99,31 +104,26 @@ public:
     const Scene& scene() const { return scene_.scene(); }
     GpuScene& gpuScene() { return scene_; }
     // The AOV of the next frames (a per-frame value).
-    void setAov(Aov aov) { settings_.aov = aov; }
-    // Internals for tests and statistics: the G-buffer, read-backs, the last frame's constants.
-    GBufferPass& gbuffer() { return camera_->gbuffer(); }
-    ShadowMapPass& shadow() { return shadow_->pass(); }  // layers, shadow map, mask
+    void setAov(Aov aov) { settings_.aov = core_.aov = aov; }
+    // The built technique of type T (null when the settings did not build one): internals for
+    // tests and statistics. The caller includes T's header; the renderer knows only Technique.
+    template <class T>
+    T* find() const {
+        for (const Built& b : techniques_)
+            if (T* t = dynamic_cast<T*>(b.technique.get())) return t;
+        return nullptr;
+    }
+    // Host-side values the techniques published (core/names.h), e.g. names::kShadowLayers.
+    Blackboard& blackboard() { return board_; }
     // Drops what frames keep for the next (cached shadow layers): the next frame runs every pass.
     // Frames whose instance transforms differ from the last frame's call it themselves; call it when
     // casters move otherwise (edited geometry) or to time cold frames.
     void invalidateCaches() {
-        if (shadow_) shadow_->pass().invalidate();
-        if (rsm_) rsm_->invalidate();
+        for (const Built& b : techniques_) b.technique->invalidateCaches();
     }
     vk::CommandContext& commands() { return cmd_; }
     const gpu::FrameUniforms& frameUniforms() const { return frameConstants_; }
-    // GI internals, for tests and statistics (null when that GI mode is off).
-    RsmPass* rsm() { return rsm_ ? &rsm_->pass() : nullptr; }
-    RsmGather* rsmGather() { return rsm_ ? rsm_->gather() : nullptr; }
-    RsmFluxSampler* rsmFlux() { return rsm_ ? rsm_->flux() : nullptr; }
-    OccupancyVolume* occupancy() { return rsm_ ? rsm_->occupancy() : nullptr; }  // --rsm-visibility voxels
-    LightPropagationVolume* lpv() { return lpv_ ? &lpv_->volume() : nullptr; }
-    // Deep shadow maps (always present; inactive unless --shadow dsm) and the hair (null without strands).
-    DeepShadowMaps& deepShadows() { return dsm_->maps(); }
-    // Null when camera translucency is off or the scene has nothing translucent.
-    const CameraTranslucency* translucency() const { return camera_->translucency(); }
-    const HairGpu* hair() const { return scene_.hair(); }
-    vk::Image& ldr() { return lighting_->tonemap().ldr; }
+    vk::Image& ldr() { return board_.require(names::kLdrImage); }
 
 private:
     struct FrameSlot;
@@ -135,7 +135,11 @@ private:
     const std::vector<glm::mat4>& frameInstances(const FrameInputs& in) const;
     void recordFrame(FrameSlot& slot, const FrameInputs& in, const FrameHooks& hooks);
     void collect(FrameSlot& slot);
-    std::vector<Technique*> techniques() const;
+    uint32_t shadowLayerCount() const;
+    struct Built {
+        const TechniqueEntry* entry;
+        std::unique_ptr<Technique> technique;
+    };
 
     std::unique_ptr<GpuScene> ownedScene_;  // the one-shot form's
     vk::Context& ctx_;
@@ -152,12 +156,9 @@ private:
     // The camera and instance transforms last rendered: the velocity's previous frame, and what cached
     // shadow layers were drawn with.
     std::optional<FrameInputs::Previous> lastFrame_;
-    std::unique_ptr<DsmTechnique> dsm_;
-    std::unique_ptr<ShadowTechnique> shadow_;
-    std::unique_ptr<CameraTechnique> camera_;
-    std::unique_ptr<RsmTechnique> rsm_;
-    std::unique_ptr<LpvTechnique> lpv_;
-    std::unique_ptr<LightingTechnique> lighting_;
+    Blackboard board_;  // declared before the techniques: they drop their entries when they go
+    std::vector<Built> techniques_;  // frame order
+    CoreSettings core_;
     FrameGraph graph_;
     FrameTimings lastTimings_;
     bool passScopes_ = false;  // setPassScopes()

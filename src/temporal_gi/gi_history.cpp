@@ -20,13 +20,6 @@ GiHistory::GiHistory(vk::Allocator& alloc, uint32_t width, uint32_t height) {
     }
 }
 
-void declarePreviousFrameInputs(PassBuilder& pass, uint32_t first, VkSampler nearest) {
-    FrameGraph& g = pass.graph();
-    pass.sampled(first, g.image("gbuffer.ids"), nearest)
-        .storageBuffer(first + 1, g.buffer("drawn-triangles"))
-        .storageBuffer(first + 2, g.buffer("instances"));
-}
-
 void GiHistory::addTo(FrameGraph& graph, float alpha) {
     const uint32_t write = next_, read = 1 - next_;
     const ImageHandle out = graph.import(irradiance_[write]), outDepth = graph.import(depth_[write]);

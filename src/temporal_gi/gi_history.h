@@ -4,13 +4,10 @@
 // "gi.irradiance". Two history images alternate: one is read while the other is written.
 #pragma once
 #include "core/frame_graph.h"
+#include "core/previous_frame.h"
 #include "vk/pipeline.h"
 
 namespace penumbra {
-
-// The inputs of render/motion.glsl (where a pixel's point was in the previous frame) at bindings
-// first..first + 2: "gbuffer.ids", "drawn-triangles", "instances".
-void declarePreviousFrameInputs(PassBuilder& pass, uint32_t first, VkSampler nearest);
 
 class GiHistory {
 public:

@@ -5,7 +5,7 @@
 #include <fmt/format.h>
 
 #include "app/cli_parse.h"
-#include "app/device_budget.h"
+#include "renderer/device_budget.h"
 #include "app/shadow_cli.h"
 #include "io/image_io.h"
 

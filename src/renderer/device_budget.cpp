@@ -1,4 +1,4 @@
-#include "app/device_budget.h"
+#include "renderer/device_budget.h"
 
 #include <algorithm>
 #include <bit>
@@ -9,7 +9,6 @@
 
 #include <fmt/format.h>
 
-#include "app/option_checks.h"
 #include "dsm/dsm_resources.h"
 #include "lpv/lpv.h"
 #include "raster/raster_mode.h"
@@ -24,6 +23,10 @@ constexpr double kMiB = 1024.0 * 1024.0;
 constexpr uint64_t kVplBytes = 48;         // gpu::GpuVpl
 constexpr uint64_t kHairPointBytes = 32;   // gpu::GpuHairPoint
 constexpr uint64_t kStrandRecordBytes = 16;
+
+std::string plural(size_t count, const std::string& noun) {
+    return fmt::format("{} {}{}", count, noun, count == 1 ? "" : "s");
+}
 
 // One large resource: its size as a function of the option that scales it (monotone).
 struct Demand {
@@ -246,38 +249,11 @@ void checkDeviceBudget(const vk::Context& ctx, const RenderSettings& settings, c
     checkDeviceBudget(ctx.limits(), settings, scene, lights, computeRasterFor(settings.shadow.raster, ctx.properties()));
 }
 
-void checkBuiltinSceneBudget(const vk::DeviceLimits& limits, const FrameOptions& frame) {
-    if (frame.scene == "hair") checkStrandBudget(limits, frame.builtin.hairStrands);
-}
-
 void checkStrandBudget(const vk::DeviceLimits& limits, uint32_t strands) {
     const uint64_t pointBytes = (BuiltinOptions::kHairPointsPerStrand + 2) * kHairPointBytes;
     checkEach(limits, {Demand{"--strands", strands, 1,
                               fmt::format("the hair's ribbon points ({} bytes per strand)", pointBytes),
                               [=](uint64_t n) { return n * pointBytes; }, true}});
-}
-
-namespace {
-
-// The settings' own rules come before the device is opened.
-const vk::ContextOptions& afterSettingsCheck(const FrameOptions& o, RenderSettings& settings,
-                                             const vk::ContextOptions& vkOptions) {
-    checkFrameSettings(o, settings);
-    return vkOptions;
-}
-
-}  // namespace
-
-DeviceFrame::DeviceFrame(const FrameOptions& o, RenderSettings& settings, const vk::ContextOptions& vkOptions)
-    : ctx(afterSettingsCheck(o, settings, vkOptions)) {
-    checkBuiltinSceneBudget(ctx.limits(), o);
-    frame = prepareFrame(o, settings);
-    checkDeviceBudget(ctx, settings, frame.scene);
-}
-
-void DeviceFrame::checkValidation() const {
-    if (ctx.validationMessages() > 0)
-        throw std::runtime_error(fmt::format("{} validation message(s) reported", ctx.validationMessages()));
 }
 
 }  // namespace penumbra

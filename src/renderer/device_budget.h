@@ -7,8 +7,10 @@
 #pragma once
 #include <cstdint>
 
-#include "app/frame_options.h"
-#include "renderer/renderer.h"
+#include <vector>
+
+#include "renderer/render_settings.h"
+#include "scene/scene.h"
 #include "vk/context.h"
 
 namespace penumbra {
@@ -28,20 +30,7 @@ inline void checkDeviceBudget(const vk::Context& ctx, const RenderSettings& sett
 // must fit one storage buffer and the device's memory.
 void checkStrandBudget(const vk::DeviceLimits& limits, uint32_t strands);
 
-// The built-in scene's size options (`--strands` of `hair`) before the scene is built.
-void checkBuiltinSceneBudget(const vk::DeviceLimits& limits, const FrameOptions& frame);
-
 // GPU bytes of one strand of the built-in hair scene (ribbon points and the strand record).
 uint64_t hairBytesPerStrand();
-
-// What `render` and `bench` do before their work, in this order: the settings' combinations, the
-// device, the built-in scene's budget (before it is grown), the scene, every resource against the device.
-struct DeviceFrame {
-    vk::Context ctx;
-    PreparedFrame frame;
-    DeviceFrame(const FrameOptions& o, RenderSettings& settings, const vk::ContextOptions& vkOptions);
-    // Throws when the validation layer reported anything (`--validate`).
-    void checkValidation() const;
-};
 
 }  // namespace penumbra
