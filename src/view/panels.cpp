@@ -8,6 +8,8 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "core/names.h"
+
 namespace penumbra::view {
 namespace {
 
@@ -242,7 +244,8 @@ void Panels::debugViewSliders(ViewSession& session) {
     } else if (rs.aov == Aov::RsmDepth || rs.aov == Aov::RsmNormal || rs.aov == Aov::RsmFlux ||
                rs.aov == Aov::ShadowMap) {
         int layer = int(rs.aovLayer);
-        const int last = std::max(int(session.renderer().shadow().layers().size()) - 1, 0);  // views clamp to theirs
+        const ShadowLayers* layers = session.renderer().blackboard().get(names::kShadowLayers);
+        const int last = std::max(int(layers ? layers->layers.size() : 0) - 1, 0);  // views clamp to theirs
         if (ImGui::SliderInt("aov-layer", &layer, 0, last)) apply(session, "aov-layer", std::to_string(layer));
     }
 }
