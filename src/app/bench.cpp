@@ -13,6 +13,8 @@
 #include <nlohmann/json.hpp>
 
 #include "app/frame_setup.h"
+#include "app/option_cli.h"
+#include "renderer/render_options.h"
 #include "app/option_checks.h"
 
 namespace penumbra {
@@ -53,25 +55,11 @@ double copyBandwidth(vk::Context& ctx) {
 }
 
 nlohmann::json settingsJson(const RenderSettings& s, const FrameOptions& f) {
-    static const char* gi[] = {"none", "rsm", "lpv"};
-    static const char* rsmMode[] = {"interpolated", "full", "all-texels"};
-    return {{"scene", f.scene},
-            {"camera", f.camera},
-            {"aov", f.aov},
-            {"width", s.width},
-            {"height", s.height},
-            {"gi", gi[int(s.gi)]},
-            {"shadow_resolution", s.shadow.resolution},
-            {"camera_path", s.cameraPath == CameraPath::Visibility ? "visibility" : "gbuffer"},
-            {"raster", s.shadow.raster == RasterMode::Compute ? "compute" : s.shadow.raster == RasterMode::Auto ? "auto" : "hardware"},
-            {"rsm", {{"resolution", s.rsm.resolution}, {"samples", s.rsm.samples}, {"radius", s.rsm.radius},
-                     {"mode", rsmMode[int(s.rsm.mode)]}, {"lowres_factor", s.rsm.lowResFactor}}},
-            {"lpv", {{"resolution", s.lpv.resolution}, {"iterations", s.lpv.iterations},
-                     {"cascades", s.lpv.cascades}, {"rsm_resolution", s.lpv.rsmResolution},
-                     {"vpl_resolution", s.lpv.vplResolution}, {"occlusion", s.lpv.occlusion}}},
-            {"dsm", s.dsm.enabled},
-            {"overlap", s.overlapPasses},
-            {"dom", s.dsm.enabled && s.dsm.opacityMaps}};
+    nlohmann::json j = renderSettingsJson(s);
+    j["scene"] = f.scene;
+    j["inputs"] = optionsJson(frameInputOptions(), &f);
+    j["motion"] = optionsJson(motionOptions(), &f);
+    return j;
 }
 
 std::string today() {
@@ -83,18 +71,35 @@ std::string today() {
 
 }  // namespace
 
+namespace {
+
+OptionTable makeBenchTable() {
+    using B = BenchOptions;
+    constexpr SettingsChange kCommand = SettingsChange::None;  // read once by the command
+    OptionTableBuilder<B> t("bench", "Bench");
+    t.integer("--frames", "frames", [](B& b) -> auto& { return b.frames; }, 1, 1000000, kCommand, "Measured frames");
+    t.integer("--warmup", "warmup", [](B& b) -> auto& { return b.warmup; }, 0, 1000000, kCommand,
+              "Frames rendered first and not measured");
+    t.text("--json", "json", [](B& b) -> auto& { return b.json; },
+           [](const B& b) { return b.json.empty() ? std::vector<std::string>{} : std::vector<std::string>{b.json}; },
+           [](B& b, const std::string& v) { b.json = v; }, kCommand, "Write the results as JSON to this file")
+        .placeholder = "FILE";
+    t.integer("--frames-in-flight", "frames_in_flight", [](B& b) -> auto& { return b.framesInFlight; }, 1,
+              vk::kMaxFramesInFlight, kCommand, "Frames recorded ahead of the GPU (1 waits for each frame)");
+    return t.build();
+}
+
+}  // namespace
+
+const OptionTable& benchCommandOptions() {
+    static const OptionTable table = makeBenchTable();
+    return table;
+}
+
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& o, RenderSettings& rs) {
     CLI::App* cmd = app.add_subcommand("bench", "Time every pass over many frames (GPU timestamps), write JSON");
     addFrameOptions(*cmd, o.frame, rs);
-    cmd->add_option("--frames", o.frames, "Measured frames")->check(CLI::Range(1, 1000000));
-    cmd->add_option("--warmup", o.warmup, "Frames rendered first and not measured")
-        ->check(CLI::Range(0, 1000000));
-    cmd->add_option("--json", o.json, "Write the results as JSON to this file");
-    cmd->add_option("--frames-in-flight", o.framesInFlight,
-                    "Frames recorded ahead of the GPU (default 2; 1 waits for each frame, as the old loop did)")
-        ->check(CLI::Range(1, int(vk::kMaxFramesInFlight)));
-    cmd->add_option("--overlap", rs.overlapPasses,
-                    "Independent passes run together, one barrier between dependent groups (on/off; default on)");
+    addOptionRows(*cmd, benchCommandOptions(), &o);
     return cmd;
 }
 

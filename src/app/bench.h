@@ -17,6 +17,8 @@ struct BenchOptions {
     std::string command;  // the command line, recorded in the JSON
 };
 
+// The options of `bench` itself (frames, warm-up, JSON).
+const OptionTable& benchCommandOptions();
 CLI::App* addBenchCommand(CLI::App& app, BenchOptions& options, RenderSettings& settings);
 int runBench(const BenchOptions& options, const vk::ContextOptions& vkOptions, RenderSettings settings,
              bool dryRun = false);

@@ -10,12 +10,45 @@
 #include "app/frame_setup.h"
 #include "app/dsm_cli.h"
 #include "app/option_checks.h"
+#include "app/option_cli.h"
 #include "app/sequence.h"
 #include "io/image_io.h"
 #include "renderer/renderer.h"
 #include "rsm/rsm_technique.h"
 
 namespace penumbra {
+namespace {
+
+OptionTable makeRenderCommandTable() {
+    using R = RenderCliOptions;
+    constexpr SettingsChange kCommand = SettingsChange::None;  // read once by the command
+    OptionTableBuilder<R> t("render", "Render");
+    t.text("-o,--output", "output", [](R& r) -> auto& { return r.output; },
+           [](const R& r) { return std::vector<std::string>{r.output}; },
+           [](R& r, const std::string& v) { r.output = v; }, kCommand, "Output image (.png or .exr)")
+        .placeholder = "FILE";
+    t.integer("--frames", "frames", [](R& r) -> auto& { return r.frames; }, 1, 100000, kCommand,
+              "Frames to render; timings are the median after the first");
+    t.boolean("--print-passes", "print_passes", [](R& r) -> auto& { return r.printPasses; }, kCommand,
+              "Print the frame's passes with their inputs and outputs")
+        .bareFlag = true;
+    t.boolean("-q,--quiet", "quiet", [](R& r) -> auto& { return r.quiet; }, kCommand,
+              "Print nothing but warnings and errors")
+        .bareFlag = true;
+    t.integer("--sequence", "sequence", [](R& r) -> auto& { return r.sequence; }, 1, 1000000, kCommand,
+              "Render N frames from the scene time at --fps to -o out_%04d.png|exr or out.mp4 (ffmpeg)")
+        .orSpecial(0, "one image");
+    t.real("--fps", "fps", [](R& r) -> auto& { return r.fps; }, 1e-3, 1e4, kCommand, "Frames per second of --sequence");
+    return t.build();
+}
+
+}  // namespace
+
+const OptionTable& renderCommandOptions() {
+    static const OptionTable table = makeRenderCommandTable();
+    return table;
+}
+
 namespace {
 
 // Per-pass median over the rendered frames (the first frame, which warms caches, included only
@@ -192,16 +225,8 @@ Cli::Cli(const std::string& commandLine) {
     addGlobalOptions(app, vk, dryRun);
 
     renderCmd = app.add_subcommand("render", "Render a scene headless to PNG (tone-mapped) or EXR (linear)");
-    renderCmd->add_option("-o,--output", render.output, "Output image (.png or .exr)");
     addFrameOptions(*renderCmd, render.frame, renderSettings);
-    renderCmd->add_option("--frames", render.frames, "Frames to render; timings are the median after the first")
-        ->check(CLI::Range(1, 100000));
-    renderCmd->add_flag("--print-passes", render.printPasses, "Print the frame's passes with their inputs and outputs");
-    renderCmd->add_flag("-q,--quiet", render.quiet, "Print nothing but warnings and errors");
-    renderCmd->add_option("--sequence", render.sequence,
-                          "Render N frames from --time at --fps to -o out_%04d.png|exr or out.mp4 (ffmpeg)")
-        ->check(CLI::Range(1, 1000000));
-    renderCmd->add_option("--fps", render.fps, "Frames per second of --sequence")->check(finiteRange(1e-3, 1e4));
+    addOptionRows(*renderCmd, renderCommandOptions(), &render);
     benchCmd = addBenchCommand(app, bench, benchSettings);
     bench.command = commandLine;
     infoCmd = app.add_subcommand("info", "List Vulkan devices and the features penumbra needs");

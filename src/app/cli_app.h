@@ -25,6 +25,9 @@ struct RenderCliOptions {
     double fps = 30.0;
 };
 
+// The options of `render` itself (output, frames, sequence).
+const OptionTable& renderCommandOptions();
+
 struct Cli {
     CLI::App app{"penumbra: real-time shadows and diffuse global illumination (Vulkan 1.3)"};
     vk::ContextOptions vk;

@@ -1,12 +1,14 @@
 // The options that define one frame (scene, camera, lights, size, shadows, GI, DSM), shared by
 // `render` and `bench`, and the preparation of the scene and camera they describe.
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include "app/dsm_cli.h"
+#include "core/options.h"
 #include "renderer/device_frame.h"
 #include "renderer/renderer.h"
 #include "scene/motion.h"
@@ -15,11 +17,12 @@ namespace penumbra {
 
 struct FrameOptions {
     std::string scene = "cornell";
-    std::string camera;
+    std::string camera;                 // --camera as given, and parsed when it was given
+    std::optional<Camera> parsedCamera;
     int cameraIndex = 0;
-    std::vector<std::string> lights;
+    std::vector<std::string> lights;    // --light as given, and parsed
+    std::vector<Light> parsedLights;
     std::vector<std::string> lightFilters;  // --light-shadow N=MODE
-    std::string aov = "final";
     BuiltinOptions builtin;  // --strands
     // Time and motion (README "Motion"): --time, --animation, --clamp, --sun-path, --light-path,
     // --camera-keys, --no-motion.
@@ -27,6 +30,10 @@ struct FrameOptions {
     AnimationOptions animation;
     MotionPaths motion;
 };
+
+// The frame inputs' option tables: scene camera and lights (`inputs`), time and motion (`motion`).
+const OptionTable& frameInputOptions();
+const OptionTable& motionOptions();
 
 void addFrameOptions(CLI::App& cmd, FrameOptions& o, RenderSettings& rs);
 // The time and motion options alone (also on `reference` and `eval`).

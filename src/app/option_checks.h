@@ -19,29 +19,6 @@ CLI::Validator finiteRange(double min, double max);
 // empty value (which CLI11 takes as "keep the default"). Call it after every option has been added.
 void requireFiniteNumbers(CLI::App& app);
 
-// An option whose value is one of `choices` (name -> value): the help lists the names ("none|rsm|lpv")
-// and the default's name, an unknown name is one error line that lists them.
-template <class T>
-CLI::Option* addChoice(CLI::App& cmd, const std::string& name, T& value,
-                       const std::vector<std::pair<std::string, T>>& choices, const std::string& description) {
-    std::string names, current;
-    for (const auto& [n, v] : choices) {
-        names += (names.empty() ? "" : "|") + n;
-        if (v == value) current = n;
-    }
-    CLI::Option* opt = cmd.add_option_function<std::string>(
-        name,
-        [&value, choices, name, names](const std::string& text) {
-            for (const auto& [n, v] : choices)
-                if (n == text) return void(value = v);
-            throw CLI::ValidationError(name, "'" + text + "' is not one of " + names);
-        },
-        description);
-    opt->type_name(names);
-    if (!current.empty()) opt->default_str(current);
-    return opt;
-}
-
 // Throws std::invalid_argument naming `option` unless `path` can be created or overwritten as a file
 // (`directory` false) or used as a directory (true: an existing writable directory, or one that can
 // be created under the nearest existing ancestor). Nothing is created.

@@ -1,24 +1,16 @@
 // What each render option invalidates when it changes at run time (the viewer, `set` in scripts,
-// Renderer::apply). One table, in the order of the README's: the CLI flag, its class, the parts of
-// the frame pipeline it rebuilds, and how to tell whether two settings differ in it.
+// Renderer::apply), read from the option tables (renderer/render_options.h): each row's change class
+// and the parts of the frame pipeline it rebuilds.
 #pragma once
 #include <algorithm>
 #include <functional>
 #include <string>
 #include <vector>
 
+#include "core/options.h"
 #include "renderer/render_settings.h"
 
 namespace penumbra {
-
-// What a settings change invalidates.
-enum class SettingsChange {
-    None,
-    PerFrame,   // values read by the next frame: no allocation, no pipeline creation
-    Structure,  // which passes run (shadow filter kind, GI mode, DSM on/off, pass counts)
-    Sizes,      // what sizes a resource (resolutions, cascade count, image size)
-};
-const char* settingsChangeName(SettingsChange c);
 
 // Parts of the frame pipeline a Renderer rebuilds (bit mask).
 enum FrameParts : uint32_t {
@@ -30,14 +22,20 @@ enum FrameParts : uint32_t {
     kPartShadowFilters = 16,  // the lights' shadow filters: re-assigned in place (moments sized, passes listed)
 };
 
+// The parts named by an option row's `rebuilds` ("shadow", "camera", "gi", "rsm", "lpv", "dsm",
+// "shadow.filters", "none"); throws std::logic_error for a name no part has.
+uint32_t framePartsOf(const std::vector<std::string>& names);
+
+// One row of every table, flattened: its flag, class and parts, and whether two settings differ in it.
 struct SettingsOption {
-    const char* flag;  // CLI flag, e.g. "--shadow-res"
+    std::string flag;  // CLI flag, e.g. "--shadow-res"
     SettingsChange change;
     uint32_t parts;    // FrameParts rebuilt (Structure and Sizes only)
     std::function<bool(const RenderSettings&, const RenderSettings&)> differs;
 };
 
-const std::vector<SettingsOption>& settingsOptionTable();
+// Rebuilt from the tables on each call (a registered table joins it).
+std::vector<SettingsOption> settingsOptionTable();
 
 struct SettingsDiff {
     SettingsChange change = SettingsChange::None;

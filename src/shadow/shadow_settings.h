@@ -50,7 +50,8 @@ ShadowFilter parseShadowFilter(const std::string& name, const std::string& optio
 std::string shadowFilterName(ShadowFilter filter);
 std::vector<std::string> shadowFilterNames();
 
-// Checks the ranges the CLI also checks (for settings built in code); throws std::invalid_argument.
+// Holds settings built in code to the ranges of the option table (shadow_options.h); throws
+// std::invalid_argument naming the option.
 void validate(const ShadowSettings& settings);
 
 }  // namespace penumbra

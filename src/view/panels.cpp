@@ -9,25 +9,17 @@
 #include <imgui_stdlib.h>
 
 #include "core/names.h"
+#include "dsm/dsm_options.h"
+#include "lpv/lpv_options.h"
+#include "renderer/render_options.h"
+#include "rsm/rsm_options.h"
+#include "shadow/shadow_options.h"
 
 namespace penumbra::view {
 namespace {
 
 constexpr size_t kFrameHistory = 240;
 
-bool startsWith(const std::string& s, const char* prefix) { return s.rfind(prefix, 0) == 0; }
-
-// The technique an option belongs to, by its CLI name.
-const char* groupOf(const std::string& n) {
-    if (startsWith(n, "rsm-")) return "Reflective shadow maps (--gi rsm)";
-    if (startsWith(n, "lpv-")) return "Light propagation volumes (--gi lpv)";
-    if (startsWith(n, "dsm-") || n == "strands") return "Deep shadow maps and hair";
-    if (startsWith(n, "shadow") || startsWith(n, "pcf-") || startsWith(n, "pcss-") || startsWith(n, "vsm-") ||
-        startsWith(n, "csm-") || n == "cascades" || n == "point-shadow" || n == "light-shadow" || n == "raster")
-        return "Shadow maps";
-    if (n == "gi" || n == "aov" || n == "exposure") return "Output: GI mode, debug view (AOV), exposure";
-    return "Scene, camera, lights, size";
-}
 
 // A sun's direction of travel from the azimuth and elevation of the direction towards it.
 glm::vec3 sunDirection(float azimuthDeg, float elevationDeg) {
@@ -257,18 +249,18 @@ void Panels::optionsSection(ViewSession& session) {
     const std::vector<OptionInfo> options = session.options();
     std::vector<std::string> groups;
     for (const OptionInfo& o : options)
-        if (std::find(groups.begin(), groups.end(), groupOf(o.name)) == groups.end()) groups.push_back(groupOf(o.name));
+        if (std::find(groups.begin(), groups.end(), o.group) == groups.end()) groups.push_back(o.group);
     const RenderSettings& rs = session.settings();
     for (const std::string& group : groups) {
         // The groups of the techniques in use start open.
-        const bool inUse = group == groupOf("shadow") || group == groupOf("gi") ||
-                           (group == groupOf("rsm-res") && rs.gi == GiMode::Rsm) ||
-                           (group == groupOf("lpv-res") && rs.gi == GiMode::Lpv) ||
-                           (group == groupOf("dsm-res") && rs.dsm.enabled);
+        const bool inUse = group == shadowOptions().title || group == frameOptionTable().title ||
+                           (group == rsmOptions().title && rs.gi == GiMode::Rsm) ||
+                           (group == lpvOptions().title && rs.gi == GiMode::Lpv) ||
+                           (group == dsmOptions().title && rs.dsm.enabled);
         ImGui::SetNextItemOpen(inUse, ImGuiCond_Once);
         if (!ImGui::CollapsingHeader(group.c_str())) continue;
         for (const OptionInfo& o : options) {
-            if (groupOf(o.name) != group) continue;
+            if (o.group != group) continue;
             ImGui::PushID(o.name.c_str());
             if (o.flag) {
                 bool on = o.value == "on" || o.value == "true";

@@ -7,6 +7,7 @@
 #include "app/cli_parse.h"
 #include "renderer/device_budget.h"
 #include "app/shadow_cli.h"
+#include "renderer/render_options.h"
 #include "io/image_io.h"
 
 namespace penumbra::view {
@@ -14,24 +15,6 @@ namespace {
 
 std::string nameOf(const CLI::Option& opt) {
     return opt.get_lnames().empty() ? opt.get_name(true) : "--" + opt.get_lnames().front();  // the positional: "scene"
-}
-
-// Named values of an option with a CheckedTransformer, from its description "{a->0,b->1} OR ...".
-std::vector<std::string> choicesOf(const std::string& typeName) {
-    std::vector<std::string> out;
-    const size_t open = typeName.find('{'), close = typeName.find('}');
-    if (open == std::string::npos || close == std::string::npos || close < open) return out;
-    const std::string list = typeName.substr(open + 1, close - open - 1);
-    if (list.find("->") == std::string::npos) return out;
-    size_t start = 0;
-    while (start <= list.size()) {
-        size_t comma = list.find(',', start);
-        if (comma == std::string::npos) comma = list.size();
-        const std::string item = list.substr(start, comma - start);
-        out.push_back(item.substr(0, item.find("->")));
-        start = comma + 1;
-    }
-    return out;
 }
 
 bool sameCamera(const FrameOptions& a, const FrameOptions& b) {
@@ -207,20 +190,32 @@ std::vector<OptionInfo> ViewSession::options() const {
     FrameOptions o;
     RenderSettings rs;
     addFrameOptions(app, o, rs);
+    // The row of a flag and the settings it reads, among the frame's tables and the inputs' tables.
+    auto rowOf = [this](const std::string& flag) -> std::pair<const OptionRow*, const void*> {
+        if (const FoundOption f = findRenderOption(flag); f.row) return {f.row, f.table->at(settings_)};
+        for (const OptionTable* t : {&frameInputOptions(), &motionOptions()})
+            if (const OptionRow* r = t->find(flag)) return {r, &options_};
+        return {nullptr, nullptr};
+    };
     std::vector<OptionInfo> out;
     for (const CLI::Option* opt : app.get_options()) {
         const std::string name = nameOf(*opt);
         if (name == "--help") continue;
         OptionInfo info;
         info.name = name.rfind("--", 0) == 0 ? name.substr(2) : name;
-        info.flag = opt->get_expected_max() == 0;
         info.help = opt->get_description();
-        const std::string type = opt->get_type_name();
-        if (!type.empty()) info.help += " [" + type + "]";
-        info.choices = choicesOf(type);
-        if (info.name == "aov") info.choices = aovNames();
-        for (const CliArg& a : args_)
-            if (a.name == name && !a.values.empty()) info.value = a.values.back();
+        info.group = opt->get_group();
+        const auto [row, settings] = rowOf(name);
+        if (row) {
+            // The state of the frame on screen, not the last value typed.
+            info.flag = row->kind == OptionKind::Bool || row->bareFlag;
+            info.help += " [" + row->rangeText() + "]";
+            if (row->kind == OptionKind::Choice) info.choices = row->choices;
+            info.value = row->value(settings);
+        } else {
+            for (const CliArg& a : args_)
+                if (a.name == name && !a.values.empty()) info.value = a.values.back();
+        }
         out.push_back(std::move(info));
     }
     return out;

@@ -30,6 +30,7 @@ struct OptionInfo {
     std::string help;     // description and accepted values
     bool flag = false;    // takes on|off
     std::vector<std::string> choices;  // named values (e.g. hard, pcf, ...), empty for free values
+    std::string group;    // the panel: its option table's title
 };
 
 class ViewSession {
