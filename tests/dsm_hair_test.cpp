@@ -123,7 +123,7 @@ TEST_F(GpuTest, HairOnlyGltfRenders) {
     rs.height = 32;
     rs.shadow.resolution = 64;
     rs.dsm.enabled = true;
-    Renderer r(ctx(), s, rs);
+    TestRenderer r(ctx(), s, rs);
     r.render(s.cameras[0]);
     EXPECT_GT(r.deepShadows().readStats(r.commands()).fragments, 0u);
 }
@@ -136,7 +136,7 @@ TEST_F(GpuTest, DsmListsAndLinksAreConsistent) {
     const Scene s = hairScene(2000);
     RenderSettings rs = dsmFrame(64, 48, 128, 12);
     rs.dsm.lookup = DsmLookup::Links;
-    Renderer r(ctx(), s, rs);
+    TestRenderer r(ctx(), s, rs);
     r.render(s.cameras[0]);
     const DsmResources& res = r.deepShadows().resources();
     const DsmFrameStats st = r.deepShadows().readStats(r.commands());
@@ -210,7 +210,7 @@ TEST_F(GpuTest, DsmSearchLookupEqualsTheLinkWalk) {
         rs.dsm.poolNodes = pool;
         rs.translucency = translucency;
         rs.aov = translucency ? Aov::Final : Aov::Direct;
-        Renderer r(ctx(), s, rs);
+        TestRenderer r(ctx(), s, rs);
         r.render(s.cameras[0]);
         if (stats) *stats = r.deepShadows().readStats(r.commands());
         return r.readHdr();
@@ -304,7 +304,7 @@ TEST_F(GpuTest, HairShadowEqualsTheListsAtEveryPoint) {
     s.computeBounds();
     RenderSettings rs = dsmFrame(64, 48, 256, 16);
     rs.gi = GiMode::None;
-    Renderer r(ctx(), s, rs);
+    TestRenderer r(ctx(), s, rs);
     r.render(s.cameras[0]);
     const DsmResources& res = r.deepShadows().resources();
     ASSERT_EQ(res.layerCount(), 2u);
@@ -358,7 +358,7 @@ TEST_F(GpuTest, HairShadowsArePartialWithDsmAndBinaryWithout) {
         rs.shadow.resolution = 256;
         rs.dsm.enabled = dsm;
         rs.translucency = false;  // hair in the G-buffer, where the shadow AOV and SHADING_HAIR are per pixel
-        Renderer r(ctx(), s, rs);
+        TestRenderer r(ctx(), s, rs);
         r.render(s.cameras[0]);
         const std::vector<float> img = r.readHdr();
         const std::vector<uint8_t> normal = r.commands().readImage(r.gbuffer().normal, 8);
@@ -402,7 +402,7 @@ TEST_F(GpuTest, HairComputeRasterEqualsTheHardware) {
             rs.shadow.raster = mode;
             rs.translucency = translucency;
             rs.aov = translucency ? Aov::Final : Aov::Direct;
-            Renderer r(ctx(), s, rs);
+            TestRenderer r(ctx(), s, rs);
             r.render(s.cameras[0]);
             (translucency ? out.final : out.direct) = r.readHdr();
             if (!translucency) out.dsmFragments = r.deepShadows().readStats(r.commands()).fragments;
@@ -453,7 +453,7 @@ TEST_F(GpuTest, HairCompositeIsTheSameFromRunToRun) {
     double worst = 0.0;
     uint64_t merged = 0;
     for (int run = 0; run < 4; ++run) {
-        Renderer r(ctx(), s, rs);
+        TestRenderer r(ctx(), s, rs);
         r.render(s.cameras[0]);
         const std::vector<float> image = r.readHdr();
         merged = r.translucency()->readStats(r.commands()).beyondMaxList;
@@ -478,7 +478,7 @@ TEST_F(GpuTest, CountsStartFromZeroEveryFrame) {
         RenderSettings rs = dsmFrame(160, 120, 256, DsmSettings{}.maxList);
         rs.shadow.raster = RasterMode::Compute;
         rs.dsm.poolNodes = pool;
-        Renderer r(ctx(), s, rs);
+        TestRenderer r(ctx(), s, rs);
         std::vector<float> first;
         DsmFrameStats dsmFirst;
         OitFrameStats oitFirst;
@@ -518,7 +518,7 @@ TEST_F(GpuTest, HairTranslucencyImageIsFinite) {
     rs.height = 720;
     rs.gi = GiMode::None;
     rs.shadow.filter = ShadowFilter::Hard;
-    Renderer r(ctx(), s, rs);
+    TestRenderer r(ctx(), s, rs);
     r.render(s.cameras[0]);
     const std::vector<float> img = r.readHdr();
     size_t nonFinite = 0;

@@ -104,7 +104,7 @@ protected:
         rs.shadow.resolution = shadowRes;
         dsm.enabled = true;
         rs.dsm = dsm;
-        Renderer r(ctx(), scene, rs);
+        TestRenderer r(ctx(), scene, rs);
         r.render(cam);
         DsmRun out{{w, h, r.readHdr()}, r.deepShadows().readStats(r.commands()), r.warnings()};
         const std::vector<std::string> frame = dsmWarnings(out.stats);

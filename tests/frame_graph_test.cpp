@@ -1,10 +1,10 @@
-// The frame graph's schedule (render/frame_graph.h): which passes run together, and that a graph run
+// The frame graph's schedule (core/frame_graph.h): which passes run together, and that a graph run
 // in its groups gives the results of its passes in order, with the synchronization validation layer
 // silent (a missing barrier between dependent passes would be a reported hazard).
 #include <cstring>
 
 #include "gpu_fixture.h"
-#include "render/frame_graph.h"
+#include "core/frame_graph.h"
 #include "vk/commands.h"
 #include "vk/memory.h"
 #include "vk/resources.h"

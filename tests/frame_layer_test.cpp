@@ -12,7 +12,7 @@
 
 #include "app/frame_options.h"
 #include "gpu_fixture.h"
-#include "render/settings_change.h"
+#include "renderer/settings_change.h"
 
 namespace penumbra::test {
 namespace {
@@ -62,7 +62,7 @@ class FrameLayerTest : public GpuTest {
 protected:
     // What a fresh renderer with `s` renders of `scene` (the reference for a changed live one).
     std::vector<float> fresh(GpuScene& scene, const RenderSettings& s, const Camera& camera) {
-        Renderer r(ctx(), scene, s, 1);
+        TestRenderer r(ctx(), scene, s, 1);
         r.render(camera);
         return r.readHdr();
     }
@@ -103,7 +103,7 @@ TEST_F(FrameLayerTest, EachChangeMatchesAFreshRendererAndPerFrameChangesAllocate
     GpuScene scene(ctx(), makeBuiltinScene("cornell"));
     const Camera camera = scene.scene().cameras[0];
     RenderSettings s = smallSettings();
-    Renderer live(ctx(), scene, s, 2);
+    TestRenderer live(ctx(), scene, s, 2);
     for (int i = 0; i < 3; ++i) live.submit({camera, scene.scene().lights});
     for (const Change& c : changes()) {
         c.apply(s);
@@ -130,7 +130,7 @@ TEST_F(FrameLayerTest, FramesInFlightWithMovingCameraAndLight) {
     RenderSettings s = smallSettings();
     s.gi = GiMode::Lpv;
     s.shadow.filter = ShadowFilter::Vsm;
-    Renderer live(ctx(), scene, s, 2);
+    TestRenderer live(ctx(), scene, s, 2);
     FrameInputs in{scene.scene().cameras[0], scene.scene().lights};
     for (int i = 0; i < 6; ++i) {
         in.camera.eye.x = 0.05f * float(i);
@@ -139,7 +139,7 @@ TEST_F(FrameLayerTest, FramesInFlightWithMovingCameraAndLight) {
     }
     const std::vector<float> last = live.readHdr();
     EXPECT_EQ(live.takeCompletedTimings().size(), 6u);
-    Renderer once(ctx(), scene, s, 1);
+    TestRenderer once(ctx(), scene, s, 1);
     once.render(in);
     expectSameImage(last, once.readHdr(), s.gi, "last frame against a one-shot render");
     EXPECT_GT(live.frameTimings().gpuMs, 0.0);
@@ -154,7 +154,7 @@ TEST_F(FrameLayerTest, MovingLightWithDeepShadowMapAllocatesNothing) {
     RenderSettings s = smallSettings();
     s.dsm.enabled = true;
     s.dsm.resolution = 128;
-    Renderer live(ctx(), scene, s, 2);
+    TestRenderer live(ctx(), scene, s, 2);
     FrameInputs in{scene.scene().cameras[0], scene.scene().lights};
     live.submit(in);
     live.finish();
@@ -165,7 +165,7 @@ TEST_F(FrameLayerTest, MovingLightWithDeepShadowMapAllocatesNothing) {
     }
     EXPECT_EQ(live.allocator().allocations(), allocations);
     const std::vector<float> last = live.readHdr();
-    Renderer once(ctx(), scene, s, 1);
+    TestRenderer once(ctx(), scene, s, 1);
     once.render(in);
     EXPECT_EQ(last, once.readHdr());
 }
@@ -174,14 +174,14 @@ TEST_F(FrameLayerTest, MovingLightWithDeepShadowMapAllocatesNothing) {
 TEST_F(FrameLayerTest, AddingAndRemovingLightsRebuildsShadows) {
     GpuScene scene(ctx(), makeBuiltinScene("cornell"));
     RenderSettings s = smallSettings();
-    Renderer live(ctx(), scene, s, 2);
+    TestRenderer live(ctx(), scene, s, 2);
     FrameInputs in{scene.scene().cameras[0], scene.scene().lights};
     Light sun;
     sun.direction = glm::normalize(glm::vec3(0.2f, -1.0f, 0.1f));
     sun.intensity = 1.0f;
     in.lights.push_back(sun);
     live.submit(in);
-    Renderer two(ctx(), scene, s, 1);
+    TestRenderer two(ctx(), scene, s, 1);
     two.render(in);
     EXPECT_EQ(live.readHdr(), two.readHdr());
     in.lights.pop_back();
@@ -204,7 +204,7 @@ TEST_F(FrameLayerTest, CyclingSettingsLeavesNoResidue) {
     states[7].gi = GiMode::Rsm, states[7].rsm.mode = RsmMode::Full;
     states[8].shadow.cascades.count = 2, states[8].exposure = 3.0f;
     states[9].gi = GiMode::Lpv, states[9].lpv.resolution = 16;
-    Renderer live(ctx(), scene, states[0], 2);
+    TestRenderer live(ctx(), scene, states[0], 2);
     struct Counters {
         VkDeviceSize bytes;
         uint32_t blocks;
@@ -279,7 +279,7 @@ TEST_F(FrameLayerTest, ShadowMapDebugViewShowsTheLayersTexels) {
     RenderSettings s = smallSettings();
     s.width = s.height = s.shadow.resolution = 64;
     s.aov = Aov::ShadowMap;
-    Renderer r(ctx(), scene, s, 1);
+    TestRenderer r(ctx(), scene, s, 1);
     r.render(scene.scene().cameras[0]);
     const std::vector<float> view = r.readHdr();
     const std::vector<uint8_t> bytes = r.commands().readImage(r.shadow().shadowMap(), 4, 0);
@@ -300,7 +300,7 @@ TEST_F(FrameLayerTest, PixelProbeEqualsEveryAovImageAtItsPixel) {
     s.gi = GiMode::Rsm;
     s.shadow.filter = ShadowFilter::Pcf;
     const Camera camera = scene.scene().cameras[0];
-    Renderer live(ctx(), scene, s, 2);
+    TestRenderer live(ctx(), scene, s, 2);
     const auto texel = [](const std::vector<float>& image, glm::uvec2 p) {
         const float* v = &image[4 * (size_t(p.y) * kW + p.x)];
         return glm::vec4(v[0], v[1], v[2], v[3]);
@@ -360,7 +360,7 @@ TEST_F(FrameLayerTest, DepthPngScalesToTheSceneNotTheCameraFarPlane) {
         far = std::max(far, double(glm::length(corner - camera.eye)));
     RenderSettings s = smallSettings();
     s.aov = Aov::Depth;
-    Renderer r(ctx(), scene, s, 1);
+    TestRenderer r(ctx(), scene, s, 1);
     r.render(camera);
     const std::vector<float> depth = r.readHdr();
     const std::vector<uint8_t> png = r.readLdr();

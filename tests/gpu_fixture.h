@@ -13,7 +13,8 @@
 #include <gtest/gtest.h>
 #include <glm/glm.hpp>
 
-#include "render/renderer.h"
+#include "renderer/renderer.h"
+#include "test_renderer.h"
 #include "scene/scene.h"
 #include "vk/context.h"
 
@@ -62,7 +63,7 @@ protected:
         settings.height = height;
         settings.aov = aov;
         if (shadow) settings.shadow = *shadow;
-        Renderer renderer(ctx(), scene, settings);
+        TestRenderer renderer(ctx(), scene, settings);
         renderer.setPassScopes(true);  // the result's per-pass timings
         renderer.render(camera);
         RenderResult out;
@@ -84,7 +85,7 @@ private:
 
 // World positions of the last frame's G-buffer pixels, reconstructed in double precision from the
 // read-back depth (nullopt where no surface was drawn). Row-major, top row first.
-inline std::vector<std::optional<glm::dvec3>> gbufferWorldPositions(Renderer& r) {
+inline std::vector<std::optional<glm::dvec3>> gbufferWorldPositions(TestRenderer& r) {
     const uint32_t w = r.settings().width, h = r.settings().height;
     const std::vector<uint8_t> depth = r.commands().readImage(r.gbuffer().depth, 4);
     const glm::dmat4 inv(r.frameUniforms().invViewProj);

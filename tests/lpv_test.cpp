@@ -9,8 +9,8 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "readback.h"
-#include "render/frame_graph.h"
-#include "render/scene_gpu.h"
+#include "core/frame_graph.h"
+#include "core/scene_gpu.h"
 #include "scene/builders.h"
 #include "voxel/occupancy_volume.h"
 
@@ -397,7 +397,7 @@ TEST_F(GpuTest, LpvCornellBleedsWallColoursAndLightsTheCeiling) {
         s.lpv.rsmResolution = 512;
         s.lpv.vplResolution = 128;
         s.lpv.cascades = cascades;
-        Renderer r(ctx(), scene, s);
+        TestRenderer r(ctx(), scene, s);
         r.render(scene.cameras[0]);
         FloatImage img{s.width, s.height, r.readHdr()};
         const auto world = gbufferWorldPositions(r);
@@ -440,7 +440,7 @@ TEST_F(GpuTest, LpvVoxelFacesAreTheShareOfOpenColumns) {
     s.lpv.rsmResolution = 256;
     s.lpv.vplResolution = 64;
     s.lpv.geometry = LpvGeometry::Voxels;
-    Renderer r(ctx(), scene, s);
+    TestRenderer r(ctx(), scene, s);
     r.render(scene.cameras[0]);
     ASSERT_TRUE(r.occupancy() && r.lpv());
     const std::vector<uint8_t> bits = r.commands().readBuffer(r.occupancy()->buffer(), r.occupancy()->buffer().size());

@@ -4,7 +4,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "app/cli_parse.h"
-#include "shadow/light_space.h"
+#include "core/light_space.h"
 
 using namespace penumbra;
 

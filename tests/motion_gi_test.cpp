@@ -37,7 +37,7 @@ TEST_F(MotionGiTest, CameraOnlyMotionLeavesLpvLightAtFixedWorldCells) {
     s.lpv.vplResolution = 16;  // few VPLs per cell (0.37 m here): short float-atomic sums
     for (bool cameraGeometry : {false, true}) {
         s.lpv.cameraGeometry = cameraGeometry;
-        Renderer renderer(ctx(), scene, s);
+        TestRenderer renderer(ctx(), scene, s);
         struct Frame {
             std::vector<glm::vec4> accum;
             std::array<gpu::GpuLpvCascade, LPV_MAX_CASCADES> cascades;
@@ -134,7 +134,7 @@ TEST_F(MotionGiTest, VelocityIsWhereEachPointWasInThePreviousFrame) {
         s.gi = GiMode::None;
         s.cameraPath = path;
         GpuScene gpu(ctx(), scene);
-        Renderer renderer(ctx(), gpu, s, 1);
+        TestRenderer renderer(ctx(), gpu, s, 1);
         const SceneMotion motion(gpu.scene(), camera, gpu.scene().lights, {}, {});
         for (bool objectMoves : {true, false}) {
             if (objectMoves && path == CameraPath::Gbuffer) continue;  // camera motion only (README)
@@ -219,7 +219,7 @@ TEST_F(MotionGiTest, BilinearVplsMoveContinuouslyWithTheLight) {
     double ratio[2] = {0.0, 0.0};
     for (int bilinear = 0; bilinear < 2; ++bilinear) {
         s.rsm.bilinearVpls = bilinear == 1;
-        Renderer renderer(ctx(), scene, s);
+        TestRenderer renderer(ctx(), scene, s);
         auto render = [&](float dx) {
             std::vector<Light> lights = scene.lights;
             lights[0].position.x += dx;
@@ -271,14 +271,14 @@ TEST_F(MotionGiTest, TemporalGiIsAnExponentialAverageOfTheFrames) {
     lightB[0].position.x += 0.3f;
     lightB[0].intensity *= 1.5f;
     auto still = [&](const std::vector<Light>& lights) {
-        Renderer r(ctx(), scene, s);
+        TestRenderer r(ctx(), scene, s);
         r.render(FrameInputs{camera, lights});
         return r.readHdr();
     };
     const std::vector<float> a = still(scene.lights), b = still(lightB);
     s.giTemporal = true;
     s.giTemporalAlpha = 0.25f;
-    Renderer r(ctx(), scene, s);
+    TestRenderer r(ctx(), scene, s);
     r.render(FrameInputs{camera, scene.lights});
     EXPECT_EQ(r.readHdr(), a) << "the first frame has no history";
     double largest = 0.0;

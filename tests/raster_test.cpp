@@ -10,8 +10,8 @@
 
 #include "app/cli_parse.h"
 #include "gpu_fixture.h"
+#include "core/scene_gpu.h"
 #include "raster/overflow_limits.glsl"
-#include "render/scene_gpu.h"
 #include "scene/builders.h"
 #include "shadow/shadow_map_pass.h"
 
@@ -259,7 +259,7 @@ class RasterSceneTest : public GpuTest {
 protected:
     SceneRun run(const Scene& scene, const Camera& camera, RasterMode mode, uint32_t shadowRes) {
         const RenderSettings s = sceneSettings(mode, 160, 120, shadowRes);
-        Renderer r(ctx(), scene, s);
+        TestRenderer r(ctx(), scene, s);
         r.render(camera);
         SceneRun out{{s.width, s.height, r.readHdr()}, {}};
         for (uint32_t k = 0; k < r.shadow().layers().size(); ++k)
@@ -389,7 +389,7 @@ TEST_F(RasterSceneTest, VisibilityIdsEqualTheHardware) {
         for (RasterMode mode : {RasterMode::Hardware, RasterMode::Compute}) {
             RenderSettings s = sceneSettings(mode, 64, 48);
             s.gi = GiMode::Rsm;
-            Renderer r(ctx(), *scene, s);
+            TestRenderer r(ctx(), *scene, s);
             r.render(camera);
             vk::Image& image = r.shadow().ids();
             ASSERT_GT(image.layers(), 0u);

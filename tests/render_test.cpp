@@ -13,7 +13,7 @@
 
 #include "gpu_fixture.h"
 #include "scene/builders.h"
-#include "shadow/light_space.h"
+#include "core/light_space.h"
 
 using namespace penumbra;
 using namespace penumbra::test;

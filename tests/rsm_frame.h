@@ -39,7 +39,7 @@ struct Frame {
     std::vector<glm::dvec3> gpuIrradiance;
 };
 
-inline Frame readFrame(Renderer& r) {
+inline Frame readFrame(TestRenderer& r) {
     Frame f{r.settings().width, r.settings().height, {}, {}, {}, {}};
     vk::CommandContext& cmd = r.commands();
     const gpu::FrameUniforms& fu = r.frameUniforms();
@@ -123,7 +123,7 @@ protected:
         s.aov = aov;
         s.gi = GiMode::Rsm;
         s.rsm = rsm;
-        Renderer r(ctx(), scene, s);
+        TestRenderer r(ctx(), scene, s);
         r.render(scene.cameras[0]);
         check(r);
     }

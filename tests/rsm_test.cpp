@@ -13,7 +13,7 @@ TEST_F(RsmTest, AllTexelsGatherEqualsBruteForceSum) {
     rsm.resolution = 32;
     rsm.mode = RsmMode::AllTexels;
     rsm.visibility = RsmVisibility::None;
-    renderCornell(48, 36, rsm, Aov::Indirect, [&](Renderer& r) {
+    renderCornell(48, 36, rsm, Aov::Indirect, [&](TestRenderer& r) {
         Frame f = readFrame(r);
         ASSERT_GT(f.vpls.size(), 500u);
         double maxRel = 0.0, maxLum = 0.0;
@@ -51,7 +51,7 @@ TEST_F(RsmTest, HairReceiversGatherWithTheKajiyaKayKernel) {
     scene.computeBounds();
     RenderSettings s = exactIndirect(48, 36, 32);
     s.translucency = false;
-    Renderer r(ctx(), scene, s);
+    TestRenderer r(ctx(), scene, s);
     r.render(scene.cameras[0]);
     const Frame f = readFrame(r);
     const auto normal = r.commands().readImage(r.gbuffer().normal, 8);
@@ -90,7 +90,7 @@ TEST_F(RsmTest, SampledGatherConvergesToBruteForce) {
             rsm.samples = samples;
             rsm.seed = seed;
             rsm.visibility = RsmVisibility::None;
-            renderCornell(48, 36, rsm, Aov::Indirect, [&](Renderer& r) {
+            renderCornell(48, 36, rsm, Aov::Indirect, [&](TestRenderer& r) {
                 Frame f = readFrame(r);
                 std::vector<dvec3> ref(f.position.size());
                 for (size_t i = 0; i < ref.size(); ++i)
@@ -131,7 +131,7 @@ TEST_F(RsmTest, SampledGatherIsUnbiasedAtFewSamples) {
                 rsm.visibility = RsmVisibility::None;
                 rsm.radii = v.radii;
                 rsm.far = v.far;
-                renderCornell(48, 36, rsm, Aov::Indirect, [&](Renderer& r) {
+                renderCornell(48, 36, rsm, Aov::Indirect, [&](TestRenderer& r) {
                     const Frame f = readFrame(r);
                     for (size_t i = 0; i < f.position.size(); ++i) {
                         if (f.normal[i] == dvec3(0.0)) continue;
@@ -171,7 +171,7 @@ TEST_F(RsmTest, InterpolatedPathStaysCloseToFullResolutionGather) {
                 rsm.visibility = RsmVisibility::None;
                 rsm.samples = 400;
                 rsm.far = far;
-                renderCornell(192, 144, rsm, Aov::Indirect, [&](Renderer& r) {
+                renderCornell(192, 144, rsm, Aov::Indirect, [&](TestRenderer& r) {
                     frame = readFrame(r);
                     (mode == RsmMode::Full ? full : interpolated) = frame.gpuIrradiance;
                     if (mode == RsmMode::Interpolated) fallback = r.rsmGather()->fallbackFraction();
@@ -213,7 +213,7 @@ TEST_F(RsmTest, InterpolatedPathStaysCloseToFullResolutionGather) {
 TEST_F(RsmTest, FluxDrawsGiveEveryTexelItsShareOfTheFlux) {
     RsmSettings rsm;
     rsm.resolution = 64;
-    renderCornell(64, 48, rsm, Aov::Indirect, [&](Renderer& r) {
+    renderCornell(64, 48, rsm, Aov::Indirect, [&](TestRenderer& r) {
         ASSERT_NE(r.rsmFlux(), nullptr) << "flux draws are the default";
         RsmPass& pass = *r.rsm();
         ASSERT_EQ(pass.layerCount(), 1u);
@@ -260,7 +260,7 @@ TEST_F(RsmTest, CornellBleedsWallColoursAndLightsTheCeilingIndirectly) {
     Frame frame;
     std::vector<glm::dvec3> direct;
     for (Aov aov : {Aov::Direct, Aov::Indirect}) {
-        renderCornell(160, 120, rsm, aov, [&](Renderer& r) {
+        renderCornell(160, 120, rsm, aov, [&](TestRenderer& r) {
             frame = readFrame(r);
             if (aov == Aov::Direct) {
                 FloatImage img{160, 120, r.readHdr()};
@@ -310,7 +310,7 @@ TEST_F(RsmTest, CascadedSunCountsEachSurfaceOnce) {
         RenderSettings s = exactIndirect(96, 72, 64);
         s.shadow.cascades.count = i == 0 ? 1 : 4;
         s.rsm.perCascade = true;  // exercise the per-receiver cascade choice
-        Renderer r(ctx(), scene, s);
+        TestRenderer r(ctx(), scene, s);
         r.render(scene.cameras[0]);
         std::vector<float> img = r.readHdr();
         for (size_t p = 0; p < img.size(); p += 4) mean[i] += img[p + 1];
@@ -351,7 +351,7 @@ TEST_F(RsmTest, VplsAreLitByTheShadingNormalAndFaceByTheirTriangle) {
     auto texels = [&](bool leaning) {
         const Scene scene = floorScene(leaning);
         RenderSettings s = exactIndirect(32, 32, 64);
-        Renderer r(ctx(), scene, s);
+        TestRenderer r(ctx(), scene, s);
         r.render(scene.cameras[0]);
         const Frame f = readFrame(r);
         Texels out;

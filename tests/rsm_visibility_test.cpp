@@ -22,7 +22,7 @@ struct TracedVisibility {
 
 TracedVisibility againstTracedVisibility(vk::Context& ctx, const Scene& scene, const char* name,
                                          const RenderSettings& s) {
-    Renderer r(ctx, scene, s);
+    TestRenderer r(ctx, scene, s);
     r.render(scene.cameras[0]);
     const Frame f = readFrame(r);
     const reference::RayScene rays(scene);
@@ -150,7 +150,7 @@ TEST_F(RsmTest, ViewsVisibilityStopsLightThroughAFloorSlab) {
 TEST_F(RsmTest, SampledVoxelVisibilityMatchesTheExactGatherOnAverage) {
     auto meanIrradiance = [&](const RsmSettings& rsm) {
         double sum = 0.0;
-        renderCornell(48, 36, rsm, Aov::Indirect, [&](Renderer& r) {
+        renderCornell(48, 36, rsm, Aov::Indirect, [&](TestRenderer& r) {
             const Frame f = readFrame(r);
             for (size_t i = 0; i < f.position.size(); ++i)
                 if (f.normal[i] != dvec3(0.0)) sum += luminance(f.gpuIrradiance[i]);

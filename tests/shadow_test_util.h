@@ -29,7 +29,7 @@ protected:
         settings.height = height;
         settings.aov = aov;
         settings.shadow = shadow;
-        Renderer renderer(ctx(), scene, settings);
+        TestRenderer renderer(ctx(), scene, settings);
         renderer.setPassScopes(true);  // the result's per-pass timings
         renderer.render(camera);
         return {{width, height, renderer.readHdr()}, renderer.shadow().layers(), renderer.timings()};

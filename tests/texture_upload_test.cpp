@@ -1,4 +1,4 @@
-// Material textures on the GPU (render/texture_upload.h, SceneGpu's texture table): every texture at
+// Material textures on the GPU (core/texture_upload.h, SceneGpu's texture table): every texture at
 // its own size with its own mip chain, in a slot of its size. A 4096^2 texture is decoded and uploaded
 // in well under 2 s (12-27 s when every texture was resampled on the CPU); textures of different, odd
 // and non-square sizes render their own texels (no resampling to a common size) on both camera paths;
@@ -13,11 +13,11 @@
 #include <gtest/gtest.h>
 #include <stb_image_write.h>
 
-#include "app/device_budget.h"
+#include "renderer/device_budget.h"
 #include "gltf_test_util.h"
 #include "gpu_fixture.h"
-#include "render/scene_gpu.h"
-#include "render/texture_upload.h"
+#include "core/scene_gpu.h"
+#include "core/texture_upload.h"
 
 using namespace penumbra;
 using namespace penumbra::test;

@@ -60,7 +60,7 @@ protected:
     FloatImage renderWith(const Scene& s, RenderSettings rs, const OitFrameStats** statsOut = nullptr) {
         rs.width = kW;
         rs.height = kH;
-        Renderer r(ctx(), s, rs);
+        TestRenderer r(ctx(), s, rs);
         r.render(frontCamera());
         EXPECT_NE(r.translucency(), nullptr);
         if (r.translucency()) stats_ = r.translucency()->readStats(r.commands());
@@ -250,7 +250,7 @@ TEST_F(TranslucencyTest, AlphaBlendModeTestShowsWhatIsBehind) {
         rs.width = 128;
         rs.height = 96;
         rs.translucency = translucency;
-        Renderer r(ctx(), s, rs);
+        TestRenderer r(ctx(), s, rs);
         r.render(s.cameras.at(0));
         return FloatImage{128, 96, r.readHdr()};
     };

@@ -46,7 +46,7 @@ protected:
         s.cameraPath = path;
         s.shadow.raster = raster;
         s.shadow.resolution = 256;  // the G-buffer does not depend on it
-        Renderer r(ctx(), scene, s);
+        TestRenderer r(ctx(), scene, s);
         r.render(camera);
         const bool vis = path == CameraPath::Visibility;
         const auto a = r.commands().readImage(r.gbuffer().albedo, vis ? 8 : 4);
@@ -192,7 +192,7 @@ TEST_F(VisibilityTest, CornellRsmEqualsRaysFromTheLight) {
         s.gi = GiMode::Rsm;
         s.rsm.resolution = 128;
         s.shadow.resolution = 256;
-        Renderer r(ctx(), scene, s);
+        TestRenderer r(ctx(), scene, s);
         r.render(scene.cameras[0]);
         RsmPass& rsm = *r.rsm();
         ASSERT_EQ(rsm.layerCount(), 1u);
@@ -273,11 +273,11 @@ TEST_F(GpuTest, CachedCascadesRedrawOnlyWhatMovedAndMatchColdFrames) {
     s.shadow.resolution = 256;
     s.shadow.cascades.distance = 6.0f;  // cascades smaller than the scene: they follow the camera
     const auto cold = [&](const Camera& c) {
-        Renderer fresh(ctx(), scene, s);
+        TestRenderer fresh(ctx(), scene, s);
         fresh.render(c);
         return fresh.readHdr();
     };
-    const auto projections = [](Renderer& r) {
+    const auto projections = [](TestRenderer& r) {
         std::vector<glm::mat4> m;
         for (const ShadowLayer& l : r.shadow().layers()) m.push_back(l.projection.viewProj);
         return m;
@@ -286,7 +286,7 @@ TEST_F(GpuTest, CachedCascadesRedrawOnlyWhatMovedAndMatchColdFrames) {
         SCOPED_TRACE(mode == RasterMode::Compute ? "compute rasterizer" : "hardware rasterizer");
         s.shadow.raster = mode;
         Camera cam = scene.cameras[0];
-        Renderer r(ctx(), scene, s);
+        TestRenderer r(ctx(), scene, s);
         r.render(cam);
         const uint32_t layers = uint32_t(r.shadow().layers().size());
         EXPECT_EQ(r.shadow().layersDrawn(), layers);

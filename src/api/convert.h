@@ -2,7 +2,7 @@
 // defaults from the internal ones, so a default is written once, in its technique's folder.
 #pragma once
 #include "penumbra/penumbra.h"
-#include "render/render_settings.h"
+#include "renderer/render_settings.h"
 #include "scene/scene.h"
 
 namespace penumbra::api {

@@ -8,7 +8,7 @@
 #include "api/convert.h"
 #include "api/impl.h"
 #include "io/image_io.h"
-#include "render/renderer.h"
+#include "renderer/renderer.h"
 #include "vk/commands.h"
 
 namespace penumbra::api {

@@ -13,10 +13,9 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "app/frame_setup.h"
 #include "app/option_cli.h"
-#include "render/render_options.h"
-
-#include "app/device_budget.h"
+#include "renderer/render_options.h"
 #include "app/option_checks.h"
 #include "io/file_write.h"
 
@@ -209,7 +208,7 @@ static BenchSeries measureSeries(Renderer& renderer, const SceneMotion& motion, 
 int runBench(const BenchOptions& o, const vk::ContextOptions& vkOptions, RenderSettings settings, bool dryRun) {
     if (!o.json.empty()) checkWritable(o.json, "--json");
     if (dryRun) return prepareFrame(o.frame, settings), 0;
-    DeviceFrame device(o.frame, settings, vkOptions);
+    CliDeviceFrame device(o.frame, settings, vkOptions);
     vk::Context& ctx = device.ctx;
     const PreparedFrame& f = device.frame;
     const double copyGbps = copyBandwidth(ctx);

@@ -7,13 +7,14 @@
 
 #include <fmt/format.h>
 
-#include "app/device_budget.h"
+#include "app/frame_setup.h"
 #include "app/dsm_cli.h"
 #include "app/option_checks.h"
 #include "app/option_cli.h"
 #include "app/sequence.h"
 #include "io/image_io.h"
-#include "render/renderer.h"
+#include "renderer/renderer.h"
+#include "rsm/rsm_technique.h"
 
 namespace penumbra {
 namespace {
@@ -82,9 +83,9 @@ void printSummary(const RenderCliOptions& o, const RenderSettings& settings, con
     fmt::print("GPU time per pass{}:\n",
                o.frames > 1 ? fmt::format(" (median of {} frames after 1 warm-up)", o.frames - 1) : "");
     printTimings(timings);
-    if (renderer.rsmGather() && settings.rsm.mode == RsmMode::Interpolated)
-        fmt::print("  rsm fallback: {:.2f}% of pixels gathered in full\n",
-                   100.0 * renderer.rsmGather()->fallbackFraction());
+    RsmTechnique* rsm = renderer.find<RsmTechnique>();
+    if (rsm && rsm->gather() && settings.rsm.mode == RsmMode::Interpolated)
+        fmt::print("  rsm fallback: {:.2f}% of pixels gathered in full\n", 100.0 * rsm->gather()->fallbackFraction());
     if (o.printPasses) fmt::print("passes:\n{}", renderer.describePasses());
     reportDsm(renderer, false);
     const Bounds& b = scene.bounds;
@@ -161,7 +162,7 @@ void renderSequence(const RenderCliOptions& o, const RenderSettings& settings, R
 int runRender(const RenderCliOptions& o, const vk::ContextOptions& vkOptions, RenderSettings settings, bool dryRun) {
     RenderOutput out(o);
     if (dryRun) return prepareFrame(o.frame, settings), 0;
-    DeviceFrame device(o.frame, settings, vkOptions);
+    CliDeviceFrame device(o.frame, settings, vkOptions);
     const PreparedFrame& f = device.frame;
     const SceneMotion motion = frameMotion(o.frame, f);
     Renderer renderer(device.ctx, f.scene, settings);

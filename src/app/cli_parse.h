@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "render/renderer.h"
+#include "renderer/renderer.h"
 #include "scene/scene.h"
 
 namespace penumbra {

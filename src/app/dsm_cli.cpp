@@ -2,17 +2,19 @@
 
 #include <fmt/format.h>
 
+#include "dsm/dsm_technique.h"
 
 namespace penumbra {
 
 void reportDsm(Renderer& renderer, bool quiet) {
-    if (const CameraTranslucency* t = renderer.translucency()) {
+    if (const CameraTranslucency* t = renderer.find<TranslucencyTechnique>()->translucency()) {
         const OitFrameStats stats = t->readStats(renderer.commands());
         if (!quiet) fmt::print("  {}\n", describeTranslucency(stats));
         for (const std::string& w : translucencyWarnings(stats)) fmt::print(stderr, "penumbra: warning: {}\n", w);
     }
-    if (!renderer.deepShadows().active()) return;
-    const DsmFrameStats stats = renderer.deepShadows().readStats(renderer.commands());
+    const DeepShadowMaps& maps = renderer.find<DsmTechnique>()->maps();
+    if (!maps.active()) return;
+    const DsmFrameStats stats = maps.readStats(renderer.commands());
     if (!quiet) fmt::print("  {}\n", describeDsm(stats));
     for (const std::string& w : dsmWarnings(stats)) fmt::print(stderr, "penumbra: warning: {}\n", w);
 }

@@ -1,6 +1,6 @@
 // The deep-shadow-map report printed after rendering.
 #pragma once
-#include "render/renderer.h"
+#include "renderer/renderer.h"
 
 namespace penumbra {
 

@@ -14,7 +14,7 @@
 #include "eval/eval.h"
 #include "eval/hair_eval.h"
 #include "eval/suite.h"
-#include "render/gpu_scene.h"
+#include "core/gpu_scene.h"
 #include "io/image_io.h"
 
 namespace penumbra {

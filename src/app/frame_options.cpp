@@ -9,7 +9,7 @@
 #include "app/option_checks.h"
 #include "app/option_cli.h"
 #include "app/shadow_cli.h"
-#include "render/texture_upload.h"
+#include "core/texture_upload.h"
 #include "rsm/rsm_options.h"
 
 namespace penumbra {

@@ -9,7 +9,8 @@
 
 #include "app/dsm_cli.h"
 #include "core/options.h"
-#include "render/renderer.h"
+#include "renderer/device_frame.h"
+#include "renderer/renderer.h"
 #include "scene/motion.h"
 
 namespace penumbra {
@@ -37,11 +38,6 @@ const OptionTable& motionOptions();
 void addFrameOptions(CLI::App& cmd, FrameOptions& o, RenderSettings& rs);
 // The time and motion options alone (also on `reference` and `eval`).
 void addMotionOptions(CLI::App& cmd, FrameOptions& o);
-
-struct PreparedFrame {
-    Scene scene;
-    Camera camera;
-};
 
 // Checks the settings' combinations, loads the scene, applies light overrides, picks the camera.
 // Throws std::invalid_argument / SceneError with one clear line.

@@ -4,7 +4,7 @@
 #include <CLI/CLI.hpp>
 
 #include "core/options.h"
-#include "render/render_options.h"
+#include "renderer/render_options.h"
 
 namespace penumbra {
 

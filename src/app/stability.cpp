@@ -7,11 +7,12 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "app/device_budget.h"
+#include "app/frame_setup.h"
 #include "app/option_checks.h"
 #include "io/file_write.h"
+#include "lighting/lighting_technique.h"
 #include "reference/path_tracer.h"
-#include "render/render_options.h"
+#include "renderer/render_options.h"
 
 namespace penumbra {
 namespace {
@@ -34,7 +35,7 @@ struct WorldPoints {
 
     void capture(Renderer& r) {
         width = r.settings().width, height = r.settings().height;
-        const std::vector<uint8_t> depth = r.commands().readImage(r.gbuffer().depth, 4);
+        const std::vector<uint8_t> depth = r.commands().readImage(r.find<CameraTechnique>()->gbuffer().depth, 4);
         const glm::mat4 inv = r.frameUniforms().invViewProj;
         points.assign(size_t(width) * height, glm::vec3(NAN));
         for (size_t i = 0; i < points.size(); ++i) {
@@ -48,7 +49,7 @@ struct WorldPoints {
     }
     // The pixel of frame `r` that shows each point (-1: off the image or hidden).
     std::vector<int64_t> lookups(Renderer& r) const {
-        const std::vector<uint8_t> depth = r.commands().readImage(r.gbuffer().depth, 4);
+        const std::vector<uint8_t> depth = r.commands().readImage(r.find<CameraTechnique>()->gbuffer().depth, 4);
         const glm::mat4 vp = r.frameUniforms().viewProj;
         std::vector<int64_t> out(points.size(), -1);
         for (size_t i = 0; i < points.size(); ++i) {
@@ -227,7 +228,7 @@ CLI::App* addStabilityCommand(CLI::App& app, StabilityOptions& o, RenderSettings
 int runStability(const StabilityOptions& o, const vk::ContextOptions& vkOptions, RenderSettings settings, bool dryRun) {
     if (!o.json.empty()) checkWritable(o.json, "--json");
     if (dryRun) return prepareFrame(o.frame, settings), 0;
-    DeviceFrame device(o.frame, settings, vkOptions);
+    CliDeviceFrame device(o.frame, settings, vkOptions);
     const PreparedFrame& f = device.frame;
     const SceneMotion motion = frameMotion(o.frame, f);
     if (!motion.moves())

@@ -8,7 +8,7 @@
 // Frame: dom.clear -> dom.depth -> dom.layers (then lighting reads "dsm.*" as for the lists).
 #pragma once
 #include "dsm/dsm_resources.h"
-#include "render/frame_graph.h"
+#include "core/frame_graph.h"
 
 namespace penumbra {
 

@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "render/raster.h"
+#include "core/raster.h"
 
 namespace penumbra {
 

@@ -8,7 +8,7 @@
 // (dsm/ribbon_raster.glsl), in passes of their own (dsm.count.hair, dsm.build.hair).
 #pragma once
 #include "dsm/dsm_resources.h"
-#include "render/frame_graph.h"
+#include "core/frame_graph.h"
 
 namespace penumbra {
 

@@ -5,7 +5,7 @@
 // because a link needs the neighbour's list sorted.
 #pragma once
 #include "dsm/dsm_resources.h"
-#include "render/frame_graph.h"
+#include "core/frame_graph.h"
 
 namespace penumbra {
 

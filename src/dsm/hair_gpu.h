@@ -6,8 +6,8 @@
 // in it, so one static mesh cannot serve all views; pulling points costs 32 bytes per point and no
 // index buffer (the strip's strand joins are degenerate, see hair.vert).
 #pragma once
-#include "render/scene_gpu.h"
-#include "shadow/light_space.h"
+#include "core/scene_gpu.h"
+#include "core/light_space.h"
 
 namespace penumbra {
 

@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "render/raster.h"
+#include "core/raster.h"
 
 namespace penumbra {
 namespace {
@@ -25,19 +25,23 @@ gpu::HairDrawPush ribbonPush(uint32_t viewRow, const RibbonView& v) {
 
 }  // namespace
 
-HairGBufferPass::HairGBufferPass(vk::Allocator& alloc, const HairGpu& hair, const GBufferPass& g)
-    : alloc_(alloc), hair_(hair), layout_(ribbonLayout(alloc.context())) {
+HairGBufferPass::HairGBufferPass(vk::Allocator& alloc, const HairGpu& hair)
+    : alloc_(alloc), hair_(hair), layout_(ribbonLayout(alloc.context())) {}
+
+// The pipeline takes the published G-buffer's formats (made with the first frame's targets).
+void HairGBufferPass::makePipeline(const vk::Image& albedo, const vk::Image& normal, const vk::Image& depth) {
     vk::GraphicsDesc d = HairGpu::pipelineDesc("dsm/hair_gbuffer.frag");
-    d.colorFormats = {g.albedo.format(), g.normal.format()};
-    if (g.depth.format() != VK_FORMAT_D32_SFLOAT)  // GBufferPass was not told `rasterAfter`
+    d.colorFormats = {albedo.format(), normal.format()};
+    if (depth.format() != VK_FORMAT_D32_SFLOAT)  // GBufferPass was not told `rasterAfter`
         throw std::logic_error("hair.gbuffer: the camera's depth is not a depth image");
-    d.depthFormat = g.depth.format();
-    pipeline_ = vk::Pipeline::graphics(alloc.context(), d, {layout_.handle()}, sizeof(gpu::HairDrawPush));
+    d.depthFormat = depth.format();
+    pipeline_ = vk::Pipeline::graphics(alloc_.context(), d, {layout_.handle()}, sizeof(gpu::HairDrawPush));
 }
 
 void HairGBufferPass::addTo(FrameGraph& graph, const RibbonView& camera) {
     const ImageHandle a = graph.image("gbuffer.albedo"), n = graph.image("gbuffer.normal"),
                       d = graph.image("gbuffer.depth");
+    if (pipeline_.handle() == VK_NULL_HANDLE) makePipeline(graph.imageOf(a), graph.imageOf(n), graph.imageOf(d));
     PassBuilder pass = graph.pass("hair.gbuffer", PassKind::Raster);
     pass.pipeline(pipeline_).use(a, Use::ColorAttachment).use(n, Use::ColorAttachment).use(d, Use::DepthAttachment);
     declareRibbonSet(pass, hair_);

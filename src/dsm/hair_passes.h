@@ -2,8 +2,7 @@
 // map: there hair is an opaque caster, which gives the binary shadows DSM is compared against).
 #pragma once
 #include "dsm/hair_gpu.h"
-#include "render/frame_graph.h"
-#include "render/gbuffer_pass.h"
+#include "core/frame_graph.h"
 
 namespace penumbra {
 
@@ -11,11 +10,12 @@ namespace penumbra {
 // normal = tangent with SHADING_HAIR in w.
 class HairGBufferPass {
 public:
-    HairGBufferPass(vk::Allocator& alloc, const HairGpu& hair, const GBufferPass& gbuffer);
-    // Draws into the published G-buffer ("gbuffer.*"), row 0 of "views".
+    HairGBufferPass(vk::Allocator& alloc, const HairGpu& hair);
+    // Draws into the published G-buffer ("gbuffer.*"; its depth D32_SFLOAT), row 0 of "views".
     void addTo(FrameGraph& graph, const RibbonView& camera);
 
 private:
+    void makePipeline(const vk::Image& albedo, const vk::Image& normal, const vk::Image& depth);
     vk::Allocator& alloc_;
     const HairGpu& hair_;
     vk::DescriptorLayout layout_;

@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "render/raster.h"
+#include "core/raster.h"
 
 namespace penumbra {
 namespace {

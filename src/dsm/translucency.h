@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "dsm/hair_gpu.h"
-#include "render/frame_graph.h"
+#include "core/frame_graph.h"
 
 namespace penumbra {
 

@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "render/render_options.h"
+#include "renderer/render_options.h"
 
 namespace penumbra {
 namespace {

@@ -9,7 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "eval/compare.h"
-#include "render/renderer.h"
+#include "renderer/renderer.h"
 #include "vk/context.h"
 
 namespace penumbra {

@@ -6,8 +6,9 @@
 #include <fmt/format.h>
 
 #include "dsm/deep_shadow_maps.h"
+#include "dsm/dsm_technique.h"
 #include "dsm/translucency.h"
-#include "render/gpu_scene.h"
+#include "core/gpu_scene.h"
 
 namespace penumbra {
 namespace {
@@ -153,9 +154,11 @@ std::vector<HairEvalRow> runHairEval(vk::Context& ctx, const Scene& scene, const
         }
         const ImageF final{s.width, s.height, r.readHdr()};
         std::vector<std::string> warnings;
-        if (const CameraTranslucency* t = r.translucency()) warnings = translucencyWarnings(t->readStats(r.commands()));
-        if (r.deepShadows().active())
-            for (const std::string& w : dsmWarnings(r.deepShadows().readStats(r.commands()))) warnings.push_back(w);
+        if (const CameraTranslucency* t = r.find<TranslucencyTechnique>()->translucency())
+            warnings = translucencyWarnings(t->readStats(r.commands()));
+        const DeepShadowMaps& maps = r.find<DsmTechnique>()->maps();
+        if (maps.active())
+            for (const std::string& w : dsmWarnings(maps.readStats(r.commands()))) warnings.push_back(w);
         r.setAov(Aov::Shadow);
         r.render(camera);
         const ImageF with{s.width, s.height, r.readHdr()};

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "lpv/lpv_settings.h"
-#include "render/frame_graph.h"
+#include "core/frame_graph.h"
 #include "shared/types.h"
 #include "scene/scene.h"
 

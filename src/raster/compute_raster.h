@@ -28,8 +28,8 @@
 #pragma once
 #include <vector>
 
-#include "render/frame_graph.h"
-#include "render/scene_gpu.h"
+#include "core/frame_graph.h"
+#include "core/scene_gpu.h"
 #include "shared/types.h"
 
 namespace penumbra {

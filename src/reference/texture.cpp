@@ -52,7 +52,7 @@ uint8_t encodeSrgb(float linear) {
 }
 
 // Resamples `src` to w x h as the renderer's vkCmdBlitImage with VK_FILTER_LINEAR does
-// (render/texture_upload.cpp): each target texel centre mapped onto the source, bilinear with
+// (core/texture_upload.cpp): each target texel centre mapped onto the source, bilinear with
 // clamped edges, in linear light (sRGB colour, linear alpha), so that both see the same texels.
 Texture resample(const Texture& src, uint32_t w, uint32_t h) {
     Texture t{w, h, std::vector<uint8_t>(size_t(w) * h * 4)};

@@ -8,7 +8,7 @@
 // (relative L1 of VC's direct light 0.32); filtering over the same footprint makes texture detail
 // cancel out of the comparison. For the same reason the mip levels are those the renderer shades
 // with: each texture at its own size, every level from the one above in linear light, as the
-// renderer's blit chain builds them (render/texture_upload.cpp).
+// renderer's blit chain builds them (core/texture_upload.cpp).
 #pragma once
 #include <cstdint>
 #include <vector>

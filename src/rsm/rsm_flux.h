@@ -4,7 +4,7 @@
 // summed) and rsm.flux-draw (RSM_FLUX_ENTRIES stratified draws per layer), published as
 // "rsm.flux-draws" (layout in shared/types.h).
 #pragma once
-#include "render/frame_graph.h"
+#include "core/frame_graph.h"
 #include "shared/types.h"
 
 namespace penumbra {

@@ -3,7 +3,7 @@
 #pragma once
 #include <vector>
 
-#include "render/frame_graph.h"
+#include "core/frame_graph.h"
 #include "rsm/rsm_pass.h"
 
 namespace penumbra {

@@ -6,10 +6,10 @@
 #pragma once
 #include <vector>
 
-#include "render/frame_graph.h"
-#include "render/scene_gpu.h"
+#include "core/frame_graph.h"
+#include "core/scene_gpu.h"
 #include "rsm/rsm_settings.h"
-#include "shadow/light_space.h"
+#include "core/light_space.h"
 
 namespace penumbra {
 

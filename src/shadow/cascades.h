@@ -11,7 +11,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "shadow/light_space.h"
+#include "core/light_space.h"
 
 namespace penumbra {
 

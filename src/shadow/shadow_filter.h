@@ -3,7 +3,7 @@
 // visibility, g = layer code for the `cascade` AOV). The lighting pass only reads the mask, so the
 // filter's cost is this pass's GPU time.
 #pragma once
-#include "render/frame_graph.h"
+#include "core/frame_graph.h"
 #include "vk/pipeline.h"
 
 namespace penumbra {

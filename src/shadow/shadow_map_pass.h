@@ -12,8 +12,8 @@
 #include <vector>
 
 #include "raster/compute_raster.h"
-#include "render/frame_graph.h"
-#include "render/scene_gpu.h"
+#include "core/frame_graph.h"
+#include "core/scene_gpu.h"
 #include "shadow/shadow_filter.h"
 #include "shadow/shadow_layout.h"
 #include "shadow/shadow_moments.h"

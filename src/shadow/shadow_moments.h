@@ -3,7 +3,7 @@
 // along x, shadow.blur = blur along y. Only layers of lights with a moment filter get a moment
 // layer (GpuShadowLayer.info.y); the others are skipped by whole workgroups.
 #pragma once
-#include "render/frame_graph.h"
+#include "core/frame_graph.h"
 #include "vk/pipeline.h"
 
 namespace penumbra {

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "render/raster.h"
+#include "core/raster.h"
 
 namespace penumbra {
 

@@ -7,7 +7,7 @@
 #include <functional>
 #include <vector>
 
-#include "render/scene_gpu.h"
+#include "core/scene_gpu.h"
 #include "shadow/shadow_layout.h"
 
 namespace penumbra {

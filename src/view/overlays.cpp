@@ -4,7 +4,9 @@
 
 #include <imgui.h>
 
-#include "shadow/light_space.h"
+#include "core/light_space.h"
+#include "core/names.h"
+#include "lpv/lpv_technique.h"
 
 namespace penumbra::view {
 namespace {
@@ -40,7 +42,9 @@ struct Projector {
 };
 
 void shadowFrusta(Renderer& renderer, const Projector& p) {
-    for (const ShadowLayer& layer : renderer.shadow().layers()) {
+    const ShadowLayers* layers = renderer.blackboard().get(names::kShadowLayers);
+    if (!layers) return;
+    for (const ShadowLayerView& layer : layers->layers) {
         if (layer.projection.paraboloid) continue;  // no matrix: a hemisphere, not a frustum
         const glm::mat4 inv = glm::inverse(layer.projection.viewProj);
         std::array<glm::vec3, 8> corners;
@@ -53,8 +57,9 @@ void shadowFrusta(Renderer& renderer, const Projector& p) {
 }
 
 void lpvBoxes(Renderer& renderer, const Projector& p) {
-    const LightPropagationVolume* lpv = renderer.lpv();
-    if (!lpv) return;
+    LpvTechnique* technique = renderer.find<LpvTechnique>();
+    if (!technique) return;
+    const LightPropagationVolume* lpv = &technique->volume();
     const gpu::LpvPush& c = lpv->constants();
     for (uint32_t k = 0; k < lpv->cascadeCount(); ++k) {
         const glm::vec3 origin(c.cascades[k].origin);

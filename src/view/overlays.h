@@ -1,7 +1,7 @@
 // Overlays drawn with ImGui's background draw list over the rendered image: the shadow layers'
 // frusta (cascade bounds, spot cones, cube faces) and the LPV cascades' boxes, as projected lines.
 #pragma once
-#include "render/renderer.h"
+#include "renderer/renderer.h"
 
 namespace penumbra::view {
 

@@ -8,9 +8,10 @@
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
+#include "core/names.h"
 #include "dsm/dsm_options.h"
 #include "lpv/lpv_options.h"
-#include "render/render_options.h"
+#include "renderer/render_options.h"
 #include "rsm/rsm_options.h"
 #include "shadow/shadow_options.h"
 
@@ -235,7 +236,8 @@ void Panels::debugViewSliders(ViewSession& session) {
     } else if (rs.aov == Aov::RsmDepth || rs.aov == Aov::RsmNormal || rs.aov == Aov::RsmFlux ||
                rs.aov == Aov::ShadowMap) {
         int layer = int(rs.aovLayer);
-        const int last = std::max(int(session.renderer().shadow().layers().size()) - 1, 0);  // views clamp to theirs
+        const ShadowLayers* layers = session.renderer().blackboard().get(names::kShadowLayers);
+        const int last = std::max(int(layers ? layers->layers.size() : 0) - 1, 0);  // views clamp to theirs
         if (ImGui::SliderInt("aov-layer", &layer, 0, last)) apply(session, "aov-layer", std::to_string(layer));
     }
 }

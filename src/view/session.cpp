@@ -5,9 +5,9 @@
 #include <fmt/format.h>
 
 #include "app/cli_parse.h"
-#include "app/device_budget.h"
+#include "renderer/device_budget.h"
 #include "app/shadow_cli.h"
-#include "render/render_options.h"
+#include "renderer/render_options.h"
 #include "io/image_io.h"
 
 namespace penumbra::view {

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "app/frame_options.h"
-#include "render/renderer.h"
+#include "renderer/renderer.h"
 #include "scene/motion.h"
 
 namespace penumbra::view {

@@ -125,7 +125,7 @@ public:
     void update(VkDevice device, VkDescriptorSet set);  // for pooled sets
 
 private:
-    // Only the frame graph pushes sets, from what a pass declared (render/frame_graph.h).
+    // Only the frame graph pushes sets, from what a pass declared (core/frame_graph.h).
     friend class ::penumbra::FrameGraph;
     void push(const Context& ctx, VkCommandBuffer cmd, const Pipeline& pipeline, uint32_t set = 0);
     VkWriteDescriptorSet& add(uint32_t binding, VkDescriptorType type, uint32_t element = 0);

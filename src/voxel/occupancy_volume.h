@@ -12,8 +12,8 @@
 // moved: the Renderer calls it with its cached shadow layers). The buffer ("occupancy": a
 // GpuOccupancyGrid, then the bits) is read with shaders/voxel/occupancy.glsl.
 #pragma once
-#include "render/frame_graph.h"
-#include "render/scene_gpu.h"
+#include "core/frame_graph.h"
+#include "core/scene_gpu.h"
 #include "shared/types.h"
 
 namespace penumbra {

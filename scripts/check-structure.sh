@@ -1,0 +1,41 @@
+#!/usr/bin/env bash
+# The module structure of src/ (README "Architecture"): the core, the Vulkan layer, scene and io include no
+# technique, service or assembly header; no technique includes another technique's header; shared
+# services include no technique. Prints each offending include and exits 1; run by CTest.
+set -euo pipefail
+root="${1:-$(cd "$(dirname "$0")/.." && pwd)}"
+cd "$root/src"
+
+# Technique folders: each a module that reaches the others only through core/names.h.
+techniques=(shadow dsm rsm lpv lighting temporal_gi)
+# Shared service modules: techniques may use them; they use only the layers below.
+services=(raster voxel)
+# The assembly above the techniques, and the front ends above it.
+above=(renderer app view eval reference)
+
+status=0
+# $1: folder, $2...: folders it must not include from.
+forbid() {
+    local folder=$1
+    shift
+    [ -d "$folder" ] || return 0
+    local pattern
+    pattern="^[[:space:]]*#[[:space:]]*include[[:space:]]*\"($(IFS='|'; echo "$*"))/"
+    local hits
+    hits=$(grep -rnE "$pattern" "$folder" --include='*.h' --include='*.cpp' || true)
+    if [ -n "$hits" ]; then
+        echo "check-structure: $folder/ includes a header it must not:"
+        echo "$hits" | sed 's/^/  src\//'
+        status=1
+    fi
+}
+
+for below in core vk scene io; do forbid "$below" "${techniques[@]}" "${services[@]}" "${above[@]}"; done
+for s in "${services[@]}"; do forbid "$s" "${techniques[@]}" "${above[@]}"; done
+for t in "${techniques[@]}"; do
+    others=()
+    for o in "${techniques[@]}"; do [ "$o" != "$t" ] && others+=("$o"); done
+    forbid "$t" "${others[@]}" "${above[@]}"
+done
+[ "$status" -eq 0 ] && echo "check-structure: ok (core, vk, scene, io, ${services[*]}, ${techniques[*]})"
+exit "$status"

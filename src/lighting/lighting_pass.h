@@ -1,0 +1,56 @@
+// Deferred direct lighting in compute (render/lighting.comp): every light, shadow-map visibility,
+// writes the HDR image or the selected AOV.
+#pragma once
+#include "core/frame_graph.h"
+#include "core/core_settings.h"
+#include "shared/types.h"
+#include "vk/pipeline.h"
+
+namespace penumbra {
+
+class LightingPass {
+public:
+    LightingPass(vk::Allocator& alloc, uint32_t width, uint32_t height);
+    // Reads by name: "frame", "lights", the G-buffer, "shadow.mask" (filtered visibility per shadowed
+    // light), "gi.irradiance" (indirect irradiance per pixel, or a 1x1 placeholder when
+    // FrameUniforms.options.x = 0), and the deep shadow maps' lookup buffers "dsm.lights",
+    // "dsm.heads", "dsm.nodes", "dsm.side" (bindings 8-11), and for the velocity AOV "gbuffer.ids"
+    // (a 1x1 placeholder on the classic path, FrameUniforms.options.y = 0), "drawn-triangles" and
+    // "instances"; writes "probe" (the pixel probe, FrameUniforms.options.zw). Publishes "hdr".
+    void addTo(FrameGraph& graph);
+
+    vk::Image hdr;  // RGBA32F radiance (or AOV values)
+
+private:
+    vk::DescriptorLayout layout_;
+    vk::Pipeline pipeline_;
+    vk::Sampler pointSampler_;
+};
+
+// Debug views of light-space images (AOVs rsm-depth, rsm-normal, rsm-flux, shadow-map): overwrites
+// "hdr" with one layer of the published source image, letterboxed.
+class DebugViewPass {
+public:
+    explicit DebugViewPass(vk::Context& ctx);
+    // Adds the pass when `aov` is one of these views and its source is published this frame.
+    void addTo(FrameGraph& graph, Aov aov, uint32_t layer);
+
+private:
+    vk::ComputeKernel kernel_;
+    vk::Sampler nearest_;
+};
+
+class TonemapPass {
+public:
+    TonemapPass(vk::Allocator& alloc, uint32_t width, uint32_t height);
+    // Reads "hdr", publishes "ldr".
+    void addTo(FrameGraph& graph, const gpu::TonemapPush& params);
+
+    vk::Image ldr;  // RGBA8, sRGB-encoded values in a UNORM image (storage images cannot be sRGB)
+
+private:
+    vk::DescriptorLayout layout_;
+    vk::Pipeline pipeline_;
+};
+
+}  // namespace penumbra

@@ -1,0 +1,51 @@
+// The core camera and lighting path, a module like the others: the camera's G-buffer, deferred
+// lighting of the summed indirect-irradiance contributions, the debug views and the tone map.
+#pragma once
+#include <memory>
+
+#include "core/irradiance_sum.h"
+#include "core/technique.h"
+#include "lighting/gbuffer_pass.h"
+#include "lighting/lighting_pass.h"
+
+namespace penumbra {
+
+class GpuScene;
+
+// The G-buffer (scene.vert/gbuffer.frag, or the visibility path) of the opaque surfaces; with
+// translucency off, BLEND surfaces too, and hair drawn after it into the same depth (src/dsm).
+class CameraTechnique : public Technique {
+public:
+    explicit CameraTechnique(const TechniqueBuild& b);
+    const char* name() const override { return "camera"; }
+    void addPasses(const FrameContext& f) override { gbuffer_.addTo(f.graph, f.slot); }
+    GBufferPass& gbuffer() { return gbuffer_; }
+
+private:
+    GBufferPass gbuffer_;
+};
+
+// Deferred lighting (publishes "hdr") over the sum of the frame's irradiance contributions (a black
+// "gi.irradiance" when none), then the debug views and the tone mapper ("ldr").
+class LightingTechnique : public Technique {
+public:
+    explicit LightingTechnique(const TechniqueBuild& b);
+    ~LightingTechnique() override;
+    const char* name() const override { return "lighting"; }
+    void addPasses(const FrameContext& f) override;
+    void addOutputPasses(const FrameContext& f) override;
+    LightingPass& lighting() { return lighting_; }
+    TonemapPass& tonemap() { return tonemap_; }
+
+private:
+    gpu::TonemapPush tonemapParams(const FrameContext& f) const;
+    Blackboard& board_;
+    IrradianceSum irradiance_;
+    LightingPass lighting_;
+    DebugViewPass debugView_;
+    TonemapPass tonemap_;
+    vk::Image noIndirect_;  // bound in place of the indirect irradiance when GI is off
+    vk::Image noIds_;       // bound in place of the visibility IDs on the classic G-buffer path
+};
+
+}  // namespace penumbra

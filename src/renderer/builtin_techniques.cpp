@@ -1,0 +1,116 @@
+// The built-in modules in the registry: the only place that maps RenderSettings onto each
+// technique's own settings, and the rules that span techniques (which GI runs, the RSM's size
+// under LPV, the cascades' snap to GI texels).
+#include <algorithm>
+
+#include "dsm/dsm_technique.h"
+#include "lighting/lighting_technique.h"
+#include "lpv/lpv_technique.h"
+#include "renderer/settings_change.h"
+#include "renderer/technique_registry.h"
+#include "rsm/rsm_technique.h"
+#include "shadow/shadow_technique.h"
+#include "temporal_gi/temporal_gi_technique.h"
+#include "voxel/occupancy_technique.h"
+
+namespace penumbra {
+namespace {
+
+// The sun's cascades move in whole blocks of the texels that GI reads as one (an RSM texel, or one of
+// LPV's down-sampled VPLs), so that those blocks stay on a world-fixed lattice as the camera moves:
+// otherwise the RSM's texel centres crawl by fractions of a texel and its light flickers.
+uint32_t cascadeSnapTexels(const RenderSettings& s) {
+    uint32_t giTexels = 0;
+    if (s.gi == GiMode::Rsm) giTexels = s.rsm.resolution;
+    if (s.gi == GiMode::Lpv) giTexels = s.lpv.vplResolution;
+    return giTexels == 0 ? 1u : std::max(1u, s.shadow.resolution / giTexels);
+}
+
+HairCasterSettings hairCasters(const RenderSettings& s) {
+    return {s.shadow.depthBiasConstant, s.shadow.depthBiasSlope, s.shadow.pointMode == PointShadowMode::Paraboloid};
+}
+
+// The occupancy volume: the RSM gather's visibility, or what blocks LPV's propagation.
+bool occupancyUsed(const RenderSettings& s) {
+    return (s.gi == GiMode::Rsm && s.rsm.visibility == RsmVisibility::Voxels) ||
+           (s.gi == GiMode::Lpv && s.lpv.geometry == LpvGeometry::Voxels);
+}
+
+template <class T>
+T& as(Technique& t) {
+    return static_cast<T&>(t);
+}
+
+}  // namespace
+
+void addBuiltinTechniques(TechniqueRegistry& r) {
+    using S = const RenderSettings&;
+    using B = const TechniqueBuild&;
+    TechniqueEntry camera{"camera", 10, {}, kPartCamera};
+    camera.create = [](B b, S) { return std::make_unique<CameraTechnique>(b); };
+    r.add(std::move(camera));
+
+    TechniqueEntry translucency{"translucency", 20, {}, kPartCamera};
+    translucency.create = [](B b, S) { return std::make_unique<TranslucencyTechnique>(b); };
+    r.add(std::move(translucency));
+
+    TechniqueEntry shadow{"shadow", 30, {"dsm"}, kPartShadow | kPartDsm};
+    shadow.create = [](B b, S s) {
+        auto t = std::make_unique<ShadowTechnique>(b, s.shadow);
+        t->setCascadeSnap(cascadeSnapTexels(s));
+        return t;
+    };
+    shadow.apply = [](Technique& t, S s) {
+        as<ShadowTechnique>(t).setSettings(s.shadow);
+        as<ShadowTechnique>(t).setCascadeSnap(cascadeSnapTexels(s));
+    };
+    shadow.adjustParts = kPartShadowFilters;
+    shadow.adjust = [](Technique& t, S s, const std::vector<Light>& lights) {
+        as<ShadowTechnique>(t).setFilters(s.shadow, lights);
+    };
+    r.add(std::move(shadow));
+
+    TechniqueEntry dsm{"dsm", 40, {}, kPartShadow | kPartDsm};
+    dsm.create = [](B b, S s) { return std::make_unique<DsmTechnique>(b, s.dsm, s.shadow.resolution, hairCasters(s)); };
+    dsm.apply = [](Technique& t, S s) { as<DsmTechnique>(t).setCasterSettings(hairCasters(s)); };
+    r.add(std::move(dsm));
+
+    TechniqueEntry occupancy{"occupancy", 45, {}, kPartGi};
+    occupancy.enabled = occupancyUsed;
+    occupancy.create = [](B b, S s) { return std::make_unique<OccupancyTechnique>(b, s.rsm.voxelResolution); };
+    r.add(std::move(occupancy));
+
+    TechniqueEntry rsm{"rsm", 50, {"shadow"}, kPartGi};
+    rsm.enabled = [](S s) { return s.gi != GiMode::None; };
+    rsm.create = [](B b, S s) {
+        const bool gather = s.gi == GiMode::Rsm;
+        RsmSettings settings = s.rsm;
+        if (!gather) settings.resolution = s.lpv.rsmResolution;  // LPV renders the RSM larger and down-samples it
+        auto t = std::make_unique<RsmTechnique>(b, settings, gather, s.shadow.resolution);
+        if (b.board.require(names::kShadowLayers).shadowed.empty())
+            b.warnings.push_back("GI: no directional or spot light casts shadows; no indirect light");
+        return t;
+    };
+    rsm.apply = [](Technique& t, S s) { as<RsmTechnique>(t).setSettings(s.rsm); };
+    r.add(std::move(rsm));
+
+    TechniqueEntry lpv{"lpv", 60, {"rsm"}, kPartGi};
+    lpv.enabled = [](S s) { return s.gi == GiMode::Lpv; };
+    lpv.create = [](B b, S s) { return std::make_unique<LpvTechnique>(b, s.lpv); };
+    lpv.apply = [](Technique& t, S s) { as<LpvTechnique>(t).setSettings(s.lpv); };
+    r.add(std::move(lpv));
+
+    TechniqueEntry temporal{"temporal-gi", 70, {}, kPartCamera | kPartGi};
+    temporal.enabled = [](S s) { return s.giTemporal; };
+    temporal.create = [](B b, S s) {
+        return std::make_unique<TemporalGiTechnique>(b, TemporalGiSettings{s.giTemporalAlpha});
+    };
+    temporal.apply = [](Technique& t, S s) { as<TemporalGiTechnique>(t).setSettings({s.giTemporalAlpha}); };
+    r.add(std::move(temporal));
+
+    TechniqueEntry lighting{"lighting", 80, {}, kPartCamera};
+    lighting.create = [](B b, S) { return std::make_unique<LightingTechnique>(b); };
+    r.add(std::move(lighting));
+}
+
+}  // namespace penumbra
