@@ -20,6 +20,13 @@ namespace {
 
 constexpr size_t kFrameHistory = 240;
 
+// The windows' default share of the display (width, height): together under a quarter of it, so
+// that the image stays visible; they follow the display when its size changes.
+constexpr float kMargin = 8.0f;
+constexpr float kSceneShare[2] = {0.24f, 0.48f};
+constexpr float kTimingsShare[2] = {0.25f, 0.26f};
+constexpr float kProbeShare[2] = {0.25f, 0.20f};
+
 
 // A sun's direction of travel from the azimuth and elevation of the direction towards it.
 glm::vec3 sunDirection(float azimuthDeg, float elevationDeg) {
@@ -64,6 +71,12 @@ bool lightEditor(Light& l) {
     }
     changed |= ImGui::Checkbox("casts shadow", &l.castsShadow);
     return changed;
+}
+
+// One word per name in PanelsState::text(): "GPU time" -> "GPU-time".
+std::string nameWithoutSpaces(std::string name) {
+    std::replace(name.begin(), name.end(), ' ', '-');
+    return name;
 }
 
 }  // namespace
@@ -143,17 +156,58 @@ void Panels::splitLabels(ViewSession& session) {
     draw->AddText({size.x * 0.5f + 8.0f, size.y - 20.0f}, IM_COL32(255, 255, 255, 255), session.splitLabel().c_str());
 }
 
+float PanelsState::coverage() const {
+    float area = 0.0f;
+    for (const Rect& r : windows) {
+        const float w = std::min(r.x + r.width, displayWidth) - std::max(r.x, 0.0f);
+        const float h = std::min(r.y + r.height, displayHeight) - std::max(r.y, 0.0f);
+        area += std::max(w, 0.0f) * std::max(h, 0.0f);
+    }
+    return displayWidth > 0 && displayHeight > 0 ? area / (displayWidth * displayHeight) : 0.0f;
+}
+
+std::string PanelsState::text() const {
+    std::string out = fmt::format("display {} {}\ncoverage {:.4f}\n", displayWidth, displayHeight, coverage());
+    for (const Rect& r : windows)
+        out += fmt::format("window {} {} {} {} {}\n", nameWithoutSpaces(r.window), r.x, r.y, r.width, r.height);
+    for (const std::string& p : passes) out += fmt::format("pass {}\n", p);
+    for (const auto& [name, value] : options) out += fmt::format("option {} {}\n", name, value);
+    for (const auto& [name, v] : probe) out += fmt::format("probe {} {} {} {}\n", name, v.x, v.y, v.z);
+    return out;
+}
+
 void Panels::draw(ViewSession& session, CameraControl& control, const vk::Swapchain& swapchain) {
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    relayout_ |= display.x != state_.displayWidth || display.y != state_.displayHeight;
+    state_ = {display.x, display.y, {}, {}, {}, {}};
+    splitLabels(session);
+    if (!session.showPanels) return;
+    session.catchUpPanels();
     sceneWindow(session, control);
     timingsWindow(session, swapchain);
     probeWindow(session);
-    splitLabels(session);
+    relayout_ = false;
+}
+
+// A window's place as a share of the display: set when the display size changed, free otherwise.
+void Panels::placeWindow(const char* name, float x, float y, float width, float height) {
+    const ImGuiCond when = relayout_ ? ImGuiCond_Always : ImGuiCond_FirstUseEver;
+    ImGui::SetNextWindowPos({x, y}, when);
+    ImGui::SetNextWindowSize({width, height}, when);
+    ImGui::Begin(name);
+}
+
+// Between Begin and End: the window's rectangle as drawn.
+void Panels::recordWindow(const char* name) {
+    const ImVec2 pos = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+    state_.windows.push_back({name, pos.x, pos.y, size.x, size.y});
 }
 
 void Panels::sceneWindow(ViewSession& session, CameraControl& control) {
-    ImGui::SetNextWindowPos({8, 8}, ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize({380, 520}, ImGuiCond_FirstUseEver);
-    ImGui::Begin("penumbra");
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    placeWindow("penumbra", kMargin, kMargin, display.x * kSceneShare[0], display.y * kSceneShare[1]);
+    recordWindow("penumbra");
+    ImGui::TextDisabled("F1 hides the panels");
     const Scene& scene = session.scene();
     ImGui::Text("%s: %zu triangles, %zu strands", scene.name.c_str(), scene.triangleCount(), scene.strands.size());
     ImGui::TextDisabled("drop a .gltf/.glb onto the window to load it");
@@ -251,6 +305,7 @@ void Panels::optionsSection(ViewSession& session) {
     for (const OptionInfo& o : options)
         if (std::find(groups.begin(), groups.end(), o.group) == groups.end()) groups.push_back(o.group);
     const RenderSettings& rs = session.settings();
+    for (const OptionInfo& o : options) state_.options.emplace_back(o.name, o.value);
     for (const std::string& group : groups) {
         // The groups of the techniques in use start open.
         const bool inUse = group == shadowOptions().title || group == frameOptionTable().title ||
@@ -286,9 +341,9 @@ void Panels::optionsSection(ViewSession& session) {
 
 void Panels::timingsWindow(ViewSession& session, const vk::Swapchain& swapchain) {
     const ImVec2 display = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos({display.x - 308, 8}, ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize({300, 300}, ImGuiCond_FirstUseEver);
-    ImGui::Begin("GPU time");
+    const float width = display.x * kTimingsShare[0];
+    placeWindow("GPU time", display.x - width - kMargin, kMargin, width, display.y * kTimingsShare[1]);
+    recordWindow("GPU time");
     const RenderSettings& s = session.settings();
     ImGui::Text("%ux%u, %s present", s.width, s.height, vk::presentModeName(swapchain.presentMode()));
     if (!frameMs_.empty()) {
@@ -296,13 +351,16 @@ void Panels::timingsWindow(ViewSession& session, const vk::Swapchain& swapchain)
         const float newest = ms.back();
         const float top = *std::max_element(ms.begin(), ms.end());
         ImGui::PlotLines("##frame", ms.data(), int(ms.size()), 0, fmt::format("frame {:.2f} ms", newest).c_str(), 0.0f,
-                         top * 1.1f, {0, 60});
+                         top * 1.1f, {0, 40});
     }
     // Per-pass scopes make the passes run one after another (Renderer::setPassScopes): off shows the
     // frame as it runs, independent passes together.
     ImGui::Checkbox("time every pass (in order)", &passScopes_);
     session.renderer().setPassScopes(passScopes_);
-    if (passScopes_ && ImGui::BeginTable("passes", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
+    // After a settings change the newest completed frame may still be one of the old settings: its
+    // passes are not those of the image on screen.
+    if (passScopes_ && !session.frameMatchesSettings()) ImGui::TextDisabled("(waiting for the frame)");
+    else if (passScopes_ && ImGui::BeginTable("passes", 2, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV)) {
         ImGui::TableSetupColumn("pass");
         ImGui::TableSetupColumn("GPU ms");
         ImGui::TableHeadersRow();
@@ -311,6 +369,7 @@ void Panels::timingsWindow(ViewSession& session, const vk::Swapchain& swapchain)
             ImGui::TableNextRow();
             ImGui::TableNextColumn();
             ImGui::TextUnformatted(t.name.c_str());
+            state_.passes.push_back(t.name);
             ImGui::TableNextColumn();
             ImGui::Text("%.3f", t.ms);
             total += t.ms;
@@ -333,15 +392,18 @@ void Panels::probeWindow(ViewSession& session) {
     Renderer* source = session.rendererB() && pixel.x >= session.settings().width / 2 ? session.rendererB()
                                                                                      : &session.renderer();
     const ImVec2 display = ImGui::GetIO().DisplaySize;
-    ImGui::SetNextWindowPos({display.x - 308, display.y - 228}, ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize({300, 220}, ImGuiCond_FirstUseEver);
-    ImGui::Begin("Pixel probe");
+    const float width = display.x * kProbeShare[0], height = display.y * kProbeShare[1];
+    placeWindow("Pixel probe", display.x - width - kMargin, display.y - height - kMargin, width, height);
+    recordWindow("Pixel probe");
     ImGui::Text("pixel %u, %u%s", pixel.x, pixel.y, source == &session.renderer() ? "" : " (B)");
     const std::optional<gpu::PixelProbe>& p = source->probe();
-    if (!p) ImGui::TextDisabled("(waiting for the frame)");
+    if (!p || !session.frameMatchesSettings()) ImGui::TextDisabled("(waiting for the frame)");
     else if (p->finalRadiance.w == 0.0f) ImGui::Text("background (depth %.3f: the far plane)", p->position.w);
     else {
-        const auto row = [](const char* name, glm::vec3 v) { ImGui::Text("%-10s %9.4f %9.4f %9.4f", name, v.x, v.y, v.z); };
+        const auto row = [this](const char* name, glm::vec3 v) {
+            ImGui::Text("%-10s %8.4f %8.4f %8.4f", name, v.x, v.y, v.z);
+            state_.probe.emplace_back(name, v);
+        };
         row("final", p->finalRadiance);
         row("direct", p->direct);
         row("indirect", p->indirect);

@@ -112,6 +112,13 @@ ScriptStep Script::execute(const std::string& command, const std::string& args, 
                                             number<uint32_t>(words[1], "a pixel row"));
             session.probePinned = true;
         }
+    } else if (command == "panels") {
+        if (words.size() != 1 || (words[0] != "on" && words[0] != "off"))
+            throw std::invalid_argument("expected: panels on|off");
+        session.showPanels = words[0] == "on";
+    } else if (command == "panels-state") {
+        expectWords(words, 1, "panels-state PATH");
+        return {ScriptStep::PanelsState, 0, words[0]};
     } else if (command == "frames") {
         expectWords(words, 1, "frames N");
         step.frames = numberIn<int>(words[0], "a frame count", 0, kMaxScriptFrames);
@@ -123,7 +130,8 @@ ScriptStep Script::execute(const std::string& command, const std::string& args, 
         return {};
     } else {
         throw std::invalid_argument(fmt::format(
-            "unknown command '{}' (set, camera, light, time, play, pause, probe, frames, screenshot, screenshot-ui, quit)",
+            "unknown command '{}' (set, camera, light, time, play, pause, probe, panels, panels-state, frames, screenshot, "
+            "screenshot-ui, quit)",
             command));
     }
     return step;

@@ -17,9 +17,9 @@ struct ScriptError : std::runtime_error {
 
 // What the viewer does next for the script.
 struct ScriptStep {
-    enum Kind { Frames, Screenshot, ScreenshotUi, Quit } kind = Quit;
+    enum Kind { Frames, Screenshot, ScreenshotUi, PanelsState, Quit } kind = Quit;
     int frames = 0;    // Frames: how many
-    std::string path;  // Screenshot(Ui): where
+    std::string path;  // Screenshot(Ui), PanelsState: where
 };
 
 class Script {

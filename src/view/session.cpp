@@ -86,6 +86,7 @@ void ViewSession::adopt(std::vector<CliArg> args, Parsed p) {
     if (newScene) {
         renderer_.reset();  // they draw the old scene
         rendererB_.reset();
+        newestCompleted_.reset();
         gpuScene_ = std::move(uploaded);
     }
     if (newScene || p.options.time != options_.time) time = float(p.options.time);
@@ -224,8 +225,25 @@ std::vector<OptionInfo> ViewSession::options() const {
 Renderer& ViewSession::renderer() {
     if (!renderer_) renderer_ = std::make_unique<Renderer>(ctx_, *gpuScene_, settings_);
     else if (settingsChanged_) renderer_->apply(settings_);
+    if (settingsChanged_) settingsFrame_ = renderer_->framesSubmitted();
     settingsChanged_ = false;
     return *renderer_;
+}
+
+bool ViewSession::frameMatchesSettings() const {
+    return renderer_ && !settingsChanged_ && newestCompleted_ && *newestCompleted_ >= settingsFrame_;
+}
+
+void ViewSession::catchUpPanels() {
+    Renderer& r = renderer();
+    const auto takeCompleted = [&] {
+        for (const FrameTimings& t : r.takeCompletedTimings()) newestCompleted_ = t.frame;
+    };
+    takeCompleted();
+    if (frameMatchesSettings() || r.framesSubmitted() == settingsFrame_) return;
+    r.finish();
+    if (rendererB_) rendererB_->finish();
+    takeCompleted();
 }
 
 void ViewSession::submit(const FrameHooks& hooks) {

@@ -63,6 +63,8 @@ public:
     // (Renderer::probe()); the cursor sets it unless a script pinned it (`probe X Y`).
     std::optional<glm::uvec2> probePixel;
     bool probePinned = false;
+    // The panels over the image (F1, `panels on|off`).
+    bool showPanels = true;
 
     const Scene& scene() const { return gpuScene_->scene(); }
     const RenderSettings& settings() const { return settings_; }
@@ -74,6 +76,12 @@ public:
     // The renderer over the scene, with the current settings applied (Renderer::apply: per-frame
     // values cost nothing, structure and sizes rebuild only what they own).
     Renderer& renderer();
+    // Whether the renderer's newest completed frame (its pass timings and pixel probe) was rendered
+    // with the current settings, so that the panels may show it as the state of the image.
+    bool frameMatchesSettings() const;
+    // After a settings change, waits for the first frame submitted with them (once), so that the
+    // panels drawn next show that frame rather than one of the old settings.
+    void catchUpPanels();
     // One frame of the live camera and lights, with the viewer's commands after its last pass.
     // With a split view, the B renderer's frame is submitted first (same queue: A's commands see it).
     void submit(const FrameHooks& hooks);
@@ -112,6 +120,8 @@ private:
     RenderSettings settingsB_;
     std::unique_ptr<Renderer> rendererB_;
     bool settingsChanged_ = false;
+    uint64_t settingsFrame_ = 0;  // the renderer's first frame with the current settings
+    std::optional<uint64_t> newestCompleted_;  // the renderer's newest frame whose timings were collected
 };
 
 }  // namespace penumbra::view

@@ -1,6 +1,7 @@
 #include "view/viewer.h"
 
 #include <chrono>
+#include <fstream>
 
 #include <GLFW/glfw3.h>
 #include <fmt/format.h>
@@ -143,6 +144,9 @@ void Viewer::handleInput(double dt) {
     const bool f12 = glfwGetKey(window_.handle(), GLFW_KEY_F12) == GLFW_PRESS;
     if (f12 && !f12Down_) f12Screenshot();
     f12Down_ = f12;
+    const bool f1 = glfwGetKey(window_.handle(), GLFW_KEY_F1) == GLFW_PRESS;
+    if (f1 && !f1Down_) session_.showPanels = !session_.showPanels;
+    f1Down_ = f1;
 }
 
 // The rendered image's pixel under a window position (the image fills the window), or none outside.
@@ -246,6 +250,11 @@ void Viewer::finishScriptStep() {
         return;
     }
     session_.renderer().finish();
+    if (step_.kind == ScriptStep::PanelsState) {
+        writePanelsState(step_.path);
+        step_ = {ScriptStep::Frames, 0, {}};
+        return;
+    }
     if (step_.kind == ScriptStep::Screenshot) session_.writeImage(step_.path);
     else writeUiScreenshot(step_.path);
     fmt::print("penumbra: screenshot {}\n", step_.path);
@@ -261,6 +270,14 @@ void Viewer::writeUiScreenshot(const std::string& path) {
         rgba[i + 3] = 255;  // the swapchain's alpha is not the image's
     }
     writePng(path, e.width, e.height, rgba);
+}
+
+// `panels-state`: what the panels showed in the frame just drawn, as text.
+void Viewer::writePanelsState(const std::string& path) {
+    std::ofstream out(path);
+    out << panels_.state().text();
+    out.flush();
+    if (!out) throw std::runtime_error(fmt::format("cannot write {}", path));
 }
 
 // F12: the rendered image without the UI, tone-mapped (PNG) and linear (EXR).

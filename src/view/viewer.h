@@ -40,6 +40,7 @@ private:
     void handleInput(double dt);
     void writeUiScreenshot(const std::string& path);
     void f12Screenshot();
+    void writePanelsState(const std::string& path);
 
     Window window_;
     vk::Context ctx_;
@@ -66,6 +67,7 @@ private:
     glm::dvec2 cursor_{0.0, 0.0};  // ctrl + left-drag turns the sun
     bool f12Down_ = false;
     int f12Count_ = 0;
+    bool f1Down_ = false;
 };
 
 }  // namespace penumbra::view

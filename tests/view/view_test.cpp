@@ -175,6 +175,8 @@ TEST(ViewScript, BadLineIsOneErrorWithFileAndLine) {
         {"time inf", "a time in seconds"},
         {"time 1e7", "out of range"},
         {"frames 100001", "out of range [0, 100000]"},
+        {"panels maybe", "panels on|off"},
+        {"panels-state", "panels-state PATH"},
         {"light 0 directional,0,-1,0,1e9,3,3,3", "65504"},
     };
     ASSERT_TRUE(haveDisplay());

@@ -43,7 +43,7 @@ XServer::XServer(const std::string& log) : log_(log) {
         if (std::strncmp(*e, "LD_PRELOAD=", 11) != 0) env.push_back(*e);
     env.push_back(nullptr);
     const std::string fd = std::to_string(fds[1]);
-    const char* argv[] = {"Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "640x480x24", "-nolisten", "tcp",
+    const char* argv[] = {"Xvfb", "-displayfd", fd.c_str(), "-screen", "0", "1280x720x24", "-nolisten", "tcp",
                           "-noreset", nullptr};
     const int rc = posix_spawnp(&pid_, "Xvfb", &actions, nullptr, const_cast<char* const*>(argv), env.data());
     posix_spawn_file_actions_destroy(&actions);
