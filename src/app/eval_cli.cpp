@@ -220,8 +220,13 @@ std::vector<uint8_t> downFacingPixels(vk::Context& ctx, const PreparedFrame& f, 
 SuiteResult runSuiteScene(const EvalCliOptions& suite, const SuiteScene& sc, vk::Context& ctx, bool progressLine) {
     EvalCliOptions o = suite;
     o.reference.frame.scene = sc.scene;
-    o.reference.frame.camera = sc.camera;
-    o.reference.frame.lights = sc.lights;
+    // Through the input rows, which parse what they are given (prepareFrame takes the parsed values).
+    const OptionTable& inputs = frameInputOptions();
+    const OptionRow* cameraRow = inputs.find(cameraFlag());
+    const OptionRow* lightRow = inputs.find(inputs.flagOf<FrameOptions>([](FrameOptions& i) -> auto& { return i.lights; }));
+    if (!sc.camera.empty()) cameraRow->set(&o.reference.frame, sc.camera);
+    if (!sc.lights.empty()) lightRow->clear(&o.reference.frame);
+    for (const std::string& light : sc.lights) lightRow->set(&o.reference.frame, light);
     o.reference.settings.width = sc.width;
     o.reference.settings.height = sc.height;
     o.reference.settings.spp = sc.spp;

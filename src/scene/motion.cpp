@@ -125,13 +125,10 @@ CameraKeys parseCameraKeys(const std::string& text) {
     return keys;
 }
 
-ParsedMotionPaths parseMotionPaths(const MotionPaths& paths) {
-    ParsedMotionPaths parsed;
-    if (!paths.sun.empty()) parsed.sun = parseSunPath(paths.sun);
-    for (const std::string& l : paths.lights) parsed.lights.push_back(parseLightPath(l));
-    if (!paths.camera.empty()) parsed.camera = parseCameraKeys(paths.camera);
-    parsed.builtinDefault = paths.builtinDefault;
-    return parsed;
+ParsedMotionPaths::ParsedMotionPaths(const MotionPaths& paths) : builtinDefault(paths.builtinDefault) {
+    if (!paths.sun.empty()) sun = parseSunPath(paths.sun);
+    for (const std::string& l : paths.lights) lights.push_back(parseLightPath(l));
+    if (!paths.camera.empty()) camera = parseCameraKeys(paths.camera);
 }
 
 SceneMotion::SceneMotion(const Scene& scene, const Camera& camera, const std::vector<Light>& lights,

@@ -47,12 +47,14 @@ LightPath parseLightPath(const std::string& text);  // N:T,X,Y,Z;T,X,Y,Z;...
 CameraKeys parseCameraKeys(const std::string& text);  // T,EX,EY,EZ,TX,TY,TZ;...
 
 struct ParsedMotionPaths {
+    ParsedMotionPaths() = default;
+    // Parses each path of `paths` (std::invalid_argument for a malformed one): text converts.
+    ParsedMotionPaths(const MotionPaths& paths);  // NOLINT(google-explicit-constructor)
     std::optional<SunPath> sun;
     std::vector<LightPath> lights;
     std::optional<CameraKeys> camera;
     bool builtinDefault = true;
 };
-ParsedMotionPaths parseMotionPaths(const MotionPaths& paths);
 
 // A motion that does not fit the scene it moves; `input` and `index` (the light path's entry) say
 // which input, for the caller to name.
@@ -80,10 +82,6 @@ public:
     // for a path or animation that does not fit them (one line).
     SceneMotion(const Scene& scene, const Camera& camera, const std::vector<Light>& lights,
                 const ParsedMotionPaths& paths, const AnimationOptions& animation);
-    // Paths as text: parsed first (std::invalid_argument for a malformed one).
-    SceneMotion(const Scene& scene, const Camera& camera, const std::vector<Light>& lights, const MotionPaths& paths,
-                const AnimationOptions& animation)
-        : SceneMotion(scene, camera, lights, parseMotionPaths(paths), animation) {}
     ScenePose at(double t) const;
     // True when anything moves (animation, a path or a default motion).
     bool moves() const;
