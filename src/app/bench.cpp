@@ -206,7 +206,7 @@ static BenchSeries measureSeries(Renderer& renderer, const SceneMotion& motion, 
 }
 
 int runBench(const BenchOptions& o, const vk::ContextOptions& vkOptions, RenderSettings settings, bool dryRun) {
-    if (!o.json.empty()) checkWritable(o.json, "--json");
+    if (!o.json.empty()) checkWritable(o.json, benchCommandOptions().flagOf<BenchOptions>([](BenchOptions& b) -> auto& { return b.json; }));
     if (dryRun) return prepareFrame(o.frame, settings), 0;
     CliDeviceFrame device(o.frame, settings, vkOptions);
     vk::Context& ctx = device.ctx;

@@ -27,7 +27,7 @@ OptionTable makeRenderCommandTable() {
            [](const R& r) { return std::vector<std::string>{r.output}; },
            [](R& r, const std::string& v) { r.output = v; }, kCommand, "Output image (.png or .exr)")
         .placeholder = "FILE";
-    t.integer("--frames", "frames", [](R& r) -> auto& { return r.frames; }, 1, 100000, kCommand,
+    t.integer(sharedFlag<BenchOptions>(benchCommandOptions(), [](BenchOptions& b) -> auto& { return b.frames; }), "frames", [](R& r) -> auto& { return r.frames; }, 1, 100000, kCommand,
               "Frames to render; timings are the median after the first");
     t.boolean("--print-passes", "print_passes", [](R& r) -> auto& { return r.printPasses; }, kCommand,
               "Print the frame's passes with their inputs and outputs")
@@ -36,9 +36,28 @@ OptionTable makeRenderCommandTable() {
               "Print nothing but warnings and errors")
         .bareFlag = true;
     t.integer("--sequence", "sequence", [](R& r) -> auto& { return r.sequence; }, 1, 1000000, kCommand,
-              "Render N frames from the scene time at --fps to -o out_%04d.png|exr or out.mp4 (ffmpeg)")
+              "Render N frames from the scene time at {render.fps} to -o out_%04d.png|exr or out.mp4 (ffmpeg)")
         .orSpecial(0, "one image");
-    t.real("--fps", "fps", [](R& r) -> auto& { return r.fps; }, 1e-3, 1e4, kCommand, "Frames per second of --sequence");
+    t.real("--fps", "fps", [](R& r) -> auto& { return r.fps; }, 1e-3, 1e4, kCommand, "Frames per second of {render.sequence}");
+    return t.build();
+}
+
+OptionTable makeGlobalTable() {
+    using G = GlobalOptions;
+    constexpr SettingsChange kCommand = SettingsChange::None;
+    OptionTableBuilder<G> t("global", "Global");
+    t.boolean("--validate", "validate", [](G& g) -> auto& { return g.vk.validate; }, kCommand,
+              "Enable the Khronos validation layer; any message fails the run")
+        .bareFlag = true;
+    t.text("--device", "device", [](G& g) -> auto& { return g.vk.device; },
+           [](const G& g) { return g.vk.device.empty() ? std::vector<std::string>{} : std::vector<std::string>{g.vk.device}; },
+           [](G& g, const std::string& v) { g.vk.device = v; }, kCommand,
+           "Device index or name substring (default: best GPU, else lavapipe)")
+        .placeholder = "INDEX|NAME";
+    t.boolean("--dry-run", "dry_run", [](G& g) -> auto& { return g.dryRun; }, kCommand,
+              "Check options, paths and the scene, then stop before any GPU work")
+        .inGroup("")  // hidden: for tests and scripts
+        .bareFlag = true;
     return t.build();
 }
 
@@ -47,6 +66,19 @@ OptionTable makeRenderCommandTable() {
 const OptionTable& renderCommandOptions() {
     static const OptionTable table = makeRenderCommandTable();
     return table;
+}
+
+const OptionTable& globalOptions() {
+    static const OptionTable table = makeGlobalTable();
+    return table;
+}
+
+// On the app and on every subcommand (bound to the same settings), so that each subcommand's --help
+// lists them and they may stand before or after the subcommand.
+void addGlobalOptions(CLI::App& cmd, GlobalOptions& options) {
+    addOptionRows(cmd, globalOptions(), &options);
+    cmd.get_option(globalOptions().flagOf<GlobalOptions>([](GlobalOptions& g) -> auto& { return g.dryRun; }))
+        ->envname("PENUMBRA_DRY_RUN");
 }
 
 namespace {
@@ -104,7 +136,10 @@ struct RenderOutput {
 
     explicit RenderOutput(const RenderCliOptions& o) : ext(fileExtension(o.output)), pattern(o.output) {
         if (ext == ".mp4") {
-            if (o.sequence < 1) throw std::invalid_argument(fmt::format("-o {}: an mp4 needs --sequence N", o.output));
+            if (o.sequence < 1)
+                throw std::invalid_argument(fmt::format(
+                    "-o {}: an mp4 needs {} N", o.output,
+                    renderCommandOptions().flagOf<RenderCliOptions>([](RenderCliOptions& r) -> auto& { return r.sequence; })));
             ffmpeg = findFfmpeg();
             if (ffmpeg.empty())
                 throw std::invalid_argument(fmt::format(
@@ -139,7 +174,7 @@ void writeImage(Renderer& renderer, const RenderSettings& settings, const std::s
     else writeExr(path, settings.width, settings.height, renderer.readHdr());
 }
 
-// `--sequence N`: frame i at time --time + i / --fps, with a progress bar on a terminal.
+// A sequence of N frames: frame i at time t + i / fps, with a progress bar on a terminal.
 void renderSequence(const RenderCliOptions& o, const RenderSettings& settings, Renderer& renderer,
                     const SceneMotion& motion, RenderOutput& out) {
     const bool progress = !o.quiet && isatty(fileno(stderr));
@@ -206,23 +241,13 @@ int runInfo(const vk::ContextOptions& vkOptions) {
     return 0;
 }
 
-// --validate and --device on the app and on every subcommand (bound to the same settings), so that
-// each subcommand's --help lists them and they may stand before or after the subcommand.
-void addGlobalOptions(CLI::App& cmd, vk::ContextOptions& vkOptions, bool& dryRun) {
-    cmd.add_flag("--validate", vkOptions.validate, "Enable the Khronos validation layer; any message fails the run");
-    cmd.add_option("--device", vkOptions.device, "Device index or name substring (default: best GPU, else lavapipe)");
-    cmd.add_flag("--dry-run", dryRun, "Check options, paths and the scene, then stop before any GPU work")
-        ->envname("PENUMBRA_DRY_RUN")
-        ->group("");  // hidden: for tests and scripts
-}
-
 }  // namespace
 
 Cli::Cli(const std::string& commandLine) {
     app.option_defaults()->always_capture_default();
     app.require_subcommand(1);
     app.fallthrough();  // global options may follow the subcommand
-    addGlobalOptions(app, vk, dryRun);
+    addGlobalOptions(app, global);
 
     renderCmd = app.add_subcommand("render", "Render a scene headless to PNG (tone-mapped) or EXR (linear)");
     addFrameOptions(*renderCmd, render.frame, renderSettings);
@@ -236,7 +261,7 @@ Cli::Cli(const std::string& commandLine) {
     eval.command = commandLine;
     stabilityCmd = addStabilityCommand(app, stability, stabilitySettings);
     stability.command = commandLine;
-    for (CLI::App* sub : app.get_subcommands({})) addGlobalOptions(*sub, vk, dryRun);
+    for (CLI::App* sub : app.get_subcommands({})) addGlobalOptions(*sub, global);
     requireFiniteNumbers(app);
 }
 
@@ -245,12 +270,13 @@ std::string Cli::unknownCommand(const std::vector<std::string>& args) const {
     for (const CLI::App* sub : app.get_subcommands({})) names.push_back(sub->get_name());
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
-        if (a == "--device") {
+        if (a == globalOptions().flagOf<GlobalOptions>([](GlobalOptions& g) -> auto& { return g.vk.device; })) {
             ++i;  // its value
             continue;
         }
         if (!a.empty() && a[0] == '-') {
-            if (a == "-h" || a == "--help" || a == "--help-all") return "";
+            if (app.get_help_ptr()->check_name(a) || (app.get_help_all_ptr() && app.get_help_all_ptr()->check_name(a)))
+                return "";
             continue;
         }
         if (std::find(names.begin(), names.end(), a) != names.end()) return "";

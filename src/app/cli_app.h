@@ -28,12 +28,22 @@ struct RenderCliOptions {
 // The options of `render` itself (output, frames, sequence).
 const OptionTable& renderCommandOptions();
 
+// The options of every command: the Vulkan device and validation, and the hidden `--dry-run`
+// (also PENUMBRA_DRY_RUN=1): check every option and output path and load the scene, then stop
+// before any GPU or path-tracing work (exit 0). Tests and scripts use it.
+struct GlobalOptions {
+    vk::ContextOptions vk;
+    bool dryRun = false;
+};
+const OptionTable& globalOptions();
+// Registers the global options on `cmd`, writing into `options`.
+void addGlobalOptions(CLI::App& cmd, GlobalOptions& options);
+
 struct Cli {
     CLI::App app{"penumbra: real-time shadows and diffuse global illumination (Vulkan 1.3)"};
-    vk::ContextOptions vk;
-    // Hidden `--dry-run` (also PENUMBRA_DRY_RUN=1): check every option and output path and load the
-    // scene, then stop before any GPU or path-tracing work (exit 0). Tests and scripts use it.
-    bool dryRun = false;
+    GlobalOptions global;
+    vk::ContextOptions& vk = global.vk;
+    bool& dryRun = global.dryRun;
     RenderCliOptions render;
     RenderSettings renderSettings;
     BenchOptions bench;

@@ -1,5 +1,5 @@
-// Parsing of the CLI's compound option values. Each throws std::invalid_argument with a message
-// that names the option and what was expected.
+// Parsing of the CLI's compound option values. Each throws std::invalid_argument with what was
+// expected (the option row that calls it names the option).
 #pragma once
 #include <string>
 #include <vector>

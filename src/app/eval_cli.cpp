@@ -4,12 +4,15 @@
 
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "app/ground_truth_cli.h"
+#include "app/bench.h"
 #include "app/option_checks.h"
+#include "app/option_cli.h"
 #include "io/file_write.h"
 #include "eval/eval.h"
 #include "eval/hair_eval.h"
@@ -53,7 +56,23 @@ GroundTruth fromImages(ImageF direct, ImageF indirect, const ImageF& mask, Image
     return t;
 }
 
-// The reference from `--reference DIR` when its key matches, else rendered (and stored there).
+template <class Access>
+const std::string& evalFlag(Access access) {
+    return evalCommandOptions().flagOf<EvalCliOptions>(access);
+}
+template <class Access>
+const std::string& sceneFlag(Access access) {
+    return referenceSceneOptions().flagOf<ReferenceCliOptions>(access);
+}
+const std::string& suiteFlag() { return evalFlag([](EvalCliOptions& e) -> auto& { return e.suite; }); }
+const std::string& hairFlag() { return evalFlag([](EvalCliOptions& e) -> auto& { return e.hair; }); }
+const std::string& sppFlag() { return sceneFlag([](ReferenceCliOptions& r) -> auto& { return r.settings.spp; }); }
+const std::string& cameraFlag() {
+    return frameInputOptions().flagOf<FrameOptions>([](FrameOptions& f) -> auto& { return f.camera; });
+}
+
+
+// The reference from the cache directory when its key matches, else rendered (and stored there).
 // DIR/reference.json: {"key": what it depends on, "noise": its relative standard errors}.
 GroundTruth groundTruth(const EvalCliOptions& o, const PreparedFrame& f) {
     const nlohmann::json key = referenceKey(o, f);
@@ -64,7 +83,7 @@ GroundTruth groundTruth(const EvalCliOptions& o, const PreparedFrame& f) {
             if (o.reference.settings.progress) fmt::print("penumbra: reference read from {}\n", o.referenceDir);
             // The key names the size: an image of another size is a damaged cache, named in the error.
             const auto cached = [&](const char* name) {
-                return readExrSized((dir / name).string(), "--reference", o.reference.settings.width,
+                return readExrSized((dir / name).string(), evalFlag([](EvalCliOptions& e) -> auto& { return e.referenceDir; }), o.reference.settings.width,
                                     o.reference.settings.height);
             };
             return fromImages(cached("direct.exr"), cached("indirect.exr"), cached("mask.exr"), cached("shadow.exr"),
@@ -99,6 +118,73 @@ GroundTruth groundTruth(const EvalCliOptions& o, const PreparedFrame& f) {
 
 }  // namespace
 
+namespace {
+
+constexpr SettingsChange kCommand = SettingsChange::None;  // read once by the command
+
+OptionRow& pathRow(OptionTableBuilder<EvalCliOptions>& t, const char* flag, const char* key,
+                   std::string EvalCliOptions::*member, const char* help) {
+    using E = EvalCliOptions;
+    OptionRow& row = t.text(
+        flag, key, [member](E& e) -> auto& { return e.*member; },
+        [member](const E& e) { return (e.*member).empty() ? std::vector<std::string>{} : std::vector<std::string>{e.*member}; },
+        [member](E& e, const std::string& v) { e.*member = v; }, kCommand, help);
+    row.placeholder = "PATH";
+    return row;
+}
+
+OptionTable makeEvalCommandTable() {
+    using E = EvalCliOptions;
+    OptionTableBuilder<E> t("eval", "Eval");
+    pathRow(t, "--reference", "reference", &E::referenceDir,
+            "Reference cache directory: reused when scene and settings match");
+    pathRow(t, sharedFlag<BenchOptions>(benchCommandOptions(), [](BenchOptions& b) -> auto& { return b.json; }), "json",
+            &E::json, "Write the table and every metric as JSON to this file");
+    pathRow(t, "--images", "images", &E::images, "Directory for figure.png: reference, RSM, LPV, their error maps");
+    t.integer(sharedFlag<BenchOptions>(benchCommandOptions(), [](BenchOptions& b) -> auto& { return b.frames; }),
+              "frames", [](E& e) -> auto& { return e.frames; }, 1, 10000, kCommand,
+              "Frames per technique; GPU ms is the median after the first");
+    t.real(sharedFlag<RenderSettings>(frameOptionTable(), [](RenderSettings& s) -> auto& { return s.exposure; }),
+           "exposure", [](E& e) -> auto& { return e.reference.exposure; }, 1e-6, 1e6, kCommand,
+           "Figure: exposure of the final images")
+        .orSpecial(0, "auto");
+    t.real("--indirect-exposure", "indirect_exposure", [](E& e) -> auto& { return e.indirectExposure; }, 1e-6, 1e6,
+           kCommand, "Figure: exposure of the indirect images")
+        .orSpecial(0, "auto");
+    t.integer("--figure-width", "figure_width", [](E& e) -> auto& { return e.figureCellWidth; }, 16, 16384, kCommand,
+              "Figure: largest cell width, pixels");
+    t.boolean("--suite", "suite", [](E& e) -> auto& { return e.suite; }, kCommand,
+              "The GI suite: cornell, street, room, Sponza, VC at fixed sizes; RSM and LPV defaults against the "
+              "reference ({eval.reference}: the cache folder)")
+        .bareFlag = true;
+    pathRow(t, "--assets", "assets", &E::assets, "{eval.suite}: the folder holding sponza/ and VC/");
+    OptionRow& scenes = t.text(
+        "--scenes", "scenes", [](E& e) -> auto& { return e.suiteScenes; }, [](const E& e) { return e.suiteScenes; },
+        [](E& e, const std::string& v) {
+            std::stringstream list(v);
+            for (std::string name; std::getline(list, name, ',');) {
+                suiteScenes("", {name});  // throws for a name the suite does not have
+                e.suiteScenes.push_back(name);
+            }
+        },
+        kCommand, "{eval.suite}: only these scenes (cornell, street, room, sponza, vc)");
+    scenes.repeatable = true;
+    scenes.placeholder = "NAME,...";
+    scenes.clear = [](void* e) { static_cast<E*>(e)->suiteScenes.clear(); };
+    t.boolean("--hair", "hair", [](E& e) -> auto& { return e.hair; }, kCommand,
+              "The hair evaluation: every shadow filter and deep shadow maps against the path-traced strands "
+              "(anti-aliased, direct light): image and floor transmittance")
+        .bareFlag = true;
+    return t.build();
+}
+
+}  // namespace
+
+const OptionTable& evalCommandOptions() {
+    static const OptionTable table = makeEvalCommandTable();
+    return table;
+}
+
 CLI::App* addEvalCommand(CLI::App& app, EvalCliOptions& o) {
     CLI::App* cmd = app.add_subcommand("eval", "Render every GI mode and shadow filter and measure each against the "
                                                "path-traced reference: one table");
@@ -108,25 +194,9 @@ CLI::App* addEvalCommand(CLI::App& app, EvalCliOptions& o) {
     o.reference.exposure = 0.0f;  // 0: auto (the figure's exposures come from the reference)
     o.indirectExposure = 0.0f;
     addReferenceSceneOptions(*cmd, o.reference);
-    cmd->add_option("--reference", o.referenceDir, "Reference cache directory: reused when scene and settings match");
-    cmd->add_option("--json", o.json, "Write the table and every metric as JSON to this file");
-    cmd->add_option("--images", o.images, "Directory for figure.png: reference, RSM, LPV, their error maps");
-    cmd->add_option("--frames", o.frames, "Frames per technique; GPU ms is the median after the first")
-        ->check(CLI::Range(1, 10000));
-    cmd->add_option("--exposure", o.reference.exposure, "Figure: exposure of the final images (default: auto)")
-        ->check(finiteRange(1e-6, 1e6));
-    cmd->add_option("--indirect-exposure", o.indirectExposure, "Figure: exposure of the indirect images (default: auto)")
-        ->check(finiteRange(1e-6, 1e6));
-    cmd->add_option("--figure-width", o.figureCellWidth, "Figure: largest cell width, pixels")
-        ->check(CLI::Range(16, 16384));
-    cmd->add_flag("--suite", o.suite, "The GI suite: cornell, street, room, Sponza, VC at fixed sizes; RSM and LPV "
-                                      "defaults against the reference (--reference: the cache folder)");
-    cmd->add_option("--assets", o.assets, "--suite: the folder holding sponza/ and VC/");
-    cmd->add_option("--scenes", o.suiteScenes, "--suite: only these scenes (cornell, street, room, sponza, vc)")
-        ->delimiter(',');
-    cmd->add_flag("--hair", o.hair, "The hair evaluation: every shadow filter and deep shadow maps against the "
-                                    "path-traced strands (anti-aliased, direct light): image and floor transmittance");
-    cmd->get_option("--bounces")->each([&o](const std::string&) { o.bouncesGiven = true; });
+    addOptionRows(*cmd, evalCommandOptions(), &o);
+    cmd->get_option(sceneFlag([](ReferenceCliOptions& r) -> auto& { return r.settings.bounces; }))
+        ->each([&o](const std::string&) { o.bouncesGiven = true; });
     return cmd;
 }
 
@@ -150,8 +220,13 @@ std::vector<uint8_t> downFacingPixels(vk::Context& ctx, const PreparedFrame& f, 
 SuiteResult runSuiteScene(const EvalCliOptions& suite, const SuiteScene& sc, vk::Context& ctx, bool progressLine) {
     EvalCliOptions o = suite;
     o.reference.frame.scene = sc.scene;
-    o.reference.frame.camera = sc.camera;
-    o.reference.frame.lights = sc.lights;
+    // Through the input rows, which parse what they are given (prepareFrame takes the parsed values).
+    const OptionTable& inputs = frameInputOptions();
+    const OptionRow* cameraRow = inputs.find(cameraFlag());
+    const OptionRow* lightRow = inputs.find(inputs.flagOf<FrameOptions>([](FrameOptions& i) -> auto& { return i.lights; }));
+    if (!sc.camera.empty()) cameraRow->set(&o.reference.frame, sc.camera);
+    if (!sc.lights.empty()) lightRow->clear(&o.reference.frame);
+    for (const std::string& light : sc.lights) lightRow->set(&o.reference.frame, light);
     o.reference.settings.width = sc.width;
     o.reference.settings.height = sc.height;
     o.reference.settings.spp = sc.spp;
@@ -171,7 +246,7 @@ SuiteResult runSuiteScene(const EvalCliOptions& suite, const SuiteScene& sc, vk:
     base.width = sc.width;
     base.height = sc.height;
     r.rows = runEval(ctx, f.scene, f.camera, suiteVariants(base), truth, 1, [&](size_t i, size_t n, const std::string& t) {
-        if (progressLine) fmt::print(stderr, "\reval --suite: {} {}/{} {:<40}", sc.name, i + 1, n, t), std::fflush(stderr);
+        if (progressLine) fmt::print(stderr, "\reval {}: {} {}/{} {:<40}", suiteFlag(), sc.name, i + 1, n, t), std::fflush(stderr);
     });
     if (sc.name == "cornell") {
         const std::vector<uint8_t> ceiling = downFacingPixels(ctx, f, base);
@@ -193,7 +268,7 @@ int runSuite(const EvalCliOptions& o, const vk::ContextOptions& vkOptions, bool 
     const std::vector<SuiteScene> scenes = suiteScenes(o.assets, o.suiteScenes);
     for (const SuiteScene& sc : scenes)  // every file is checked before any work
         if (sc.scene.find('/') != std::string::npos && !fs::is_regular_file(sc.scene))
-            throw std::invalid_argument(fmt::format("--assets {}: no {} (suite scene '{}')", o.assets, sc.scene, sc.name));
+            throw std::invalid_argument(fmt::format("{} {}: no {} (suite scene '{}')", evalFlag([](EvalCliOptions& e) -> auto& { return e.assets; }), o.assets, sc.scene, sc.name));
     if (dryRun) return 0;
     const bool progressLine = o.reference.settings.progress && isatty(STDERR_FILENO);
     std::error_code ec;
@@ -202,8 +277,8 @@ int runSuite(const EvalCliOptions& o, const vk::ContextOptions& vkOptions, bool 
     std::vector<SuiteResult> results;
     for (const SuiteScene& sc : scenes) results.push_back(runSuiteScene(o, sc, ctx, progressLine));
     if (progressLine) fmt::print(stderr, "\r{:80}\r", "");
-    fmt::print("penumbra eval --suite on {}: indirect light against the one-bounce path tracer, over the pixels with "
-               "geometry; RSM and LPV at their defaults, hard shadows\n{}", ctx.info().name, formatSuiteTable(results));
+    fmt::print("penumbra eval {} on {}: indirect light against the one-bounce path tracer, over the pixels with "
+               "geometry; RSM and LPV at their defaults, hard shadows\n{}", suiteFlag(), ctx.info().name, formatSuiteTable(results));
     for (const SuiteResult& r : results)
         if (r.ceilingLpv >= 0.0)
             fmt::print("{} ceiling, mean indirect / reference's: RSM {:.2f}, LPV {:.2f}\n", r.scene, r.ceilingRsm,
@@ -244,9 +319,10 @@ int runHairEvalCommand(const EvalCliOptions& given, const vk::ContextOptions& vk
     o.reference.settings.bounces = 0;       // direct light: neither side has GI through hair
     const PreparedFrame f = prepareReferenceFrame(o.reference);
     if (f.scene.strands.empty())
-        throw std::invalid_argument(fmt::format("--hair: scene '{}' has no hair strands", f.scene.name));
+        throw std::invalid_argument(fmt::format("{}: scene '{}' has no hair strands", hairFlag(), f.scene.name));
     if (given.bouncesGiven && given.reference.settings.bounces != 0)
-        fmt::print(stderr, "penumbra: warning: --hair compares direct light: --bounces {} ignored (0)\n",
+        fmt::print(stderr, "penumbra: warning: {} compares direct light: {} {} ignored (0)\n", hairFlag(),
+                   sceneFlag([](ReferenceCliOptions& r) -> auto& { return r.settings.bounces; }),
                    given.reference.settings.bounces);
     if (dryRun) return 0;
     const bool progressLine = o.reference.settings.progress && isatty(STDERR_FILENO);
@@ -265,23 +341,23 @@ int runHairEvalCommand(const EvalCliOptions& given, const vk::ContextOptions& vk
                                                   floorPixels(ctx, f.scene, f.camera, base), truth.noiseFinal);
     auto count = [](const std::vector<uint8_t>& m) { return size_t(std::count(m.begin(), m.end(), uint8_t(1))); };
     if (count(h.hairPixels) == 0 || count(h.shadowPixels) == 0)
-        throw std::runtime_error(fmt::format("--hair: the camera sees {} hair pixels and {} floor pixels in the hair's "
-                                             "shadow: nothing to measure (another --camera?)",
-                                             count(h.hairPixels), count(h.shadowPixels)));
+        throw std::runtime_error(fmt::format("{}: the camera sees {} hair pixels and {} floor pixels in the hair's "
+                                             "shadow: nothing to measure (another {}?)", hairFlag(),
+                                             count(h.hairPixels), count(h.shadowPixels), cameraFlag()));
     const std::vector<HairEvalRow> rows = runHairEval(
         ctx, f.scene, f.camera, hairEvalVariants(base), h, o.frames, [&](size_t i, size_t n, const std::string& name) {
-            if (progressLine) fmt::print(stderr, "\reval --hair: {}/{} {:<40}", i + 1, n, name), std::fflush(stderr);
+            if (progressLine) fmt::print(stderr, "\reval {}: {}/{} {:<40}", hairFlag(), i + 1, n, name), std::fflush(stderr);
         });
     if (progressLine) fmt::print(stderr, "\r{:80}\r", "");
     const bool gpu = ctx.info().type != "cpu";
     double refT = 0.0;
     for (size_t i = 0; i < h.shadowPixels.size(); ++i) refT += h.shadowPixels[i] ? h.transmittance.rgba[i * 4] : 0.0;
     refT /= double(count(h.shadowPixels));
-    fmt::print("penumbra eval --hair: '{}' ({} strands) {}x{} on {}; reference {} anti-aliased paths/pixel, direct "
+    fmt::print("penumbra eval {}: '{}' ({} strands) {}x{} on {}; reference {} anti-aliased paths/pixel, direct "
                "light (no GI on either side)\nimage L2 over the {} pixels with geometry, hair L2 over the {} where the "
                "reference's paths stop at a strand in >= {:.0f}%; floor T = shadow AOV with / without the strands over "
                "the {} floor pixels in the hair's shadow (reference mean T {:.3f}); bias = mean(T - T_ref)\n",
-               f.scene.name, f.scene.strands.size(), base.width, base.height, ctx.info().name, o.reference.settings.spp,
+               hairFlag(), f.scene.name, f.scene.strands.size(), base.width, base.height, ctx.info().name, o.reference.settings.spp,
                count(h.mask), count(h.hairPixels), 100.0 * kHairPixelAlpha, count(h.shadowPixels), refT);
     fmt::print("{}", formatHairEvalTable(rows, gpu));
     for (const HairEvalRow& r : rows)
@@ -312,12 +388,13 @@ int runHairEvalCommand(const EvalCliOptions& given, const vk::ContextOptions& vk
 // the windowed metrics without a window.
 void checkMeasurable(const ReferenceSettings& s) {
     if (s.spp < 2)
-        throw std::invalid_argument(fmt::format("eval --spp {}: the reference's noise is estimated from the variance of "
-                                                "its paths, which needs at least 2 per pixel (e.g. --spp 16)", s.spp));
+        throw std::invalid_argument(fmt::format("eval {0} {1}: the reference's noise is estimated from the variance of "
+                                                "its paths, which needs at least 2 per pixel (e.g. {0} 16)", sppFlag(), s.spp));
     if (s.width < kMinEvalSize || s.height < kMinEvalSize)
-        throw std::invalid_argument(fmt::format("eval --width {} --height {}: the image must be at least {}x{} to "
-                                                "measure (e.g. --width 32 --height 24)", s.width, s.height,
-                                                kMinEvalSize, kMinEvalSize));
+        throw std::invalid_argument(fmt::format("eval {0} {2} {1} {3}: the image must be at least {4}x{4} to measure (e.g. {0} 32 {1} 24)",
+                                                sceneFlag([](ReferenceCliOptions& r) -> auto& { return r.settings.width; }),
+                                                sceneFlag([](ReferenceCliOptions& r) -> auto& { return r.settings.height; }),
+                                                s.width, s.height, kMinEvalSize));
 }
 
 // A reference that is black where the camera sees geometry (or, with bounces, has no indirect light
@@ -338,8 +415,8 @@ void checkReferenceSignal(const GroundTruth& truth, const ReferenceSettings& s) 
                                                                : nullptr;
     if (missing)
         throw std::runtime_error(fmt::format("eval: the reference ({}x{}, {} paths/pixel) is {} over the {} pixels with "
-                                             "geometry: nothing to measure; give more --spp or another --camera",
-                                             s.width, s.height, s.spp, missing, covered));
+                                             "geometry: nothing to measure; give more {} or another {}",
+                                             s.width, s.height, s.spp, missing, covered, sppFlag(), cameraFlag()));
 }
 
 }  // namespace
@@ -348,10 +425,10 @@ int runEvalCommand(const EvalCliOptions& o, const vk::ContextOptions& vkOptions,
     const bool verbose = o.reference.settings.progress;
     const bool progressLine = verbose && isatty(STDERR_FILENO);  // \r redraws only on a terminal, not in logs
     // Every output is checked before the reference (minutes) and the techniques run.
-    if (!o.json.empty()) checkWritable(o.json, "--json");
-    if (!o.images.empty()) checkWritable(o.images, "--images", true);
-    if (!o.referenceDir.empty()) checkWritable(o.referenceDir, "--reference", true);
-    if (o.suite && o.hair) throw std::invalid_argument("--suite and --hair: one evaluation at a time");
+    if (!o.json.empty()) checkWritable(o.json, evalFlag([](EvalCliOptions& e) -> auto& { return e.json; }));
+    if (!o.images.empty()) checkWritable(o.images, evalFlag([](EvalCliOptions& e) -> auto& { return e.images; }), true);
+    if (!o.referenceDir.empty()) checkWritable(o.referenceDir, evalFlag([](EvalCliOptions& e) -> auto& { return e.referenceDir; }), true);
+    if (o.suite && o.hair) throw std::invalid_argument(fmt::format("{} and {}: one evaluation at a time", suiteFlag(), hairFlag()));
     if (o.suite) return runSuite(o, vkOptions, dryRun);
     if (o.hair) return runHairEvalCommand(o, vkOptions, dryRun);
     checkMeasurable(o.reference.settings);

@@ -54,7 +54,7 @@ OptionTable makeInputTable() {
             parseLightFilter(v);
             f.lightFilters.push_back(v);
         },
-        kInput, "Filter of one light, overriding --shadow (repeatable)");
+        kInput, "Filter of one light, overriding {frame.shadow_filter} (repeatable)");
     filters.repeatable = true;
     filters.placeholder = "N=FILTER";
     filters.clear = [](void* f) { static_cast<F*>(f)->lightFilters.clear(); };
@@ -78,26 +78,44 @@ OptionTable makeMotionTable() {
         .bareFlag = true;
     t.text("--sun-path", "sun_path", [](F& f) -> auto& { return f.motion.sun; },
            [](const F& f) { return f.motion.sun.empty() ? std::vector<std::string>{} : std::vector<std::string>{f.motion.sun}; },
-           [](F& f, const std::string& v) { f.motion.sun = v; }, kInput,
+           [](F& f, const std::string& v) {
+               f.parsedMotion.sun = parseSunPath(v);
+               f.motion.sun = v;
+           },
+           kInput,
            "Sun motion: AZ0,EL0,AZ1,EL1,SECONDS (degrees; every directional light)")
         .placeholder = "AZ0,EL0,AZ1,EL1,SECONDS";
+    t.alsoWrites([](F& f) -> auto& { return f.parsedMotion.sun; });
     OptionRow& paths = t.text(
         "--light-path", "light_paths", [](F& f) -> auto& { return f.motion.lights; },
-        [](const F& f) { return f.motion.lights; }, [](F& f, const std::string& v) { f.motion.lights.push_back(v); },
+        [](const F& f) { return f.motion.lights; },
+        [](F& f, const std::string& v) {
+            f.parsedMotion.lights.push_back(parseLightPath(v));
+            f.motion.lights.push_back(v);
+        },
         kInput, "Light N's position keys (repeatable)");
     paths.repeatable = true;
     paths.placeholder = "N:T,X,Y,Z;T,X,Y,Z;...";
-    paths.clear = [](void* f) { static_cast<F*>(f)->motion.lights.clear(); };
+    paths.clear = [](void* f) { static_cast<F*>(f)->motion.lights.clear(), static_cast<F*>(f)->parsedMotion.lights.clear(); };
+    t.alsoWrites([](F& f) -> auto& { return f.parsedMotion.lights; });
     t.text("--camera-keys", "camera_keys", [](F& f) -> auto& { return f.motion.camera; },
            [](const F& f) { return f.motion.camera.empty() ? std::vector<std::string>{} : std::vector<std::string>{f.motion.camera}; },
-           [](F& f, const std::string& v) { f.motion.camera = v; }, kInput,
+           [](F& f, const std::string& v) {
+               f.parsedMotion.camera = parseCameraKeys(v);
+               f.motion.camera = v;
+           },
+           kInput,
            "Camera motion keys, eye and target (seconds, metres)")
         .placeholder = "T,EX,EY,EZ,TX,TY,TZ;...";
+    t.alsoWrites([](F& f) -> auto& { return f.parsedMotion.camera; });
     t.text("--no-motion", "no_motion", [](F& f) -> auto& { return f.motion.builtinDefault; },
            [](const F& f) { return std::vector<std::string>{f.motion.builtinDefault ? "off" : "on"}; },
-           [](F& f, const std::string& v) { f.motion.builtinDefault = !(v == "on" || v == "true" || v == "1"); },
+           [](F& f, const std::string& v) {
+               f.motion.builtinDefault = f.parsedMotion.builtinDefault = !(v == "on" || v == "true" || v == "1");
+           },
            kInput, "No default motion of the built-in scenes")
         .bareFlag = true;
+    t.alsoWrites([](F& f) -> auto& { return f.parsedMotion.builtinDefault; });
     return t.build();
 }
 
@@ -127,11 +145,34 @@ void addFrameOptions(CLI::App& cmd, FrameOptions& o, RenderSettings& rs) {
 
 void addMotionOptions(CLI::App& cmd, FrameOptions& o) { addOptionRows(cmd, motionOptions(), &o); }
 
+namespace {
+
+// The frame's motion; a path or animation that does not fit the scene is refused naming its option.
+SceneMotion checkedMotion(const FrameOptions& o, const PreparedFrame& f) {
+    try {
+        return SceneMotion(f.scene, f.camera, f.scene.lights, o.parsedMotion, o.animation);
+    } catch (const MotionError& e) {
+        const OptionTable& t = motionOptions();
+        using In = MotionError::Input;
+        const std::string& flag =
+            e.input == In::Animation   ? t.flagOf<FrameOptions>([](FrameOptions& m) -> auto& { return m.animation.animation; })
+            : e.input == In::LightPath ? t.flagOf<FrameOptions>([](FrameOptions& m) -> auto& { return m.motion.lights; })
+                                       : t.flagOf<FrameOptions>([](FrameOptions& m) -> auto& { return m.motion.camera; });
+        const std::string value = e.input == In::Animation   ? std::to_string(o.animation.animation)
+                                  : e.input == In::LightPath ? o.motion.lights.at(e.index)
+                                                             : o.motion.camera;
+        refuseOption(*t.find(flag), value, e.what());
+    }
+}
+
+}  // namespace
+
 SceneMotion frameMotion(const FrameOptions& o, const PreparedFrame& f) {
-    SceneMotion motion(f.scene, f.camera, f.scene.lights, o.motion, o.animation);
+    SceneMotion motion = checkedMotion(o, f);
     if (o.time != 0.0 && !motion.moves())
-        fmt::print(stderr, "penumbra: warning: --time {}: nothing in '{}' moves (no animation or motion path)\n",
-                   o.time, f.scene.name);
+        fmt::print(stderr, "penumbra: warning: {} {}: nothing in '{}' moves (no animation or motion path)\n",
+                   motionOptions().flagOf<FrameOptions>([](FrameOptions& m) -> auto& { return m.time; }), o.time,
+                   f.scene.name);
     return motion;
 }
 
@@ -184,7 +225,6 @@ Camera frameCamera(const FrameOptions& o, const Scene& scene) {
 
 PreparedFrame prepareFrame(const FrameOptions& o, RenderSettings& settings) {
     checkFrameSettings(o, settings);
-    checkMotionPaths(o.motion);
     PreparedFrame f;
     f.scene = loadScene(o.scene, o.builtin);
     for (const std::string& w : f.scene.warnings) fmt::print(stderr, "penumbra: warning: {}\n", w);
@@ -192,7 +232,7 @@ PreparedFrame prepareFrame(const FrameOptions& o, RenderSettings& settings) {
         fmt::print(stderr, "penumbra: warning: {}\n", w);
     f.scene.lights = frameLights(o, f.scene);
     f.camera = frameCamera(o, f.scene);
-    SceneMotion(f.scene, f.camera, f.scene.lights, o.motion, o.animation);  // --animation N exists, paths fit
+    checkedMotion(o, f);  // the animation exists, the paths fit the scene
     return f;
 }
 

@@ -28,7 +28,8 @@ struct FrameOptions {
     // --camera-keys, --no-motion.
     double time = 0.0;
     AnimationOptions animation;
-    MotionPaths motion;
+    MotionPaths motion;               // as given, and parsed
+    ParsedMotionPaths parsedMotion;
 };
 
 // The frame inputs' option tables: scene camera and lights (`inputs`), time and motion (`motion`).

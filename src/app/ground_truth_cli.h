@@ -16,10 +16,17 @@ namespace penumbra {
 struct ReferenceCliOptions {
     FrameOptions frame;
     std::string output = "reference.exr";
-    std::string aov = "final";
+    ReferenceAov aov = ReferenceAov::Final;
     float exposure = 1.0f;
     ReferenceSettings settings;
 };
+// The option tables of the ground-truth commands: size and sampling (`reference` and `eval`), the
+// output of `reference`, `compare`'s and `eval`'s own.
+const OptionTable& referenceSceneOptions();
+const OptionTable& referenceCommandOptions();
+const OptionTable& compareCommandOptions();
+const OptionTable& evalCommandOptions();
+
 // Scene, camera, lights, size and sampling options (shared by `reference` and `eval`).
 void addReferenceSceneOptions(CLI::App& cmd, ReferenceCliOptions& options);
 CLI::App* addReferenceCommand(CLI::App& app, ReferenceCliOptions& options);

@@ -21,7 +21,7 @@ int main(int argc, char** argv) {
     penumbra::view::ViewCommand viewCommand;
     CLI::App* viewer = penumbra::view::addViewCommand(cli.app, viewCommand);
     if (const std::string unknown = cli.unknownCommand(args); !unknown.empty()) {
-        fmt::print(stderr, "penumbra: error: {} (see --help)\n", unknown);
+        fmt::print(stderr, "penumbra: error: {} (see {})\n", unknown, cli.app.get_help_ptr()->get_name());
         return 2;
     }
     try {
@@ -33,10 +33,10 @@ int main(int argc, char** argv) {
     } catch (const CLI::ParseError& e) {
         std::string msg = e.what();
         if (msg.empty()) msg = e.get_name();
-        fmt::print(stderr, "penumbra: error: {} (see --help)\n", msg);
+        fmt::print(stderr, "penumbra: error: {} (see {})\n", msg, cli.app.get_help_ptr()->get_name());
         return 2;
     }
-    cli.vk.syncValidation = cli.vk.validate;  // --validate checks synchronization too
+    cli.vk.syncValidation = cli.vk.validate;  // validation checks synchronization too
     try {
         if (*viewer) return penumbra::view::runViewCommand(viewCommand, cli.vk);
         return cli.run();

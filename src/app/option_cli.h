@@ -1,6 +1,8 @@
 // The command line generated from option tables (core/options.h): each row
 // becomes one CLI11 option whose parser is the row's, with its range and default in the help.
 #pragma once
+#include <functional>
+
 #include <CLI/CLI.hpp>
 
 #include "core/options.h"
@@ -8,9 +10,22 @@
 
 namespace penumbra {
 
-// Registers every row of `table` on `cmd`, writing into `settings` (a struct of the table's type).
-void addOptionRows(CLI::App& cmd, const OptionTable& table, void* settings);
+// Registers every row of `table` on `cmd`, writing into `settings` (a struct of the table's type);
+// with `only`, the rows it accepts.
+void addOptionRows(CLI::App& cmd, const OptionTable& table, void* settings,
+                   const std::function<bool(const OptionRow&)>& only = {});
 // Every frame-pipeline table (render_options.h), into `settings`.
 void addRenderOptionRows(CLI::App& cmd, RenderSettings& settings);
+
+// A help text with each `{module.key}` replaced by the flag of that row (a help that refers to
+// another option names it through its row). Throws std::logic_error for a reference to no row.
+std::string expandOptionReferences(const std::string& help);
+
+// The flag of the row bound to `access` in `table`, for a command's row of an option that another
+// table spells (`reference --width` is `render --width`).
+template <class S, class Access>
+const char* sharedFlag(const OptionTable& table, Access access) {
+    return table.flagOf<S>(access).c_str();  // tables are static: the text outlives every row
+}
 
 }  // namespace penumbra

@@ -8,7 +8,10 @@
 #include "app/ground_truth_cli.h"
 #include "eval/compare.h"
 #include "io/image_io.h"
+#include "app/bench.h"
+#include "app/cli_app.h"
 #include "app/option_checks.h"
+#include "app/option_cli.h"
 
 namespace penumbra {
 namespace {
@@ -21,24 +24,120 @@ nlohmann::json jsonNumber(double v) { return std::isfinite(v) ? nlohmann::json(v
 
 }  // namespace
 
+namespace {
+
+constexpr SettingsChange kCommand = SettingsChange::None;  // read once by the command
+
+// `quiet` rows: on when given bare, writing `progress` (its opposite).
+template <class S, class Access>
+OptionRow& quietRow(OptionTableBuilder<S>& t, Access progress, const char* help) {
+    OptionRow& row = t.text(
+        sharedFlag<RenderCliOptions>(renderCommandOptions(), [](RenderCliOptions& r) -> auto& { return r.quiet; }),
+        "quiet", progress, [progress](const S& s) { return std::vector<std::string>{progress(const_cast<S&>(s)) ? "off" : "on"}; },
+        [progress](S& s, const std::string& v) {
+            if (v != "on" && v != "off") throw std::invalid_argument("expected on or off");
+            progress(s) = v == "off";
+        },
+        kCommand, help);
+    row.bareFlag = true;
+    return row;
+}
+
+OptionTable makeReferenceSceneTable() {
+    using R = ReferenceCliOptions;
+    OptionTableBuilder<R> t("reference_scene", "Reference: size and sampling");
+    t.integer(sharedFlag<RenderSettings>(frameOptionTable(), [](RenderSettings& s) -> auto& { return s.width; }), "width",
+              [](R& r) -> auto& { return r.settings.width; }, 1, 16384, kCommand, "Image width");
+    t.integer(sharedFlag<RenderSettings>(frameOptionTable(), [](RenderSettings& s) -> auto& { return s.height; }),
+              "height", [](R& r) -> auto& { return r.settings.height; }, 1, 16384, kCommand, "Image height");
+    t.integer("--spp", "spp", [](R& r) -> auto& { return r.settings.spp; }, 1, 1 << 20, kCommand, "Paths per pixel");
+    t.integer("--bounces", "bounces", [](R& r) -> auto& { return r.settings.bounces; }, 0, kMaxReferenceBounces,
+              kCommand, "Diffuse bounces (1: what RSM and LPV approximate)");
+    t.integer("--seed", "seed", [](R& r) -> auto& { return r.settings.seed; }, 0, 9007199254740992.0, kCommand,
+              "Random seed (the image is a function of it)");
+    t.integer("--threads", "threads", [](R& r) -> auto& { return r.settings.threads; }, 1, 1024, kCommand,
+              "Worker threads")
+        .orSpecial(0, "every hardware thread");
+    t.boolean("--aa", "aa", [](R& r) -> auto& { return r.settings.antialias; }, kCommand,
+              "Spread paths over the pixel (default: its centre, as the rasterizer)")
+        .bareFlag = true;
+    quietRow(t, [](R& r) -> auto& { return r.settings.progress; }, "No progress bar and no summary");
+    return t.build();
+}
+
+OptionTable makeReferenceCommandTable() {
+    using R = ReferenceCliOptions;
+    OptionTableBuilder<R> t("reference", "Reference");
+    t.text(sharedFlag<RenderCliOptions>(renderCommandOptions(), [](RenderCliOptions& r) -> auto& { return r.output; }),
+           "output", [](R& r) -> auto& { return r.output; },
+           [](const R& r) { return std::vector<std::string>{r.output}; }, [](R& r, const std::string& v) { r.output = v; },
+           kCommand, "Output image: .exr (linear) or .png (tone-mapped)")
+        .placeholder = "FILE";
+    t.choice(sharedFlag<RenderSettings>(frameOptionTable(), [](RenderSettings& s) -> auto& { return s.aov; }), "aov",
+             [](R& r) -> auto& { return r.aov; },
+             std::vector<std::pair<std::string, ReferenceAov>>{{"final", ReferenceAov::Final},
+                                                                {"direct", ReferenceAov::Direct},
+                                                                {"indirect", ReferenceAov::Indirect},
+                                                                {"mask", ReferenceAov::Mask},
+                                                                {"shadow", ReferenceAov::Shadow},
+                                                                {"hair", ReferenceAov::Hair}},
+             kCommand,
+             "final (direct + indirect), direct, indirect, mask (1 on geometry), shadow (the first shadowed light's "
+             "visibility at the opaque surface, as render's), hair (fraction of paths stopping at a strand)");
+    t.real(sharedFlag<RenderSettings>(frameOptionTable(), [](RenderSettings& s) -> auto& { return s.exposure; }),
+           "exposure", [](R& r) -> auto& { return r.exposure; }, 1e-6, 1e6, kCommand,
+           "PNG only: linear multiplier before tone mapping");
+    return t.build();
+}
+
+OptionTable makeCompareCommandTable() {
+    using C = CompareCliOptions;
+    OptionTableBuilder<C> t("compare", "Compare");
+    t.text("--mask", "mask", [](C& c) -> auto& { return c.mask; },
+           [](const C& c) { return c.mask.empty() ? std::vector<std::string>{} : std::vector<std::string>{c.mask}; },
+           [](C& c, const std::string& v) { c.mask = v; }, kCommand,
+           "EXR or PNG of the same size: only its non-zero pixels are compared")
+        .placeholder = "FILE";
+    t.text(sharedFlag<RenderCliOptions>(renderCommandOptions(), [](RenderCliOptions& r) -> auto& { return r.output; }),
+           "heat_map", [](C& c) -> auto& { return c.heatMap; },
+           [](const C& c) { return c.heatMap.empty() ? std::vector<std::string>{} : std::vector<std::string>{c.heatMap}; },
+           [](C& c, const std::string& v) { c.heatMap = v; }, kCommand,
+           "Heat map of |luminance(A) - luminance(B)| (PNG)")
+        .placeholder = "FILE";
+    t.real("--heat-max", "heat_max", [](C& c) -> auto& { return c.heatMax; }, 1e-30, 1e30, kCommand,
+           "Error at the top of the heat map")
+        .orSpecial(0, "the 99th percentile of the error");
+    t.boolean(sharedFlag<BenchOptions>(benchCommandOptions(), [](BenchOptions& b) -> auto& { return b.json; }), "json",
+              [](C& c) -> auto& { return c.json; }, kCommand, "Print the metrics as JSON")
+        .bareFlag = true;
+    return t.build();
+}
+
+}  // namespace
+
+const OptionTable& referenceSceneOptions() {
+    static const OptionTable table = makeReferenceSceneTable();
+    return table;
+}
+
+const OptionTable& referenceCommandOptions() {
+    static const OptionTable table = makeReferenceCommandTable();
+    return table;
+}
+
+const OptionTable& compareCommandOptions() {
+    static const OptionTable table = makeCompareCommandTable();
+    return table;
+}
+
 void addReferenceSceneOptions(CLI::App& cmd, ReferenceCliOptions& o) {
     cmd.add_option("scene", o.frame.scene, "glTF file (.gltf/.glb) or built-in scene");
-    cmd.add_option("--width", o.settings.width, "Image width")->check(CLI::Range(1, 16384));
-    cmd.add_option("--height", o.settings.height, "Image height")->check(CLI::Range(1, 16384));
-    cmd.add_option("--camera", o.frame.camera, "Camera override: ex,ey,ez,tx,ty,tz,ux,uy,uz,fovy_deg");
-    cmd.add_option("--camera-index", o.frame.cameraIndex, "Which of the scene's cameras to use");
-    cmd.add_option("--light", o.frame.lights, "Replace the scene's lights (repeatable): see README");
-    cmd.add_option("--spp", o.settings.spp, "Paths per pixel")->check(CLI::Range(1, 1 << 20));
-    cmd.add_option("--bounces", o.settings.bounces, "Diffuse bounces, 0..16 (default 1, what RSM and LPV approximate)")
-        ->check(CLI::Range(0u, kMaxReferenceBounces));
-    cmd.add_option("--seed", o.settings.seed, "Random seed (the image is a function of it)");
-    cmd.add_option("--threads", o.settings.threads, "Worker threads (default: every hardware thread)")
-        ->check(CLI::Range(0, 1024));
-    cmd.add_option("--strands", o.frame.builtin.hairStrands, "Hair strands of the built-in `hair` scene")
-        ->check(CLI::Range(1, 2'000'000));
-    cmd.add_flag("--aa", o.settings.antialias, "Spread paths over the pixel (default: its centre, as the rasterizer)");
-    cmd.add_flag_function("-q,--quiet", [&o](int64_t) { o.settings.progress = false; },
-                          "No progress bar and no summary");
+    addOptionRows(cmd, referenceSceneOptions(), &o);
+    // The frame inputs the path tracer honours: every one but the per-light shadow filter.
+    const std::string& lightShadow = frameInputOptions().flagOf<FrameOptions>([](FrameOptions& f) -> auto& {
+        return f.lightFilters;
+    });
+    addOptionRows(cmd, frameInputOptions(), &o.frame, [&lightShadow](const OptionRow& r) { return r.flag != lightShadow; });
     addMotionOptions(cmd, o.frame);
 }
 
@@ -60,11 +159,7 @@ PreparedFrame prepareReferenceFrame(const ReferenceCliOptions& o) {
 CLI::App* addReferenceCommand(CLI::App& app, ReferenceCliOptions& o) {
     CLI::App* cmd = app.add_subcommand("reference", "Path-trace the ground truth on the CPU (Embree): EXR radiance");
     addReferenceSceneOptions(*cmd, o);
-    cmd->add_option("-o,--output", o.output, "Output image: .exr (linear) or .png (tone-mapped)");
-    cmd->add_option("--aov", o.aov, "final (direct + indirect), direct, indirect, mask (1 on geometry), shadow (the first shadowed light's "
-                   "visibility at the opaque surface, as render's), hair (fraction of paths stopping at a strand)");
-    cmd->add_option("--exposure", o.exposure, "PNG only: linear multiplier before tone mapping")
-        ->check(finiteRange(1e-6, 1e6));
+    addOptionRows(*cmd, referenceCommandOptions(), &o);
     return cmd;
 }
 
@@ -73,7 +168,7 @@ int runReferenceCommand(const ReferenceCliOptions& o, bool dryRun) {
     if (ext != ".exr" && ext != ".png")
         throw std::invalid_argument(fmt::format("-o {}: the output must end in .exr or .png", o.output));
     checkWritable(o.output, "-o");
-    const ReferenceAov aov = parseReferenceAov(o.aov);
+    const ReferenceAov aov = o.aov;
     PreparedFrame f = prepareReferenceFrame(o);
     if (dryRun) return 0;
     const ReferenceImage img = renderReference(f.scene, f.camera, o.settings);
@@ -95,11 +190,7 @@ CLI::App* addCompareCommand(CLI::App& app, CompareCliOptions& o) {
                                                   "bias, max, SSIM; heat map");
     cmd->add_option("A", o.a, "Test image (EXR)")->required();
     cmd->add_option("B", o.b, "Reference image (EXR)")->required();
-    cmd->add_option("--mask", o.mask, "EXR or PNG of the same size: only its non-zero pixels are compared");
-    cmd->add_option("-o,--output", o.heatMap, "Heat map of |luminance(A) - luminance(B)| (PNG)");
-    cmd->add_option("--heat-max", o.heatMax, "Error at the top of the heat map (default: 99th percentile)")
-        ->check(finiteRange(0.0, 1e30));
-    cmd->add_flag("--json", o.json, "Print the metrics as JSON");
+    addOptionRows(*cmd, compareCommandOptions(), &o);
     return cmd;
 }
 
@@ -113,7 +204,7 @@ int runCompareCommand(const CompareCliOptions& o, bool dryRun) {
         throw std::invalid_argument(
             fmt::format("A {} is {}x{}, B {} is {}x{}: the sizes must match", o.a, a.width, a.height, o.b, b.width,
                         b.height));
-    const std::vector<uint8_t> mask = o.mask.empty() ? std::vector<uint8_t>{} : loadMask(o.mask, a.width, a.height);
+    const std::vector<uint8_t> mask = o.mask.empty() ? std::vector<uint8_t>{} : loadMask(o.mask, compareCommandOptions().flagOf<CompareCliOptions>([](CompareCliOptions& c) -> auto& { return c.mask; }), a.width, a.height);
     if (dryRun) return 0;
     const ImageMetrics m = compareImages(a, b, mask);
     double scale = o.heatMax;

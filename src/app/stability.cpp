@@ -7,8 +7,11 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "app/bench.h"
+#include "app/cli_app.h"
 #include "app/frame_setup.h"
 #include "app/option_checks.h"
+#include "app/option_cli.h"
 #include "io/file_write.h"
 #include "lighting/lighting_technique.h"
 #include "reference/path_tracer.h"
@@ -205,6 +208,46 @@ double flickerRmsNoiseFree(const std::vector<std::vector<float>>& a, const std::
     return n && mean > 0.0 ? std::sqrt(std::max(product / double(n), 0.0)) / mean : 0.0;
 }
 
+namespace {
+
+constexpr SettingsChange kCommand = SettingsChange::None;  // read once by the command
+
+OptionTable makeStabilityCommandTable() {
+    using S = StabilityOptions;
+    OptionTableBuilder<S> t("stability", "Stability");
+    t.integer(sharedFlag<BenchOptions>(benchCommandOptions(), [](BenchOptions& b) -> auto& { return b.frames; }),
+              "frames", [](S& s) -> auto& { return s.frames; }, 3, 10000, kCommand, "Frames of the motion");
+    t.real(sharedFlag<RenderCliOptions>(renderCommandOptions(), [](RenderCliOptions& r) -> auto& { return r.fps; }),
+           "fps", [](S& s) -> auto& { return s.fps; }, 1e-3, 1e4, kCommand, "Frames per second");
+    t.text(sharedFlag<BenchOptions>(benchCommandOptions(), [](BenchOptions& b) -> auto& { return b.json; }), "json",
+           [](S& s) -> auto& { return s.json; },
+           [](const S& s) { return s.json.empty() ? std::vector<std::string>{} : std::vector<std::string>{s.json}; },
+           [](S& s, const std::string& v) { s.json = v; }, kCommand, "Write the figures as JSON")
+        .placeholder = "FILE";
+    t.boolean("--all", "all", [](S& s) -> auto& { return s.all; }, kCommand, "Every shadow filter and GI mode")
+        .bareFlag = true;
+    t.integer("--reference-spp", "reference_spp", [](S& s) -> auto& { return s.referenceSpp; }, 1, 1 << 16, kCommand,
+              "Path tracer: first spp (doubled until the figure settles)");
+    t.integer("--reference-max-spp", "reference_max_spp", [](S& s) -> auto& { return s.referenceMaxSpp; }, 1, 1 << 20,
+              kCommand, "Path tracer: largest spp");
+    t.text("--no-reference", "no_reference", [](S& s) -> auto& { return s.reference; },
+           [](const S& s) { return std::vector<std::string>{s.reference ? "off" : "on"}; },
+           [](S& s, const std::string& v) {
+               if (v != "on" && v != "off") throw std::invalid_argument("expected on or off");
+               s.reference = v == "off";
+           },
+           kCommand, "Skip the path tracer's floor")
+        .bareFlag = true;
+    return t.build();
+}
+
+}  // namespace
+
+const OptionTable& stabilityCommandOptions() {
+    static const OptionTable table = makeStabilityCommandTable();
+    return table;
+}
+
 CLI::App* addStabilityCommand(CLI::App& app, StabilityOptions& o, RenderSettings& rs) {
     CLI::App* cmd = app.add_subcommand("stability", "Temporal flicker of the techniques over a slow motion, with the "
                                                     "path tracer's figure as the floor");
@@ -214,26 +257,21 @@ CLI::App* addStabilityCommand(CLI::App& app, StabilityOptions& o, RenderSettings
     rs.rsm.resolution = 256;
     rs.lpv.rsmResolution = 512;
     rs.lpv.vplResolution = 128;
-    cmd->add_option("--frames", o.frames, "Frames of the motion (>= 3)")->check(CLI::Range(3, 10000));
-    cmd->add_option("--fps", o.fps, "Frames per second")->check(finiteRange(1e-3, 1e4));
-    cmd->add_option("--json", o.json, "Write the figures as JSON");
-    cmd->add_flag("--all", o.all, "Every shadow filter and GI mode");
-    cmd->add_option("--reference-spp", o.referenceSpp, "Path tracer: first spp (doubled until the figure settles)")
-        ->check(CLI::Range(1, 1 << 16));
-    cmd->add_option("--reference-max-spp", o.referenceMaxSpp, "Path tracer: largest spp")->check(CLI::Range(1, 1 << 20));
-    cmd->add_flag_function("--no-reference", [&o](int64_t) { o.reference = false; }, "Skip the path tracer's floor");
+    addOptionRows(*cmd, stabilityCommandOptions(), &o);
     return cmd;
 }
 
 int runStability(const StabilityOptions& o, const vk::ContextOptions& vkOptions, RenderSettings settings, bool dryRun) {
-    if (!o.json.empty()) checkWritable(o.json, "--json");
+    if (!o.json.empty()) checkWritable(o.json, stabilityCommandOptions().flagOf<StabilityOptions>([](StabilityOptions& s) -> auto& { return s.json; }));
     if (dryRun) return prepareFrame(o.frame, settings), 0;
     CliDeviceFrame device(o.frame, settings, vkOptions);
     const PreparedFrame& f = device.frame;
     const SceneMotion motion = frameMotion(o.frame, f);
     if (!motion.moves())
-        fmt::print(stderr, "penumbra: warning: nothing in '{}' moves: give --sun-path, --light-path or --camera-keys\n",
-                   f.scene.name);
+        fmt::print(stderr, "penumbra: warning: nothing in '{}' moves: give {}, {} or {}\n", f.scene.name,
+                   motionOptions().flagOf<FrameOptions>([](FrameOptions& m) -> auto& { return m.motion.sun; }),
+                   motionOptions().flagOf<FrameOptions>([](FrameOptions& m) -> auto& { return m.motion.lights; }),
+                   motionOptions().flagOf<FrameOptions>([](FrameOptions& m) -> auto& { return m.motion.camera; }));
     GpuScene scene(device.ctx, f.scene);
     const bool atWorldPoints = motion.cameraMoves();
     nlohmann::json results = nlohmann::json::array();

@@ -23,6 +23,8 @@ struct StabilityOptions {
     std::string command;
 };
 
+// The options of `stability` itself (frames, fps, JSON, the path tracer's floor).
+const OptionTable& stabilityCommandOptions();
 CLI::App* addStabilityCommand(CLI::App& app, StabilityOptions& options, RenderSettings& settings);
 int runStability(const StabilityOptions& options, const vk::ContextOptions& vkOptions, RenderSettings settings,
                  bool dryRun = false);

@@ -177,22 +177,22 @@ ImageF readExrSized(const std::string& path, const std::string& what, uint32_t w
     return image;
 }
 
-std::vector<uint8_t> loadMask(const std::string& path, uint32_t width, uint32_t height) {
-    if (!std::ifstream(path)) throw std::invalid_argument(fmt::format("--mask {}: no such file", path));
+std::vector<uint8_t> loadMask(const std::string& path, const std::string& what, uint32_t width, uint32_t height) {
+    if (!std::ifstream(path)) throw std::invalid_argument(fmt::format("{} {}: no such file", what, path));
     ImageF img;
     if (fileExtension(path) == ".exr") {
-        img = readExrChecked(path, "--mask");
+        img = readExrChecked(path, what);
     } else {
         int w = 0, h = 0, channels = 0;
         float* data = stbi_loadf(path.c_str(), &w, &h, &channels, 4);
-        if (!data) throw std::invalid_argument(fmt::format("--mask {}: cannot read the image ({})", path,
+        if (!data) throw std::invalid_argument(fmt::format("{} {}: cannot read the image ({})", what, path,
                                                            stbi_failure_reason()));
         img = {uint32_t(w), uint32_t(h), std::vector<float>(data, data + size_t(w) * h * 4)};
         stbi_image_free(data);
     }
     if (img.width != width || img.height != height)
         throw std::invalid_argument(
-            fmt::format("--mask {}: {}x{}, the images are {}x{}", path, img.width, img.height, width, height));
+            fmt::format("{} {}: {}x{}, the images are {}x{}", what, path, img.width, img.height, width, height));
     std::vector<uint8_t> mask(size_t(width) * height);
     for (size_t i = 0; i < mask.size(); ++i)
         mask[i] = img.rgba[i * 4] != 0.0f || img.rgba[i * 4 + 1] != 0.0f || img.rgba[i * 4 + 2] != 0.0f;

@@ -42,7 +42,7 @@ ImageMetrics compareImages(const ImageF& a, const ImageF& b, const std::vector<u
 std::vector<uint8_t> errorHeatMap(const ImageF& a, const ImageF& b, const std::vector<uint8_t>& mask, double& scale);
 
 // A mask image (EXR or PNG) of width x height: 1 where any of R, G, B is non-zero.
-std::vector<uint8_t> loadMask(const std::string& path, uint32_t width, uint32_t height);
+std::vector<uint8_t> loadMask(const std::string& path, const std::string& what, uint32_t width, uint32_t height);
 
 // Reads an EXR that must exist and be an EXR: one clear line otherwise ("A.exr: not an EXR file").
 ImageF readExrChecked(const std::string& path, const std::string& what);

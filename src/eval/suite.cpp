@@ -26,7 +26,7 @@ std::vector<SuiteScene> suiteScenes(const std::string& assets, const std::vector
         auto it = std::find_if(all.begin(), all.end(), [&](const SuiteScene& s) { return s.name == name; });
         if (it == all.end())
             throw std::invalid_argument(
-                fmt::format("--scenes: unknown suite scene '{}' (cornell, street, room, sponza, vc)", name));
+                fmt::format("unknown suite scene '{}' (cornell, street, room, sponza, vc)", name));
         out.push_back(*it);
     }
     return out;

@@ -16,8 +16,8 @@ namespace penumbra {
 struct SuiteScene {
     std::string name;                 // table row
     std::string scene;                // built-in name or glTF path
-    std::string camera;               // --camera value, "" = the scene's
-    std::vector<std::string> lights;  // --light values, empty = the scene's
+    std::string camera;               // camera override as the CLI takes it, "" = the scene's
+    std::vector<std::string> lights;  // light overrides as the CLI takes them, empty = the scene's
     uint32_t width = 0, height = 0, spp = 0;
 };
 

@@ -237,7 +237,7 @@ ReferenceAov parseReferenceAov(const std::string& name) {
     if (name == "mask") return ReferenceAov::Mask;
     if (name == "shadow") return ReferenceAov::Shadow;
     if (name == "hair") return ReferenceAov::Hair;
-    throw std::invalid_argument("--aov " + name + ": the reference writes final, direct, indirect, mask, shadow or hair");
+    throw std::invalid_argument("AOV '" + name + "': the reference writes final, direct, indirect, mask, shadow or hair");
 }
 
 std::vector<float> ReferenceImage::rgba(ReferenceAov aov) const {
@@ -295,9 +295,9 @@ glm::vec3 referenceIrradiance(const Light& light, const glm::vec3& p, glm::vec3&
 ReferenceImage renderReference(const Scene& scene, const Camera& camera, const ReferenceSettings& s) {
     if (s.width == 0 || s.height == 0 || s.width > 16384 || s.height > 16384)
         throw std::invalid_argument(fmt::format("reference image size {}x{}: expected 1..16384", s.width, s.height));
-    if (s.spp == 0) throw std::invalid_argument("--spp 0: at least one path per pixel is needed");
+    if (s.spp == 0) throw std::invalid_argument("0 paths per pixel: at least one is needed");
     if (s.bounces > kMaxReferenceBounces)
-        throw std::invalid_argument(fmt::format("--bounces {}: expected 0..{}", s.bounces, kMaxReferenceBounces));
+        throw std::invalid_argument(fmt::format("{} bounces: expected 0..{}", s.bounces, kMaxReferenceBounces));
     if (scene.indices.empty()) throw std::invalid_argument("the scene has no triangles to trace");
     // Instanced meshes are traced as world-space copies (at rest; a caller with a time passes the
     // scene's worldSpaceScene at that time).

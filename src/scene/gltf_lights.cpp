@@ -80,7 +80,7 @@ std::optional<Camera> readCamera(const tinygltf::Model& model, int index, const 
     const tinygltf::Camera& gc = model.cameras[size_t(index)];
     const std::string what = fmt::format("camera {}{}", index, gc.name.empty() ? "" : " '" + gc.name + "'");
     if (gc.type != "perspective") {  // Camera is perspective only; --camera-index counts the ones kept
-        warn(fmt::format("{} is {}: skipped (only perspective cameras are supported; --camera-index counts the "
+        warn(fmt::format("{} is {}: skipped (only perspective cameras are supported; the camera index counts the "
                          "perspective ones)", what, gc.type));
         return std::nullopt;
     }

@@ -19,7 +19,7 @@ std::vector<std::string> split(const std::string& s, char sep) {
     return out;
 }
 
-std::vector<float> numbers(const std::string& s, const std::string& what) {
+std::vector<float> numbers(const std::string& s) {
     std::vector<float> out;
     for (const std::string& p : split(s, ',')) {
         size_t used = 0;
@@ -30,50 +30,30 @@ std::vector<float> numbers(const std::string& s, const std::string& what) {
             used = 0;
         }
         if (used == 0 || used != p.size() || !std::isfinite(v))
-            throw std::invalid_argument(fmt::format("{}: '{}' is not a finite number", what, p));
+            throw std::invalid_argument(fmt::format("'{}' is not a finite number", p));
         out.push_back(v);
     }
     return out;
 }
 
 // "T,X,Y,Z;T,X,Y,Z;..." (`extra` more numbers per key go to `second`).
-void parseKeys(const std::string& text, const std::string& what, Keyframes& first, Keyframes* second) {
+void parseKeys(const std::string& text, Keyframes& first, Keyframes* second) {
     const size_t per = second ? 7 : 4;
     for (const std::string& key : split(text, ';')) {
-        const std::vector<float> v = numbers(key, what);
+        const std::vector<float> v = numbers(key);
         if (v.size() != per)
-            throw std::invalid_argument(fmt::format("{}: each key is {} numbers (T,{}), got '{}'", what, per,
+            throw std::invalid_argument(fmt::format("each key is {} numbers (T,{}), got '{}'", per,
                                                     second ? "EX,EY,EZ,TX,TY,TZ" : "X,Y,Z", key));
         if (!first.times.empty() && v[0] <= first.times.back())
-            throw std::invalid_argument(fmt::format("{}: key times must increase", what));
+            throw std::invalid_argument("key times must increase");
         first.times.push_back(v[0]);
         first.values.push_back({v[1], v[2], v[3]});
         if (second) second->times.push_back(v[0]), second->values.push_back({v[4], v[5], v[6]});
     }
-    if (first.times.empty()) throw std::invalid_argument(fmt::format("{}: no keys", what));
+    if (first.times.empty()) throw std::invalid_argument("no keys");
 }
 
-SunPath parseSun(const std::string& text) {
-    const std::vector<float> v = numbers(text, "--sun-path");
-    if (v.size() != 5 || v[4] <= 0.0f)
-        throw std::invalid_argument("--sun-path is AZ0,EL0,AZ1,EL1,SECONDS (degrees; SECONDS > 0)");
-    return {{v[0], v[1]}, {v[2], v[3]}, v[4]};
-}
-
-std::pair<size_t, Keyframes> parseLightPath(const std::string& text) {
-    const size_t colon = text.find(':');
-    if (colon == std::string::npos)
-        throw std::invalid_argument(fmt::format("--light-path '{}': expected N:T,X,Y,Z;T,X,Y,Z;...", text));
-    const std::vector<float> n = numbers(text.substr(0, colon), "--light-path light index");
-    if (n.size() != 1 || n[0] < 0.0f || n[0] != std::floor(n[0]))
-        throw std::invalid_argument(fmt::format("--light-path '{}': N must be a light index", text));
-    Keyframes k;
-    parseKeys(text.substr(colon + 1), "--light-path", k, nullptr);
-    return {size_t(n[0]), k};
-}
-
-// The camera must see along a defined direction at every time of its path, as --camera requires of
-// one view: eye apart from target and the view not along `up` (lookAt degenerates: a black image).
+// The camera must see along a defined direction at every time of its path, as a single camera must: eye apart from target and the view not along `up` (lookAt degenerates: a black image).
 // Between keys eye - target moves linearly, d(u) = mix(d0, d1, u), and so does c(u) = d(u) x up; both
 // are checked at the keys and where each comes closest to zero.
 void checkCameraPath(const Keyframes& eye, const Keyframes& target, const glm::vec3& cameraUp) {
@@ -93,8 +73,8 @@ void checkCameraPath(const Keyframes& eye, const Keyframes& target, const glm::v
         for (float u : {0.0f, closestToZero(d0, d1), closestToZero(glm::cross(d0, up), glm::cross(d1, up))}) {
             if (!degenerate(glm::mix(d0, d1, u))) continue;
             const double t = eye.times[k] + double(u) * (k + 1 < eye.times.size() ? eye.times[k + 1] - eye.times[k] : 0.0);
-            throw std::invalid_argument(fmt::format(
-                "--camera-keys: at t = {:.4g} s the {}", t,
+            throw MotionError(MotionError::Input::CameraKeys, 0, fmt::format(
+                "at t = {:.4g} s the {}", t,
                 glm::length(glm::mix(d0, d1, u)) < 1e-6f ? "eye and target coincide"
                                                           : "view direction (target - eye) is parallel to the up vector"));
         }
@@ -122,32 +102,53 @@ glm::vec3 sunDirection(float azimuthDeg, float elevationDeg) {
     return -glm::vec3(std::cos(el) * std::cos(az), std::sin(el), std::cos(el) * std::sin(az));
 }
 
-void checkMotionPaths(const MotionPaths& paths) {
-    if (!paths.sun.empty()) parseSun(paths.sun);
-    for (const std::string& l : paths.lights) parseLightPath(l);
-    Keyframes eye, target;
-    if (!paths.camera.empty()) parseKeys(paths.camera, "--camera-keys", eye, &target);
+SunPath parseSunPath(const std::string& text) {
+    const std::vector<float> v = numbers(text);
+    if (v.size() != 5 || v[4] <= 0.0f) throw std::invalid_argument("expected AZ0,EL0,AZ1,EL1,SECONDS (degrees; SECONDS > 0)");
+    return {{v[0], v[1]}, {v[2], v[3]}, v[4]};
+}
+
+LightPath parseLightPath(const std::string& text) {
+    const size_t colon = text.find(':');
+    if (colon == std::string::npos) throw std::invalid_argument("expected N:T,X,Y,Z;T,X,Y,Z;...");
+    const std::vector<float> n = numbers(text.substr(0, colon));
+    if (n.size() != 1 || n[0] < 0.0f || n[0] != std::floor(n[0]))
+        throw std::invalid_argument("N must be a light index");
+    LightPath path{size_t(n[0]), {}};
+    parseKeys(text.substr(colon + 1), path.positions, nullptr);
+    return path;
+}
+
+CameraKeys parseCameraKeys(const std::string& text) {
+    CameraKeys keys;
+    parseKeys(text, keys.eye, &keys.target);
+    return keys;
+}
+
+ParsedMotionPaths::ParsedMotionPaths(const MotionPaths& paths) : builtinDefault(paths.builtinDefault) {
+    if (!paths.sun.empty()) sun = parseSunPath(paths.sun);
+    for (const std::string& l : paths.lights) lights.push_back(parseLightPath(l));
+    if (!paths.camera.empty()) camera = parseCameraKeys(paths.camera);
 }
 
 SceneMotion::SceneMotion(const Scene& scene, const Camera& camera, const std::vector<Light>& lights,
-                         const MotionPaths& paths, const AnimationOptions& animation)
+                         const ParsedMotionPaths& paths, const AnimationOptions& animation)
     : scene_(scene), camera0_(camera), lights0_(lights), animation_(animation), animated_(isAnimated(scene)) {
     if (animation.animation >= 0 && size_t(animation.animation) >= scene.animations.size())
-        throw std::invalid_argument(fmt::format("--animation {}: the scene has {} animation(s)", animation.animation,
-                                                scene.animations.size()));
-    if (!paths.sun.empty()) sun_.push_back(parseSun(paths.sun));
-    for (const std::string& l : paths.lights) {
-        auto path = parseLightPath(l);
-        if (path.first >= lights.size())
-            throw std::invalid_argument(fmt::format("--light-path {}: the frame has {} light(s)", path.first,
-                                                    lights.size()));
-        if (lights[path.first].type == LightType::Directional)
-            throw std::invalid_argument(fmt::format("--light-path {}: a directional light has no position (use --sun-path)",
-                                                    path.first));
-        lightPaths_.push_back(std::move(path));
+        throw MotionError(MotionError::Input::Animation, 0,
+                          fmt::format("the scene has {} animation(s)", scene.animations.size()));
+    if (paths.sun) sun_.push_back(*paths.sun);
+    for (size_t i = 0; i < paths.lights.size(); ++i) {
+        const LightPath& path = paths.lights[i];
+        if (path.light >= lights.size())
+            throw MotionError(MotionError::Input::LightPath, i, fmt::format("the frame has {} light(s)", lights.size()));
+        if (lights[path.light].type == LightType::Directional)
+            throw MotionError(MotionError::Input::LightPath, i,
+                              "a directional light has no position (a sun path turns it)");
+        lightPaths_.push_back(path);
     }
-    if (!paths.camera.empty()) parseKeys(paths.camera, "--camera-keys", camera_, &cameraTarget_);
-    if (!paths.camera.empty()) checkCameraPath(camera_, cameraTarget_, camera.up);
+    if (paths.camera) camera_ = paths.camera->eye, cameraTarget_ = paths.camera->target;
+    if (paths.camera) checkCameraPath(camera_, cameraTarget_, camera.up);
     const bool anyPath = !sun_.empty() || !lightPaths_.empty() || !camera_.times.empty();
     // Built-in scenes move their own light by default (never lights given with --light).
     if (paths.builtinDefault && !anyPath && !animated_ && !lights.empty() && lights[0].name == scene.lights[0].name &&

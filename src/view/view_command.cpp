@@ -1,25 +1,53 @@
 #include "view/view_command.h"
 
+#include <filesystem>
+
 #include <fmt/format.h>
 
+#include "app/option_cli.h"
+
 namespace penumbra::view {
+namespace {
+
+OptionTable makeViewCommandTable() {
+    using V = ViewOptions;
+    constexpr SettingsChange kCommand = SettingsChange::None;  // read once when the window opens
+    OptionTableBuilder<V> t("view", "View");
+    t.text("--script", "script", [](V& v) -> auto& { return v.script; },
+           [](const V& v) { return v.script.empty() ? std::vector<std::string>{} : std::vector<std::string>{v.script}; },
+           [](V& v, const std::string& file) {
+               if (!std::filesystem::is_regular_file(file)) throw std::invalid_argument("no such file");
+               v.script = file;
+           },
+           kCommand,
+           "Run the commands of FILE (set, camera, light, time, play, pause, frames, screenshot, screenshot-ui, "
+           "quit); the end of the file quits")
+        .placeholder = "FILE";
+    t.choice("--present", "present", [](V& v) -> auto& { return v.present; },
+             std::vector<std::pair<std::string, std::string>>{{"fifo", "fifo"}, {"mailbox", "mailbox"},
+                                                              {"immediate", "immediate"}},
+             kCommand, "Presentation: fifo (vsync), mailbox, immediate");
+    return t.build();
+}
+
+}  // namespace
+
+const OptionTable& viewCommandOptions() {
+    static const OptionTable table = makeViewCommandTable();
+    return table;
+}
 
 CLI::App* addViewCommand(CLI::App& app, ViewCommand& view) {
     view.cmd = app.add_subcommand("view", "Interactive viewer: a window with every render option live (README, Viewer)");
     addFrameOptions(*view.cmd, view.frame, view.settings);
-    view.cmd->add_option("--script", view.options.script,
-                         "Run the commands of FILE (set, camera, light, time, play, pause, frames, screenshot, "
-                         "screenshot-ui, quit); the end of the file quits")
-        ->check(CLI::ExistingFile);
-    view.cmd->add_option("--present", view.options.present, "Presentation: fifo (default, vsync), mailbox, immediate")
-        ->check(CLI::IsMember({"fifo", "mailbox", "immediate"}));
+    addOptionRows(*view.cmd, viewCommandOptions(), &view.options);
     return view.cmd;
 }
 
 int runViewCommand(ViewCommand& view, const vk::ContextOptions& vulkan) {
     checkFrameSettings(view.frame, view.settings);  // cross-option rules before a window opens
     view.options.vulkan = vulkan;
-    view.options.vulkan.syncValidation = vulkan.validate;  // the viewer's --validate checks synchronization too
+    view.options.vulkan.syncValidation = vulkan.validate;  // the viewer's validation checks synchronization too
     Viewer viewer(view.options, givenFrameArgs(*view.cmd), {view.settings.width, view.settings.height});
     viewer.run();
     return 0;

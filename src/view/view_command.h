@@ -1,5 +1,5 @@
-// The `view` subcommand: every option of `render` (the same definitions), plus --script and
-// --present.
+// The `view` subcommand: every option of `render` (the same definitions), plus its own table (a
+// script to run, the presentation mode).
 #pragma once
 #include <CLI/CLI.hpp>
 
@@ -15,6 +15,8 @@ struct ViewCommand {
     CLI::App* cmd = nullptr;
 };
 
+// The options of `view` itself (the script, the presentation mode).
+const OptionTable& viewCommandOptions();
 CLI::App* addViewCommand(CLI::App& app, ViewCommand& view);
 int runViewCommand(ViewCommand& view, const vk::ContextOptions& vulkan);
 

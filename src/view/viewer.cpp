@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "io/image_io.h"
+#include "renderer/render_options.h"
 #include "vk/commands.h"
 
 namespace penumbra::view {
@@ -21,7 +22,7 @@ VkPresentModeKHR presentMode(const std::string& name) {
     if (name == "fifo") return VK_PRESENT_MODE_FIFO_KHR;
     if (name == "mailbox") return VK_PRESENT_MODE_MAILBOX_KHR;
     if (name == "immediate") return VK_PRESENT_MODE_IMMEDIATE_KHR;
-    throw std::invalid_argument(fmt::format("--present {}: expected fifo, mailbox or immediate", name));
+    throw std::invalid_argument(fmt::format("presentation mode '{}': expected fifo, mailbox or immediate", name));
 }
 
 VkSemaphore createSemaphore(VkDevice device) {
@@ -39,7 +40,7 @@ void swapchainBarrier(VkCommandBuffer cmd, VkImage image, VkImageLayout from, Vk
                      dstAccess);
 }
 
-uint32_t sizeArg(const std::vector<CliArg>& args, const char* name, uint32_t fallback) {
+uint32_t sizeArg(const std::vector<CliArg>& args, const std::string& name, uint32_t fallback) {
     for (const CliArg& a : args)
         if (a.name == name && !a.values.empty()) return uint32_t(std::stoul(a.values.back()));
     return fallback;
@@ -48,7 +49,8 @@ uint32_t sizeArg(const std::vector<CliArg>& args, const char* name, uint32_t fal
 }  // namespace
 
 Viewer::Viewer(const ViewOptions& options, std::vector<CliArg> args, VkExtent2D size)
-    : window_(sizeArg(args, "--width", size.width), sizeArg(args, "--height", size.height), "penumbra view"),
+    : window_(sizeArg(args, frameFlag([](RenderSettings& s) -> auto& { return s.width; }), size.width),
+              sizeArg(args, frameFlag([](RenderSettings& s) -> auto& { return s.height; }), size.height), "penumbra view"),
       ctx_(window_.presentationOptions(options.vulkan)),
       alloc_(ctx_, VkDeviceSize(16) << 20),
       swapchain_(ctx_, window_.createSurface(ctx_.instance()), presentMode(options.present)),

@@ -312,7 +312,7 @@ void Context::createInstance(bool validate) {
         VK_CHECK(vkEnumerateInstanceLayerProperties(&n, layers.data()));
         if (std::none_of(layers.begin(), layers.end(),
                          [](const VkLayerProperties& l) { return std::strcmp(l.layerName, kValidationLayer) == 0; }))
-            throw VulkanError("--validate: the Khronos validation layer is not installed "
+            throw VulkanError("validation: the Khronos validation layer is not installed "
                               "(Debian package vulkan-validationlayers)");
     }
     VkApplicationInfo app{VK_STRUCTURE_TYPE_APPLICATION_INFO};
@@ -358,7 +358,7 @@ void Context::createInstance(bool validate) {
     if (validate) {
         auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
             vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
-        if (!create) throw VulkanError("VK_EXT_debug_utils is not available with --validate");
+        if (!create) throw VulkanError("VK_EXT_debug_utils is not available for validation");
         VK_CHECK(create(instance_, &dbg, nullptr, &messenger_));
     }
 }
@@ -385,7 +385,7 @@ void Context::pickDevice(const std::string& selector) {
                 chosen = static_cast<int>(d.index);
                 break;
             }
-        if (chosen < 0) throw VulkanError(fmt::format("--device {}: no such device (see `penumbra info`)", selector));
+        if (chosen < 0) throw VulkanError(fmt::format("device '{}': no such device (see `penumbra info`)", selector));
     } else {
         int best = -1;
         for (const DeviceInfo& d : infos) {
