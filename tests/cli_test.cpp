@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,9 @@
 #include <gtest/gtest.h>
 #include <stb_image.h>
 #include <tinyexr.h>
+
+#include "dsm/dsm_options.h"
+#include "renderer/render_options.h"
 
 extern char** environ;
 
@@ -194,6 +198,39 @@ TEST(Cli, RendersPngOfRequestedSize) {
     for (int i = 0; i < w * h; ++i) lit += pixels[i * 4] > 0 || pixels[i * 4 + 1] > 0 || pixels[i * 4 + 2] > 0;
     stbi_image_free(pixels);
     EXPECT_GT(lit, size_t(w * h / 4)) << "too little of the Cornell box is lit";
+}
+
+// A deep shadow map of 4096^2 (the size the 16384 refusal once recommended): its work list is 16
+// bytes over lavapipe's storage-buffer range, so it is refused before any work, and the size the
+// refusal suggests renders under validation with nothing on stderr.
+TEST(Cli, DsmResAdviceRendersUnderValidation) {
+    TempDir tmp;
+    const std::string out = tmp.file("dsm.png");
+    using namespace penumbra;
+    const OptionTable& frame = frameOptionTable();
+    using S = RenderSettings;
+    const std::string dsmRes = dsmOptions().flagOf<DsmSettings>([](DsmSettings& x) -> auto& { return x.resolution; });
+    const std::vector<std::string> base = {"render", "cornell", "-o", out,
+                                           frame.flagOf<S>([](S& x) -> auto& { return x.shadow.filter; }), "pcf,dsm",
+                                           frame.flagOf<S>([](S& x) -> auto& { return x.width; }), "32",
+                                           frame.flagOf<S>([](S& x) -> auto& { return x.height; }), "24", "--validate"};
+    std::vector<std::string> args = base;
+    args.insert(args.end(), {dsmRes, "4096"});
+    const ProcessResult refused = runPenumbra(args);
+    ASSERT_TRUE(refused.started);
+    EXPECT_NE(refused.exitCode, 0) << describe(refused);
+    EXPECT_EQ(refused.err.rfind("penumbra: error:", 0), 0u) << describe(refused);
+    EXPECT_FALSE(fs::exists(out)) << "refused before any work";
+    std::smatch m;
+    ASSERT_TRUE(std::regex_search(refused.err, m, std::regex("the largest " + dsmRes + " that fits is ([0-9]+)")))
+        << describe(refused);
+    EXPECT_LT(std::stoi(m[1].str()), 4096);
+    args = base;
+    args.insert(args.end(), {dsmRes, m[1].str()});
+    const ProcessResult r = runPenumbra(args);
+    expectCleanExit(r);
+    EXPECT_EQ(r.err, "") << "nothing on stderr with --validate: " << describe(r);
+    EXPECT_TRUE(fs::exists(out));
 }
 
 TEST(Cli, RendersExrWithFiniteNonNegativeValues) {

@@ -29,8 +29,7 @@ std::vector<DsmLayer> chooseLayers(const std::vector<Light>& lights, const Bound
     if (!s.enabled) return layers;
     for (uint32_t i = 0; i < lights.size(); ++i) {
         const Light& l = lights[i];
-        const bool listed = std::find(s.lights.begin(), s.lights.end(), i) != s.lights.end();
-        if (!(s.lights.empty() ? l.castsShadow : listed)) continue;
+        if (!DsmResources::hasDeepShadowMap(s, l, i)) continue;
         const bool cube = l.type == LightType::Point;
         for (uint32_t face = 0; face < (cube ? 6u : 1u); ++face) {
             const LightProjection p = dsmProjection(l, bounds, res, face, s);
@@ -61,10 +60,10 @@ DeepShadowMaps::DeepShadowMaps(vk::Allocator& alloc, SceneGpu& scene, const Hair
     // The shadow maps' resolution, taken by default, halves until the maps' fixed part (heads, work
     // list, depth buckets: 48 bytes a texel) takes at most a quarter of the device's memory: a point
     // light's six faces of 2048^2 need 1.2 GiB, more than lavapipe's half (1 GiB).
-    const uint64_t quarter = alloc.context().limits().deviceMemory / 4;
+    const vk::DeviceLimits& lim = alloc.context().limits();
     const uint32_t wanted = res;
     auto fixed = [&](uint32_t r) { return DsmResources::fixedBytes(uint64_t(r) * r * layers.size(), settings.opacityMaps); };
-    while (!settings.resolution && res > 256 && fixed(res) > quarter) res /= 2;
+    res = DsmResources::resolutionFor(settings, res, uint32_t(layers.size()), lim);
     if (res != wanted) {
         warnings.push_back(fmt::format("--shadow {}: {} deep shadow map(s) of {}^2 would take {:.0f} MiB of the "
                                        "device's {:.0f} MiB before any node; {}^2 instead (--dsm-res sets it)",

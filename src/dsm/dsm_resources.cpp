@@ -14,14 +14,19 @@ constexpr double kMiB = 1024.0 * 1024.0;
 // memory to spare, and the pool must be addressable by one storage-buffer descriptor, allocatable in
 // one piece, and fit what the fixed part leaves of that half: refuse either with the numbers rather
 // than fail inside the driver.
-void checkFits(vk::Context& ctx, uint64_t capacity, VkDeviceSize fixed, const DsmSettings& settings, uint32_t res,
-               size_t maps) {
-    const vk::DeviceLimits& lim = ctx.limits();
+void checkFits(const vk::DeviceLimits& lim, uint64_t capacity, uint64_t texels, const DsmSettings& settings,
+               uint32_t res, size_t maps) {
+    const VkDeviceSize fixed = DsmResources::fixedBytes(texels, settings.opacityMaps);
+    const VkDeviceSize work = DsmResources::workBytes(texels, settings.opacityMaps);
+    if (work > lim.storageBufferRange)
+        throw vk::VulkanError(fmt::format("--dsm-res {}: {} deep shadow map(s) need a {:.0f} MiB work list, more than "
+                                          "the device's storage-buffer range ({:.0f} MiB)",
+                                          res, maps, double(work) / kMiB, double(lim.storageBufferRange) / kMiB));
     if (fixed > lim.deviceMemory / 2)
         throw vk::VulkanError(fmt::format("--dsm-res {}: {} deep shadow map(s) need {:.0f} MiB of list heads, work list "
                                           "and depth buckets, more than half of the device's memory ({:.0f} MiB)",
                                           res, maps, double(fixed) / kMiB, double(lim.deviceMemory / 2) / kMiB));
-    const VkDeviceSize nodeBytes = VkDeviceSize(capacity) * 16, total = VkDeviceSize(capacity) * DsmResources::kNodeBytes + fixed;
+    const VkDeviceSize nodeBytes = DsmResources::nodeBufferBytes(capacity), total = VkDeviceSize(capacity) * DsmResources::kNodeBytes + fixed;
     struct Check {
         VkDeviceSize need, limit;
         const char* what;
@@ -37,11 +42,11 @@ void checkFits(vk::Context& ctx, uint64_t capacity, VkDeviceSize fixed, const Ds
 }
 
 // The largest pool the device takes beside the maps' fixed part (the automatic size is clamped to it).
-uint64_t maxNodes(vk::Context& ctx, VkDeviceSize fixed) {
-    const vk::DeviceLimits& lim = ctx.limits();
+uint64_t maxNodes(const vk::DeviceLimits& lim, VkDeviceSize fixed) {
     const uint64_t half = lim.deviceMemory / 2;
     const uint64_t forHeap = half > fixed ? (half - fixed) / DsmResources::kNodeBytes : 0;
-    return std::max<uint64_t>(1, std::min({lim.storageBufferRange / 16, lim.allocationSize / 16, forHeap}));
+    const uint64_t perNode = DsmResources::nodeBufferBytes(1);
+    return std::max<uint64_t>(1, std::min({lim.storageBufferRange / perNode, lim.allocationSize / perNode, forHeap}));
 }
 
 gpu::GpuDsmLight tableEntry(const DsmLayer& layer, int index, uint32_t resolution, const DsmSettings& s,
@@ -65,22 +70,21 @@ DsmResources::DsmResources(vk::Allocator& alloc, const DsmSettings& settings, ui
     const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     const VkBufferUsageFlags cleared = storage | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
     const uint64_t texels = uint64_t(res) * res * std::max<size_t>(layers.size(), 1);
-    const VkDeviceSize fixed = layers.empty() ? 0 : fixedBytes(texels, opacityMaps);
-    const uint64_t automatic = std::min({texels * DsmSettings::kAutoNodesPerTexel, DsmSettings::kMaxPoolNodes - 1,
-                                         maxNodes(alloc.context(), fixed)});
-    capacity = layers.empty() ? 1 : opacityMaps ? texels : settings.poolNodes ? settings.poolNodes : automatic;
-    deviceLimited = !layers.empty() && !opacityMaps && !settings.poolNodes && automatic < texels * DsmSettings::kAutoNodesPerTexel;
-    const uint64_t headBytes = texels * 4 * (opacityMaps ? 1 : DSM_HEAD_UINTS);
-    if (!layers.empty()) checkFits(alloc.context(), capacity, fixed, settings, res, layers.size());  // --dsm-res, --dsm-nodes
-    heads = vk::Buffer(alloc, layers.empty() ? 4 : headBytes, cleared, false, "dsm-heads");
-    nodes = vk::Buffer(alloc, capacity * 16, cleared, false, "dsm-nodes");
-    side = vk::Buffer(alloc, opacityMaps ? 4 : capacity * 4, cleared, false, "dsm-side");  // DOM: unused
+    const vk::DeviceLimits& lim = alloc.context().limits();
+    capacity = layers.empty() ? 1 : poolCapacity(settings, texels, lim);
+    deviceLimited = !layers.empty() && !opacityMaps && !settings.poolNodes &&
+                    capacity < texels * DsmSettings::kAutoNodesPerTexel;
+    if (!layers.empty())  // --dsm-res, --dsm-nodes
+        checkFits(lim, capacity, texels, settings, res, layers.size());
+    const bool lists = !opacityMaps && !layers.empty();  // DOM: the side, runs, work and buckets are unused
+    bucketCount = bucketCountFor(texels, lim.storageBufferRange);
+    heads = vk::Buffer(alloc, layers.empty() ? 4 : headBytes(texels, opacityMaps), cleared, false, "dsm-heads");
+    nodes = vk::Buffer(alloc, nodeBufferBytes(capacity), cleared, false, "dsm-nodes");
+    side = vk::Buffer(alloc, lists ? capacity * sizeof(uint32_t) : 4, cleared, false, "dsm-side");
     stats = vk::Buffer(alloc, sizeof(gpu::DsmStats), cleared, false, "dsm-stats");
-    work = vk::Buffer(alloc, opacityMaps || layers.empty() ? 16 : 16 + headBytes, cleared, false, "dsm-work");
-    runs = vk::Buffer(alloc, opacityMaps ? 8 : capacity * 8, cleared, false, "dsm-runs");  // DOM: unused
-    bucketCount = depthBucketCount(alloc.context(), texels, kBuckets);
-    buckets = vk::Buffer(alloc, opacityMaps || layers.empty() ? 4 : texels * 4 * bucketCount, cleared, false,
-                         "dsm-buckets");
+    work = vk::Buffer(alloc, workBytes(texels, !lists), cleared, false, "dsm-work");
+    runs = vk::Buffer(alloc, lists ? capacity * sizeof(glm::uvec2) : 8, cleared, false, "dsm-runs");
+    buckets = vk::Buffer(alloc, lists ? bucketBytes(texels, bucketCount) : 4, cleared, false, "dsm-buckets");
 
     views = vk::BufferRing(alloc, std::max<size_t>(layers.size(), 1) * sizeof(glm::mat4), storage, "dsm-views");
     const size_t faces = size_t(std::count_if(layers.begin(), layers.end(), [](const DsmLayer& l) { return l.cube; }));
@@ -115,6 +119,36 @@ void DsmResources::writeTables(const DsmSettings& settings, uint32_t slot) {
     lightTable.select(slot);
     views.write(rows.data(), rows.size() * sizeof(glm::mat4));
     lightTable.write(table.data(), table.size() * sizeof(gpu::GpuDsmLight));
+}
+
+uint64_t DsmResources::poolCapacity(const DsmSettings& settings, uint64_t texels, const vk::DeviceLimits& limits) {
+    if (settings.opacityMaps) return texels;
+    if (settings.poolNodes) return settings.poolNodes;
+    return std::min({texels * DsmSettings::kAutoNodesPerTexel, DsmSettings::kMaxPoolNodes - 1,
+                     maxNodes(limits, fixedBytes(texels, false))});
+}
+
+uint32_t DsmResources::resolutionFor(const DsmSettings& settings, uint32_t shadowResolution, uint32_t layers,
+                                     const vk::DeviceLimits& limits) {
+    if (settings.resolution) return settings.resolution;
+    uint32_t res = shadowResolution;
+    auto fixed = [&](uint64_t r) { return fixedBytes(r * r * layers, settings.opacityMaps); };
+    auto work = [&](uint64_t r) { return workBytes(r * r * layers, settings.opacityMaps); };
+    while (res > 256 && (fixed(res) > limits.deviceMemory / 4 || work(res) > limits.storageBufferRange)) res /= 2;
+    return res;
+}
+
+bool DsmResources::hasDeepShadowMap(const DsmSettings& settings, const Light& light, uint32_t index) {
+    if (!settings.enabled) return false;
+    if (settings.lights.empty()) return light.castsShadow;
+    return std::find(settings.lights.begin(), settings.lights.end(), index) != settings.lights.end();
+}
+
+uint32_t DsmResources::layerCountFor(const DsmSettings& settings, const std::vector<Light>& lights) {
+    uint32_t count = 0;
+    for (uint32_t i = 0; i < lights.size(); ++i)
+        if (hasDeepShadowMap(settings, lights[i], i)) count += lights[i].type == LightType::Point ? 6 : 1;
+    return count;
 }
 
 }  // namespace penumbra

@@ -47,13 +47,42 @@ struct DsmResources {
     vk::Buffer work;        // the texels with nodes, for the resolve: uvec4 (x = count), then per texel a uvec2
                             // (texel, its sorted list's place in the pool)
 
-    static constexpr VkDeviceSize kNodeBytes = 16 + 4 + 8;  // node + side + run entry
+    static constexpr VkDeviceSize kNodeBytes = sizeof(glm::uvec4) + sizeof(uint32_t) + sizeof(glm::uvec2);  // node + side + run
     static constexpr uint32_t kBuckets = DSM_BUCKETS;  // depth buckets per texel
-    // The maps' memory besides the node pool for `texels` texels: heads, work list and depth buckets
-    // (48 bytes a texel), or a deep opacity map's first depths (4).
-    static VkDeviceSize fixedBytes(uint64_t texels, bool opacityMaps) {
-        return texels * (opacityMaps ? 4 : 4 * DSM_HEAD_UINTS * (2 + kBuckets / DSM_HEAD_UINTS));
+
+    // The buffer sizes for `texels` texels of all layers, shared with the device budget so that what it
+    // admits is what is allocated and bound. Each buffer is bound whole through one storage descriptor.
+    static VkDeviceSize headBytes(uint64_t texels, bool opacityMaps) {
+        return texels * sizeof(uint32_t) * (opacityMaps ? 1 : DSM_HEAD_UINTS);
     }
+    // A uvec4 header (x = count), then a uvec2 per texel (deep opacity maps: the header only).
+    static VkDeviceSize workBytes(uint64_t texels, bool opacityMaps) {
+        return sizeof(glm::uvec4) + (opacityMaps ? 0 : texels * sizeof(glm::uvec2));
+    }
+    // The depth buckets per texel: kBuckets, halved until one buffer of them fits `storageBufferRange`.
+    static uint32_t bucketCountFor(uint64_t texels, uint64_t storageBufferRange) {
+        uint32_t count = kBuckets;
+        while (count > 1 && bucketBytes(texels, count) > storageBufferRange) count /= 2;
+        return count;
+    }
+    static VkDeviceSize bucketBytes(uint64_t texels, uint32_t bucketCount) { return texels * sizeof(uint32_t) * bucketCount; }
+    // The maps' memory besides the node pool at the full bucket count (what the resolution rule and the
+    // pool's share of memory reserve): heads, work list and kBuckets depth buckets (deep opacity maps: heads).
+    static VkDeviceSize fixedBytes(uint64_t texels, bool opacityMaps) {
+        return headBytes(texels, opacityMaps) + workBytes(texels, opacityMaps) +
+               (opacityMaps ? sizeof(uint32_t) : bucketBytes(texels, kBuckets));
+    }
+    static VkDeviceSize nodeBufferBytes(uint64_t capacity) { return capacity * sizeof(glm::uvec4); }
+    // The node pool: --dsm-nodes, a deep opacity map's one node per texel, or the automatic size clamped
+    // to what the device takes beside the fixed part (a storage descriptor, an allocation, half its memory).
+    static uint64_t poolCapacity(const DsmSettings& settings, uint64_t texels, const vk::DeviceLimits& limits);
+    // --dsm-res, or by default the shadow maps' resolution halved until the maps' fixed part takes at
+    // most a quarter of the device's memory and its work list fits one storage-buffer descriptor.
+    static uint32_t resolutionFor(const DsmSettings& settings, uint32_t shadowResolution, uint32_t layers,
+                                  const vk::DeviceLimits& limits);
+    // How many maps `settings` gives `lights`: one per light with a DSM, six for a point light.
+    static uint32_t layerCountFor(const DsmSettings& settings, const std::vector<Light>& lights);
+    static bool hasDeepShadowMap(const DsmSettings& settings, const Light& light, uint32_t index);
     size_t lightCount_ = 1;
 
     // Allocates every buffer and writes the tables of every slot. Throws vk::VulkanError with a clear message

@@ -94,14 +94,14 @@ LightPropagationVolume::LightPropagationVolume(vk::Allocator& alloc, uint32_t wi
                                 push);
     pointSampler_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
 
-    const VkDeviceSize cells = VkDeviceSize(settings_.resolution) * settings_.resolution * settings_.resolution;
-    const VkDeviceSize light = cells * cascadeCount_ * 3 * 16;
+    const VkDeviceSize light = lpvLightVolumeBytes(settings_.resolution, cascadeCount_);
+    const VkDeviceSize geometry = lpvGeometryVolumeBytes(settings_.resolution, cascadeCount_);
     volumeA_ = vk::Buffer(alloc, light, kVolumeUsage, false, "lpv-light-a");
     volumeB_ = vk::Buffer(alloc, light, kVolumeUsage, false, "lpv-light-b");
     // The sum of the steps in two halves: near (steps before the window of a coarser cascade) and far.
     accum_ = vk::Buffer(alloc, 2 * light, kVolumeUsage, false, "lpv-light-sum");
-    geometry_ = vk::Buffer(alloc, cells * cascadeCount_ * 16, kVolumeUsage, false, "lpv-geometry");
-    if (voxels()) faces_ = vk::Buffer(alloc, cells * cascadeCount_ * 16, kVolumeUsage, false, "lpv-faces");
+    geometry_ = vk::Buffer(alloc, geometry, kVolumeUsage, false, "lpv-geometry");
+    if (voxels()) faces_ = vk::Buffer(alloc, geometry, kVolumeUsage, false, "lpv-faces");
     irradiance_ = vk::Image(alloc, {VK_FORMAT_R32G32B32A32_SFLOAT, width, height, 1,
                                     VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
                                         VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
@@ -137,7 +137,7 @@ void LightPropagationVolume::addTo(FrameGraph& graph, uint32_t rsmLayers, uint64
     if (layers_ != rsmLayers) {
         layers_ = rsmLayers;
         const uint32_t n = settings_.vplResolution;
-        vpls_ = vk::Buffer(alloc_, VkDeviceSize(std::max(layers_, 1u)) * n * n * sizeof(gpu::GpuVpl),
+        vpls_ = vk::Buffer(alloc_, lpvVplBytes(n, layers_),
                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, false, "lpv-vpls");
         push_.vplCount = layers_ * n * n;
         push_.layerCount = layers_;

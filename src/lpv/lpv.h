@@ -14,6 +14,7 @@
 // finer cascade does not hold the receiver): no light counted twice. The output is the same
 // indirect-irradiance image the RSM gather produces.
 #pragma once
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <utility>
@@ -30,6 +31,17 @@ namespace penumbra {
 std::vector<gpu::GpuLpvCascade> placeCascades(const Bounds& scene, const glm::vec3& eye, uint32_t count,
                                               uint32_t resolution);
 uint32_t automaticCascadeCount(const Bounds& scene);
+
+// Buffer sizes, shared with the device budget. A light volume: three RGBA32F SH colour planes per
+// cell of every cascade (the propagation's two, and the sum is twice that); a geometry volume: one
+// RGBA32F per cell; the VPL buffer: `n`^2 VPLs per RSM layer.
+inline uint64_t lpvLightVolumeBytes(uint64_t resolution, uint64_t cascades) {
+    return resolution * resolution * resolution * cascades * 3 * sizeof(glm::vec4);
+}
+inline uint64_t lpvGeometryVolumeBytes(uint64_t resolution, uint64_t cascades) {
+    return resolution * resolution * resolution * cascades * sizeof(glm::vec4);
+}
+inline uint64_t lpvVplBytes(uint64_t n, uint64_t rsmLayers) { return std::max<uint64_t>(rsmLayers, 1) * n * n * sizeof(gpu::GpuVpl); }
 
 class LightPropagationVolume {
 public:

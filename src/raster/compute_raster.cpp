@@ -98,8 +98,7 @@ ComputeRaster::ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, VkExtent2D s
 
     const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
     const VkBufferUsageFlags transfer = VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
-    const VkDeviceSize texels = layerTexels() * layers_;
-    depth_ = vk::Buffer(alloc, texels * 4, storage | transfer, false, "raster-depth");
+    depth_ = vk::Buffer(alloc, depthBytes(layerTexels(), layers_), storage | transfer, false, "raster-depth");
     records_ = vk::Buffer(alloc, VkDeviceSize(recordCapacity_) * sizeof(gpu::RasterTriangle), storage, false,
                           "raster-triangles");
     entries_ = vk::Buffer(alloc, VkDeviceSize(entryCapacity_) * 8, storage, false, "raster-tile-entries");
@@ -128,7 +127,7 @@ void ComputeRaster::setViews(const std::vector<RasterViews>& views, uint32_t slo
     if (rows.size() > layers_) throw std::invalid_argument("compute raster: more layers than it was made for");
     // Grown when a technique asks for more ID layers (a settings change: the renderer has waited for
     // the frames in flight); one unused element while none is drawn.
-    const VkDeviceSize idBytes = std::max<VkDeviceSize>(layerTexels() * idLayers_ * 8, 8);
+    const VkDeviceSize idBytes = depthIdBytes(layerTexels(), idLayers_);
     if (!depthIds_ || depthIds_.size() < idBytes)
         depthIds_ = vk::Buffer(alloc_, idBytes,
                                VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, false,

@@ -26,6 +26,7 @@
 // through a layer-sized triangle was the cost that did). See shaders/raster/; Laine & Karras (HPG 2011)
 // for the binning and the tiled fine stage, Nanite for the small-triangle path.
 #pragma once
+#include <algorithm>
 #include <vector>
 
 #include "core/frame_graph.h"
@@ -52,6 +53,13 @@ struct RasterBias {
 
 class ComputeRaster {
 public:
+    // Its buffers bound whole, shared with the device budget: depth (a float per texel of every layer)
+    // and, for the layers with visibility IDs, depth << 32 | ID.
+    static uint64_t depthBytes(uint64_t layerTexels, uint32_t layers) { return layerTexels * std::max(layers, 1u) * sizeof(float); }
+    static uint64_t depthIdBytes(uint64_t layerTexels, uint32_t idLayers) {
+        return std::max<uint64_t>(layerTexels * idLayers * sizeof(uint64_t), sizeof(uint64_t));
+    }
+
     // What it draws: light layers (y up, fronts clockwise, an array of ID layers), or the camera's
     // view (a y-flipped projection, fronts counter-clockwise: SceneGpu::sceneFrontFace; a 2D ID image).
     enum class Views { Light, Camera };

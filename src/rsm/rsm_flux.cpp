@@ -23,10 +23,9 @@ RsmFluxSampler::RsmFluxSampler(vk::Allocator& alloc, uint32_t resolution, uint32
 
 void RsmFluxSampler::addTo(FrameGraph& graph, uint32_t layers) {
     layers = std::max(layers, 1u);
-    const VkDeviceSize n = curve_;
     if (layers != layers_) {
         layers_ = layers;
-        cdf_ = vk::Buffer(alloc_, 4 * layers * (n * n + n), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false, "rsm-flux-cdf");
+        cdf_ = vk::Buffer(alloc_, cdfBytes(resolution_, layers), VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false, "rsm-flux-cdf");
         draws_ = vk::Buffer(alloc_, 16 * layers * VkDeviceSize(RSM_FLUX_BLOCK),
                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, false, "rsm-flux-draws");
     }

@@ -4,6 +4,9 @@
 // summed) and rsm.flux-draw (RSM_FLUX_ENTRIES stratified draws per layer), published as
 // "rsm.flux-draws" (layout in shared/types.h).
 #pragma once
+#include <algorithm>
+#include <bit>
+
 #include "core/frame_graph.h"
 #include "shared/types.h"
 
@@ -11,6 +14,13 @@ namespace penumbra {
 
 class RsmFluxSampler {
 public:
+    // The flux CDF (one buffer, bound whole): per layer, a float per texel of the map rounded up to a
+    // power of two and one per row. Shared with the device budget.
+    static uint64_t cdfBytes(uint32_t resolution, uint32_t layers) {
+        const uint64_t n = std::bit_ceil(resolution);
+        return sizeof(float) * std::max(layers, 1u) * (n * n + n);
+    }
+
     RsmFluxSampler(vk::Allocator& alloc, uint32_t resolution, uint32_t seed);
     // Reads "rsm.vpls"; publishes "rsm.flux-draws". A new layer count re-sizes the buffers.
     void addTo(FrameGraph& graph, uint32_t layers);

@@ -96,7 +96,7 @@ RsmGather::RsmGather(vk::Allocator& alloc, vk::CommandContext& cmd, uint32_t wid
     irradiance_ = vk::Image(alloc, {kIrradianceFormat, width, height, 1, use, "rsm-irradiance"});
     if (settings.mode == RsmMode::Interpolated) {
         low_ = vk::Image(alloc, {kIrradianceFormat, lowWidth_, lowHeight_, 1, use, "rsm-irradiance-low"});
-        pixelList_ = vk::Buffer(alloc, 16 + 8 * VkDeviceSize(width) * height,
+        pixelList_ = vk::Buffer(alloc, pixelListBytes(width, height),
                                 VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT |
                                     VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                                 false, "rsm-fallback-pixels");

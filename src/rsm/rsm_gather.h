@@ -14,6 +14,11 @@ std::vector<glm::vec4> rsmSamplePattern(const RsmSettings& settings);
 
 class RsmGather {
 public:
+    // The interpolated mode's list of pixels to gather exactly: a uvec4 header, then a uvec2 per pixel.
+    // Shared with the device budget.
+    static uint64_t pixelListBytes(uint32_t width, uint32_t height) {
+        return sizeof(glm::uvec4) + sizeof(glm::uvec2) * uint64_t(width) * height;
+    }
     RsmGather(vk::Allocator& alloc, vk::CommandContext& cmd, uint32_t width, uint32_t height,
               const RsmSettings& settings);
     // Reads "frame", the G-buffer, the RSM ("rsm.*", "rsm.flux-draws" where published); publishes
