@@ -260,12 +260,12 @@ double listTransmittance(const gpu::GpuDsmLight& dsm, const glm::dvec3& p, const
                          const glm::uvec4* nodes) {
     const glm::dvec3 viewer(dsm.viewer);
     const bool spot = dsm.viewer.w > 0.5f;
-    const double texel = dsm.params.x * (dsm.params.y > 0.5f ? glm::distance(p, viewer) : 1.0);
-    const glm::dvec3 q = p + (spot ? glm::normalize(viewer - p) : viewer) * (dsm.kernel.z * texel);
+    const double texel = dsm.texelSize * (dsm.projection != DSM_PROJECTION_ORTHO ? glm::distance(p, viewer) : 1.0);
+    const glm::dvec3 q = p + (spot ? glm::normalize(viewer - p) : viewer) * (dsm.normalOffset * texel);
     const glm::dvec4 clip = glm::dmat4(dsm.viewProj) * glm::dvec4(q, 1.0);
     if (clip.w <= 0.0) return 1.0;
-    const int res = int(dsm.params.w);
-    const double width = dsm.kernel.x, d = (spot ? glm::distance(q, viewer) : -glm::dot(q, viewer)) - dsm.kernel.y * texel;
+    const int res = int(dsm.resolution);
+    const double width = dsm.filterWidth, d = (spot ? glm::distance(q, viewer) : -glm::dot(q, viewer)) - dsm.depthBias * texel;
     const glm::dvec2 s = (glm::dvec2(clip) / clip.w * 0.5 + 0.5) * double(res);
     const glm::ivec2 lo(glm::floor(s - 0.5 * width - 0.5)), hi = glm::ivec2(glm::floor(s + 0.5 * width - 0.5)) + 1;
     double sum = 0.0;
@@ -273,7 +273,7 @@ double listTransmittance(const gpu::GpuDsmLight& dsm, const glm::dvec3& p, const
         for (int x = lo.x; x <= hi.x; ++x) {
             double t = 1.0;
             if (x >= 0 && y >= 0 && x < res && y < res) {
-                const uint32_t texelIndex = uint32_t(dsm.params.z) * res * res + y * res + x;
+                const uint32_t texelIndex = uint32_t(dsm.layer) * res * res + y * res + x;
                 const uint32_t first = heads[texelIndex * DSM_HEAD_UINTS], length = heads[texelIndex * DSM_HEAD_UINTS + 1];
                 for (uint32_t k = 0; first != DSM_NONE && k < length && glm::uintBitsToFloat(nodes[first + k].x) <= d; ++k)
                     t = glm::uintBitsToFloat(nodes[first + k].y);

@@ -55,7 +55,7 @@ inline Frame readFrame(TestRenderer& r) {
         if (!world[i]) continue;
         f.position[i] = *world[i];
         dvec3 nn = glm::normalize(dvec3(half(normal, i * 4), half(normal, i * 4 + 1), half(normal, i * 4 + 2)));
-        if (glm::dot(nn, dvec3(fu.cameraPos) - f.position[i]) < 0.0) nn = -nn;
+        if (glm::dot(nn, dvec3(fu.eye) - f.position[i]) < 0.0) nn = -nn;
         f.normal[i] = nn;
     }
     RsmPass& rsm = *r.rsm();

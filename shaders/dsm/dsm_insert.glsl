@@ -51,8 +51,8 @@ bool hiddenInLayer(uint index, vec3 q, float reach) {
 bool hiddenByOpaque(vec3 world) {
     if (draw.ids.z == DSM_NONE) return false;
     GpuLight light = lights[draw.ids.z];
-    if (light.radiance.w == NO_SHADOW) return false;
-    GpuShadowLight s = shadowLights[uint(light.radiance.w)];
+    if (light.shadowIndex == NO_SHADOW) return false;
+    GpuShadowLight s = shadowLights[uint(light.shadowIndex)];
     if (s.info.z != SHADOW_KIND_SINGLE && s.info.z != SHADOW_KIND_CASCADES) return false;
     float dsmTexel = draw.footprint.x * (draw.footprint.y > 0.5 ? distance(world, draw.viewer.xyz) : 1.0);
     vec3 towardsLight = draw.viewer.w > 0.5 ? normalize(draw.viewer.xyz - world) : draw.viewer.xyz;

@@ -129,34 +129,34 @@ float domTransmittance(uint texel, float d, float thickness) {
 }
 
 // Filtered transmittance at p for light `lightIndex` (1 where it has no DSM). The receiver moves
-// `kernel.z` texels along its normal n (hair, whose n is a tangent: towards the light) and its depth
-// `kernel.y` texels towards the light, so that it does not shadow itself through its own nodes.
+// `normalOffset` texels along its normal n (hair, whose n is a tangent: towards the light) and its depth
+// `depthBias` texels towards the light, so that it does not shadow itself through its own nodes.
 float deepShadowTransmittance(uint lightIndex, vec3 p, vec3 n, bool hair) {
     GpuDsmLight dsm = dsmLights[lightIndex];
-    if (dsm.params.z < 0.0) return 1.0;
+    if (dsm.layer < 0) return 1.0;
     // A point light: the cube face in p's direction (faces overlap by a margin, so the filter's taps
     // stay inside it).
-    if (dsm.params.y > 1.5) dsm = dsmLights[uint(dsm.kernel.w) + cubeFace(p - dsm.viewer.xyz)];
-    float texel = dsm.params.x * (dsm.params.y > 0.5 ? distance(p, dsm.viewer.xyz) : 1.0);
+    if (dsm.projection == DSM_PROJECTION_CUBE) dsm = dsmLights[dsm.firstFace + cubeFace(p - dsm.viewer.xyz)];
+    float texel = dsm.texelSize * (dsm.projection != DSM_PROJECTION_ORTHO ? distance(p, dsm.viewer.xyz) : 1.0);
     vec3 towardsLight = dsm.viewer.w > 0.5 ? normalize(dsm.viewer.xyz - p) : dsm.viewer.xyz;
-    vec3 q = p + (hair ? towardsLight : n) * (dsm.kernel.z * texel);
+    vec3 q = p + (hair ? towardsLight : n) * (dsm.normalOffset * texel);
     vec4 clip = dsm.viewProj * vec4(q, 1.0);
     if (clip.w <= 0.0) return 1.0;
-    const int res = int(dsm.params.w);
-    const float width = dsm.kernel.x;
+    const int res = int(dsm.resolution);
+    const float width = dsm.filterWidth;
     vec2 s = (clip.xy / clip.w * 0.5 + 0.5) * float(res);  // texel i covers [i, i + 1)
-    float d = dsmDepth(dsm.viewer, q) - dsm.kernel.y * texel;
+    float d = dsmDepth(dsm.viewer, q) - dsm.depthBias * texel;
     ivec2 lo = ivec2(floor(s - 0.5 * width - 0.5)), hi = ivec2(floor(s + 0.5 * width - 0.5)) + 1;
-    uint base = uint(dsm.params.z) * uint(res * res);
+    uint base = uint(dsm.layer) * uint(res * res);
     float sum = 0.0;
-    if (dsm.opacity.x > 0.5) {  // deep opacity map: the same taps, each read in place
+    if (dsm.opacityMaps != 0u) {  // deep opacity map: the same taps, each read in place
         for (int y = max(lo.y, 0); y <= min(hi.y, res - 1); ++y)
             for (int x = max(lo.x, 0); x <= min(hi.x, res - 1); ++x)
                 sum += dsmTapWeight(s.y, width, y) * dsmTapWeight(s.x, width, x) *
-                       (domTransmittance(base + uint(y * res + x), d, dsm.opacity.y) - 1.0);
+                       (domTransmittance(base + uint(y * res + x), d, dsm.layerThickness) - 1.0);
         return clamp(1.0 + sum, 0.0, 1.0);  // taps outside the map cast nothing (1 - 1 = 0 there)
     }
-    if (dsm.opacity.w > 0.5) return min(dsmSearchKernel(base, res, lo, hi, s, width, d), 1.0);
+    if (dsm.binarySearch != 0u) return min(dsmSearchKernel(base, res, lo, hi, s, width, d), 1.0);
     uint rowHint = DSM_NONE;  // the upper link of the previous row's first node
     for (int y = lo.y; y <= hi.y; ++y) {
         float wy = dsmTapWeight(s.y, width, y);
@@ -175,8 +175,8 @@ float deepShadowTransmittance(uint lightIndex, vec3 p, vec3 n, bool hair) {
 
 // Transmittance AOV: the first light with a DSM, whether or not the receiver faces it.
 float firstDeepShadowTransmittance(vec3 p, vec3 n, bool hair) {
-    for (uint i = 0; i < frame.size.z; ++i)
-        if (dsmLights[i].params.z >= 0.0) return deepShadowTransmittance(i, p, n, hair);
+    for (uint i = 0; i < frame.lightCount; ++i)
+        if (dsmLights[i].layer >= 0) return deepShadowTransmittance(i, p, n, hair);
     return 1.0;
 }
 
@@ -186,11 +186,11 @@ float firstDeepShadowTransmittance(vec3 p, vec3 n, bool hair) {
 float dsmListLengthAov(ivec2 pixel, uvec2 size, uint lightCount) {
     for (uint i = 0; i < lightCount; ++i) {
         GpuDsmLight dsm = dsmLights[i];
-        if (dsm.params.z < 0.0) continue;
-        uint res = uint(dsm.params.w);
+        if (dsm.layer < 0) continue;
+        uint res = dsm.resolution;
         uvec2 texel = min(uvec2(pixel) * res / size, uvec2(res - 1));
-        uint index = uint(dsm.params.z) * res * res + texel.y * res + texel.x;
-        if (dsm.opacity.x > 0.5) {  // a deep opacity map: its layers holding opacity
+        uint index = uint(dsm.layer) * res * res + texel.y * res + texel.x;
+        if (dsm.opacityMaps != 0u) {  // a deep opacity map: its layers holding opacity
             vec4 layers = uintBitsToFloat(dsmNodes[index]);
             return float(dsmHeads[index] != DSM_NONE) * dot(vec4(greaterThan(layers, vec4(0.0))), vec4(1.0));
         }

@@ -4,7 +4,7 @@
 // shadow/visibility.glsl (and its bindings) and dsm/dsm_lookup.glsl.
 float layerShadow(uint i, GpuLight light, vec3 p, vec3 n, vec3 l, bool hair, float angle) {
     float v = 1.0;
-    if (light.radiance.w != NO_SHADOW)
-        v = lightVisibility(shadowLights[uint(light.radiance.w)], light, p, hair ? l : n, angle, true).x;
+    if (light.shadowIndex != NO_SHADOW)
+        v = lightVisibility(shadowLights[uint(light.shadowIndex)], light, p, hair ? l : n, angle, true).x;
     return v * deepShadowTransmittance(i, p, n, hair);
 }

@@ -21,7 +21,7 @@ layout(push_constant) uniform Push { OitPush pc; };
 
 void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-    uint aov = frame.size.w;
+    uint aov = frame.aov;
     if (any(greaterThanEqual(pixel, ivec2(pc.sizes.xy))) ||
         (aov != AOV_FINAL && aov != AOV_DIRECT && aov != AOV_INDIRECT))
         return;

@@ -41,9 +41,9 @@ void main() {
     GpuHairPoint p = points[point];
     // The filter kernel's rotation: a golden-ratio sequence along each strand's points.
     float angle = 6.28318531 * fract(float(point) * 0.618034);
-    uint lightCount = min(frame.size.z, uint(hairShadow.length()) / count);
+    uint lightCount = min(frame.lightCount, uint(hairShadow.length()) / count);
     for (uint i = 0; i < lightCount; ++i) {
-        if (dsmLights[i].params.z < 0.0) continue;
+        if (dsmLights[i].layer < 0) continue;
         GpuLight light = lights[i];
         vec3 l;
         incidentIrradiance(light, p.position.xyz, l);

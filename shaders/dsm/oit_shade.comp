@@ -21,7 +21,7 @@ layout(set = 0, binding = 1, std430) readonly buffer Lights { GpuLight lights[];
 layout(set = 0, binding = 2, std430) readonly buffer Layers { uvec4 header; uvec2 entries[]; } layers;
 layout(set = 0, binding = 3, std430) buffer Nodes { uvec4 nodes[]; };
 layout(set = 0, binding = 4, std430) readonly buffer Normals { uint normals[]; };
-layout(set = 0, binding = 5) uniform sampler2D indirectIrradiance;  // GI (frame.options.x != 0)
+layout(set = 0, binding = 5) uniform sampler2D indirectIrradiance;  // GI (frame.giValid != 0)
 layout(set = 0, binding = 6) uniform Params { GpuShadowParams params; };
 layout(set = 0, binding = 7, std430) readonly buffer ShadowLayers { GpuShadowLayer shadowLayers[]; };
 // 8-11: the deep shadow maps (dsm/dsm_lookup.glsl)
@@ -42,7 +42,7 @@ layout(set = 0, binding = 16, std430) readonly buffer Points { GpuHairPoint poin
 
 // Whether oit_hair_shadow.comp gave the hair points light i's shadow (it has a DSM and a slot).
 bool hasStrandShadow(uint i) {
-    return dsmLights[i].params.z >= 0.0 && i < uint(hairShadow.length()) / uint(points.length());
+    return dsmLights[i].layer >= 0 && i < uint(hairShadow.length()) / uint(points.length());
 }
 
 // The shadow of light i (with a DSM) at hair fragment p of `segment` (its first point's index): the
@@ -58,10 +58,10 @@ float strandShadow(uint i, vec3 p, uint segment) {
 // fragment's (OIT_NOT_HAIR: a mesh's).
 vec3 directRadiance(vec3 p, vec3 n, uint segment, vec3 albedo, float angle) {
     bool hair = segment != OIT_NOT_HAIR;
-    vec3 toEye = normalize(frame.cameraPos.xyz - p);
+    vec3 toEye = normalize(frame.eye - p);
     if (!hair && dot(n, toEye) < 0.0) n = -n;  // two-sided: shade the side the camera sees
     vec3 sum = vec3(0.0);
-    for (uint i = 0; i < frame.size.z; ++i) {
+    for (uint i = 0; i < frame.lightCount; ++i) {
         GpuLight light = lights[i];
         vec3 l;
         vec3 e = incidentIrradiance(light, p, l);
@@ -75,7 +75,7 @@ vec3 directRadiance(vec3 p, vec3 n, uint segment, vec3 albedo, float angle) {
 
 void main() {
     uint index = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * 64u + gl_LocalInvocationIndex;
-    uint aov = frame.size.w;
+    uint aov = frame.aov;
     if (index >= layers.header.x || (aov != AOV_FINAL && aov != AOV_DIRECT && aov != AOV_INDIRECT)) return;
     uvec2 entry = layers.entries[index];
     ivec2 pixel = ivec2(entry.y & 0xFFFFu, entry.y >> 16);
@@ -86,6 +86,6 @@ void main() {
     vec3 p = pixelWorldPosition(frame, pixel, uintBitsToFloat(data.x));
     vec3 l = vec3(0.0);
     if (aov != AOV_INDIRECT) l += directRadiance(p, n, data.z, albedo, kernelAngle(pixel));
-    if (aov != AOV_DIRECT && frame.options.x != 0u) l += albedo / PI * texelFetch(indirectIrradiance, pixel, 0).rgb;
+    if (aov != AOV_DIRECT && frame.giValid != 0u) l += albedo / PI * texelFetch(indirectIrradiance, pixel, 0).rgb;
     nodes[entry.x] = uvec4(floatBitsToUint(l.r), floatBitsToUint(l.g), floatBitsToUint(l.b), data.w);
 }

@@ -70,19 +70,19 @@ vec3 lpvIrradiance(vec3 x, vec3 n, bool hair) {
 // peak blocking.
 vec3 slice(ivec2 pixel) {
     uint axis = pc.sliceAxis;
-    vec2 uv = (vec2(pixel) + 0.5) / vec2(frame.size.xy);
+    vec2 uv = (vec2(pixel) + 0.5) / vec2(frame.width, frame.height);
     ivec2 p = ivec2(uv * float(pc.resolution));
     ivec3 c = axis == 0u ? ivec3(pc.sliceIndex, p.x, p.y) : axis == 1u ? ivec3(p.x, pc.sliceIndex, p.y)
                                                                     : ivec3(p.x, p.y, pc.sliceIndex);
-    if (frame.size.w == AOV_GV_SLICE) return vec3(geometry[geometryIndex(0u, c)].x * SH_C0 * LOBE_PEAK / (LOBE_C0 * SH_C0));
+    if (frame.aov == AOV_GV_SLICE) return vec3(geometry[geometryIndex(0u, c)].x * SH_C0 * LOBE_PEAK / (LOBE_C0 * SH_C0));
     return vec3(accum[lightIndex(0u, 0u, c)].x, accum[lightIndex(0u, 1u, c)].x, accum[lightIndex(0u, 2u, c)].x) * SH_C0;
 }
 
 void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(pixel, ivec2(frame.size.xy)))) return;
+    if (any(greaterThanEqual(pixel, ivec2(frame.width, frame.height)))) return;
     vec3 e = vec3(0.0);
-    if (frame.size.w == AOV_LPV_SLICE || frame.size.w == AOV_GV_SLICE) {
+    if (frame.aov == AOV_LPV_SLICE || frame.aov == AOV_GV_SLICE) {
         e = slice(pixel);
     } else {
         float depth = texelFetch(gDepth, pixel, 0).r;
@@ -91,7 +91,7 @@ void main() {
             vec4 g = texelFetch(gNormal, pixel, 0);
             vec3 n = normalize(g.xyz);
             bool hair = g.w > 1.5;  // SHADING_HAIR (--translucency off): n is the strand's tangent
-            if (!hair && dot(n, frame.cameraPos.xyz - x) < 0.0) n = -n;
+            if (!hair && dot(n, frame.eye - x) < 0.0) n = -n;
             e = lpvIrradiance(x, n, hair);
         }
     }

@@ -25,11 +25,11 @@ layout(push_constant) uniform Push { LpvPush pc; };
 void main() {
     int step = int(pc.cameraGeometryStep);
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy) * step + step / 2;
-    if (any(greaterThanEqual(pixel, ivec2(frame.size.xy)))) return;
+    if (any(greaterThanEqual(pixel, ivec2(frame.width, frame.height)))) return;
     float depth = texelFetch(gDepth, pixel, 0).r;
     if (depth >= 1.0) return;
     vec3 x = pixelWorldPosition(frame, pixel, depth);
-    vec3 toEye = frame.cameraPos.xyz - x;
+    vec3 toEye = frame.eye - x;
     float dist = length(toEye);
     vec4 g = texelFetch(gNormal, pixel, 0);
     // Hair (SHADING_HAIR, --translucency off) is no surface: a strand blocks in proportion to its
@@ -37,7 +37,7 @@ void main() {
     if (g.w > 1.5) return;
     vec3 n = normalize(g.xyz);
     if (dot(n, toEye) < 0.0) n = -n;
-    float side = dist * frame.lens.x * float(step);
+    float side = dist * frame.pixelSpread * float(step);
     float area = side * side / max(dot(n, toEye / dist), 0.2);
     vec4 lobe = cosineLobe(n) / LOBE_PEAK;
     for (uint k = 0; k < pc.cascadeCount; ++k) {

@@ -24,8 +24,8 @@ layout(push_constant) uniform Push { GiHistoryPush pc; };
 // Bilinear in float weights (a sampler's filter may round them to a few bits: a point reprojected onto
 // a texel's centre within float error must read that texel).
 vec4 historyAt(vec2 uv) {
-    const ivec2 last = ivec2(frame.size.xy) - 1;
-    const vec2 f = uv * vec2(frame.size.xy) - 0.5;
+    const ivec2 last = ivec2(frame.width, frame.height) - 1;
+    const vec2 f = uv * vec2(frame.width, frame.height) - 0.5;
     const ivec2 t = ivec2(floor(f));
     const vec2 w = f - vec2(t);
     const vec4 a = texelFetch(history, clamp(t, ivec2(0), last), 0);
@@ -37,7 +37,7 @@ vec4 historyAt(vec2 uv) {
 
 void main() {
     const ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(pixel, ivec2(frame.size.xy)))) return;
+    if (any(greaterThanEqual(pixel, ivec2(frame.width, frame.height)))) return;
     const vec4 e = texelFetch(current, pixel, 0);
     const float depth = texelFetch(gDepth, pixel, 0).r;
     if (depth >= 1.0) {
@@ -51,8 +51,8 @@ void main() {
     const vec4 clip = previousClip(pixel, depth, p);
     if (pc.historyValid != 0u && clip.w > 0.0) {
         const vec2 uv = clip.xy / clip.w * 0.5 + 0.5;
-        const ivec2 then = ivec2(floor(uv * vec2(frame.size.xy)));
-        if (all(greaterThanEqual(then, ivec2(0))) && all(lessThan(then, ivec2(frame.size.xy)))) {
+        const ivec2 then = ivec2(floor(uv * vec2(frame.width, frame.height)));
+        if (all(greaterThanEqual(then, ivec2(0))) && all(lessThan(then, ivec2(frame.width, frame.height)))) {
             const float stored = texelFetch(historyDepth, then, 0).r;
             if (abs(stored - clip.w) <= 0.02 * clip.w) {
                 const vec4 h = historyAt(uv);

@@ -17,9 +17,9 @@ layout(set = 0, binding = LIGHTING_GBUFFER_NORMAL) uniform sampler2D gNormal;
 layout(set = 0, binding = LIGHTING_GBUFFER_DEPTH) uniform sampler2D gDepth;
 layout(set = 0, binding = LIGHTING_SHADOW_MASK) uniform sampler2DArray shadowMask;  // shadow.filter: visibility per shadowed light
 layout(set = 0, binding = LIGHTING_HDR, rgba32f) uniform writeonly image2D outImage;
-layout(set = 0, binding = LIGHTING_INDIRECT) uniform sampler2D indirectIrradiance;  // GI (frame.options.x != 0)
-layout(set = 0, binding = LIGHTING_PROBE, std430) writeonly buffer Probe { PixelProbe probe; };  // pixel options.zw
-// Velocity: which instance a pixel shows (visibility IDs, frame.options.y) and where it was.
+layout(set = 0, binding = LIGHTING_INDIRECT) uniform sampler2D indirectIrradiance;  // GI (frame.giValid != 0)
+layout(set = 0, binding = LIGHTING_PROBE, std430) writeonly buffer Probe { PixelProbe probe; };  // pixel FrameUniforms.probeX, probeY
+// Velocity: which instance a pixel shows (visibility IDs, frame.visibilityIds) and where it was.
 #define MOTION_FIRST_BINDING LIGHTING_MOTION_FIRST
 #include "render/motion.glsl"
 
@@ -39,7 +39,7 @@ Shading shade(ivec2 pixel) {
     Shading s;
     float depth = texelFetch(gDepth, pixel, 0).r;
     s.surface = depth < 1.0;
-    s.eyeDistance = frame.cameraPos.w;  // the background reads the far plane
+    s.eyeDistance = frame.farPlane;  // the background reads the far plane
     s.albedo = s.n = s.p = s.direct = s.irradiance = s.indirect = vec3(0.0);
     s.shadingModel = 0.0;
     s.firstShadow = 1.0;
@@ -51,29 +51,29 @@ Shading shade(ivec2 pixel) {
     s.n = normalize(gn.xyz);  // hair: its tangent
     s.shadingModel = gn.w;
     s.hair = gn.w > 1.5;      // SHADING_HAIR: Kajiya-Kay instead of Lambert
-    vec3 toEye = frame.cameraPos.xyz - s.p;
+    vec3 toEye = frame.eye - s.p;
     s.eyeDistance = length(toEye);
     if (dot(s.n, toEye) < 0.0) s.n = -s.n;  // two-sided: shade the side the camera sees
 
     vec3 radiance = vec3(0.0), hairRadiance = vec3(0.0);
     bool seenShadow = false;
-    for (uint i = 0; i < frame.size.z; ++i) {
+    for (uint i = 0; i < frame.lightCount; ++i) {
         GpuLight light = lights[i];
         vec3 l;
         vec3 e = incidentIrradiance(light, s.p, l);
         float ndotl = s.hair ? 1.0 : max(dot(s.n, l), 0.0);
         if (ndotl <= 0.0 || all(equal(e, vec3(0.0)))) {
-            if (!seenShadow && light.radiance.w != NO_SHADOW) { s.firstShadow = 0.0; seenShadow = true; }
+            if (!seenShadow && light.shadowIndex != NO_SHADOW) { s.firstShadow = 0.0; seenShadow = true; }
             continue;
         }
         float v = shadowVisibility(light, pixel) * deepShadowTransmittance(i, s.p, s.n, s.hair);
-        if (!seenShadow && light.radiance.w != NO_SHADOW) { s.firstShadow = v; seenShadow = true; }
+        if (!seenShadow && light.shadowIndex != NO_SHADOW) { s.firstShadow = v; seenShadow = true; }
         if (s.hair) hairRadiance += e * v * kajiyaKay(s.albedo, s.n, l, normalize(toEye));
         else radiance += e * ndotl * v;
     }
     s.direct = radiance * s.albedo / PI + hairRadiance;
     // Indirect light of a diffuse receiver: albedo / pi times the gathered irradiance.
-    if (frame.options.x != 0u) s.irradiance = texelFetch(indirectIrradiance, pixel, 0).rgb;
+    if (frame.giValid != 0u) s.irradiance = texelFetch(indirectIrradiance, pixel, 0).rgb;
     s.indirect = s.albedo / PI * s.irradiance;
     return s;
 }
@@ -82,14 +82,14 @@ Shading shade(ivec2 pixel) {
 // the previous frame, in pixels (x right, y down): the pixel's centre minus where that point was then.
 vec2 pixelVelocity(ivec2 pixel, vec3 p) {
     const vec4 clip = previousClip(pixel, texelFetch(gDepth, pixel, 0).r, p);
-    return vec2(pixel) + 0.5 - (clip.xy / clip.w * 0.5 + 0.5) * vec2(frame.size.xy);
+    return vec2(pixel) + 0.5 - (clip.xy / clip.w * 0.5 + 0.5) * vec2(frame.width, frame.height);
 }
 
 vec4 aovValue(Shading s, uint aov, ivec2 pixel) {
     if (aov == AOV_LPV_SLICE || aov == AOV_GV_SLICE)  // debug views drawn by lpv/gather.comp
         return vec4(texelFetch(indirectIrradiance, pixel, 0).rgb, 1.0);
     if (aov == AOV_DSM_LISTS)  // a light-space debug view: independent of the G-buffer
-        return vec4(vec3(dsmListLengthAov(pixel, frame.size.xy, frame.size.z)), 1.0);
+        return vec4(vec3(dsmListLengthAov(pixel, uvec2(frame.width, frame.height), frame.lightCount)), 1.0);
     if (!s.surface) return vec4(vec3(aov == AOV_DEPTH ? s.eyeDistance : 0.0), 0.0);
     if (aov == AOV_FINAL) return vec4(s.direct + s.indirect, 1.0);
     if (aov == AOV_DIRECT) return vec4(s.direct, 1.0);
@@ -119,8 +119,8 @@ void writeProbe(Shading s, ivec2 pixel) {
 
 void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(pixel, ivec2(frame.size.xy)))) return;
+    if (any(greaterThanEqual(pixel, ivec2(frame.width, frame.height)))) return;
     Shading s = shade(pixel);
-    imageStore(outImage, pixel, aovValue(s, frame.size.w, pixel));
-    if (all(equal(uvec2(pixel), frame.options.zw))) writeProbe(s, pixel);
+    imageStore(outImage, pixel, aovValue(s, frame.aov, pixel));
+    if (all(equal(uvec2(pixel), uvec2(frame.probeX, frame.probeY)))) writeProbe(s, pixel);
 }

@@ -6,5 +6,5 @@ vec3 unproject(mat4 invViewProj, vec2 uv, float depth) {
 
 // World position of a full-resolution camera pixel.
 vec3 pixelWorldPosition(FrameUniforms frame, ivec2 pixel, float depth) {
-    return unproject(frame.invViewProj, (vec2(pixel) + 0.5) / vec2(frame.size.xy), depth);
+    return unproject(frame.invViewProj, (vec2(pixel) + 0.5) / vec2(frame.width, frame.height), depth);
 }

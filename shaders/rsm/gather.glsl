@@ -102,7 +102,7 @@ bool hiddenFromCamera(vec4 c) {
     if (c.w <= 0.0) return true;
     const vec3 p = c.xyz / c.w;
     if (any(greaterThan(abs(p.xy), vec2(1.0)))) return true;
-    const ivec2 pixel = min(ivec2((p.xy * 0.5 + 0.5) * vec2(frame.size.xy)), ivec2(frame.size.xy) - 1);
+    const ivec2 pixel = min(ivec2((p.xy * 0.5 + 0.5) * vec2(frame.width, frame.height)), ivec2(frame.width, frame.height) - 1);
     return behindSurface(p.z, texelFetch(gDepth, pixel, 0).r, 1e-5);
 }
 
@@ -377,7 +377,7 @@ void main() {
     }
     ivec2 pixel = out_;
     if (pc.mode == RSM_GATHER_LOWRES)  // the cell's representative (centre) full-res pixel
-        pixel = min(out_ * int(pc.lowResFactor) + int(pc.lowResFactor) / 2, ivec2(frame.size.xy) - 1);
+        pixel = min(out_ * int(pc.lowResFactor) + int(pc.lowResFactor) / 2, ivec2(frame.width, frame.height) - 1);
     vec3 e = vec3(0.0);
     float depth = valid ? texelFetch(gDepth, pixel, 0).r : 1.0;
     if (depth < 1.0) {
@@ -385,7 +385,7 @@ void main() {
         vec4 g = texelFetch(gNormal, pixel, 0);
         vec3 n = normalize(g.xyz);
         bool hair = g.w > 1.5;  // SHADING_HAIR (--translucency off): n is the strand's tangent
-        if (!hair && dot(n, frame.cameraPos.xyz - x) < 0.0) n = -n;
+        if (!hair && dot(n, frame.eye - x) < 0.0) n = -n;
         e = gather(x, n, hair, lane, lanes);
     }
     if (lanes > 1u) {

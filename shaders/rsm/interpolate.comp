@@ -22,7 +22,7 @@ layout(push_constant) uniform Push { RsmPush pc; };
 
 void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(pixel, ivec2(frame.size.xy)))) return;
+    if (any(greaterThanEqual(pixel, ivec2(frame.width, frame.height)))) return;
     float depth = texelFetch(gDepth, pixel, 0).r;
     if (depth >= 1.0) {
         imageStore(outIrradiance, pixel, vec4(0.0));
@@ -32,7 +32,7 @@ void main() {
     vec3 n = normalize(texelFetch(gNormal, pixel, 0).xyz);
     // Tolerance: the world footprint of a low-resolution cell at this depth (pixel footprint is
     // 2 d tan(fovy/2) / height) times the distance threshold.
-    float footprint = length(x - frame.cameraPos.xyz) * frame.lens.x;
+    float footprint = length(x - frame.eye) * frame.pixelSpread;
     float tolerance = pc.distanceThreshold * footprint * float(pc.lowResFactor);
 
     // Joint bilateral filter over the 4 x 4 nearest low-resolution gathers: a Gaussian of one cell in
@@ -58,7 +58,7 @@ void main() {
         ivec2 o = ivec2(k & 3, k >> 2) - 1;
         ivec2 cell = base + o;
         if (any(lessThan(cell, ivec2(0))) || any(greaterThanEqual(cell, lowSize))) continue;
-        ivec2 rep = min(cell * f + f / 2, ivec2(frame.size.xy) - 1);
+        ivec2 rep = min(cell * f + f / 2, ivec2(frame.width, frame.height) - 1);
         float d = texelFetch(gDepth, rep, 0).r;
         if (d >= 1.0) continue;
         vec3 xi = pixelWorldPosition(frame, rep, d);

@@ -53,7 +53,7 @@ void main() {
     float area = t * t;
     if (layer.perspective != 0u) {  // the layer's own axis (spot cone, or a point light's cube face)
         const float z = clip.w;
-        area *= z * z * clamp(z / max(length(s.position - light.position.xyz), 1e-6), 0.0, 1.0);
+        area *= z * z * clamp(z / max(length(s.position - light.position), 1e-6), 0.0, 1.0);
     }
     // The side the light sees (two-sided surfaces), by the triangle's own plane; the shading normal
     // turned to that side.

@@ -2,7 +2,7 @@
 // shadow.filter: the visibility of every shadowed light at every pixel, with the light's filter
 // (hard, PCF, PCSS, VSM, EVSM, MSM), into the shadow mask that the lighting pass reads. A pass of
 // its own so that each filter's cost shows in the per-pass GPU timings.
-// Mask layer s (= GpuLight.radiance.w): r = visibility, g = layer code for the `cascade` AOV
+// Mask layer s (= GpuLight.shadowIndex): r = visibility, g = layer code for the `cascade` AOV
 // (cascade index + blend fraction towards the next one, cube face, hemisphere).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
@@ -30,19 +30,19 @@ layout(set = 0, binding = 9, rg16f) uniform writeonly image2DArray shadowMask;
 
 void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(pixel, ivec2(frame.size.xy)))) return;
+    if (any(greaterThanEqual(pixel, ivec2(frame.width, frame.height)))) return;
     float depth = texelFetch(gDepth, pixel, 0).r;
     if (depth >= 1.0) return;  // background: the lighting pass reads no shadow there
     vec3 p = pixelWorldPosition(frame, pixel, depth);
     vec4 gn = texelFetch(gNormal, pixel, 0);
     vec3 n = normalize(gn.xyz);
     bool hair = gn.w > 1.5;  // SHADING_HAIR: n is the strand's tangent (src/dsm), lit from every side
-    if (dot(n, frame.cameraPos.xyz - p) < 0.0) n = -n;  // two-sided, as the lighting pass shades
+    if (dot(n, frame.eye - p) < 0.0) n = -n;  // two-sided, as the lighting pass shades
     float angle = kernelAngle(pixel);
-    for (uint i = 0u; i < frame.size.z; ++i) {
+    for (uint i = 0u; i < frame.lightCount; ++i) {
         GpuLight light = lights[i];
-        if (light.radiance.w == NO_SHADOW) continue;
-        uint index = uint(light.radiance.w);
+        if (light.shadowIndex == NO_SHADOW) continue;
+        uint index = uint(light.shadowIndex);
         vec3 l;
         vec3 e = incidentIrradiance(light, p, l);
         // Where the light does not reach, the lighting pass reads no visibility: skip the filter.

@@ -13,9 +13,9 @@ struct ShadowCoord {
 // for the pixel, the face or hemisphere in q's direction for a point light (so that filter taps
 // cross faces and the paraboloid seam seamlessly).
 uint shadowLayerFor(GpuShadowLight s, GpuLight light, uint chosen, vec3 q) {
-    vec3 d = q - light.position.xyz;
+    vec3 d = q - light.position;
     if (s.info.z == SHADOW_KIND_CUBE) return s.info.x + cubeFace(d);
-    if (s.info.z == SHADOW_KIND_PARABOLOID) return s.info.x + (dot(d, light.direction.xyz) >= 0.0 ? 0u : 1u);
+    if (s.info.z == SHADOW_KIND_PARABOLOID) return s.info.x + (dot(d, light.direction) >= 0.0 ? 0u : 1u);
     return chosen;
 }
 

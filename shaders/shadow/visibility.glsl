@@ -6,13 +6,13 @@
 
 ShadowReceiver makeReceiver(GpuShadowLight s, GpuLight light, uint layer, vec3 p, vec3 n, float angle) {
     ShadowReceiver r;
-    r.local = uint(light.position.w) != LIGHT_DIRECTIONAL;
-    r.lightPos = light.position.xyz;
+    r.local = light.type != LIGHT_DIRECTIONAL;
+    r.lightPos = light.position;
     r.layer = shadowLayerFor(s, light, layer, p);
     r.texel = shadowTexelAt(r.layer, p, r.lightPos);
     r.p = p + n * (s.params.x * r.texel);
     r.n = n;
-    r.rayDir = r.local ? normalize(r.p - r.lightPos) : light.direction.xyz;
+    r.rayDir = r.local ? normalize(r.p - r.lightPos) : light.direction;
     vec3 helper = abs(r.rayDir.y) < 0.99 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
     r.tangent = normalize(cross(r.rayDir, helper));
     r.bitangent = cross(r.rayDir, r.tangent);

@@ -1,5 +1,5 @@
-// Struct layouts shared by C++ and GLSL (std430 / std140-safe: only vec4, mat4 and 4-component
-// groups). Included by C++ (namespace penumbra::gpu) and by GLSL (#include "shared/types.h").
+// Struct layouts shared by C++ and GLSL (std430 / std140-safe: mat4, vec4, a vec3 always followed
+// by a 4-byte scalar, and scalars in groups of four). Included by C++ (namespace penumbra::gpu) and by GLSL (#include "shared/types.h").
 #ifndef PENUMBRA_SHARED_TYPES_H
 #define PENUMBRA_SHARED_TYPES_H
 
@@ -8,18 +8,19 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 namespace penumbra::gpu {
+using vec3 = glm::vec3;
 using vec4 = glm::vec4;
 using uvec4 = glm::uvec4;
 using mat4 = glm::mat4;
 using uint = uint32_t;
 #endif
 
-// Light types (GpuLight.position.w).
+// Light types (GpuLight.type).
 #define LIGHT_DIRECTIONAL 0
 #define LIGHT_SPOT 1
 #define LIGHT_POINT 2
 
-// Output selections (FrameUniforms.size.w). Radiance AOVs are tone-mapped for PNG, data AOVs not.
+// Output selections (FrameUniforms.aov). Radiance AOVs are tone-mapped for PNG, data AOVs not.
 #define AOV_DIRECT 0
 #define AOV_ALBEDO 1
 #define AOV_NORMAL 2
@@ -50,7 +51,7 @@ using uint = uint32_t;
 // A material's texture handle: slot | layer << TEXTURE_LAYER_SHIFT (each slot is a 2D array of one size).
 #define TEXTURE_LAYER_SHIFT 5
 #define TEXTURE_SLOT_MASK 31u
-#define NO_SHADOW (-1.0)
+#define NO_SHADOW (-1)  // GpuLight.shadowIndex of an unshadowed light
 
 // Per-frame constants of the camera view.
 struct FrameUniforms {
@@ -60,17 +61,26 @@ struct FrameUniforms {
     mat4 reprojection;      // previousViewProj * inverse(viewProj), in double precision: this frame's clip
                             // position -> the previous frame's, for points that did not move (exact when
                             // the camera stood still, which a float round trip through the world is not)
-    vec4 cameraPos;  // xyz = eye, w = far plane
-    uvec4 size;      // x = width, y = height, z = light count, w = AOV
-    uvec4 options;   // x = indirect irradiance image valid (GI on), y = visibility IDs valid (the camera's
-                     // visibility path: velocity follows moving instances), zw = probed pixel (PROBE_OFF: none)
-    vec4 lens;       // x = world size of a pixel at unit distance (2 tan(fovy/2) / height), yzw unused
+    vec3 eye;
+    float farPlane;
+    uint width;
+    uint height;
+    uint lightCount;
+    uint aov;            // AOV_*
+    uint giValid;        // 1: the indirect irradiance image is valid (GI on)
+    uint visibilityIds;  // 1: visibility IDs valid (the camera's visibility path: velocity follows moving instances)
+    uint probeX;         // the probed pixel (PROBE_OFF: none)
+    uint probeY;
+    float pixelSpread;   // world size of a pixel at unit distance (2 tan(fovy/2) / height)
+    uint pad0;
+    uint pad1;
+    uint pad2;
 };
 
 #define PROBE_OFF 0xFFFFFFFFu
 
 // Every AOV at one pixel (the viewer's pixel probe), written by render/lighting.comp for the pixel
-// FrameUniforms.options.zw names, as the AOV images would hold them.
+// FrameUniforms.probeX, probeY name, as the AOV images would hold them.
 struct PixelProbe {
     vec4 finalRadiance;  // rgb = direct + indirect, w = 1 on a surface, 0 on the background
     vec4 direct;         // rgb = direct radiance
@@ -86,13 +96,22 @@ struct PixelProbe {
 // One light as the lighting pass sees it. Units as in scene.h: directional radiance.rgb is
 // irradiance (W/m^2) facing the light, spot/point radiance.rgb is intensity (W/sr).
 struct GpuLight {
-    vec4 position;   // xyz world position, w = type (LIGHT_*)
-    vec4 direction;  // xyz direction the light travels, w = range (0 = infinite)
-    vec4 radiance;   // rgb = color * intensity, w = shadow index: GpuShadowLight and shadow-mask layer (NO_SHADOW = unshadowed)
+    vec3 position;    // world
+    uint type;        // LIGHT_*
+    vec3 direction;   // the direction the light travels
+    float range;      // 0 = infinite
+    vec3 radiance;    // color * intensity
+    int shadowIndex;  // GpuShadowLight and shadow-mask layer (NO_SHADOW = unshadowed)
+    float cosInner;   // spot cone
+    float cosOuter;
     // The light's first shadow layer, for passes that want one view of the light (the full layer
     // list with cascades and cube faces is the shadow-layer table, src/shadow):
-    vec4 spot;       // x = cos(inner), y = cos(outer), z = normal offset in texels, w = perspective (1) or ortho (0)
-    vec4 shadow;     // x = shadow texel world size (ortho) or per unit distance (perspective), yzw unused
+    float normalOffset;     // texels
+    uint perspective;       // 1: perspective, 0: orthographic
+    float shadowTexelSize;  // texel world size (ortho) or per unit distance (perspective)
+    uint pad0;
+    uint pad1;
+    uint pad2;
     mat4 shadowViewProj;
 };
 
@@ -305,7 +324,7 @@ struct LpvPush {
 #define SHADOW_PROJ_PARABOLOID 2
 #define SHADOW_NO_MOMENTS 0xFFFFFFFFu
 
-// One shadowed light; GpuLight.radiance.w is its index here and its layer in the shadow mask.
+// One shadowed light; GpuLight.shadowIndex is its index here and its layer in the shadow mask.
 struct GpuShadowLight {
     uvec4 info;    // x = first layer, y = layer count, z = SHADOW_KIND_*, w = SHADOW_FILTER_*
     vec4 params;   // x = normal offset (texels), y = PCSS penumbra scale (light diameter for spot and
@@ -407,16 +426,24 @@ struct HairDrawPush {
 struct GpuDsmLight {
     mat4 viewProj;  // world -> the DSM's clip space
     vec4 viewer;    // as HairDrawPush.viewer: node depths are measured from it
-    vec4 params;    // x = texel world size (ortho) or per unit distance (perspective), y = perspective (1),
-                    // or 2 for a point light's cube of six faces, z = DSM layer (< 0: the light has no DSM;
-                    // a cube: its first face's), w = resolution
-    vec4 kernel;    // x = PCF box width (texels), y = depth bias (texels), z = normal offset (texels),
-                    // w = a cube's first face entry (faces +x, -x, +y, -y, +z, -z follow the lights' entries)
-    vec4 opacity;   // x = 1: deep opacity maps (--shadow dom; heads hold each texel's first depth, the node
-                    // at the texel's index its DOM_LAYERS optical depths), 0: lists; y = layer thickness
-                    // (world units); z unused; w = 1: lists looked up by binary search (--dsm-lookup
-                    // search), 0: through the neighbour links (links)
+    float texelSize;     // texel world size (ortho) or per unit distance (perspective)
+    uint projection;     // DSM_PROJECTION_*
+    int layer;           // DSM layer (< 0: the light has no DSM; a cube: its first face's)
+    uint resolution;
+    float filterWidth;   // PCF box width (texels)
+    float depthBias;     // texels
+    float normalOffset;  // texels
+    uint firstFace;      // a cube's first face entry (faces +x, -x, +y, -y, +z, -z follow the lights' entries)
+    uint opacityMaps;    // 1: deep opacity maps (--shadow dom; heads hold each texel's first depth, the node
+                         // at the texel's index its DOM_LAYERS optical depths), 0: lists
+    float layerThickness;  // deep opacity map layer thickness (world units)
+    uint pad0;
+    uint binarySearch;   // 1: lists looked up by binary search (--dsm-lookup search), 0: through the
+                         // neighbour links (links)
 };
+#define DSM_PROJECTION_ORTHO 0
+#define DSM_PROJECTION_PERSPECTIVE 1
+#define DSM_PROJECTION_CUBE 2  // a point light's entry: its six faces' entries follow (firstFace)
 #define DOM_LAYERS 4  // opacity layers of a deep opacity map texel (one vec4)
 
 // Counters of one frame (cleared before the build; read back for the report).
@@ -527,6 +554,15 @@ static_assert(sizeof(LpvPush) == 128 && offsetof(LpvPush, vplCount) == 16 && off
               offsetof(LpvPush, sliceAxis) == 48 && offsetof(LpvPush, cascades) == 64);
 static_assert(sizeof(TonemapPush) == 16 && offsetof(TonemapPush, mode) == 8);
 static_assert(sizeof(GiHistoryPush) == 16 && offsetof(GiHistoryPush, historyValid) == 4);
+static_assert(offsetof(FrameUniforms, eye) == 256 && offsetof(FrameUniforms, farPlane) == 268 &&
+              offsetof(FrameUniforms, width) == 272 && offsetof(FrameUniforms, giValid) == 288 &&
+              offsetof(FrameUniforms, pixelSpread) == 304);
+static_assert(offsetof(GpuLight, type) == 12 && offsetof(GpuLight, direction) == 16 && offsetof(GpuLight, range) == 28 &&
+              offsetof(GpuLight, radiance) == 32 && offsetof(GpuLight, shadowIndex) == 44 &&
+              offsetof(GpuLight, cosInner) == 48 && offsetof(GpuLight, shadowTexelSize) == 64 &&
+              offsetof(GpuLight, shadowViewProj) == 80);
+static_assert(offsetof(GpuDsmLight, texelSize) == 80 && offsetof(GpuDsmLight, filterWidth) == 96 &&
+              offsetof(GpuDsmLight, opacityMaps) == 112 && offsetof(GpuDsmLight, binarySearch) == 124);
 static_assert(sizeof(GpuVpl) == 48 && sizeof(GpuHairPoint) == 32 && sizeof(GpuLight) == 144 &&
               sizeof(FrameUniforms) == 320 && sizeof(GpuInstance) == 208 && sizeof(DrawPush) == 16 &&
               sizeof(ShadowDrawPush) == 48 && sizeof(HairDrawPush) == 64 && sizeof(GpuShadowParams) == 304 &&

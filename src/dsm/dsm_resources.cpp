@@ -54,10 +54,16 @@ gpu::GpuDsmLight tableEntry(const DsmLayer& layer, int index, uint32_t resolutio
     gpu::GpuDsmLight g{};
     g.viewProj = layer.projection.viewProj;
     g.viewer = layer.view.viewer;
-    g.params = {layer.projection.texelSize, layer.projection.perspective ? 1.0f : 0.0f, float(index),
-                float(resolution)};
-    g.kernel = {s.filterWidth, s.depthBias, s.normalOffset, 0.0f};
-    g.opacity = {s.opacityMaps ? 1.0f : 0.0f, opacityLayer, 0.0f, s.lookup == DsmLookup::Search ? 1.0f : 0.0f};
+    g.texelSize = layer.projection.texelSize;
+    g.projection = layer.projection.perspective ? DSM_PROJECTION_PERSPECTIVE : DSM_PROJECTION_ORTHO;
+    g.layer = index;
+    g.resolution = resolution;
+    g.filterWidth = s.filterWidth;
+    g.depthBias = s.depthBias;
+    g.normalOffset = s.normalOffset;
+    g.opacityMaps = s.opacityMaps ? 1u : 0u;
+    g.layerThickness = opacityLayer;
+    g.binarySearch = s.lookup == DsmLookup::Search ? 1u : 0u;
     return g;
 }
 
@@ -97,7 +103,7 @@ DsmResources::DsmResources(vk::Allocator& alloc, const DsmSettings& settings, ui
 void DsmResources::writeTables(const DsmSettings& settings, uint32_t slot) {
     std::vector<glm::mat4> rows{glm::mat4(1.0f)};
     std::vector<gpu::GpuDsmLight> table(lightCount_);
-    for (gpu::GpuDsmLight& g : table) g.params = {0.0f, 0.0f, -1.0f, float(resolution)};  // no DSM
+    for (gpu::GpuDsmLight& g : table) g.layer = -1, g.resolution = resolution;  // no DSM
     for (size_t i = 0; i < layers.size(); ++i) {
         const gpu::GpuDsmLight entry = tableEntry(layers[i], int(i), resolution, settings, opacityLayer);
         if (!layers[i].cube) {
@@ -106,8 +112,8 @@ void DsmResources::writeTables(const DsmSettings& settings, uint32_t slot) {
             // A point light's entry names its first face's; the faces follow the lights' entries.
             if (layers[i].face == 0) {
                 gpu::GpuDsmLight cube = entry;
-                cube.params.y = 2.0f;
-                cube.kernel.w = float(table.size());
+                cube.projection = DSM_PROJECTION_CUBE;
+                cube.firstFace = uint32_t(table.size());
                 table.at(layers[i].light) = cube;
             }
             table.push_back(entry);

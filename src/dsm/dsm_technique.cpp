@@ -67,7 +67,7 @@ TranslucencyTechnique::TranslucencyTechnique(const TechniqueBuild& b) {
 }
 
 void TranslucencyTechnique::addPasses(const FrameContext& f) {
-    const RibbonView view = cameraRibbonView(f.camera.eye, f.uniforms.lens.x);
+    const RibbonView view = cameraRibbonView(f.camera.eye, f.uniforms.pixelSpread);
     if (hair_) hair_->addTo(f.graph, view);
     if (translucency_) translucency_->addBuildTo(f.graph, view, f.uniforms.viewProj);
 }

@@ -17,7 +17,7 @@ struct RibbonView {
     glm::vec4 footprint{0.0f};
 };
 
-// `pixelPerDistance`: world size of a pixel at unit distance (FrameUniforms.lens.x).
+// `pixelPerDistance`: world size of a pixel at unit distance (FrameUniforms.pixelSpread).
 RibbonView cameraRibbonView(const glm::vec3& eye, float pixelPerDistance);
 // A shadow-map or DSM view of a directional or spot light.
 RibbonView lightRibbonView(const Light& light, const LightProjection& projection);

@@ -13,10 +13,10 @@ public:
     LightingPass(vk::Allocator& alloc, uint32_t width, uint32_t height);
     // Reads by name: "frame", "lights", the G-buffer, "shadow.mask" (filtered visibility per shadowed
     // light), "gi.irradiance" (indirect irradiance per pixel, or a 1x1 placeholder when
-    // FrameUniforms.options.x = 0), and the deep shadow maps' lookup buffers "dsm.lights",
+    // FrameUniforms.giValid = 0), and the deep shadow maps' lookup buffers "dsm.lights",
     // "dsm.heads", "dsm.nodes", "dsm.side" (bindings 8-11), and for the velocity AOV "gbuffer.ids"
-    // (a 1x1 placeholder on the classic path, FrameUniforms.options.y = 0), "drawn-triangles" and
-    // "instances"; writes "probe" (the pixel probe, FrameUniforms.options.zw). Publishes "hdr".
+    // (a 1x1 placeholder on the classic path, FrameUniforms.visibilityIds = 0), "drawn-triangles" and
+    // "instances"; writes "probe" (the pixel probe, FrameUniforms.probeX, probeY). Publishes "hdr".
     void addTo(FrameGraph& graph);
 
     vk::Image hdr;  // RGBA32F radiance (or AOV values)

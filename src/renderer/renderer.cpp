@@ -15,10 +15,14 @@ namespace {
 // The light without its shadow fields (ShadowMapPass::fillGpuLight adds them).
 gpu::GpuLight toGpu(const Light& l) {
     gpu::GpuLight g{};
-    g.position = glm::vec4(l.position, float(static_cast<uint32_t>(l.type)));
-    g.direction = glm::vec4(glm::normalize(l.direction), l.range);
-    g.radiance = glm::vec4(l.color * l.intensity, float(NO_SHADOW));
-    g.spot = {std::cos(l.innerConeAngle), std::cos(l.outerConeAngle), 0.0f, 0.0f};
+    g.position = l.position;
+    g.type = static_cast<uint32_t>(l.type);
+    g.direction = glm::normalize(l.direction);
+    g.range = l.range;
+    g.radiance = l.color * l.intensity;
+    g.shadowIndex = NO_SHADOW;
+    g.cosInner = std::cos(l.innerConeAngle);
+    g.cosOuter = std::cos(l.outerConeAngle);
     g.shadowViewProj = glm::mat4(1.0f);
     return g;
 }
@@ -222,14 +226,21 @@ void Renderer::writeFrameData(const FrameInputs& in) {
     const std::optional<FrameInputs::Previous>& previous = in.previous ? in.previous : lastFrame_;
     f.previousViewProj = previous ? cameraViewProj(previous->camera, aspect, zfar_) : f.viewProj;
     f.reprojection = glm::mat4(glm::dmat4(f.previousViewProj) * glm::inverse(glm::dmat4(f.viewProj)));
-    f.cameraPos = glm::vec4(camera.eye, zfar_);
-    f.size = {settings_.width, settings_.height, uint32_t(in.lights.size()), uint32_t(settings_.aov)};
+    f.eye = camera.eye;
+    f.farPlane = zfar_;
+    f.width = settings_.width;
+    f.height = settings_.height;
+    f.lightCount = uint32_t(in.lights.size());
+    f.aov = uint32_t(settings_.aov);
     const glm::uvec2 probe = in.probePixel.value_or(glm::uvec2(PROBE_OFF));
     const bool ids = settings_.cameraPath == CameraPath::Visibility;
     bool indirect = false;  // a technique contributes indirect irradiance
     for (const Built& b : techniques_) indirect |= b.technique->contributesIrradiance();
-    f.options = {indirect ? 1u : 0u, ids ? 1u : 0u, probe.x, probe.y};
-    f.lens = {2.0f * std::tan(0.5f * camera.fovy) / float(settings_.height), 0.0f, 0.0f, 0.0f};
+    f.giValid = indirect ? 1u : 0u;
+    f.visibilityIds = ids ? 1u : 0u;
+    f.probeX = probe.x;
+    f.probeY = probe.y;
+    f.pixelSpread = 2.0f * std::tan(0.5f * camera.fovy) / float(settings_.height);
     frame_.write(&f, sizeof(f));
     frameConstants_ = f;
 

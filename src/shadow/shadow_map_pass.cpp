@@ -97,12 +97,12 @@ void ShadowMapPass::update(const std::vector<Light>& lights, const Camera& camer
 
 void ShadowMapPass::fillGpuLight(uint32_t light, gpu::GpuLight& g) const {
     const int index = layout_.shadowIndexOf(light);
-    g.radiance.w = index >= 0 ? float(index) : float(NO_SHADOW);
+    g.shadowIndex = index >= 0 ? index : NO_SHADOW;
     if (index < 0) return;
     const LightProjection& p = layers()[layout_.shadowed()[index].firstLayer].projection;
-    g.spot.z = settings_.normalOffset;
-    g.spot.w = p.perspective ? 1.0f : 0.0f;
-    g.shadow = {p.texelSize, 0.0f, 0.0f, 0.0f};
+    g.normalOffset = settings_.normalOffset;
+    g.perspective = p.perspective ? 1u : 0u;
+    g.shadowTexelSize = p.texelSize;
     g.shadowViewProj = p.viewProj;
 }
 

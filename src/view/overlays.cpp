@@ -76,7 +76,7 @@ void lpvBoxes(Renderer& renderer, const Projector& p) {
 void drawOverlays(const OverlayOptions& options, Renderer& renderer, const Camera& camera, uint32_t width,
                   uint32_t height) {
     if (!options.shadowFrusta && !options.lpvBoxes) return;
-    const float zfar = renderer.frameUniforms().cameraPos.w;  // the far plane the renderer used
+    const float zfar = renderer.frameUniforms().farPlane;  // the far plane the renderer used
     const ImVec2 display = ImGui::GetIO().DisplaySize;
     const Projector p{cameraViewProj(camera, float(width) / float(height), zfar), display.x, display.y};
     if (options.shadowFrusta) shadowFrusta(renderer, p);
