@@ -9,7 +9,19 @@ CameraTechnique::CameraTechnique(const TechniqueBuild& b)
     : gbuffer_(b.alloc, b.scene.meshes(), b.core.width, b.core.height, b.drawLayout, b.core.cameraPath,
                !b.core.translucency, b.core.computeRaster,
                // opaque hair ribbons are drawn into the depth afterwards (src/dsm)
-               !b.core.translucency && !b.scene.scene().strands.empty()) {}
+               !b.core.translucency && !b.scene.scene().strands.empty()) {
+    noIds_ = vk::Image(b.alloc, {VK_FORMAT_R32_UINT, 1, 1, 1,
+                                 VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, "no-ids"});
+    const uint32_t zero = 0;
+    b.cmd.uploadImage(noIds_, &zero, sizeof(zero));
+}
+
+// The classic G-buffer has no triangle IDs: readers of "gbuffer.ids" (velocity, temporal GI) get a
+// 1x1 zero image, published here so that every technique after the camera finds it.
+void CameraTechnique::addPasses(const FrameContext& f) {
+    gbuffer_.addTo(f.graph, f.slot);
+    if (!f.graph.has(names::kGbufferIds)) f.graph.publish(names::kGbufferIds, f.graph.import(noIds_));
+}
 
 LightingTechnique::LightingTechnique(const TechniqueBuild& b)
     : board_(b.board), irradiance_(b.alloc, b.core.width, b.core.height), lighting_(b.alloc, b.core.width, b.core.height),
@@ -18,9 +30,6 @@ LightingTechnique::LightingTechnique(const TechniqueBuild& b)
                                       VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, "no-indirect"});
     const uint64_t zero = 0;
     b.cmd.uploadImage(noIndirect_, &zero, sizeof(zero));
-    noIds_ = vk::Image(b.alloc, {VK_FORMAT_R32_UINT, 1, 1, 1,
-                                 VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, "no-ids"});
-    b.cmd.uploadImage(noIds_, &zero, sizeof(uint32_t));
     b.board.put(names::kHdrImage, &lighting_.hdr, this);
     b.board.put(names::kLdrImage, &tonemap_.ldr, this);
 }
@@ -55,7 +64,6 @@ gpu::TonemapPush LightingTechnique::tonemapParams(const FrameContext& f) const {
 }
 
 void LightingTechnique::addPasses(const FrameContext& f) {
-    if (!f.graph.has(names::kGbufferIds)) f.graph.publish(names::kGbufferIds, f.graph.import(noIds_));
     const ImageHandle indirect = irradiance_.addTo(f.graph);
     f.graph.publish(names::kIrradiance, indirect ? indirect : f.graph.import(noIndirect_));
     lighting_.addTo(f.graph);

@@ -18,11 +18,12 @@ class CameraTechnique : public Technique {
 public:
     explicit CameraTechnique(const TechniqueBuild& b);
     const char* name() const override { return "camera"; }
-    void addPasses(const FrameContext& f) override { gbuffer_.addTo(f.graph, f.slot); }
+    void addPasses(const FrameContext& f) override;
     GBufferPass& gbuffer() { return gbuffer_; }
 
 private:
     GBufferPass gbuffer_;
+    vk::Image noIds_;  // bound in place of the visibility IDs on the classic G-buffer path
 };
 
 // Deferred lighting (publishes "hdr") over the sum of the frame's irradiance contributions (a black
@@ -45,7 +46,6 @@ private:
     DebugViewPass debugView_;
     TonemapPass tonemap_;
     vk::Image noIndirect_;  // bound in place of the indirect irradiance when GI is off
-    vk::Image noIds_;       // bound in place of the visibility IDs on the classic G-buffer path
 };
 
 }  // namespace penumbra
