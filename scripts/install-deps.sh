@@ -5,7 +5,7 @@ PKGS=(
   build-essential cmake pkg-config
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers glslc
   libglm-dev libtinygltf-dev nlohmann-json3-dev libstb-dev libtinyexr-dev libcli11-dev libfmt-dev
-  libgtest-dev libembree-dev libspirv-cross-c-shared-dev
+  libgtest-dev libembree-dev libspirv-cross-c-shared-dev python3
   libglfw3-dev libimgui-dev xvfb xauth ccache
 )
 missing=()

@@ -5,12 +5,16 @@
 // analytic answer: the indirect AOV is albedo / pi * E with E the ambient irradiance, alone or
 // added to the RSM's.
 #include <cmath>
+#include <filesystem>
+#include <fstream>
 
 #include <gtest/gtest.h>
 
-#include "core/names.h"
+#include "ambient_technique.h"
+#include "app/cli_app.h"
 #include "gpu_fixture.h"
 #include "renderer/technique_registry.h"
+#include "renderer/render_options.h"
 #include "scene/builders.h"
 
 using namespace penumbra;
@@ -18,49 +22,7 @@ using namespace penumbra::test;
 
 namespace {
 
-struct AmbientSettings {
-    bool enabled = false;
-    float irradiance = 0.0f;
-};
-
-class AmbientTechnique : public Technique {
-public:
-    AmbientTechnique(const TechniqueBuild& b, const AmbientSettings& s)
-        : settings_(s),
-          image_(b.alloc, {VK_FORMAT_R32G32B32A32_SFLOAT, b.core.width, b.core.height, 1,
-                           VK_IMAGE_USAGE_TRANSFER_DST_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, "test-ambient"}) {}
-    const char* name() const override { return "test-ambient"; }
-    bool contributesIrradiance() const override { return true; }
-    void addPasses(const FrameContext& f) override {
-        const ImageHandle h = f.graph.import(image_);
-        const float e = settings_.irradiance;
-        f.graph.pass("test.ambient", PassKind::Transfer).use(h, Use::TransferDst).record([h, e](PassContext& c) {
-            const VkClearColorValue value{{e, e, e, 1.0f}};
-            const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
-            vkCmdClearColorImage(c.cmd, c.image(h).handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &value, 1, &range);
-        });
-        f.graph.contribute(names::kIrradianceContribution, h);
-    }
-
-private:
-    AmbientSettings settings_;
-    vk::Image image_;
-};
-
-constexpr const char* kName = "test-ambient";
-
-const TechniqueRegistration registration{[] {
-    TechniqueEntry e{kName, 65};  // after the built-in GI, before the temporal GI and the lighting
-    e.parts = kPartCamera;
-    e.enabled = [](const RenderSettings& s) {
-        const AmbientSettings* a = s.extension<AmbientSettings>(kName);
-        return a && a->enabled;
-    };
-    e.create = [](const TechniqueBuild& b, const RenderSettings& s) {
-        return std::make_unique<AmbientTechnique>(b, *s.extension<AmbientSettings>(kName));
-    };
-    return e;
-}()};
+constexpr const char* kName = kAmbientName;
 
 class RegistryTest : public GpuTest {
 protected:
@@ -127,4 +89,62 @@ TEST_F(RegistryTest, AmbientAddsToTheRsmContribution) {
     for (size_t i = 0; i < alone.rgba.size(); i += 4) rsmEnergy += alone.rgba[i];
     EXPECT_GT(rsmEnergy, 0.0) << "the RSM contributes too";
     EXPECT_EQ(mismatches(summed, alone, [&](size_t i) { return albedo.rgba[i] / float(M_PI) * kE; }), 0u);
+}
+
+// The technique's option table alone gives it a CLI option with its range and help.
+TEST(RegistryOptions, OutsideTechniqueGetsItsCliOptionRangeAndHelp) {
+    Cli cli;
+    cli.app.parse(std::vector<std::string>{"0.25", "--ambient-irradiance", "on", "--ambient", "cornell", "render"});
+    EXPECT_TRUE(ambientSettings(cli.renderSettings).enabled);
+    EXPECT_FLOAT_EQ(ambientSettings(cli.renderSettings).irradiance, 0.25f);
+    const std::string help = cli.renderCmd->help();
+    EXPECT_NE(help.find("--ambient-irradiance"), std::string::npos) << help;
+    EXPECT_NE(help.find("[0, 1000]"), std::string::npos) << help;
+    Cli refused;
+    try {
+        refused.app.parse(std::vector<std::string>{"-1", "--ambient-irradiance", "cornell", "render"});
+        ADD_FAILURE() << "--ambient-irradiance -1 was taken";
+    } catch (const CLI::ParseError& e) {
+        EXPECT_NE(std::string(e.what()).find("--ambient-irradiance"), std::string::npos) << e.what();
+    }
+}
+
+// `bench` writes the technique's settings under its name in the JSON, from its table's keys.
+TEST(RegistryOptions, OutsideTechniqueShowsInBenchJson) {
+    const std::filesystem::path json = std::filesystem::temp_directory_path() / "penumbra_registry_bench.json";
+    Cli cli;
+    cli.app.parse(std::vector<std::string>{json.string(), "--json", "0", "--warmup", "2", "--frames", "24", "--height",
+                                           "32", "--width", "0.5", "--ambient-irradiance", "on", "--ambient",
+                                           "cornell", "bench"});
+    cli.vk.validate = cli.vk.syncValidation = true;
+    EXPECT_EQ(cli.run(), 0);
+    nlohmann::json j;
+    std::ifstream(json) >> j;
+    EXPECT_EQ(j.at("settings").at(kName).at("irradiance").get<double>(), 0.5);
+    EXPECT_EQ(j.at("settings").at(kName).at("enabled").get<bool>(), true);
+    std::filesystem::remove(json);
+}
+
+// A per-frame change of the technique's option is classified per-frame by its row, allocates
+// nothing, and the next frame shows it (the indirect light is albedo / pi * E with the new E).
+TEST_F(RegistryTest, OutsideTechniquePerFrameChangeAllocatesNothing) {
+    const Scene scene = makeBuiltinScene("cornell");
+    RenderSettings s;
+    s.width = 64, s.height = 48, s.aov = Aov::Indirect;
+    ambientSettings(s) = {true, 0.5f};
+    Renderer r(ctx(), scene, s);
+    r.render(scene.cameras.at(0));
+    RenderSettings next = s;
+    ambientSettings(next).irradiance = 1.5f;
+    const SettingsDiff diff = diffSettings(s, next);
+    ASSERT_EQ(diff.flags, std::vector<std::string>{"--ambient-irradiance"});
+    const uint64_t before = r.allocator().allocations();
+    EXPECT_EQ(r.apply(next), SettingsChange::PerFrame);
+    r.render(scene.cameras.at(0));
+    EXPECT_EQ(r.allocator().allocations(), before);
+    const FloatImage indirect{s.width, s.height, r.readHdr()};
+    const FloatImage albedo = renderCornell(s, Aov::Albedo);
+    const FloatImage zero{albedo.width, albedo.height, std::vector<float>(albedo.rgba.size(), 0.0f)};
+    EXPECT_EQ(mismatches(indirect, zero, [&](size_t i) { return albedo.rgba[i] / float(M_PI) * 1.5f; }), 0u);
+    EXPECT_EQ(renderSettingsJson(next).at(kName).at("irradiance").get<double>(), 1.5);
 }

@@ -214,7 +214,7 @@ int runBench(const BenchOptions& o, const vk::ContextOptions& vkOptions, RenderS
     const double copyGbps = copyBandwidth(ctx);
     GpuScene scene(ctx, f.scene);
     Renderer renderer(ctx, scene, settings, uint32_t(o.framesInFlight));
-    for (const std::string& w : renderer.warnings()) fmt::print(stderr, "penumbra: warning: {}\n", w);
+    for (const std::string& w : renderer.warnings()) printWarning(w);
     const SceneMotion motion = frameMotion(o.frame, f);
     std::vector<double> poseMs;
     const BenchSeries series = measureSeries(renderer, motion, o, poseMs);

@@ -202,7 +202,7 @@ int runRender(const RenderCliOptions& o, const vk::ContextOptions& vkOptions, Re
     const SceneMotion motion = frameMotion(o.frame, f);
     Renderer renderer(device.ctx, f.scene, settings);
     renderer.setPassScopes(true);  // the summary's per-pass table
-    for (const std::string& w : renderer.warnings()) fmt::print(stderr, "penumbra: warning: {}\n", w);
+    for (const std::string& w : renderer.warnings()) printWarning(w);
     if (o.sequence > 0) {
         renderSequence(o, settings, renderer, motion, out);
         device.checkValidation();

@@ -361,7 +361,7 @@ int runHairEvalCommand(const EvalCliOptions& given, const vk::ContextOptions& vk
                count(h.mask), count(h.hairPixels), 100.0 * kHairPixelAlpha, count(h.shadowPixels), refT);
     fmt::print("{}", formatHairEvalTable(rows, gpu));
     for (const HairEvalRow& r : rows)
-        for (const std::string& w : r.warnings) fmt::print(stderr, "penumbra: warning: {}: {}\n", r.variant.technique, w);
+        for (const std::string& w : r.warnings) printWarning(r.variant.technique + ": " + w);
     fmt::print("reference noise (its own relative L2 error, the floor of the L2 columns): image {:.3f}, hair pixels "
                "{:.3f}\n", truth.noiseFinal, truth.noiseHair);
     if (!gpu) fmt::print("(GPU ms left out: {} is a CPU device)\n", ctx.info().name);

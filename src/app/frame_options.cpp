@@ -227,7 +227,7 @@ PreparedFrame prepareFrame(const FrameOptions& o, RenderSettings& settings) {
     checkFrameSettings(o, settings);
     PreparedFrame f;
     f.scene = loadScene(o.scene, o.builtin);
-    for (const std::string& w : f.scene.warnings) fmt::print(stderr, "penumbra: warning: {}\n", w);
+    for (const std::string& w : f.scene.warnings) printWarning(w);
     if (const std::string w = planTextureTable(f.scene.textures).warning(); !w.empty())
         fmt::print(stderr, "penumbra: warning: {}\n", w);
     f.scene.lights = frameLights(o, f.scene);

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "app/cli_app.h"
+#include "app/option_cli.h"
 #include "view/view_command.h"
 
 int main(int argc, char** argv) {
@@ -41,7 +42,7 @@ int main(int argc, char** argv) {
         if (*viewer) return penumbra::view::runViewCommand(viewCommand, cli.vk);
         return cli.run();
     } catch (const std::exception& e) {
-        fmt::print(stderr, "penumbra: error: {}\n", e.what());
+        fmt::print(stderr, "penumbra: error: {}\n", penumbra::withFlags(e.what()));
         return 1;
     }
 }

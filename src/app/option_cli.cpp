@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "app/bench.h"
 #include "app/cli_app.h"
 #include "app/frame_options.h"
@@ -63,6 +65,16 @@ std::string expandOptionReferences(const std::string& help) {
     }
     return out + help.substr(at);
 }
+
+std::string withFlags(const std::string& message) {
+    try {
+        return expandOptionReferences(message);
+    } catch (const std::logic_error&) {
+        return message;
+    }
+}
+
+void printWarning(const std::string& message) { fmt::print(stderr, "penumbra: warning: {}\n", withFlags(message)); }
 
 void addOptionRows(CLI::App& cmd, const OptionTable& table, void* settings,
                    const std::function<bool(const OptionRow&)>& only) {

@@ -20,6 +20,11 @@ void addRenderOptionRows(CLI::App& cmd, RenderSettings& settings);
 // A help text with each `{module.key}` replaced by the flag of that row (a help that refers to
 // another option names it through its row). Throws std::logic_error for a reference to no row.
 std::string expandOptionReferences(const std::string& help);
+// A message from below the app (an error, a renderer or scene warning) with its option references
+// written as flags; references to no row are left as they are (a message is never lost to them).
+std::string withFlags(const std::string& message);
+// "penumbra: warning: MESSAGE" on stderr, with the flags written in.
+void printWarning(const std::string& message);
 
 // The flag of the row bound to `access` in `table`, for a command's row of an option that another
 // table spells (`reference --width` is `render --width`).

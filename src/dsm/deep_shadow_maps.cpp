@@ -23,7 +23,7 @@ std::vector<DsmLayer> chooseLayers(const std::vector<Light>& lights, const Bound
                                    uint32_t res) {
     for (uint32_t i : s.lights)
         if (i >= lights.size())
-            throw vk::VulkanError(fmt::format("--dsm-lights: light {} does not exist (the scene has {})", i,
+            throw vk::VulkanError(fmt::format("{{dsm.lights}}: light {} does not exist (the scene has {})", i,
                                               lights.size()));
     std::vector<DsmLayer> layers;
     if (!s.enabled) return layers;
@@ -54,7 +54,7 @@ DeepShadowMaps::DeepShadowMaps(vk::Allocator& alloc, SceneGpu& scene, const Hair
                                std::vector<std::string>& warnings, bool computeHair)
     : settings_(settings) {
     if (settings.maxList < 1 || settings.maxList > DSM_MAX_LIST_CAP)
-        throw vk::VulkanError(fmt::format("--dsm-max-list {}: must be in 1..{}", settings.maxList, DSM_MAX_LIST_CAP));
+        throw vk::VulkanError(fmt::format("{{dsm.max_list}} {}: must be in 1..{}", settings.maxList, DSM_MAX_LIST_CAP));
     uint32_t res = settings.resolution ? settings.resolution : shadowResolution;
     std::vector<DsmLayer> layers = chooseLayers(lights, scene.scene().bounds, settings, res);
     // The shadow maps' resolution, taken by default, halves until the maps' fixed part (heads, work
@@ -65,19 +65,19 @@ DeepShadowMaps::DeepShadowMaps(vk::Allocator& alloc, SceneGpu& scene, const Hair
     auto fixed = [&](uint32_t r) { return DsmResources::fixedBytes(uint64_t(r) * r * layers.size(), settings.opacityMaps); };
     res = DsmResources::resolutionFor(settings, res, uint32_t(layers.size()), lim);
     if (res != wanted) {
-        warnings.push_back(fmt::format("--shadow {}: {} deep shadow map(s) of {}^2 would take {:.0f} MiB of the "
-                                       "device's {:.0f} MiB before any node; {}^2 instead (--dsm-res sets it)",
+        warnings.push_back(fmt::format("{{frame.shadow_filter}} {}: {} deep shadow map(s) of {}^2 would take {:.0f} MiB of the "
+                                       "device's {:.0f} MiB before any node; {}^2 instead ({{dsm.resolution}} sets it)",
                                        settings.opacityMaps ? "dom" : "dsm", layers.size(), wanted, mib(fixed(wanted)),
                                        mib(alloc.context().limits().deviceMemory), res));
         layers = chooseLayers(lights, scene.scene().bounds, settings, res);
     }
     if (settings.enabled && layers.empty())
-        warnings.push_back("--shadow dsm: no light casts shadows; no deep shadow map");
+        warnings.push_back("{frame.shadow_filter} dsm: no light casts shadows; no deep shadow map");
     const bool blended = std::any_of(scene.scene().materials.begin(), scene.scene().materials.end(),
                                      [](const Material& m) { return m.alphaMode == AlphaMode::Blend; });
     if (settings.opacityMaps && !layers.empty() && blended)
-        warnings.push_back("--shadow dom: deep opacity maps take hair strands only; blended meshes cast no shadow "
-                           "from the lights that have one (use --shadow dsm)");
+        warnings.push_back("{frame.shadow_filter} dom: deep opacity maps take hair strands only; blended meshes cast no "
+                           "shadow from the lights that have one (use {frame.shadow_filter} dsm)");
     if (settings.opacityMaps && !hair) layers.clear();  // nothing to cast: every lookup reads "no map"
     const float domLayer = settings.opacityMaps ? DeepOpacityBuildPass::layerThickness(scene.scene()) : 1.0f;
     res_ = std::make_unique<DsmResources>(alloc, settings, res, std::move(layers), lights.size(), domLayer);
@@ -162,8 +162,8 @@ std::vector<std::string> dsmWarnings(const DsmFrameStats& s) {
     if (s.overflow == 0) return {};
     return {fmt::format("deep shadow map node pool overflow: {} of {} light-space fragments dropped (pool of {} nodes{})",
                         s.overflow, s.fragments, s.capacity,
-                        s.deviceLimited ? ", the most one storage buffer of this device addresses; lower --dsm-res"
-                                        : "; raise --dsm-nodes")};
+                        s.deviceLimited ? ", the most one storage buffer of this device addresses; lower {dsm.resolution}"
+                                        : "; raise {dsm.pool_nodes}")};
 }
 
 }  // namespace penumbra

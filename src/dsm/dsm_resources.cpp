@@ -19,11 +19,11 @@ void checkFits(const vk::DeviceLimits& lim, uint64_t capacity, uint64_t texels, 
     const VkDeviceSize fixed = DsmResources::fixedBytes(texels, settings.opacityMaps);
     const VkDeviceSize work = DsmResources::workBytes(texels, settings.opacityMaps);
     if (work > lim.storageBufferRange)
-        throw vk::VulkanError(fmt::format("--dsm-res {}: {} deep shadow map(s) need a {:.0f} MiB work list, more than "
+        throw vk::VulkanError(fmt::format("{{dsm.resolution}} {}: {} deep shadow map(s) need a {:.0f} MiB work list, more than "
                                           "the device's storage-buffer range ({:.0f} MiB)",
                                           res, maps, double(work) / kMiB, double(lim.storageBufferRange) / kMiB));
     if (fixed > lim.deviceMemory / 2)
-        throw vk::VulkanError(fmt::format("--dsm-res {}: {} deep shadow map(s) need {:.0f} MiB of list heads, work list "
+        throw vk::VulkanError(fmt::format("{{dsm.resolution}} {}: {} deep shadow map(s) need {:.0f} MiB of list heads, work list "
                                           "and depth buckets, more than half of the device's memory ({:.0f} MiB)",
                                           res, maps, double(fixed) / kMiB, double(lim.deviceMemory / 2) / kMiB));
     const VkDeviceSize nodeBytes = DsmResources::nodeBufferBytes(capacity), total = VkDeviceSize(capacity) * DsmResources::kNodeBytes + fixed;
@@ -31,7 +31,7 @@ void checkFits(const vk::DeviceLimits& lim, uint64_t capacity, uint64_t texels, 
         VkDeviceSize need, limit;
         const char* what;
     };
-    const std::string pool = settings.poolNodes ? fmt::format("--dsm-nodes {}", capacity) : "--dsm-res " + std::to_string(res);
+    const std::string pool = settings.poolNodes ? fmt::format("{{dsm.pool_nodes}} {}", capacity) : fmt::format("{{dsm.resolution}} {}", res);
     for (const Check& c : {Check{nodeBytes, lim.storageBufferRange, "the device's storage-buffer range"},
                            Check{nodeBytes, lim.allocationSize, "the device's largest allocation"},
                            Check{total, lim.deviceMemory / 2, "half of the device's memory"}})

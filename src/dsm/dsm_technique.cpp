@@ -25,7 +25,7 @@ DsmTechnique::DsmTechnique(const TechniqueBuild& b, const DsmSettings& s, uint32
     // blended meshes and hair of lights with one go to their DSM instead.
     for (const Light& l : b.lights)
         if (l.type == LightType::Point && l.castsShadow && casters.paraboloidPoints) {
-            b.warnings.push_back("hair casts no shadow in paraboloid point-light maps (use --point-shadow cube)");
+            b.warnings.push_back("hair casts no shadow in paraboloid point-light maps (use {shadow.point_shadow} cube)");
             break;
         }
     hair_ = std::make_unique<HairShadowPass>(b.alloc, *hair, casters.biasConstant, casters.biasSlope);

@@ -13,7 +13,7 @@ constexpr SettingsChange kSizes = SettingsChange::Sizes;
 
 OptionTable makeTable() {
     using S = LpvSettings;
-    OptionTableBuilder<S> t("lpv", "Light propagation volumes (--gi lpv)");
+    OptionTableBuilder<S> t("lpv", "Light propagation volumes");
     t.integer("--lpv-res", "resolution", [](S& s) -> auto& { return s.resolution; }, 4, 256, kSizes,
               "LPV cells per side");
     // Pass counts: the next frame lists its passes from the new value; nothing is re-created.
@@ -25,14 +25,14 @@ OptionTable makeTable() {
     t.integer("--lpv-rsm-res", "rsm_resolution", [](S& s) -> auto& { return s.rsmResolution; }, 16, 8192, kSizes,
               "RSM resolution for LPV injection");
     t.integer("--lpv-vpl-res", "vpl_resolution", [](S& s) -> auto& { return s.vplResolution; }, 1, 8192, kSizes,
-              "Down-sampled VPLs per side (divides --lpv-rsm-res)");
+              "Down-sampled VPLs per side (divides {lpv.rsm_resolution})");
     t.boolean("--lpv-occlusion", "occlusion", [](S& s) -> auto& { return s.occlusion; }, kFrame,
               "Geometry-volume occlusion");
     t.choice("--lpv-geometry", "geometry", [](S& s) -> auto& { return s.geometry; },
              std::vector<std::pair<std::string, LpvGeometry>>{{"surfels", LpvGeometry::Surfels},
                                                              {"voxels", LpvGeometry::Voxels}},
              kStructure,
-             "What blocks propagation: surfels (geometry volume) or voxels (the occupancy volume, --rsm-voxel-res)");
+             "What blocks propagation: surfels (geometry volume) or voxels (the occupancy volume, {rsm.voxel_resolution})");
     t.boolean("--lpv-camera-geometry", "camera_geometry", [](S& s) -> auto& { return s.cameraGeometry; },
               kStructure, "Inject camera G-buffer occluders")
         .rebuild({"none"});
@@ -43,7 +43,7 @@ OptionTable makeTable() {
     t.integer("--lpv-slice-axis", "slice_axis", [](S& s) -> auto& { return s.sliceAxis; }, 0, 2, kFrame,
               "Axis of the lpv-slice/gv-slice AOV: 0=x 1=y 2=z");
     t.integer("--lpv-slice", "slice", [](S& s) -> auto& { return s.sliceIndex; }, 0, 255, kFrame,
-              "Cell index of the lpv-slice/gv-slice AOV (< --lpv-res)");
+              "Cell index of the lpv-slice/gv-slice AOV (< {lpv.resolution})");
     return t.build();
 }
 

@@ -413,7 +413,7 @@ void checkDeviceBudget(const vk::Context& ctx, const RenderSettings& settings, c
 void checkStrandBudget(const vk::DeviceLimits& limits, uint32_t strands) {
     const uint64_t pointBytes = (BuiltinOptions::kHairPointsPerStrand + 2) * kHairPointBytes;
     Demand ribbons{Knob::None, strands, 1, fmt::format("the hair's ribbon points ({} bytes per strand)", pointBytes),
-                   [=](uint64_t n) { return n * pointBytes; }, true, "--strands"};
+                   [=](uint64_t n) { return n * pointBytes; }, true, "{inputs.strands}"};
     try {
         checkEach(limits, {ribbons});
     } catch (const BudgetRefusal& r) {  // the only demand: its own bound is the answer

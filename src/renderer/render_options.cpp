@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -10,6 +11,7 @@
 
 #include "dsm/dsm_options.h"
 #include "lpv/lpv_options.h"
+#include "renderer/technique_registry.h"
 #include "rsm/rsm_options.h"
 #include "shadow/shadow_options.h"
 
@@ -48,7 +50,7 @@ void parseShadow(S& s, const std::string& value) {
         if (!opaque.empty())
             throw std::invalid_argument(fmt::format("one filter for opaque casters ({} or {}), optionally with dsm "
                                                     "(e.g. {},dsm)", opaque, token, opaque));
-        s.shadow.filter = parseShadowFilter(token, "--shadow");
+        s.shadow.filter = parseShadowFilter(token, token);
         opaque = token;
     }
 }
@@ -138,6 +140,11 @@ std::deque<BoundOptionTable>& tables() {
         bind(rsmOptions(), &S::rsm),
         bind(lpvOptions(), &S::lpv),
     };
+    // Techniques registered from outside src/ bring their tables (a deque: earlier entries stay put).
+    static std::set<std::string> added;
+    for (const TechniqueEntry& e : TechniqueRegistry::instance().entries())
+        if (e.options && e.settings && added.insert(e.name).second)
+            all.push_back({e.options, [where = e.settings](const S& s) -> const void* { return where(s); }});
     return all;
 }
 
@@ -150,7 +157,6 @@ const OptionTable& frameOptionTable() {
 
 const std::deque<BoundOptionTable>& renderOptionTables() { return tables(); }
 
-void registerOptionTable(BoundOptionTable table) { tables().push_back(std::move(table)); }
 
 FoundOption findRenderOption(const std::string& flag) {
     for (const BoundOptionTable& t : renderOptionTables())

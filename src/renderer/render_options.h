@@ -21,12 +21,9 @@ struct BoundOptionTable {
     const void* at(const RenderSettings& s) const { return of(s); }
 };
 
-// Every table, the frame's first, then the modules' in the order of the frame (shadow, dsm, rsm, lpv),
-// then any registered with registerOptionTable.
+// Every table: the frame's first, then the modules' in the order of the frame (shadow, dsm, rsm,
+// lpv), then those of techniques registered with an option table (renderer/technique_registry.h).
 const std::deque<BoundOptionTable>& renderOptionTables();
-// Adds a module's table (a technique registered from outside src/, e.g. a test's): its options join
-// the CLI, the JSON settings, the viewer and the settings-change classification.
-void registerOptionTable(BoundOptionTable table);
 
 // The row of `flag` in any table, with its table; null when no table has it.
 struct FoundOption {

@@ -44,7 +44,9 @@ struct RenderSettings {
     // (`bench --overlap`; off: one after another, a barrier before each that needs one).
     bool overlapPasses = true;
     // Settings of registered techniques outside src/, by their registry name.
-    std::map<std::string, std::any> extensions;
+    // Mutable: an extension's settings are default-made on first read, also through a const path
+    // (its option rows read them for the JSON and the settings diff).
+    mutable std::map<std::string, std::any> extensions;
 
     // The extension's settings of type T (default-made on first use).
     template <class T>

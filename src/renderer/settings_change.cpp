@@ -3,6 +3,7 @@
 #include <stdexcept>
 
 #include "renderer/render_options.h"
+#include "renderer/technique_registry.h"
 
 namespace penumbra {
 
@@ -14,6 +15,7 @@ uint32_t framePartsOf(const std::vector<std::string>& names) {
         else if (n == "gi" || n == "rsm" || n == "lpv") parts |= kPartGi;
         else if (n == "dsm") parts |= kPartDsm;
         else if (n == "shadow.filters") parts |= kPartShadowFilters;
+        else if (const TechniqueEntry* e = TechniqueRegistry::instance().find(n)) parts |= e->parts;
         else if (n != "none") throw std::logic_error("no frame part is named '" + n + "'");
     }
     return parts;

@@ -33,7 +33,10 @@ struct TechniqueEntry {
     // FrameParts that it takes in place instead of being rebuilt, and how (shadow filters).
     uint32_t adjustParts = 0;
     std::function<void(Technique&, const RenderSettings&, const std::vector<Light>&)> adjust;
-    const OptionTable* options = nullptr;  // the module's option table
+    // The module's option table and where in RenderSettings the struct its rows write lives: its
+    // options join the CLI, --help, the JSON settings, the viewer and the settings-change classes.
+    const OptionTable* options = nullptr;
+    std::function<void*(const RenderSettings&)> settings;
 };
 
 class TechniqueRegistry {

@@ -122,7 +122,7 @@ RsmGather::RsmGather(vk::Allocator& alloc, vk::CommandContext& cmd, uint32_t wid
 }
 
 void RsmGather::setSettings(const RsmSettings& s) {
-    if (s.samples > kMaxRsmSamples) throw vk::VulkanError(fmt::format("--rsm-samples {}: at most {}", s.samples,
+    if (s.samples > kMaxRsmSamples) throw vk::VulkanError(fmt::format("{{rsm.samples}} {}: at most {}", s.samples,
                                                                      kMaxRsmSamples));
     settings_ = s;
     pattern_ = rsmSamplePattern(s);

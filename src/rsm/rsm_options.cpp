@@ -13,7 +13,7 @@ constexpr SettingsChange kSizes = SettingsChange::Sizes;
 
 OptionTable makeTable() {
     using S = RsmSettings;
-    OptionTableBuilder<S> t("rsm", "Reflective shadow maps (--gi rsm)");
+    OptionTableBuilder<S> t("rsm", "Reflective shadow maps");
     t.integer("--rsm-res", "resolution", [](S& s) -> auto& { return s.resolution; }, 8, 8192, kSizes,
               "RSM resolution per light");
     t.integer("--rsm-samples", "samples", [](S& s) -> auto& { return s.samples; }, 1, kMaxRsmSamples, kFrame,
@@ -25,7 +25,7 @@ OptionTable makeTable() {
     t.choice("--rsm-mode", "mode", [](S& s) -> auto& { return s.mode; },
              std::vector<std::pair<std::string, RsmMode>>{
                  {"interpolated", RsmMode::Interpolated}, {"full", RsmMode::Full}, {"all-texels", RsmMode::AllTexels}},
-             kStructure, "RSM gather: interpolated low-resolution, full, or all-texels (exact; --rsm-res <= 64)");
+             kStructure, "RSM gather: interpolated low-resolution, full, or all-texels (exact; {rsm.resolution} <= 64)");
     t.choice("--rsm-weights", "weights", [](S& s) -> auto& { return s.weights; },
              std::vector<std::pair<std::string, RsmWeights>>{{"unbiased", RsmWeights::Unbiased},
                                                              {"paper", RsmWeights::Paper}},
@@ -51,12 +51,12 @@ OptionTable makeTable() {
     t.integer("--rsm-visibility-points", "visibility_points", [](S& s) -> auto& { return s.visibilityPoints; }, 1,
               16, kFrame, "Views visibility: points of a VPL-receiver segment tested against the two depth maps");
     t.integer("--rsm-voxel-res", "voxel_resolution", [](S& s) -> auto& { return s.voxelResolution; }, 8, 1024,
-              kSizes, "Occupancy volume (--rsm-visibility voxels): voxels along the scene's longest side");
+              kSizes, "Occupancy volume ({rsm.visibility} voxels): voxels along the scene's longest side");
     t.choice("--rsm-radii", "radii", [](S& s) -> auto& { return s.radii; },
              std::vector<std::pair<std::string, RsmRadii>>{{"fixed", RsmRadii::Fixed}, {"shifted", RsmRadii::Shifted}},
              kStructure,
              "The sample pattern's radii: the same for every receiver, or shifted per receiver (unbiased; always "
-             "with --rsm-visibility voxels)");
+             "with {rsm.visibility} voxels)");
     t.choice("--rsm-far", "far", [](S& s) -> auto& { return s.far; },
              std::vector<std::pair<std::string, RsmFar>>{{"disc", RsmFar::Disc}, {"flux", RsmFar::Flux}}, kStructure,
              "The far half of the RSM samples: a disc over the whole map, or texels drawn by their flux "
