@@ -31,6 +31,7 @@ RenderSettings smallSettings() {
     s.lpv.rsmResolution = 64;
     s.lpv.vplResolution = 16;
     s.lpv.sliceIndex = 4;
+    s.giTemporal = false;  // each frame its own GI: a frame after others equals a one-shot render
     return s;
 }
 

@@ -66,6 +66,7 @@ TEST_F(RegistryTest, OutsideTechniqueIsRegisteredAndOrdered) {
 TEST_F(RegistryTest, AmbientAloneGivesAlbedoOverPiTimesIrradiance) {
     constexpr float kE = 0.75f;
     RenderSettings s;
+    s.giTemporal = false;  // the contribution as the lighting reads it, neither accumulated nor filtered
     s.extension<AmbientSettings>(kName) = {true, kE};
     const FloatImage indirect = renderCornell(s, Aov::Indirect);
     const FloatImage albedo = renderCornell(s, Aov::Albedo);
@@ -80,6 +81,7 @@ TEST_F(RegistryTest, AmbientAddsToTheRsmContribution) {
     constexpr float kE = 0.5f;
     RenderSettings rsm;
     rsm.gi = GiMode::Rsm;
+    rsm.giTemporal = false;  // the sum as the lighting reads it, not filtered
     RenderSettings both = rsm;
     both.extension<AmbientSettings>(kName) = {true, kE};
     const FloatImage alone = renderCornell(rsm, Aov::Indirect);
@@ -131,6 +133,7 @@ TEST_F(RegistryTest, OutsideTechniquePerFrameChangeAllocatesNothing) {
     const Scene scene = makeBuiltinScene("cornell");
     RenderSettings s;
     s.width = 64, s.height = 48, s.aov = Aov::Indirect;
+    s.giTemporal = false;  // the next frame shows the new value alone, not blended into a history
     ambientSettings(s) = {true, 0.5f};
     Renderer r(ctx(), scene, s);
     r.render(scene.cameras.at(0));

@@ -270,6 +270,7 @@ TEST_F(GpuTest, CachedCascadesRedrawOnlyWhatMovedAndMatchColdFrames) {
     s.width = 64;
     s.height = 48;
     s.gi = GiMode::Rsm;
+    s.giTemporal = false;  // each frame its own GI, so that a cached frame can equal a fresh renderer's
     s.shadow.resolution = 256;
     s.shadow.cascades.distance = 6.0f;  // cascades smaller than the scene: they follow the camera
     const auto cold = [&](const Camera& c) {

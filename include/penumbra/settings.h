@@ -74,8 +74,8 @@ struct Settings {
     CameraPath cameraPath;
     ShadowSettings shadow;
     GiMode gi;
-    bool giTemporal;          // temporal accumulation of the indirect irradiance
-    float giTemporalAlpha;    // the new frame's weight
+    bool giTemporal;          // the indirect irradiance accumulated over frames and filtered
+    float giTemporalAlpha;    // the least weight of a new frame in that accumulation
     RsmSettings rsm;
     LpvSettings lpv;
     DsmSettings dsm;          // deep shadow maps (hair and blended surfaces)

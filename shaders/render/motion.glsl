@@ -4,7 +4,7 @@
 // did not move goes through frame.reprojection (exact for a camera that stood still). The includer
 // declares `frame` (FrameUniforms) and defines MOTION_FIRST_BINDING: the visibility IDs, the drawn
 // (instance, triangle) list and the instance table are bound there and at the next two
-// (declarePreviousFrameInputs in src/render/gi_history.h).
+// (declarePreviousFrameInputs in src/core/previous_frame.h).
 #ifndef PENUMBRA_MOTION_GLSL
 #define PENUMBRA_MOTION_GLSL
 layout(set = 0, binding = MOTION_FIRST_BINDING) uniform usampler2D visibilityIds;

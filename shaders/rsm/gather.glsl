@@ -71,7 +71,8 @@ float samplingDisc(GpuRsmLayer layer, vec4 clip, out vec2 st) {
 // Per-receiver rotation and radial shift of the sample pattern, seeded by the receiver's world
 // position (quantised to RSM texels): neighbouring receivers see different VPLs, so the
 // interpolation's filter averages independent estimates, and the pattern of a surface point stays
-// put when the camera moves.
+// put when the camera moves. While the temporal-GI module accumulates, the seed also changes each
+// frame (pc.frameSeed), so that the history averages independent estimates of every point.
 uint hash3(uvec3 v) { return hashMix(v.x * 0x8da6b343u ^ v.y * 0xd8163841u ^ v.z * 0xcb1ab31fu); }
 
 struct ReceiverPattern {
@@ -83,7 +84,8 @@ ReceiverPattern receiverPattern(GpuRsmLayer L, vec3 x, vec4 clip) {
     float texel = L.texelSize;
     if (L.perspective != 0u) texel *= max(abs(clip.w), 1e-3);
     ReceiverPattern p;
-    const uint seed = hash3(uvec3(ivec3(floor(x / texel))));
+    uint seed = hash3(uvec3(ivec3(floor(x / texel))));
+    if (pc.frameSeed != 0u) seed = hashMix(seed ^ hashMix(pc.frameSeed));  // another pattern each frame
     const float angle = float(seed) * (6.28318531 / 4294967296.0), c = cos(angle), s = sin(angle);
     p.rotation = mat2(c, s, -s, c);
     p.shift = float(hash3(uvec3(seed, 0x9e3779b9u, 1u))) * (1.0 / 4294967296.0);

@@ -198,7 +198,7 @@ struct RsmPush {
     float normalThreshold;    // normal cos threshold (interpolation)
     float distanceThreshold;  // in pixel footprints (interpolation)
     float radius;             // r_max
-    uint pad0;
+    uint frameSeed;           // 0: the pattern of every frame alike; else mixed into each receiver's (temporal GI)
     uint visibility;          // RSM_VISIBILITY_*
     uint visibilityRays;      // samples a pixel tests through the occupancy volume
     uint paperWeights;        // 1: the paper's single disc and xi1^2 weights (else the mixture)
@@ -247,12 +247,20 @@ struct OccupancyPush {
     uvec4 counts;  // x = drawn triangles, y = 1: walk the chunk list (else the triangles), z = chunk capacity
 };
 
-// render/gi_history.comp: temporal accumulation of the indirect irradiance.
-struct GiHistoryPush {
-    float alpha;       // weight of the new frame
-    uint historyValid; // 1: the history holds the previous frame
+// temporal_gi/accumulate.comp: the indirect irradiance blended into its history (src/temporal_gi).
+struct GiAccumulatePush {
+    float minWeight;     // the least weight of a new frame: a history spans at most 1 / minWeight frames
+    float changeWeight;  // the least weight of this frame, from how much the lights changed since the last
+    uint historyValid;   // 1: the history holds the previous frame
     uint pad0;
-    uint pad1;
+};
+
+// temporal_gi/filter.comp: one iteration of the edge-aware a-trous filter.
+struct GiFilterPush {
+    uint step;              // tap spacing in pixels: 1, 2, 4, ... (iteration k: 2^k)
+    uint firstIteration;    // 1: read the accumulation (and its moments), else the previous iteration
+    float luminanceSigma;   // luminance edge stop: differences beyond this many standard deviations fade out
+    uint pad0;
 };
 
 // Push constants of the RSM resolve (rsm/resolve.comp): RSM texels from the shadow pass's visibility IDs.
@@ -553,7 +561,8 @@ static_assert(sizeof(RsmResolvePush) == 16 && offsetof(RsmResolvePush, idResolut
 static_assert(sizeof(LpvPush) == 128 && offsetof(LpvPush, vplCount) == 16 && offsetof(LpvPush, occlusion) == 32 &&
               offsetof(LpvPush, sliceAxis) == 48 && offsetof(LpvPush, cascades) == 64);
 static_assert(sizeof(TonemapPush) == 16 && offsetof(TonemapPush, mode) == 8);
-static_assert(sizeof(GiHistoryPush) == 16 && offsetof(GiHistoryPush, historyValid) == 4);
+static_assert(sizeof(GiAccumulatePush) == 16 && offsetof(GiAccumulatePush, historyValid) == 8);
+static_assert(sizeof(GiFilterPush) == 16 && offsetof(GiFilterPush, luminanceSigma) == 8);
 static_assert(offsetof(FrameUniforms, eye) == 256 && offsetof(FrameUniforms, farPlane) == 268 &&
               offsetof(FrameUniforms, width) == 272 && offsetof(FrameUniforms, giValid) == 288 &&
               offsetof(FrameUniforms, pixelSpread) == 304);

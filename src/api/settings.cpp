@@ -42,7 +42,7 @@ template <class Pub, class In, class F>
 void settingsFields(Pub& p, In& i, F f) {
     f(p.width, i.width), f(p.height, i.height), f(p.exposure, i.exposure), f(p.cameraPath, i.cameraPath);
     shadowFields(p.shadow, i.shadow, f);
-    f(p.gi, i.gi), f(p.giTemporal, i.giTemporal), f(p.giTemporalAlpha, i.giTemporalAlpha);
+    f(p.gi, i.gi), f(p.giTemporal, i.giTemporal), f(p.giTemporalAlpha, i.temporalGi.minWeight);
     f(p.rsm, i.rsm), f(p.lpv, i.lpv), f(p.dsm, i.dsm), f(p.translucency, i.translucency);
 }
 

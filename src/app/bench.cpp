@@ -86,7 +86,7 @@ namespace {
 
 OptionTable makeBenchTable() {
     using B = BenchOptions;
-    constexpr SettingsChange kCommand = SettingsChange::None;  // read once by the command
+    using change::kCommand;
     OptionTableBuilder<B> t("bench", "Bench");
     t.integer("--frames", "frames", [](B& b) -> auto& { return b.frames; }, 1, 1000000, kCommand, "Measured frames");
     t.integer("--warmup", "warmup", [](B& b) -> auto& { return b.warmup; }, 0, 1000000, kCommand,

@@ -21,7 +21,7 @@ namespace {
 
 OptionTable makeRenderCommandTable() {
     using R = RenderCliOptions;
-    constexpr SettingsChange kCommand = SettingsChange::None;  // read once by the command
+    using change::kCommand;
     OptionTableBuilder<R> t("render", "Render");
     t.text("-o,--output", "output", [](R& r) -> auto& { return r.output; },
            [](const R& r) { return std::vector<std::string>{r.output}; },
@@ -44,7 +44,7 @@ OptionTable makeRenderCommandTable() {
 
 OptionTable makeGlobalTable() {
     using G = GlobalOptions;
-    constexpr SettingsChange kCommand = SettingsChange::None;
+    using change::kCommand;
     OptionTableBuilder<G> t("global", "Global");
     t.boolean("--validate", "validate", [](G& g) -> auto& { return g.vk.validate; }, kCommand,
               "Enable the Khronos validation layer; any message fails the run")

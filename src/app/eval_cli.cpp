@@ -120,7 +120,7 @@ GroundTruth groundTruth(const EvalCliOptions& o, const PreparedFrame& f) {
 
 namespace {
 
-constexpr SettingsChange kCommand = SettingsChange::None;  // read once by the command
+using change::kCommand;
 
 OptionRow& pathRow(OptionTableBuilder<EvalCliOptions>& t, const char* flag, const char* key,
                    std::string EvalCliOptions::*member, const char* help) {
@@ -143,7 +143,8 @@ OptionTable makeEvalCommandTable() {
     pathRow(t, "--images", "images", &E::images, "Directory for figure.png: reference, RSM, LPV, their error maps");
     t.integer(sharedFlag<BenchOptions>(benchCommandOptions(), [](BenchOptions& b) -> auto& { return b.frames; }),
               "frames", [](E& e) -> auto& { return e.frames; }, 1, 10000, kCommand,
-              "Frames per technique; GPU ms is the median after the first");
+              "Frames per technique, of a still view (the GI history accumulates them); GPU ms is the median "
+              "after the first");
     t.real(sharedFlag<RenderSettings>(frameOptionTable(), [](RenderSettings& s) -> auto& { return s.exposure; }),
            "exposure", [](E& e) -> auto& { return e.reference.exposure; }, 1e-6, 1e6, kCommand,
            "Figure: exposure of the final images")

@@ -7,6 +7,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/frame_options.h"
+#include "eval/suite.h"
 #include "reference/path_tracer.h"
 #include "vk/context.h"
 
@@ -47,7 +48,7 @@ struct EvalCliOptions {
     std::string referenceDir;       // cache of the reference render ("" = render it every time)
     std::string json;
     std::string images;             // directory for the side-by-side figure
-    int frames = 5;
+    int frames = kSuiteFrames;      // a still view: the GI history accumulates them
     float indirectExposure = 4.0f;
     uint32_t figureCellWidth = 320;  // the figure's cells are shrunk to at most this width
     std::string command;            // recorded in the JSON

@@ -26,7 +26,7 @@ nlohmann::json jsonNumber(double v) { return std::isfinite(v) ? nlohmann::json(v
 
 namespace {
 
-constexpr SettingsChange kCommand = SettingsChange::None;  // read once by the command
+using change::kCommand;
 
 // `quiet` rows: on when given bare, writing `progress` (its opposite).
 template <class S, class Access>

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <memory>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -12,6 +13,7 @@
 #include "app/frame_setup.h"
 #include "app/option_checks.h"
 #include "app/option_cli.h"
+#include "app/response.h"
 #include "io/file_write.h"
 #include "lighting/lighting_technique.h"
 #include "reference/path_tracer.h"
@@ -210,13 +212,16 @@ double flickerRmsNoiseFree(const std::vector<std::vector<float>>& a, const std::
 
 namespace {
 
-constexpr SettingsChange kCommand = SettingsChange::None;  // read once by the command
+using change::kCommand;
 
 OptionTable makeStabilityCommandTable() {
     using S = StabilityOptions;
     OptionTableBuilder<S> t("stability", "Stability");
     t.integer(sharedFlag<BenchOptions>(benchCommandOptions(), [](BenchOptions& b) -> auto& { return b.frames; }),
               "frames", [](S& s) -> auto& { return s.frames; }, 3, 10000, kCommand, "Frames of the motion");
+    t.integer(sharedFlag<BenchOptions>(benchCommandOptions(), [](BenchOptions& b) -> auto& { return b.warmup; }),
+              "warmup", [](S& s) -> auto& { return s.warmup; }, 0, 100000, kCommand,
+              "Still frames at the motion's start before the measured ones (the GI history settles)");
     t.real(sharedFlag<RenderCliOptions>(renderCommandOptions(), [](RenderCliOptions& r) -> auto& { return r.fps; }),
            "fps", [](S& s) -> auto& { return s.fps; }, 1e-3, 1e4, kCommand, "Frames per second");
     t.text(sharedFlag<BenchOptions>(benchCommandOptions(), [](BenchOptions& b) -> auto& { return b.json; }), "json",
@@ -238,7 +243,49 @@ OptionTable makeStabilityCommandTable() {
            },
            kCommand, "Skip the path tracer's floor")
         .bareFlag = true;
+    t.text("--change", "change", [](S& s) -> auto& { return s.change; },
+           [](const S& s) { return s.change.empty() ? std::vector<std::string>{} : std::vector<std::string>{s.change}; },
+           [](S& s, const std::string& v) {
+               parseLightChange(v);
+               s.change = v;
+           },
+           kCommand,
+           "Measure the GI's response to a sudden change instead of flicker: sun:DEG (every directional light "
+           "turns DEG degrees about the vertical), off or on (the first light); r_k for k = 1 ... frames")
+        .placeholder = "sun:DEG|off|on";
+    t.integer("--settle", "settle", [](S& s) -> auto& { return s.settle; }, 1, 100000, kCommand,
+              "With {stability.change}: still frames before the change and after it (the converged images)");
     return t.build();
+}
+
+// The response of each GI configuration to o.change, measured on the indirect light.
+int runResponse(const StabilityOptions& o, CliDeviceFrame& device, const SceneMotion& motion, GpuScene& scene,
+                const RenderSettings& settings) {
+    const LightChange change = parseLightChange(o.change);
+    const FrameInputs in = frameInputs(motion, o.frame.time);
+    nlohmann::json results = nlohmann::json::array();
+    fmt::print("{:<14} {:>8} {:>8} {:>8} {:>8} {:>8}\n", "technique", "pixels", "r_1", "r_2", "r_2 p05", "r_8");
+    for (const Config& c : configs(settings, o.all)) {
+        if (c.settings.gi == GiMode::None) continue;
+        RenderSettings s = c.settings;
+        s.aov = Aov::Indirect;
+        Renderer r(device.ctx, scene, s, 1);
+        nlohmann::json j = measureResponse(r, in.camera, change, in.lights, o.settle, o.frames);
+        const auto at = [&](size_t k, const char* key) {
+            return k <= j["r"].size() ? fmt::format("{:.3f}", j["r"][k - 1][key].get<double>()) : std::string("-");
+        };
+        fmt::print("{:<14} {:>8} {:>8} {:>8} {:>8} {:>8}\n", c.name, j["pixels_changed"].get<size_t>(),
+                   at(1, "median"), at(2, "median"), at(2, "p05"), at(8, "median"));
+        j["technique"] = c.name;
+        j["settings"] = renderSettingsJson(c.settings);
+        results.push_back(j);
+    }
+    const nlohmann::json out{{"command", o.command}, {"scene", device.frame.scene.name}, {"change", o.change},
+                             {"settle", o.settle}, {"width", settings.width}, {"height", settings.height},
+                             {"techniques", results}};
+    if (!o.json.empty()) writeTextFile(o.json, out.dump(2));
+    device.checkValidation();
+    return 0;
 }
 
 }  // namespace
@@ -267,12 +314,13 @@ int runStability(const StabilityOptions& o, const vk::ContextOptions& vkOptions,
     CliDeviceFrame device(o.frame, settings, vkOptions);
     const PreparedFrame& f = device.frame;
     const SceneMotion motion = frameMotion(o.frame, f);
-    if (!motion.moves())
+    if (!motion.moves() && o.change.empty())
         fmt::print(stderr, "penumbra: warning: nothing in '{}' moves: give {}, {} or {}\n", f.scene.name,
                    motionOptions().flagOf<FrameOptions>([](FrameOptions& m) -> auto& { return m.motion.sun; }),
                    motionOptions().flagOf<FrameOptions>([](FrameOptions& m) -> auto& { return m.motion.lights; }),
                    motionOptions().flagOf<FrameOptions>([](FrameOptions& m) -> auto& { return m.motion.camera; }));
     GpuScene scene(device.ctx, f.scene);
+    if (!o.change.empty()) return runResponse(o, device, motion, scene, settings);
     const bool atWorldPoints = motion.cameraMoves();
     nlohmann::json results = nlohmann::json::array();
     fmt::print("{:<14} {:>13} {:>13}   {:>10} {:>12}\n", "technique", "final (L1)", "indirect (L1)", "final RMS",
@@ -280,16 +328,22 @@ int runStability(const StabilityOptions& o, const vk::ContextOptions& vkOptions,
     WorldPoints points;  // the first configuration's: the geometry is the same in all
     for (const Config& c : configs(settings, o.all)) {
         std::vector<std::vector<float>> fin, ind;
-        Renderer r(device.ctx, scene, c.settings, 1);
-        for (int i = 0; i < o.frames; ++i) {
-            const FrameInputs in = frameInputs(motion, o.frame.time + i / o.fps);
-            for (Aov aov : {Aov::Final, Aov::Indirect}) {
-                if (aov == Aov::Indirect && c.settings.gi == GiMode::None) continue;
-                r.setAov(aov);
-                r.render(in);
-                std::vector<float> lum = toLuminance(r.readHdr());
-                if (atWorldPoints && points.points.empty()) points.capture(r);
-                if (atWorldPoints && points.maps.size() <= size_t(i)) points.maps.push_back(points.lookups(r));
+        // One renderer per image, so that each frame time adds one frame to each one's GI history.
+        std::vector<std::pair<Aov, std::unique_ptr<Renderer>>> renderers;
+        for (Aov aov : {Aov::Final, Aov::Indirect}) {
+            if (aov == Aov::Indirect && c.settings.gi == GiMode::None) continue;
+            RenderSettings s = c.settings;
+            s.aov = aov;
+            renderers.emplace_back(aov, std::make_unique<Renderer>(device.ctx, scene, s, 1));
+        }
+        for (int i = -o.warmup; i < o.frames; ++i) {
+            const FrameInputs in = frameInputs(motion, o.frame.time + std::max(i, 0) / o.fps);
+            for (auto& [aov, r] : renderers) {
+                r->render(in);
+                if (i < 0) continue;
+                std::vector<float> lum = toLuminance(r->readHdr());
+                if (atWorldPoints && points.points.empty()) points.capture(*r);
+                if (atWorldPoints && points.maps.size() <= size_t(i)) points.maps.push_back(points.lookups(*r));
                 if (atWorldPoints) lum = sampleAt(points.maps[size_t(i)], lum);
                 (aov == Aov::Final ? fin : ind).push_back(std::move(lum));
             }
@@ -304,7 +358,7 @@ int runStability(const StabilityOptions& o, const vk::ContextOptions& vkOptions,
                    cell(fin, flickerRms), cell(ind, flickerRms));
         results.push_back(j);
     }
-    nlohmann::json out{{"command", o.command}, {"scene", f.scene.name}, {"frames", o.frames}, {"fps", o.fps},
+    nlohmann::json out{{"command", o.command}, {"scene", f.scene.name}, {"frames", o.frames}, {"warmup", o.warmup}, {"fps", o.fps},
                        {"start_time", o.frame.time}, {"camera_motion_at_world_points", atWorldPoints},
                        {"width", settings.width}, {"height", settings.height}, {"techniques", results}};
     if (o.reference) {

@@ -14,12 +14,17 @@ namespace penumbra {
 struct StabilityOptions {
     FrameOptions frame;
     int frames = 6;
+    // Still frames at the motion's start before the measured ones: the GI history settles, so the
+    // figure is the flicker of a history in motion, not of one being filled (0: none).
+    int warmup = 32;
     double fps = 30.0;
     std::string json;
     bool all = false;             // every shadow filter and GI mode
     uint32_t referenceSpp = 16;   // the path tracer's first spp (doubled until the figure settles)
     uint32_t referenceMaxSpp = 256;
     bool reference = true;        // --no-reference: skip the path tracer's floor
+    std::string change;           // --change: measure the response to it instead (app/response.h)
+    int settle = 64;              // --change: still frames before and after it
     std::string command;
 };
 

@@ -60,6 +60,14 @@ struct OccupancyState {
     uint64_t generation = 0;
 };
 
+// The temporal-GI module's word to the GI techniques this frame: whether the frame adds to a
+// history (then a gather may take fewer samples, varied from frame to frame by `frameSeed`) or
+// starts one (the first frame, a cut, a light that changed too much: the full estimate).
+struct GiAccumulation {
+    bool accumulating = false;
+    uint32_t frameSeed = 0;  // nonzero, different each frame, while accumulating
+};
+
 namespace names {
 // Per-frame buffers the renderer writes.
 inline constexpr BufferName kFrame{"frame"};
@@ -87,6 +95,7 @@ inline constexpr HostName<DeepShadowLights> kDeepShadowLights{"dsm.lights"};
 // (FrameGraph::contribute) and the lighting pass sums them; kIrradiance is the sum it reads.
 inline constexpr ImageName kIrradianceContribution{"gi.contribution"};
 inline constexpr ImageName kIrradiance{"gi.irradiance"};
+inline constexpr HostName<GiAccumulation> kGiAccumulation{"gi.accumulation"};
 
 // The reflective shadow map that GI techniques inject or gather from ("rsm.depth", "rsm.normal",
 // "rsm.flux", "rsm.vpls", "rsm.layers") and its layer count this frame.

@@ -28,6 +28,14 @@ enum class SettingsChange {
 };
 const char* settingsChangeName(SettingsChange c);
 
+// The change classes by the short names the option tables use (`using namespace change;`).
+namespace change {
+inline constexpr SettingsChange kFrame = SettingsChange::PerFrame;
+inline constexpr SettingsChange kStructure = SettingsChange::Structure;
+inline constexpr SettingsChange kSizes = SettingsChange::Sizes;
+inline constexpr SettingsChange kCommand = SettingsChange::None;  // read once by the command that owns it
+}  // namespace change
+
 enum class OptionKind {
     Integer,  // whole numbers in [min, max]
     Real,     // finite numbers in [min, max]

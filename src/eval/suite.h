@@ -23,6 +23,10 @@ struct SuiteScene {
 
 // The five scenes; glTF paths under `assets` (the folder holding sponza/ and VC/). `only`: names to
 // keep (empty = all); an unknown name throws std::invalid_argument.
+// Still frames rendered per view: the GI history accumulates them (the temporal GI's converged
+// estimate, which is what a still view shows after about a second).
+inline constexpr int kSuiteFrames = 32;
+
 std::vector<SuiteScene> suiteScenes(const std::string& assets, const std::vector<std::string>& only = {});
 
 // RSM (interpolated) and LPV at their default settings, hard shadows, both kept for the figure.

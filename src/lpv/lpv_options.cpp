@@ -7,9 +7,7 @@
 namespace penumbra {
 namespace {
 
-constexpr SettingsChange kFrame = SettingsChange::PerFrame;
-constexpr SettingsChange kStructure = SettingsChange::Structure;
-constexpr SettingsChange kSizes = SettingsChange::Sizes;
+using namespace change;
 
 OptionTable makeTable() {
     using S = LpvSettings;

@@ -5,9 +5,11 @@
 
 #include "dsm/dsm_technique.h"
 #include "lighting/lighting_technique.h"
+#include "lpv/lpv_options.h"
 #include "lpv/lpv_technique.h"
 #include "renderer/settings_change.h"
 #include "renderer/technique_registry.h"
+#include "rsm/rsm_options.h"
 #include "rsm/rsm_technique.h"
 #include "shadow/shadow_technique.h"
 #include "temporal_gi/temporal_gi_technique.h"
@@ -34,6 +36,15 @@ HairCasterSettings hairCasters(const RenderSettings& s) {
 bool occupancyUsed(const RenderSettings& s) {
     return (s.gi == GiMode::Rsm && s.rsm.visibility == RsmVisibility::Voxels) ||
            (s.gi == GiMode::Lpv && s.lpv.geometry == LpvGeometry::Voxels);
+}
+
+// The GI techniques' settings in one string (their option rows' values): the temporal history
+// restarts when they change, since it holds another estimator's frames.
+std::string giEstimator(const RenderSettings& s) {
+    std::string key;
+    for (const OptionRow& row : rsmOptions().rows) key += row.value(&s.rsm) + ';';
+    for (const OptionRow& row : lpvOptions().rows) key += row.value(&s.lpv) + ';';
+    return key;
 }
 
 template <class T>
@@ -100,12 +111,17 @@ void addBuiltinTechniques(TechniqueRegistry& r) {
     lpv.apply = [](Technique& t, S s) { as<LpvTechnique>(t).setSettings(s.lpv); };
     r.add(std::move(lpv));
 
-    TechniqueEntry temporal{"temporal-gi", 70, {}, kPartCamera | kPartGi};
+    // Built with the camera, not with the GI: its pipelines outlive a change of GI mode (on lavapipe a
+    // module made and dropped at each change left its resident memory growing), and its images are
+    // made by the first frame with GI and freed by a frame without.
+    TechniqueEntry temporal{"temporal-gi", 70, {}, kPartCamera};
     temporal.enabled = [](S s) { return s.giTemporal; };
     temporal.create = [](B b, S s) {
-        return std::make_unique<TemporalGiTechnique>(b, TemporalGiSettings{s.giTemporalAlpha});
+        auto t = std::make_unique<TemporalGiTechnique>(b, s.temporalGi);
+        t->setSettings(s.temporalGi, giEstimator(s));
+        return t;
     };
-    temporal.apply = [](Technique& t, S s) { as<TemporalGiTechnique>(t).setSettings({s.giTemporalAlpha}); };
+    temporal.apply = [](Technique& t, S s) { as<TemporalGiTechnique>(t).setSettings(s.temporalGi, giEstimator(s)); };
     r.add(std::move(temporal));
 
     TechniqueEntry lighting{"lighting", 80, {}, kPartCamera};

@@ -23,6 +23,7 @@
 #include "rsm/rsm_flux.h"
 #include "rsm/rsm_gather.h"
 #include "rsm/rsm_options.h"
+#include "temporal_gi/temporal_gi_technique.h"
 #include "shadow/shadow_options.h"
 #include "shadow/shadow_layout.h"
 #include "shared/types.h"
@@ -298,6 +299,9 @@ std::vector<Demand> frameDemands(const vk::DeviceLimits& lim, const RenderSettin
     if (s.gi == GiMode::Rsm && s.rsm.mode == RsmMode::Interpolated)
         d.push_back({Knob::Width, w, 1, fmt::format("the RSM gather's pixel list ({}x{})", w, h),
                      [=](uint64_t v) { return RsmGather::pixelListBytes(uint32_t(v), uint32_t(h)); }, true});
+    if (s.giTemporal && s.gi != GiMode::None)
+        d.push_back({Knob::Width, w, 1, fmt::format("the GI history and filter ({}x{})", w, h),
+                     [=](uint64_t v) { return TemporalGiTechnique::bytes(v, h); }});
     const uint64_t shadowLayers = std::max(layers.shadow, 1u), momentLayers = layers.moments;
     const uint64_t rsmLayers = std::max(layers.rsm, 1u);
     d.push_back({Knob::ShadowRes, s.shadow.resolution, 16,

@@ -14,13 +14,12 @@
 #include "renderer/technique_registry.h"
 #include "rsm/rsm_options.h"
 #include "shadow/shadow_options.h"
+#include "temporal_gi/temporal_gi_options.h"
 
 namespace penumbra {
 namespace {
 
-constexpr SettingsChange kFrame = SettingsChange::PerFrame;
-constexpr SettingsChange kStructure = SettingsChange::Structure;
-constexpr SettingsChange kSizes = SettingsChange::Sizes;
+using namespace change;
 using S = RenderSettings;
 
 const std::vector<std::pair<std::string, Aov>> kAovs{
@@ -114,10 +113,9 @@ void addTechniqueRows(OptionTableBuilder<S>& t) {
              kStructure, "Indirect light (one diffuse bounce)")
         .rebuild({"gi"});
     t.boolean("--gi-temporal", "gi_temporal", [](S& s) -> auto& { return s.giTemporal; }, kStructure,
-              "Accumulate the indirect light over frames, reprojected (less flicker, more lag)")
+              "Accumulate the indirect light over frames, reprojected, and filter it (off: each frame's own "
+              "estimate)")
         .rebuild({"camera"});
-    t.real("--gi-temporal-alpha", "gi_temporal_alpha", [](S& s) -> auto& { return s.giTemporalAlpha; }, 1e-3, 1.0,
-           kFrame, "Temporal accumulation: the new frame's weight");
 }
 
 OptionTable makeFrameTable() {
@@ -139,6 +137,7 @@ std::deque<BoundOptionTable>& tables() {
         bind(dsmOptions(), &S::dsm),
         bind(rsmOptions(), &S::rsm),
         bind(lpvOptions(), &S::lpv),
+        bind(temporalGiOptions(), &S::temporalGi),
     };
     // Techniques registered from outside src/ bring their tables (a deque: earlier entries stay put).
     static std::set<std::string> added;
@@ -170,6 +169,7 @@ void validateSettings(const RenderSettings& s) {
     checkRanges(dsmOptions(), &s.dsm);
     if (s.gi != GiMode::None) validate(s.rsm);
     if (s.gi == GiMode::Lpv) validate(s.lpv);
+    if (s.giTemporal) validate(s.temporalGi);
     const OptionTable& frame = frameOptionTable();
     const std::string& aov = frame.flagOf<S>([](S& x) -> auto& { return x.aov; });
     const std::string& gi = frame.flagOf<S>([](S& x) -> auto& { return x.gi; });

@@ -15,6 +15,7 @@
 #include "lpv/lpv_settings.h"
 #include "rsm/rsm_settings.h"
 #include "shadow/shadow_settings.h"
+#include "temporal_gi/temporal_gi_settings.h"
 #include "shared/types.h"
 
 namespace penumbra {
@@ -30,10 +31,10 @@ struct RenderSettings {
     CameraPath cameraPath = CameraPath::Visibility;  // how the camera's G-buffer is made (lighting/gbuffer_pass.h)
     ShadowSettings shadow;
     GiMode gi = GiMode::None;
-    // Temporal accumulation of the indirect irradiance (temporal_gi/gi_history.h): off by default, it trades
-    // flicker under moving lights for lag (README "Temporal stability"); alpha = the new frame's weight.
-    bool giTemporal = false;
-    float giTemporalAlpha = 0.1f;
+    // The indirect irradiance accumulated over frames and filtered (src/temporal_gi); off: each frame's
+    // estimate alone (the references and the single-frame tests).
+    bool giTemporal = true;
+    TemporalGiSettings temporalGi;
     RsmSettings rsm;
     LpvSettings lpv;
     DsmSettings dsm;

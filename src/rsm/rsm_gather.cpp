@@ -126,6 +126,9 @@ void RsmGather::setSettings(const RsmSettings& s) {
                                                                      kMaxRsmSamples));
     settings_ = s;
     pattern_ = rsmSamplePattern(s);
+    RsmSettings perFrame = s;
+    perFrame.samples = std::min(s.frameSamples, s.samples);
+    framePattern_ = rsmSamplePattern(perFrame);
 }
 
 // Push constants shared by the gather and interpolation passes; sizes are the low-resolution grid's
@@ -134,7 +137,8 @@ gpu::RsmPush RsmGather::constants(uint32_t mode, uint32_t layers) const {
     const bool low = mode == RSM_GATHER_LOWRES;
     gpu::RsmPush pc{};
     pc.mode = mode;
-    pc.sampleCount = settings_.samples;
+    pc.sampleCount = accumulating_ ? std::min(settings_.frameSamples, settings_.samples) : settings_.samples;
+    pc.frameSeed = frameSeed_;
     pc.layerCount = layers;
     pc.lowResFactor = std::max(1u, settings_.lowResFactor);
     pc.width = low ? lowWidth_ : width_;
@@ -206,10 +210,13 @@ void RsmGather::addGather(FrameGraph& graph, const char* name, uint32_t mode, Im
     });
 }
 
-void RsmGather::addTo(FrameGraph& graph, uint32_t layers, uint32_t slot) {
+void RsmGather::addTo(FrameGraph& graph, uint32_t layers, uint32_t slot, const GiAccumulation* accumulation) {
     fluxDraws_ = graph.hasBuffer("rsm.flux-draws");
+    accumulating_ = accumulation && accumulation->accumulating;
+    frameSeed_ = accumulating_ ? accumulation->frameSeed : 0u;
+    const std::vector<glm::vec4>& pattern = accumulating_ ? framePattern_ : pattern_;
     samples_.select(slot);
-    samples_.write(pattern_.data(), pattern_.size() * sizeof(glm::vec4));
+    samples_.write(pattern.data(), pattern.size() * sizeof(glm::vec4));
     const ImageHandle irradiance = graph.import(irradiance_);
     graph.publish("gi.irradiance", irradiance);
     if (settings_.mode == RsmMode::Full || settings_.mode == RsmMode::AllTexels) {

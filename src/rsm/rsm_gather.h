@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "core/frame_graph.h"
+#include "core/names.h"
 #include "rsm/rsm_pass.h"
 
 namespace penumbra {
@@ -22,8 +23,8 @@ public:
     RsmGather(vk::Allocator& alloc, vk::CommandContext& cmd, uint32_t width, uint32_t height,
               const RsmSettings& settings);
     // Reads "frame", the G-buffer, the RSM ("rsm.*", "rsm.flux-draws" where published); publishes
-    // "gi.irradiance".
-    void addTo(FrameGraph& graph, uint32_t layerCount, uint32_t slot);
+    // "gi.irradiance". `accumulation`: the temporal-GI module's word (null: no history).
+    void addTo(FrameGraph& graph, uint32_t layerCount, uint32_t slot, const GiAccumulation* accumulation);
     // Per-frame values (samples, radius, seed, weights, thresholds); mode, resolution and the low-res
     // factor size resources and must not change.
     void setSettings(const RsmSettings& settings);
@@ -46,7 +47,9 @@ private:
     vk::ComputeKernel gather_, interpolate_, args_;
     vk::Sampler pointSampler_;
     vk::Image irradiance_, low_;
-    std::vector<glm::vec4> pattern_;
+    std::vector<glm::vec4> pattern_, framePattern_;  // `samples`; `frameSamples` (while accumulating)
+    bool accumulating_ = false;                       // this frame adds to a GI history
+    uint32_t frameSeed_ = 0;
     vk::BufferRing samples_;  // the pattern, rewritten each frame into the frame slot's copy
     vk::Buffer pixelList_, dispatchArgs_, emptyBuffer_;
     bool fluxDraws_ = false;  // "rsm.flux-draws" is published this frame

@@ -7,9 +7,7 @@
 namespace penumbra {
 namespace {
 
-constexpr SettingsChange kFrame = SettingsChange::PerFrame;
-constexpr SettingsChange kStructure = SettingsChange::Structure;
-constexpr SettingsChange kSizes = SettingsChange::Sizes;
+using namespace change;
 
 OptionTable makeTable() {
     using S = RsmSettings;
@@ -18,6 +16,10 @@ OptionTable makeTable() {
               "RSM resolution per light");
     t.integer("--rsm-samples", "samples", [](S& s) -> auto& { return s.samples; }, 1, kMaxRsmSamples, kFrame,
               "RSM gather samples per pixel");
+    t.integer("--rsm-frame-samples", "frame_samples", [](S& s) -> auto& { return s.frameSamples; }, 1,
+              kMaxRsmSamples, kFrame,
+              "RSM gather samples per pixel in a frame that adds to the GI history ({frame.gi_temporal}; at most "
+              "{rsm.samples}, which a frame that starts the history takes)");
     t.real("--rsm-radius", "radius", [](S& s) -> auto& { return s.radius; }, 1e-4, 2.0, kFrame,
            "RSM sampling radius r_max in RSM uv units");
     t.integer("--rsm-seed", "seed", [](S& s) -> auto& { return s.seed; }, 0, 4294967295.0, kFrame,

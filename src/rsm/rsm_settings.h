@@ -46,6 +46,10 @@ struct RsmSettings {
     // error within 0.01 of 350's (Sponza 0.387 against 0.383) at a gather about 12% cheaper on the H100
     // (README, "RSM: visibility from two views").
     uint32_t samples = 300;
+    // Samples per receiver in a frame that adds to a GI history (src/temporal_gi): the history averages
+    // a new pattern each frame, so each frame needs only a share of the estimate (at most `samples`).
+    // A frame that starts a history (the first, a cut, a light's jump) takes `samples`.
+    uint32_t frameSamples = 64;
     float radius = 0.25f;        // r_max in RSM uv units
     uint32_t seed = 1;           // the sample pattern is generated once from it (reproducible)
     RsmMode mode = RsmMode::Interpolated;

@@ -57,7 +57,7 @@ void RsmTechnique::addPasses(const FrameContext& f) {
     pass_.addTo(f.graph);
     if (flux_ && pass_.layerCount() > 0) flux_->addTo(f.graph, pass_.layerCount());
     if (!gather_) return;
-    gather_->addTo(f.graph, pass_.layerCount(), f.slot);
+    gather_->addTo(f.graph, pass_.layerCount(), f.slot, f.board.get(names::kGiAccumulation));
     f.graph.contribute(names::kIrradianceContribution, f.graph.image(names::kIrradiance));
 }
 

@@ -3,9 +3,7 @@
 namespace penumbra {
 namespace {
 
-constexpr SettingsChange kFrame = SettingsChange::PerFrame;
-constexpr SettingsChange kStructure = SettingsChange::Structure;
-constexpr SettingsChange kSizes = SettingsChange::Sizes;
+using namespace change;
 
 // Shadow-map sizes also size the RSM (its layers follow the shadow layers) and the DSM (whose
 // resolution defaults to the shadow map's).

@@ -1,57 +1,88 @@
 #include "temporal_gi/gi_history.h"
 
-#include "render/gi_history_bindings.h"
+#include "core/names.h"
+#include "core/previous_frame.h"
 #include "shared/types.h"
+#include "temporal_gi/bindings.h"
 
 namespace penumbra {
+namespace {
 
-GiHistory::GiHistory(vk::Allocator& alloc, uint32_t width, uint32_t height) {
+constexpr VkFormat kColorFormat = VK_FORMAT_R32G32B32A32_SFLOAT;  // a long mean: half floats would stall it
+constexpr VkFormat kMomentsFormat = VK_FORMAT_R32G32_SFLOAT;  // a squared irradiance outgrows half floats
+constexpr VkFormat kGeometryFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+
+}  // namespace
+
+GiHistory::GiHistory(vk::Allocator& alloc, uint32_t width, uint32_t height)
+    : alloc_(alloc), width_(width), height_(height) {
     vk::Context& ctx = alloc.context();
     constexpr VkDescriptorType kTex = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     constexpr VkDescriptorType kImg = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
     constexpr VkDescriptorType kBuf = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    kernel_ = vk::ComputeKernel(ctx, "render/gi_history.comp",
-                                {{GI_HISTORY_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
-                                 {GI_HISTORY_CURRENT, kTex},
-                                 {GI_HISTORY_GBUFFER_DEPTH, kTex},
-                                 {GI_HISTORY_HISTORY, kTex},
-                                 {GI_HISTORY_HISTORY_DEPTH, kTex},
-                                 {GI_HISTORY_OUT, kImg},
-                                 {GI_HISTORY_OUT_DEPTH, kImg},
-                                 {GI_HISTORY_MOTION_FIRST, kTex},
-                                 {GI_HISTORY_MOTION_FIRST + 1, kBuf},
-                                 {GI_HISTORY_MOTION_FIRST + 2, kBuf}},
-                                sizeof(gpu::GiHistoryPush));
+    kernel_ = vk::ComputeKernel(ctx, "temporal_gi/accumulate.comp",
+                                {{GI_ACCUMULATE_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
+                                 {GI_ACCUMULATE_CURRENT, kTex},
+                                 {GI_ACCUMULATE_GBUFFER_DEPTH, kTex},
+                                 {GI_ACCUMULATE_GBUFFER_NORMAL, kTex},
+                                 {GI_ACCUMULATE_HISTORY_COLOR, kTex},
+                                 {GI_ACCUMULATE_HISTORY_MOMENTS, kTex},
+                                 {GI_ACCUMULATE_HISTORY_GEOMETRY, kTex},
+                                 {GI_ACCUMULATE_OUT_COLOR, kImg},
+                                 {GI_ACCUMULATE_OUT_MOMENTS, kImg},
+                                 {GI_ACCUMULATE_OUT_GEOMETRY, kImg},
+                                 {GI_ACCUMULATE_MOTION_FIRST, kTex},
+                                 {GI_ACCUMULATE_MOTION_FIRST + 1, kBuf},
+                                 {GI_ACCUMULATE_MOTION_FIRST + 2, kBuf}},
+                                sizeof(gpu::GiAccumulatePush));
     nearest_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
-    const VkImageUsageFlags usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
-    for (int i = 0; i < 2; ++i) {
-        irradiance_[i] = vk::Image(alloc, {VK_FORMAT_R32G32B32A32_SFLOAT, width, height, 1, usage, "gi-history"});
-        depth_[i] = vk::Image(alloc, {VK_FORMAT_R32_SFLOAT, width, height, 1, usage, "gi-history-depth"});
-    }
 }
 
-void GiHistory::addTo(FrameGraph& graph, float alpha) {
+void GiHistory::allocate() {
+    const VkImageUsageFlags usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+    for (int i = 0; i < 2; ++i) {
+        color_[i] = vk::Image(alloc_, {kColorFormat, width_, height_, 1, usage, "gi-history-color"});
+        moments_[i] = vk::Image(alloc_, {kMomentsFormat, width_, height_, 1, usage, "gi-history-moments"});
+        geometry_[i] = vk::Image(alloc_, {kGeometryFormat, width_, height_, 1, usage, "gi-history-geometry"});
+    }
+    valid_ = false;
+}
+
+void GiHistory::release() {
+    for (int i = 0; i < 2; ++i) color_[i] = {}, moments_[i] = {}, geometry_[i] = {};
+    valid_ = false;
+}
+
+uint64_t GiHistory::bytes(uint64_t width, uint64_t height) { return 2 * width * height * (16 + 8 + 8); }
+
+GiHistoryImages GiHistory::addTo(FrameGraph& graph, ImageHandle current, float minWeight, float changeWeight) {
+    if (!color_[0].handle()) allocate();
     const uint32_t write = next_, read = 1 - next_;
-    const ImageHandle out = graph.import(irradiance_[write]), outDepth = graph.import(depth_[write]);
-    const gpu::GiHistoryPush push{alpha, valid_ ? 1u : 0u, 0, 0};
-    PassBuilder pass = graph.pass("gi.temporal");
-    declarePreviousFrameInputs(pass, GI_HISTORY_MOTION_FIRST, nearest_.handle());
+    const GiHistoryImages out{graph.import(color_[write]), graph.import(moments_[write])};
+    const ImageHandle outGeometry = graph.import(geometry_[write]);
+    const gpu::GiAccumulatePush push{minWeight, changeWeight, valid_ ? 1u : 0u, 0};
+    const VkSampler nearest = nearest_.handle();
+    PassBuilder pass = graph.pass("gi.accumulate");
+    declarePreviousFrameInputs(pass, GI_ACCUMULATE_MOTION_FIRST, nearest);
     pass.pipeline(kernel_.pipeline)
-        .uniform(GI_HISTORY_FRAME, graph.buffer("frame"))
-        .sampled(GI_HISTORY_CURRENT, graph.image("gi.irradiance"), nearest_.handle())
-        .sampled(GI_HISTORY_GBUFFER_DEPTH, graph.image("gbuffer.depth"), nearest_.handle())
-        .sampled(GI_HISTORY_HISTORY, graph.import(irradiance_[read]), nearest_.handle())
-        .sampled(GI_HISTORY_HISTORY_DEPTH, graph.import(depth_[read]), nearest_.handle())
-        .storageImage(GI_HISTORY_OUT, out)
-        .storageImage(GI_HISTORY_OUT_DEPTH, outDepth)
+        .uniform(GI_ACCUMULATE_FRAME, graph.buffer(names::kFrame))
+        .sampled(GI_ACCUMULATE_CURRENT, current, nearest)
+        .sampled(GI_ACCUMULATE_GBUFFER_DEPTH, graph.image(names::kGbufferDepth), nearest)
+        .sampled(GI_ACCUMULATE_GBUFFER_NORMAL, graph.image(names::kGbufferNormal), nearest)
+        .sampled(GI_ACCUMULATE_HISTORY_COLOR, graph.import(color_[read]), nearest)
+        .sampled(GI_ACCUMULATE_HISTORY_MOMENTS, graph.import(moments_[read]), nearest)
+        .sampled(GI_ACCUMULATE_HISTORY_GEOMETRY, graph.import(geometry_[read]), nearest)
+        .storageImage(GI_ACCUMULATE_OUT_COLOR, out.color)
+        .storageImage(GI_ACCUMULATE_OUT_MOMENTS, out.moments)
+        .storageImage(GI_ACCUMULATE_OUT_GEOMETRY, outGeometry)
         .record([this, out, push](PassContext& c) {
             kernel_.pipeline.push(c.cmd, push);
-            const vk::Image& image = c.image(out);
+            const vk::Image& image = c.image(out.color);
             vkCmdDispatch(c.cmd, vk::divUp(image.width(), 8), vk::divUp(image.height(), 8), 1);
         });
-    graph.publish("gi.irradiance", out);
     next_ = read;
     valid_ = true;
+    return out;
 }
 
 }  // namespace penumbra

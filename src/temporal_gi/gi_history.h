@@ -1,28 +1,39 @@
-// Temporal accumulation of the indirect irradiance (--gi-temporal, off by default; README "Temporal
-// stability"): each frame blends its "gi.irradiance" into the previous frames' accumulation, reprojected
-// to where each pixel's surface point was (render/gi_history.comp), and publishes the result as
-// "gi.irradiance". Two history images alternate: one is read while the other is written.
+// The GI history: this frame's indirect irradiance blended into the frames before it, reprojected to
+// where each pixel's surface point was (temporal_gi/accumulate.comp). Two sets of images alternate:
+// one is read while the other is written. Each holds the accumulated irradiance and the frames it
+// spans, the luminance's first two moments (the spatial filter's noise estimate), and the view depth
+// and normal that tell, next frame, which history pixels still show the same surface.
 #pragma once
 #include "core/frame_graph.h"
-#include "core/previous_frame.h"
 #include "vk/pipeline.h"
 
 namespace penumbra {
 
+struct GiHistoryImages {
+    ImageHandle color, moments;  // this frame's accumulation
+};
+
 class GiHistory {
 public:
     GiHistory(vk::Allocator& alloc, uint32_t width, uint32_t height);
-    // Reads "frame", "gi.irradiance", "gbuffer.depth", "gbuffer.ids", "drawn-triangles", "instances";
-    // republishes "gi.irradiance". `alpha`: the new frame's weight.
-    void addTo(FrameGraph& graph, float alpha);
-    // The next frame starts a new accumulation (the GI that fills it changed).
+    // Device bytes of the history at a width x height image.
+    static uint64_t bytes(uint64_t width, uint64_t height);
+    // Reads "frame", `current`, the G-buffer's depth, normal and the previous-frame inputs.
+    // `minWeight`, `changeWeight`: GiAccumulatePush's.
+    GiHistoryImages addTo(FrameGraph& graph, ImageHandle current, float minWeight, float changeWeight);
+    // The next frame starts a new history.
     void reset() { valid_ = false; }
+    // Frees the images (a frame without GI); the next addTo makes them anew.
+    void release();
 
 private:
+    void allocate();
+    vk::Allocator& alloc_;
+    uint32_t width_, height_;
     vk::ComputeKernel kernel_;
     vk::Sampler nearest_;
-    vk::Image irradiance_[2], depth_[2];
-    uint32_t next_ = 0;   // the image this frame writes
+    vk::Image color_[2], moments_[2], geometry_[2];  // made by the first addTo
+    uint32_t next_ = 0;   // the set this frame writes
     bool valid_ = false;  // the other holds the previous frame
 };
 

@@ -11,7 +11,7 @@ namespace {
 
 OptionTable makeViewCommandTable() {
     using V = ViewOptions;
-    constexpr SettingsChange kCommand = SettingsChange::None;  // read once when the window opens
+    using change::kCommand;
     OptionTableBuilder<V> t("view", "View");
     t.text("--script", "script", [](V& v) -> auto& { return v.script; },
            [](const V& v) { return v.script.empty() ? std::vector<std::string>{} : std::vector<std::string>{v.script}; },
