@@ -47,6 +47,11 @@ for name, by in sorted(runs.items()):
     old, new = statistics.median(by["old"]), statistics.median(by["new"])
     summary[name] = {"old_ms": old, "new_ms": new, "ratio": new / old, "runs": len(by["new"])}
     print(f"{name:<18} old {old:7.3f} ms  new {new:7.3f} ms  new/old {new / old:6.3f}  ({len(by['new'])} runs)")
+    for binary in ("old", "new"):  # the costliest passes of the first run
+        passes = json.loads((out / f"cost_{name}_{binary}_0.json").read_text())["passes"]
+        top = sorted(passes, key=lambda p: -p["median_ms"])[:8]
+        summary[name][f"{binary}_passes_ms"] = {p["name"]: p["median_ms"] for p in passes}
+        print(f"    {binary}: " + ", ".join(f"{p['name']} {p['median_ms']:.3f}" for p in top))
 (out / "cost_summary.json").write_text(json.dumps(summary, indent=2) + "\n")
 PY
 

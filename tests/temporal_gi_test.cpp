@@ -204,7 +204,7 @@ TEST_F(TemporalGiTest, DisocclusionRestartsExactlyTheDisoccludedPixels) {
 
 // Where the filter may take light from: a pixel's filtered value lies within the range of the
 // unfiltered values of its own surface (the same normal within 1 degree and the same plane within 1 cm)
-// inside the filter's reach (2 + 4 + 8 pixels for three iterations), so no light crosses an edge
+// inside the filter's reach (1 + 2 + 4 + 8 pixels for its four iterations), so no light crosses an edge
 // between surfaces, not even to the pixel beside it. Cornell's first frame (a fresh history: only the
 // geometry stops the filter) with the RSM's exact sum.
 TEST_F(TemporalGiTest, FilterTakesNoLightAcrossAnEdge) {
@@ -219,9 +219,9 @@ TEST_F(TemporalGiTest, FilterTakesNoLightAcrossAnEdge) {
         r.render(in);
         return r.readHdr();
     };
-    const std::vector<float> raw = frame(Aov::Indirect, 0), filtered = frame(Aov::Indirect, 3);
+    const std::vector<float> raw = frame(Aov::Indirect, 0), filtered = frame(Aov::Indirect, 4);
     const std::vector<float> normal = frame(Aov::Normal, 0), distance = frame(Aov::Depth, 0);
-    const int w = int(s.width), h = int(s.height), reach = 14;
+    const int w = int(s.width), h = int(s.height), reach = 15;
     auto position = [&](int x, int y) {
         const Ray ray = cameraRay(in.camera, s.width, s.height, x, y);
         return ray.origin + double(distance[(size_t(y) * w + x) * 4]) * ray.dir;

@@ -84,7 +84,8 @@ void main() {
     }
     const vec3 p = pixelWorldPosition(frame, pixel, depth);
     const float viewDepth = (frame.viewProj * vec4(p, 1.0)).w;
-    const vec3 n = normalize(texelFetch(gNormal, pixel, 0).xyz);
+    const vec4 gn = texelFetch(gNormal, pixel, 0);
+    const vec3 n = normalize(gn.xyz);
     const History h = reprojectedHistory(previousClip(pixel, depth, p), n);
     const float frames = h.found ? h.color.a + 1.0 : 1.0;
     const float alpha = max(max(1.0 / frames, pc.minWeight), pc.changeWeight);
@@ -93,5 +94,7 @@ void main() {
     // The frames the blend is worth: a raised weight shortens the history to 1 / alpha.
     imageStore(outColor, pixel, vec4(color, 1.0 / alpha));
     imageStore(outMoments, pixel, vec4(moments, 0.0, 0.0));
-    imageStore(outGeometry, pixel, vec4(viewDepth, octEncode(n), 0.0));
+    // w: 1 where the spatial filter may take and give light (a surface; not a hair strand, whose
+    // G-buffer holds its tangent).
+    imageStore(outGeometry, pixel, vec4(viewDepth, octEncode(n), gn.w < 1.5 ? 1.0 : 0.0));
 }

@@ -10,7 +10,7 @@
 #define GI_ACCUMULATE_GBUFFER_NORMAL 3
 #define GI_ACCUMULATE_HISTORY_COLOR 4     // rgb: accumulated irradiance, a: frames it spans
 #define GI_ACCUMULATE_HISTORY_MOMENTS 5   // first and second moment of the luminance
-#define GI_ACCUMULATE_HISTORY_GEOMETRY 6  // x: view depth, yz: octahedral normal
+#define GI_ACCUMULATE_HISTORY_GEOMETRY 6  // x: view depth, yz: octahedral normal, w: 1 on a surface
 #define GI_ACCUMULATE_OUT_COLOR 7
 #define GI_ACCUMULATE_OUT_MOMENTS 8
 #define GI_ACCUMULATE_OUT_GEOMETRY 9
@@ -19,10 +19,9 @@
 
 // filter.comp
 #define GI_FILTER_FRAME 0
-#define GI_FILTER_GBUFFER_DEPTH 1
-#define GI_FILTER_GBUFFER_NORMAL 2
-#define GI_FILTER_INPUT 3     // the accumulation (first iteration) or the previous iteration's output
-#define GI_FILTER_MOMENTS 4   // the accumulation's moments (first iteration)
-#define GI_FILTER_OUTPUT 5    // rgb: filtered irradiance, a: the standard deviation of its luminance (< 0: unknown)
+#define GI_FILTER_GUIDE 1     // this frame's history geometry: view depth, octahedral normal, 1 on a surface
+#define GI_FILTER_INPUT 2     // the accumulation (first iteration) or the previous iteration's output
+#define GI_FILTER_MOMENTS 3   // the accumulation's moments (first iteration)
+#define GI_FILTER_OUTPUT 4    // rgb: filtered irradiance, a: the standard deviation of its luminance (< 0: unknown)
 
 #endif

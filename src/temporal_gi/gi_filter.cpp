@@ -14,8 +14,7 @@ GiFilter::GiFilter(vk::Allocator& alloc, uint32_t width, uint32_t height)
     constexpr VkDescriptorType kTex = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     kernel_ = vk::ComputeKernel(ctx, "temporal_gi/filter.comp",
                                 {{GI_FILTER_FRAME, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
-                                 {GI_FILTER_GBUFFER_DEPTH, kTex},
-                                 {GI_FILTER_GBUFFER_NORMAL, kTex},
+                                 {GI_FILTER_GUIDE, kTex},
                                  {GI_FILTER_INPUT, kTex},
                                  {GI_FILTER_MOMENTS, kTex},
                                  {GI_FILTER_OUTPUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}},
@@ -40,8 +39,7 @@ ImageHandle GiFilter::addTo(FrameGraph& graph, const GiHistoryImages& history, u
         graph.pass("gi.filter-" + std::to_string(k))
             .pipeline(kernel_.pipeline)
             .uniform(GI_FILTER_FRAME, graph.buffer(names::kFrame))
-            .sampled(GI_FILTER_GBUFFER_DEPTH, graph.image(names::kGbufferDepth), nearest)
-            .sampled(GI_FILTER_GBUFFER_NORMAL, graph.image(names::kGbufferNormal), nearest)
+            .sampled(GI_FILTER_GUIDE, history.geometry, nearest)
             .sampled(GI_FILTER_INPUT, input, nearest)
             .sampled(GI_FILTER_MOMENTS, history.moments, nearest)
             .storageImage(GI_FILTER_OUTPUT, out)

@@ -1,5 +1,6 @@
 // The edge-aware a-trous filter of the accumulated indirect irradiance (temporal_gi/filter.comp):
-// iterations with taps 1, 2, 4, ... pixels apart, alternating between two images.
+// iterations of a 3x3 kernel with taps 1, 2, 4, ... pixels apart, alternating between two images,
+// guided by the history's geometry of this frame.
 #pragma once
 #include "core/frame_graph.h"
 #include "temporal_gi/gi_history.h"

@@ -58,8 +58,9 @@ uint64_t GiHistory::bytes(uint64_t width, uint64_t height) { return 2 * width * 
 GiHistoryImages GiHistory::addTo(FrameGraph& graph, ImageHandle current, float minWeight, float changeWeight) {
     if (!color_[0].handle()) allocate();
     const uint32_t write = next_, read = 1 - next_;
-    const GiHistoryImages out{graph.import(color_[write]), graph.import(moments_[write])};
-    const ImageHandle outGeometry = graph.import(geometry_[write]);
+    const GiHistoryImages out{graph.import(color_[write]), graph.import(moments_[write]),
+                              graph.import(geometry_[write])};
+    const ImageHandle outGeometry = out.geometry;
     const gpu::GiAccumulatePush push{minWeight, changeWeight, valid_ ? 1u : 0u, 0};
     const VkSampler nearest = nearest_.handle();
     PassBuilder pass = graph.pass("gi.accumulate");

@@ -11,6 +11,7 @@ namespace penumbra {
 
 struct GiHistoryImages {
     ImageHandle color, moments;  // this frame's accumulation
+    ImageHandle geometry;        // this frame's view depth and normal (the spatial filter's guide)
 };
 
 class GiHistory {

@@ -14,8 +14,9 @@ struct TemporalGiSettings {
     // share of the scene's size, in the same measure) restarts the history; a smaller change raises
     // the new frame's weight to (change / resetAngle)^2, so a slow sun keeps most of its history.
     float resetAngle = 10.0f;
-    // Iterations of the edge-aware a-trous filter (taps 1, 2, 4, ... pixels apart); 0: none.
-    uint32_t filterIterations = 3;
+    // Iterations of the edge-aware a-trous filter (3x3 taps 1, 2, 4, 8 ... pixels apart: four reach 15
+    // pixels); 0: none.
+    uint32_t filterIterations = 4;
     // Its luminance edge stop, in standard deviations of a pixel's accumulated estimate.
     float luminanceSigma = 4.0f;
 };
