@@ -1,4 +1,4 @@
-// GI and reprojection under motion (issue 12): LPV's light under camera-only motion, the velocity AOV
+// GI and reprojection under motion: LPV's light under camera-only motion, the velocity AOV
 // against an analytic projection, RSM with bilinear VPLs under a moving light, and the temporal
 // accumulation's step response.
 #include <array>
@@ -137,7 +137,7 @@ TEST_F(MotionGiTest, VelocityIsWhereEachPointWasInThePreviousFrame) {
         TestRenderer renderer(ctx(), gpu, s, 1);
         const SceneMotion motion(gpu.scene(), camera, gpu.scene().lights, {}, {});
         for (bool objectMoves : {true, false}) {
-            if (objectMoves && path == CameraPath::Gbuffer) continue;  // camera motion only (README)
+            if (objectMoves && path == CameraPath::Gbuffer) continue;  // camera motion only (docs/techniques/rsm.md)
             SCOPED_TRACE(objectMoves ? "the square moves" : "the camera moves");
             const ScenePose now = motion.at(t);
             FrameInputs in{camera, now.lights, now.instances};
@@ -254,8 +254,8 @@ TEST_F(MotionGiTest, BilinearVplsMoveContinuouslyWithTheLight) {
 
 // --gi-temporal is an exponential average of the frames, reprojected: under a still camera whose light
 // changes from A to B after the first frame, frame k's indirect light is E_B + (1 - alpha)^k (E_A - E_B)
-// at every pixel (the history reprojects onto itself). That is its step response, the lag the README
-// reports: after k frames the old light still weighs (1 - alpha)^k. The first frame has no history.
+// at every pixel (the history reprojects onto itself). That is its step response, the lag the docs
+// report: after k frames the old light still weighs (1 - alpha)^k. The first frame has no history.
 TEST_F(MotionGiTest, TemporalGiIsAnExponentialAverageOfTheFrames) {
     const Scene scene = makeBuiltinScene("cornell");
     RenderSettings s;

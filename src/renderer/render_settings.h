@@ -31,7 +31,7 @@ struct RenderSettings {
     ShadowSettings shadow;
     GiMode gi = GiMode::None;
     // Temporal accumulation of the indirect irradiance (temporal_gi/gi_history.h): off by default, it trades
-    // flicker under moving lights for lag (README "Temporal stability"); alpha = the new frame's weight.
+    // flicker under moving lights for lag (docs/techniques/rsm.md); alpha = the new frame's weight.
     bool giTemporal = false;
     float giTemporalAlpha = 0.1f;
     RsmSettings rsm;
