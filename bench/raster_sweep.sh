@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # --raster compute, hardware (and auto) over --shadow-res 512 .. 4096 (8192 at a few points), five
-# scenes and three light kinds: the sweep behind README "Rasterizer choice". 1920x1080, --gi none,
+# scenes and three light kinds: the sweep behind `--raster auto` (docs/techniques/shadows.md). 1920x1080, --gi none,
 # PCF; the sun with 4 cascades. One `bench` per point into OUTDIR/NAME.json and NAME.txt; a point that
 # runs past its time limit is recorded as TIMEOUT, one the device refuses (penumbra: error) as REFUSED.
 # Usage: bench/raster_sweep.sh BIN ASSETS OUTDIR [MODES] [SCENES] [SIZES] [LIGHTS]
 #        bench/raster_sweep.sh --table OUTDIR...   (one JSON of every point, to stdout)
 #        bench/raster_sweep.sh --markdown SWEEP.json   (the table: compute and hardware side by side, auto)
 set -uo pipefail
-if [ "$1" = --markdown ]; then
+if [ "${1:-}" = --markdown ]; then
   exec python3 - "$2" <<'PY'
 import json, sys
 points = {(p["scene"], p["light"], p["shadow_res"], p["mode"]): p for p in json.load(open(sys.argv[1]))}
@@ -21,14 +21,14 @@ for key in sorted({k[:3] for k in points}, key=lambda k: (k[0], ["sun", "spot", 
     if not isinstance(c, float) or not isinstance(h, float):
         print(f"| {key[0]} | {key[1]} | {key[2]} | {c} | {h} | | | | |")
         continue
-    # auto's rule on the H100 (README "Rasterizer choice"): compute up to 16384
+    # auto's rule on NVIDIA H100/H200: compute at every size it accepts (up to 16384)
     pick, picked = ("compute", c) if key[2] <= 16384 else ("hardware", h)
     bound = max(1.2 * min(c, h), min(c, h) + 0.05)
     print(f"| {key[0]} | {key[1]} | {key[2]} | {c:.3f} | {h:.3f} | {h / c:.2f} | {pick} | "
           f"{'' if a is None else f'{a:.3f}'} | {'yes' if picked <= bound else 'NO'} |")
 PY
 fi
-if [ "$1" = --table ]; then
+if [ "${1:-}" = --table ]; then
   shift
   exec python3 - "$@" <<'PY'
 import glob, json, os, sys
@@ -54,13 +54,16 @@ for d in sys.argv[1:]:
 print(json.dumps(sorted(points.values(), key=lambda p: (p["scene"], p["light"], p["shadow_res"], p["mode"])), indent=1))
 PY
 fi
+if [ $# -lt 3 ]; then sed -n "2,8p" "$0"; exit 2; fi
 bin=$1 assets=$2 out=$3
+# shellcheck source=bench/views.sh
+. "$(dirname "$0")/views.sh"
 modes=${4:-compute hardware}
 scenes=${5:-terrain cornell vc sponza hair}
 sizes=${6:-512 1024 2048 3072 4096}
 kinds=${7:-sun spot point}
 mkdir -p "$out"
-common="--width 1920 --height 1080 --gi none --shadow pcf --cascades 4 --frames 20 --warmup 5"
+common="$size --gi none --shadow pcf --cascades 4 ${FRAMES:---frames 20 --warmup 5}"
 declare -A scene sun spot point
 scene[terrain]="terrain"
 sun[terrain]="directional,0.5,-0.45,0.35,4"
@@ -70,11 +73,11 @@ scene[cornell]="cornell"
 sun[cornell]="directional,0.1,-1,0.2,3"
 spot[cornell]="spot,0,1.9,0,0,-1,0,6,65,50"
 point[cornell]="point,0,1.5,0,3"
-scene[vc]="$assets/VC/glTF/VC.gltf --camera 14,9,16,0,1.5,0,0,1,0,50"
+scene[vc]="$vc"
 sun[vc]="directional,0.1,-1,0.2,20"
 spot[vc]="spot,12,18,10,-0.5,-0.7,-0.45,2000,45,35"
 point[vc]="point,0,6,0,500"
-scene[sponza]="$assets/sponza/glTF/Sponza.gltf --camera -9,1.7,0.3,6,4.5,0,0,1,0,70"
+scene[sponza]="$sponza_view"
 sun[sponza]="directional,0.1,-1,0.2,20"
 spot[sponza]="spot,0,11,0,0,-1,0,800,60,45"
 point[sponza]="point,0,5,0,300"

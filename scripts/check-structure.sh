@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The module structure of src/ (README "Architecture"): the core, the Vulkan layer, scene and io include no
+# The module structure of src/ (docs/architecture.md): the core, the Vulkan layer, scene and io include no
 # technique, service or assembly header; no technique includes another technique's header; shared
 # services include no technique. Prints each offending include and exits 1; run by CTest.
 set -euo pipefail

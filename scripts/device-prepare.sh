@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Prepares what a run on the GPU machine needs (see README, "Running on the GPU machine"):
+# Prepares what a run on the GPU machine needs (see docs/benchmarks.md):
 # .gl/ holds the Vulkan loader packages (the machine has none), .device/ the portable penumbra binary,
 # the shared libraries it links that the machine lacks, and the test assets. Both folders are ignored.
 set -euo pipefail

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds penumbra and its test suite with AddressSanitizer + UndefinedBehaviorSanitizer in their own
-# build directory and runs the whole suite (README "Tests"). Any report fails a test: the GPU and
+# build directory and runs the whole suite (CONTRIBUTING.md). Any report fails a test: the GPU and
 # loader tests abort in-process, the CLI tests see the child's report on stderr and its exit status.
 #   scripts/sanitize.sh [ctest arguments, e.g. -R Gltf]
 # Environment: BUILD (default build-asan), JOBS (default nproc).

@@ -1,4 +1,4 @@
-// Motion (issue 12): glTF animation sampling against hand-computed values, the node hierarchy kept
+// Motion: glTF animation sampling against hand-computed values, the node hierarchy kept
 // through loading (1000 deep, walked without recursion), instancing (a mesh drawn by two nodes is
 // stored once), an animated occluder whose hard shadow lands where the animation puts it at two
 // times, and a sequence that uploads geometry once.

@@ -45,7 +45,7 @@ inline Cli runCli(const ScratchDir& dir, const std::string& args) {
     return {WIFEXITED(rc) ? WEXITSTATUS(rc) : -1, readText(out), readText(err)};
 }
 
-// What bad input gets (README): a non-zero exit and one line "penumbra: error: ...", which names
+// What bad input gets (CONTRIBUTING.md): a non-zero exit and one line "penumbra: error: ...", which names
 // `mentions`. `context` says which input it was.
 inline void expectOneErrorLine(const Cli& r, const std::string& context, const std::string& mentions = "") {
     EXPECT_NE(r.status, 0) << context;

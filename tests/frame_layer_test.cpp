@@ -1,4 +1,4 @@
-// The frame layer (issue 11): one long-lived GpuScene under every settings change, per-frame values
+// The frame layer (docs/architecture.md): one long-lived GpuScene under every settings change, per-frame values
 // applied without allocation or pipeline creation, structure and size changes rebuilding only what
 // they own, frames in flight under synchronization validation, and a settings table that covers
 // every render option. Every image is checked against a renderer built afresh for the same settings.

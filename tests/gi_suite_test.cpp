@@ -1,4 +1,4 @@
-// The GI suite's figures (`penumbra eval --suite`, README "GI evaluation suite") pinned on lavapipe at
+// The GI suite's figures (`penumbra eval --suite`, docs/evaluation.md) pinned on lavapipe at
 // small sizes: RSM and LPV at their default settings against the one-bounce path tracer on the three
 // built-in suite scenes. Bounds are the measured values with a margin for the reference's noise.
 #include <cmath>
@@ -114,7 +114,7 @@ TEST(GiSuite, MixturePatternWeightsCountEveryTexelOfTheWholeMap) {
     EXPECT_GT(p[s.samples + 1].w, 1.4f) << "odd ones on the whole map's";
 }
 
-// Measured on lavapipe at 64x48 against a 1024-path reference (README, "GI evaluation suite"):
+// Measured on lavapipe at 64x48 against a 1024-path reference (docs/evaluation.md):
 // RSM (300 samples, views visibility at 3 points, far half drawn by flux, shifted radii) cornell 0.144 /
 // +3.6%, street 0.142 / +1.8%, room 0.069 / +1.8% (350 samples with far samples' depth test: 0.153 /
 // +6.2%, 0.154 / -0.0%, 0.069 / +1.9%; 400 samples, far disc, fixed radii: 0.199 / +0.8%, 0.169 / -3.7%, 0.103 /

@@ -1,4 +1,4 @@
-// Hair against the path tracer (src/eval/hair_eval.*, README "Ground truth of hair"), lavapipe with
+// Hair against the path tracer (src/eval/hair_eval.*, docs/evaluation.md), lavapipe with
 // validation: the renderer's hair coverage as alpha and the path tracer's area-sampled pixel give
 // the same pixel, a w / p, for strands far thinner than a pixel (analytic); deep shadow maps give
 // the reference's floor transmittance under the hair scene, which hair drawn opaque into an ordinary

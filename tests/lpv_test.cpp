@@ -279,7 +279,7 @@ TEST_F(LpvVolumeTest, SingleVplPropagatesSymmetricallyWithoutGainingFlux) {
     }
 }
 
-// Where LPV loses light (README "LPV: where the light goes"): one VPL in free space against the exact
+// Where LPV loses light (docs/techniques/lpv.md): one VPL in free space against the exact
 // point-source answer. Reach: with one grid, light moves about one cell per step and 8 steps lose
 // most of it beyond 6 cells; the cascades of the defaults (16^3 x 8, 3 cascades each twice as coarse)
 // carry it across the scene. Normalisation: no step loses light; the gather, one cell along the

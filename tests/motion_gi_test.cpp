@@ -137,7 +137,7 @@ TEST_F(MotionGiTest, VelocityIsWhereEachPointWasInThePreviousFrame) {
         TestRenderer renderer(ctx(), gpu, s, 1);
         const SceneMotion motion(gpu.scene(), camera, gpu.scene().lights, {}, {});
         for (bool objectMoves : {true, false}) {
-            if (objectMoves && path == CameraPath::Gbuffer) continue;  // camera motion only (README)
+            if (objectMoves && path == CameraPath::Gbuffer) continue;  // camera motion only (docs/techniques/rsm.md)
             SCOPED_TRACE(objectMoves ? "the square moves" : "the camera moves");
             const ScenePose now = motion.at(t);
             FrameInputs in{camera, now.lights, now.instances};

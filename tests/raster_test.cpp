@@ -355,10 +355,10 @@ TEST_F(RasterSceneTest, VcEqualsTheHardware) {
 // Sponza's 4 cascades: 262k triangles, the alpha-masked leaves, plants and chains among them (alpha-
 // tested in both rasterizers). 256^2: each of the three is nearest on some texels (the chains on
 // none at 128^2), in half the time of 512^2 on lavapipe. Coverage and the AOV within VC's bounds;
-// depth is reported, not judged: issue 14's 1e-6 is missed on 16 texels (max 1.19e-6) of two wall
+// depth is reported, not judged: the 1e-6 bound is missed on 16 texels (max 1.19e-6) of two wall
 // triangles nearly edge-on to the sun and one fabric sliver, where the plane's terms reach 8-16 and
 // lavapipe's compute shaders split fma() into a multiply and an add (llvmpipe's lower_ffma32) while
-// its rasterizer fuses them: one more rounding of a term that size is up to 9.5e-7 (README).
+// its rasterizer fuses them: one more rounding of a term that size is up to 9.5e-7.
 // Masked texels agree within 1.2e-7.
 TEST_F(RasterSceneTest, SponzaEqualsTheHardware) {
     Camera camera;
@@ -442,8 +442,8 @@ TEST(RasterMode, AutoPicksByDeviceKind) {
     }
 }
 
-// The size half of the rule (README "Rasterizer choice"): on H100/H200 the compute rasterizer at
-// every --shadow-res it accepts (measured faster than the hardware at every point of the sweep), the
+// The size half of the rule (docs/techniques/shadows.md): on H100/H200 the compute rasterizer at
+// every --shadow-res it accepts (faster than the hardware at every point of the rasterizer sweep), the
 // hardware beyond the measured range and on every other device at any size.
 TEST(RasterMode, AutoPicksBySizeWithinTheMeasuredRange) {
     VkPhysicalDeviceProperties h100{}, lavapipe{};

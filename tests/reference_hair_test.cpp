@@ -1,4 +1,4 @@
-// The reference path tracer's translucent surfaces (src/reference, README "Ground truth of hair"):
+// The reference path tracer's translucent surfaces (src/reference, docs/evaluation.md):
 // hair strands as Embree ribbons of their opacity and BLEND triangles of their alpha, against
 // analytic answers: the transmittance through k strands, (1 - a)^k, and through a BLEND quad, 1 - a;
 // the expected pixel of a camera ray through them, the over operator front to back (within a few

@@ -153,9 +153,10 @@ TEST_F(RsmTest, SampledGatherIsUnbiasedAtFewSamples) {
 // suffice (rsm/interpolate.comp): fewer pixels fall back, and the error must stay as bounded. The
 // bound is relative to the full gather's error, set with the far disc. Flux draws cut the full
 // gather's error 4-5x, and at 32^2 two cells on one side of a crease then show: 0.075 against the
-// full gather's 0.052. At 1080p the rule costs nothing measurable (bench/rsm_rule_accuracy.sh: VC
-// 0.1465 against 0.1469 with creases gathered in full, which costs 0.35 ms on the H100), so flux
-// draws are held here to the bound at 128^2 and, at both sizes, to beating the far disc.
+// full gather's 0.052. At 1080p the crease cells are a vanishing share of the pixels and gathering
+// them in full would change the GI suite's error by less than its noise while costing a visible part
+// of the gather, so flux draws are held here to the bound at 128^2 and, at both sizes, to beating the
+// far disc.
 TEST_F(RsmTest, InterpolatedPathStaysCloseToFullResolutionGather) {
     double fallbacks[2] = {0.0, 0.0}, errors[2][2][2] = {};  // [flux][32^2][interpolated]
     for (RsmFar far : {RsmFar::Disc, RsmFar::Flux}) {

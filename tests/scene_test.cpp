@@ -250,7 +250,7 @@ TEST(BuiltinScenes, Plane) {
     EXPECT_EQ(builtinSceneNames(), (std::vector<std::string>{"cornell", "plane", "hair", "street", "room", "terrain"}));
 }
 
-// The GI suite's scenes (README, "GI evaluation suite"): consistent, faces wound as their normals say.
+// The GI suite's scenes (docs/evaluation.md): consistent, faces wound as their normals say.
 TEST(BuiltinScenes, StreetAndRoom) {
     for (const std::string name : {"street", "room"}) {
         const Scene s = makeBuiltinScene(name);

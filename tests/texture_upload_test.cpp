@@ -1,6 +1,6 @@
 // Material textures on the GPU (core/texture_upload.h, SceneGpu's texture table): every texture at
 // its own size with its own mip chain, in a slot of its size. A 4096^2 texture is decoded and uploaded
-// in well under 2 s (12-27 s when every texture was resampled on the CPU); textures of different, odd
+// in well under 2 s (CPU resampling took an order of magnitude longer); textures of different, odd
 // and non-square sizes render their own texels (no resampling to a common size) on both camera paths;
 // the table's GPU memory is each texture's own mip chain; more sizes than slots still render.
 #include <sys/resource.h>

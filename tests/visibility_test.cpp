@@ -1,4 +1,4 @@
-// Visibility IDs (issue 14): the camera's visibility-buffer G-buffer against the classic raster one,
+// Visibility IDs: the camera's visibility-buffer G-buffer against the classic raster one,
 // and the RSM resolved from the shadow pass's IDs against rays cast from the light by Embree.
 #include <algorithm>
 #include <cmath>

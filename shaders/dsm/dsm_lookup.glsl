@@ -49,13 +49,13 @@ float dsmTapWeight(float s, float width, int i) {
 // own, all taps of the kernel in lockstep, so that their reads are in flight together (a walk through
 // the neighbour links chains every tap's reads behind the previous tap's). At most
 // DSM_SEARCH_TAPS taps (a 3x3 kernel: the default width of 1 texel, and bilinear); wider kernels
-// search tap after tap. 16 (4x4) made the H100's oit.shade 1.35 ms at 25k strands, 9 0.90.
+// search tap after tap: 16 taps (4x4) in lockstep hold so many registers that the pass's
+// occupancy falls and it runs slower than with 9.
 #define DSM_SEARCH_TAPS 9
 
 // Transmittance in front of depth d in the list of `texel` (1 for an empty list): the same search
 // as the lockstep below, one tap at a time, for kernels wider than a batch. Not the lockstep in a loop
-// of batches: that loop made the default kernel's pass slower on the H100 (oit.shade 0.85 -> 0.99 ms
-// at 25k strands, lighting 0.12 -> 0.14; its registers), so the wide path stays scalar.
+// of batches: that loop's registers slow the default kernel's pass too, so the wide path stays scalar.
 float dsmSearchOne(uint texel, float d) {
     uint first = dsmHeads[texel * DSM_HEAD_UINTS];
     if (first == DSM_NONE) return 1.0;
@@ -83,8 +83,8 @@ float dsmSearchKernel(uint base, int res, ivec2 lo, ivec2 hi, vec2 s, float widt
             }
         return sum;
     }
-    // Per tap two registers (the shade pass's occupancy depends on them: 3 arrays of 16 cost it 0.45
-    // ms at 25k strands on the H100): `at`, the first node not yet known to lie in front of d, and
+    // Per tap two registers (the shade pass's occupancy depends on them; a third array costs it
+    // occupancy): `at`, the first node not yet known to lie in front of d, and
     // `state`, the nodes left to search (times 2) plus 1 once a node in front of d was found.
     uint at[DSM_SEARCH_TAPS], state[DSM_SEARCH_TAPS];
     [[unroll]] for (int k = 0; k < DSM_SEARCH_TAPS; ++k) {

@@ -3,10 +3,9 @@
 // (opaque map x DSM, dsm/layer_shadow.glsl), which oit_shade.comp interpolates along each hair
 // layer's segment instead of filtering both maps per layer: at 25k strands a strand's points are
 // 4.4x fewer than its camera layers (675k against 3.0M at 1080p), and the two lookups were most of
-// the shade pass (H100: 0.74 ms of it). The points come in the order of a Morton curve
-// (HairGpu::spatialPoints), so that a warp's taps fall on neighbouring texels: a strand's
-// consecutive points lie many texels apart, and in their own order the DSM lookups alone took
-// 0.66 ms. Light i's values are at i x points + point (lights without a DSM: not written, the shade
+// the shade pass. The points come in the order of a Morton curve (HairGpu::spatialPoints), so that a
+// warp's taps fall on neighbouring texels: a strand's consecutive points lie many texels apart, and in
+// their own order the lookups scatter over the whole map. Light i's values are at i x points + point (lights without a DSM: not written, the shade
 // pass filters their maps per layer).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require

@@ -7,9 +7,9 @@
 // sorts them and the nearest `maxList` stay; a list longer than the slots comes in
 // batches, and once the cap is full only nodes nearer than the farthest kept take a slot. (One
 // thread per texel walking linked lists into a heap kept 50 heap entries per thread in local memory,
-// which the H100 could not hold in L1: 0.84 of the resolve's 1.16 ms at 25k strands went to the heap;
-// one workgroup per 8x8 tile, sorting its texels one after another, made a dense tile the whole
-// pass's critical path. README "Deep shadow maps".)
+// more than a GPU's L1 holds, so the heap's spills dominated the pass; one workgroup per 8x8 tile,
+// sorting its texels one after another, made a dense tile the whole pass's critical path.
+// docs/techniques/dsm.md.)
 //
 // The sorted list is written packed at the start of the texel's run's indices, in the pool, and its
 // depths in the side buffer at the same indices (one uint per node: a binary search touches 4 bytes
@@ -73,9 +73,9 @@ uint sortSlots(uint filled, uint maxList) {
 
 // A run of at most GROUP_SIZE nodes, one per invocation: each goes straight to its rank among them
 // (the nodes nearer than it, and the equal ones before it), two barriers in place of the network's
-// 21 steps of one. Leaves the `maxList` nearest sorted in slots[0, kept); returns kept. H100:
-// dsm.resolve 0.41 -> 0.35 ms at 25k strands, 0.83 -> 0.79 at 100k; ranking runs of up to 128 this
-// way (two nodes an invocation) made it 0.44 / 0.83.
+// 21 steps of one. Leaves the `maxList` nearest sorted in slots[0, kept); returns kept. Only runs
+// of one node an invocation: ranking two nodes an invocation doubles each invocation's comparisons
+// and was slower than the network.
 uint rankSmallRun(uint run, uint count, uint maxList) {
     const uint i = gl_LocalInvocationIndex, input_ = DSM_MAX_LIST_CAP;  // slots[input_, + count): the run
     uvec2 e = i < count ? runs[run + i] : kPad;

@@ -2,8 +2,8 @@
 // whose centres lie inside the segment's ribbon quad (dsm/ribbon.glsl, the quad the hardware strip
 // draws), each handed to the includer's ribbonFragment(). Why: a ribbon one or two pixels wide is
 // the hardware raster's worst case (2x2 quads a quarter covered, on a GPU whose raster path is
-// narrow: at 25k strands the camera's hair pass took 4.4 ms and the light's 3.8 ms on the H100);
-// a walk along the ribbon's long axis visits only the covered pixels.
+// narrow, where the hair's hardware passes were most of the hair frame); a walk along the ribbon's
+// long axis visits only the covered pixels.
 //
 // The walk steps through the pixel columns (or rows, whichever axis the quad is longer along) and
 // fills, in each, the span between the quad's edges at the column's centre. Attributes follow the

@@ -2,7 +2,7 @@
 // Tile lists of the compute rasterizer (src/raster): each tile's list gets its place in the list
 // buffer, one thread per tile bin. The lists need not be in tile order, so each subgroup sums its
 // tiles' counts and takes one range with one atomic; its tiles take consecutive offsets inside it
-// (a workgroup-wide prefix sum over 16384 bins in one workgroup cost 0.04 ms on the H100).
+// (a workgroup-wide prefix sum over 16384 bins runs on one workgroup, a serial step of the frame).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_KHR_shader_subgroup_basic : require
 #extension GL_KHR_shader_subgroup_ballot : require

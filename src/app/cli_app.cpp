@@ -261,6 +261,7 @@ Cli::Cli(const std::string& commandLine) {
     eval.command = commandLine;
     stabilityCmd = addStabilityCommand(app, stability, stabilitySettings);
     stability.command = commandLine;
+    helpCmd = addHelpCommand(app, help);
     for (CLI::App* sub : app.get_subcommands({})) addGlobalOptions(*sub, global);
     requireFiniteNumbers(app);
 }
@@ -286,6 +287,7 @@ std::string Cli::unknownCommand(const std::vector<std::string>& args) const {
 }
 
 int Cli::run() {
+    if (*helpCmd) return fmt::print("{}", helpText(help, app)), 0;
     if (*infoCmd) return runInfo(vk);
     if (*benchCmd) return runBench(bench, vk, benchSettings, dryRun);
     if (*referenceCmd) return runReferenceCommand(reference, dryRun);

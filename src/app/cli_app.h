@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/bench.h"
+#include "app/cli_reference.h"
 #include "app/frame_options.h"
 #include "app/ground_truth_cli.h"
 #include "app/stability.h"
@@ -53,8 +54,10 @@ struct Cli {
     EvalCliOptions eval;
     StabilityOptions stability;
     RenderSettings stabilitySettings;
+    HelpOptions help;
     CLI::App *renderCmd = nullptr, *benchCmd = nullptr, *infoCmd = nullptr, *referenceCmd = nullptr,
-             *compareCmd = nullptr, *evalCmd = nullptr, *stabilityCmd = nullptr;
+             *compareCmd = nullptr, *evalCmd = nullptr, *stabilityCmd = nullptr,
+             *helpCmd = nullptr;
 
     // Registers every subcommand and option; `commandLine` is recorded in bench and eval JSON.
     explicit Cli(const std::string& commandLine = "");

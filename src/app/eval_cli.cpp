@@ -285,7 +285,7 @@ int runSuite(const EvalCliOptions& o, const vk::ContextOptions& vkOptions, bool 
             fmt::print("{} ceiling, mean indirect / reference's: RSM {:.2f}, LPV {:.2f}\n", r.scene, r.ceilingRsm,
                        r.ceilingLpv);
     fmt::print("ref noise: indirect relative L1 between the references of two seeds. GPU cost: `penumbra bench` "
-               "(README, Benchmarks), not eval's timing.\n");
+               "(docs/benchmarks.md), not eval's timing.\n");
     if (!o.images.empty()) fmt::print("figures {}/<scene>.png: columns reference, RSM, LPV; rows final, indirect, "
                                       "indirect error (auto-exposed)\n", o.images);
     if (!o.json.empty())

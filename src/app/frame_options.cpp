@@ -133,7 +133,7 @@ const OptionTable& motionOptions() {
 
 void addFrameOptions(CLI::App& cmd, FrameOptions& o, RenderSettings& rs) {
     // The defaults show what penumbra is for: one bounce of indirect light (RSM, interpolated) and
-    // soft shadows (PCF); README "CLI" gives the reasons and the cost.
+    // soft shadows (PCF); docs/techniques/shadows.md and rsm.md give the reasons and the cost.
     rs.gi = GiMode::Rsm;
     rs.shadow.filter = ShadowFilter::Pcf;
     cmd.add_option("scene", o.scene, "glTF file (.gltf/.glb) or built-in scene: " +

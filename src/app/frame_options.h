@@ -24,7 +24,7 @@ struct FrameOptions {
     std::vector<Light> parsedLights;
     std::vector<std::string> lightFilters;  // --light-shadow N=MODE
     BuiltinOptions builtin;  // --strands
-    // Time and motion (README "Motion"): --time, --animation, --clamp, --sun-path, --light-path,
+    // Time and motion (docs/cli.md): --time, --animation, --clamp, --sun-path, --light-path,
     // --camera-keys, --no-motion.
     double time = 0.0;
     AnimationOptions animation;

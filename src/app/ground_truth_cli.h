@@ -1,4 +1,4 @@
-// The ground-truth commands (README, "Ground truth"): `reference` (CPU path tracer), `compare`
+// The ground-truth commands (docs/evaluation.md): `reference` (CPU path tracer), `compare`
 // (error metrics and heat map of two EXR images) and `eval` (every technique against the reference).
 #pragma once
 #include <string>

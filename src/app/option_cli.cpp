@@ -1,5 +1,6 @@
 #include "app/option_cli.h"
 
+#include <map>
 #include <stdexcept>
 
 #include <fmt/format.h>
@@ -47,7 +48,20 @@ std::string helpOf(const OptionRow& row) {
     return help;
 }
 
+// Which row each option was made from. Keyed by the option's address: an App that is destroyed
+// leaves entries behind, so a lookup also checks that the option still carries the row's flag.
+std::map<const CLI::Option*, const OptionRow*>& rowsOfOptions() {
+    static std::map<const CLI::Option*, const OptionRow*> rows;
+    return rows;
+}
+
 }  // namespace
+
+const OptionRow* optionRowOf(const CLI::Option* option) {
+    const auto found = rowsOfOptions().find(option);
+    if (found == rowsOfOptions().end()) return nullptr;
+    return option->check_name(longFlag(found->second->flag)) ? found->second : nullptr;
+}
 
 std::string expandOptionReferences(const std::string& help) {
     std::string out;
@@ -111,6 +125,7 @@ void addOptionRows(CLI::App& cmd, const OptionTable& table, void* settings,
             if (!current.empty()) opt->default_str(current);
         }
         opt->group(row->group);
+        rowsOfOptions()[opt] = row;
     }
 }
 

@@ -16,6 +16,9 @@ void addOptionRows(CLI::App& cmd, const OptionTable& table, void* settings,
                    const std::function<bool(const OptionRow&)>& only = {});
 // Every frame-pipeline table (render_options.h), into `settings`.
 void addRenderOptionRows(CLI::App& cmd, RenderSettings& settings);
+// The row an option of a live App was made from by addOptionRows; nullptr for an option written by
+// hand (a positional, the help flag). The CLI reference reads ranges and change classes from it.
+const OptionRow* optionRowOf(const CLI::Option* option);
 
 // A help text with each `{module.key}` replaced by the flag of that row (a help that refers to
 // another option names it through its row). Throws std::logic_error for a reference to no row.

@@ -1,5 +1,5 @@
 // `penumbra stability SCENE [render options] --frames N [--json F] [--all]`: temporal flicker of the
-// techniques over a slow motion, against the path tracer's own figure (README "Temporal stability").
+// techniques over a slow motion, against the path tracer's own figure (docs/evaluation.md).
 #pragma once
 #include <string>
 #include <vector>

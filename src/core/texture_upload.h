@@ -1,6 +1,6 @@
 // The material textures' GPU copy: RGBA8 sRGB images kept at the textures' own sizes, their full mip
 // chains built with blits on the GPU (filtered in linear light: the format is sRGB). No texel is
-// resampled on the CPU (that took 12-27 s for one 4096^2 texture), and one texture's staging memory
+// resampled on the CPU (a large texture's filtering on one core stalls loading), and one texture's staging memory
 // at a time is alive.
 //
 // The table (render/material_textures.glsl) has MATERIAL_TEXTURE_SLOTS slots, each a 2D array: the

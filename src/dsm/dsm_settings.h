@@ -24,14 +24,14 @@ struct DsmSettings {
     float filterWidth = 1.0f;      // PCF box width in texels (0 = bilinear, up to 8)
     float depthBias = 2.0f;        // receiver moved this many texels towards the light (self-shadowing)
     float normalOffset = 1.0f;     // and this many along its normal (texels)
-    // `--dsm-depth-test`: skip fragments hidden behind opaque casters. Off by default: on the H100 the
-    // conservative neighbourhood test costs more build time (+8.7 ms at 25k strands) than the 27%
-    // fewer nodes save in the resolve (-0.8 ms); README, "Depth-tested build".
+    // `--dsm-depth-test`: skip fragments hidden behind opaque casters. Off by default: the conservative
+    // neighbourhood test costs the build more than the fewer nodes save in the resolve, since hair
+    // hides little of itself behind opaque casters (docs/techniques/dsm.md).
     bool depthTest = false;
     DsmLookup lookup = DsmLookup::Search;  // `--dsm-lookup`
 
     // 16 per texel: 100k strands of the hair scene make 29M light-space fragments at 2048^2 (7 per
-    // texel) before the depth test; 67M nodes are 1.3 GiB, which an H100 holds easily. Smaller devices
+    // texel) before the depth test; 67M nodes are 1.3 GiB, which a large GPU holds easily. Smaller devices
     // get what one storage buffer addresses (lavapipe: 8.4M) and a warning naming the limit.
     static constexpr uint32_t kAutoNodesPerTexel = 16;
     static constexpr uint64_t kMaxPoolNodes = uint64_t(1) << 28;  // 5 GiB of nodes and links

@@ -92,8 +92,8 @@ HairGpu::HairGpu(vk::CommandContext& cmd, const Scene& scene) : strandCount_(uin
     if (scene.strands.size() >= (size_t(1) << 24))
         throw vk::VulkanError(fmt::format("{} hair strands: at most 2^24 are supported", scene.strands.size()));
     // The strands in the order of their roots along a Morton curve: neighbouring strands, which grow
-    // side by side, are drawn one after another (the camera build's atomics land nearer one another:
-    // H100 oit.build 0.51 -> 0.45 ms at 25k strands).
+    // side by side, are drawn one after another, so that the camera build's atomics land nearer one
+    // another in memory.
     for (size_t s = 0; s < scene.strands.size(); ++s) {
         const Strand& strand = scene.strands[s];
         if (size_t(strand.firstPoint) + strand.pointCount > scene.strandPoints.size() || strand.pointCount < 2)

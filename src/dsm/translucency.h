@@ -47,7 +47,7 @@ public:
     const vk::Buffer& hairShadow() const { return hairShadow_; }
 
     // 100k strands of the hair scene make 29.5M camera fragments at 1080p (14 per pixel); 8 per pixel
-    // dropped 44% of them on the H100. Capped by what one storage buffer addresses (lavapipe: 8.4M).
+    // would drop 44% of them. Capped by what one storage buffer addresses (lavapipe: 8.4M).
     static constexpr uint32_t kNodesPerPixel = 16;
     static constexpr VkDeviceSize kNodeBytes = 16 + 4;  // node + normal
     static constexpr uint32_t kBuckets = OIT_BUCKETS;  // depth buckets per pixel

@@ -159,7 +159,7 @@ std::vector<EvalRow> runEval(vk::Context& ctx, const Scene& scene, const Camera&
 }
 
 std::string formatEvalTable(const std::vector<EvalRow>& rows, bool gpu) {
-    // Markdown: the README pastes it as it is.
+    // Markdown, so that docs/evaluation.md can take the table as it is.
     constexpr const char* kRow = "| {:<18} | {:<46} | {:>8} | {:>9} | {:>9} | {:>10} | {:>9} | {:>11} |\n";
     std::string out = fmt::format(kRow, "technique", "settings", "GPU ms", "direct L2", "total L2", "total SSIM",
                                   "indir. L2", "indir. bias");

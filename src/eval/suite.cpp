@@ -11,7 +11,7 @@ namespace penumbra {
 
 std::vector<SuiteScene> suiteScenes(const std::string& assets, const std::vector<std::string>& only) {
     // Sizes and paths per pixel: the reference's noise (relative L1 between two seeds) stays under
-    // a third of the tightest target (0.15); measured values in the README.
+    // a third of the tightest target (0.15); the measured noise is in docs/evaluation.md.
     std::vector<SuiteScene> all{
         {"cornell", "cornell", "", {}, 128, 96, 4096},
         {"street", "street", "", {}, 128, 72, 4096},

@@ -1,4 +1,4 @@
-// `penumbra eval --suite`: the GI evaluation suite (README, "GI evaluation suite"). Five scenes
+// `penumbra eval --suite`: the GI evaluation suite (docs/evaluation.md). Five scenes
 // (cornell, street, room built in; Sponza and VC from the assets) at fixed sizes and path counts,
 // RSM and LPV at their defaults against the one-bounce path tracer: indirect relative L1 and energy
 // bias per technique per scene, with the reference's own noise (relative L1 between two seeds).

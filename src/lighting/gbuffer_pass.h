@@ -5,7 +5,7 @@
 //               (RGBA16F) and normal from the ID (render/visibility_resolve.comp; texture level of
 //               detail from the neighbouring pixels' rays, as the raster's 2x2 quads take it).
 // Each colour target a raster pass writes costs fill rate on GPUs whose raster path is narrow
-// (issue 14); the visibility path writes one 32-bit target, or none: with `computeRaster` the
+// (docs/techniques/shadows.md); the visibility path writes one 32-bit target, or none: with `computeRaster` the
 // compute rasterizer (src/raster) writes depth and ID with 64-bit atomics instead of the hardware.
 #pragma once
 #include <memory>

@@ -139,9 +139,9 @@ void ComputeRaster::setViews(const std::vector<RasterViews>& views, uint32_t slo
 
 // The small-triangle threshold: where every (triangle, layer) pair has a record (scenes of few
 // triangles: too few setup threads to keep the GPU busy while each rasterizes up to 16x16 pixels), half
-// of it, so that more of them are binned to tiles. H100, 1080p: the hair scene's (4110 triangles) raster passes 0.36 ->
-// 0.32 ms; at 8 for every scene Sponza's frame went 2.16 -> 2.47 ms, and at 4 the bins overflowed
-// (`session27/raster_exp9-small-extent-not-kept/`).
+// of it, so that more of them are binned to tiles. Only there: for large scenes the smaller threshold
+// bins so many more triangles that the tile pass costs more than the setup saves, and at 4 the bins
+// overflow (docs/techniques/shadows.md).
 uint32_t ComputeRaster::smallExtent() const {
     const uint64_t pairs = uint64_t(scene_.drawnTriangleCount()) * layers_;
     return pairs <= baseRecordCapacity(pairs) ? RASTER_SMALL_EXTENT / 2 : RASTER_SMALL_EXTENT;

@@ -1,4 +1,4 @@
-// The compute rasterizer for depth-only views (issue 14): shadow-map layers drawn without the raster
+// The compute rasterizer for depth-only views (docs/techniques/shadows.md): shadow-map layers drawn without the raster
 // hardware, equal to it (same matrices, clipping, winding and culling, pixel centres, subpixel
 // snapping, top-left rule, z/w plane, Vulkan's float depth bias, alpha-masked casters).
 //   <name>.clear   fill the depth buffer with 1.0 and the bin counters with 0 (transfer)

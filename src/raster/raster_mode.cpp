@@ -21,10 +21,10 @@ RasterMode parseRasterMode(const std::string& name, const std::string& option) {
 std::string rasterModeName(RasterMode mode) { return rasterModeNames().at(size_t(mode)); }
 
 // The auto rule, by device kind and layer size, never by timing (one device and size always give the
-// same images; README "Rasterizer choice"): the compute rasterizer on NVIDIA H100 and H200 for
-// layers up to kComputeMeasuredUpTo texels a side, where it was measured faster than the hardware at
-// every point of the sweep (H100: 2.0x to 16x; 512^2 to 8192^2 over five scenes, 16384^2 where the
-// device takes it), the hardware above that and on every other device, CPU devices (lavapipe) included.
+// same images): the compute rasterizer on NVIDIA H100 and H200 for layers up to kComputeMeasuredUpTo
+// texels a side, the range the rasterizer sweep covered (bench/raster_sweep.sh, five scenes, three light
+// kinds), where it was faster than the hardware at every point; the hardware above that and on every
+// other device, CPU devices (lavapipe) included (docs/techniques/shadows.md).
 constexpr uint32_t kComputeMeasuredUpTo = 16384;
 
 bool computeRasterFor(RasterMode mode, const VkPhysicalDeviceProperties& device, uint32_t layerSize) {

@@ -17,7 +17,7 @@ std::string rasterModeName(RasterMode mode);
 std::vector<std::string> rasterModeNames();
 
 // Whether `mode` means the compute rasterizer on this device for layers of `layerSize`^2 texels (0: a
-// size the rule does not look at). Auto: see raster_mode.cpp and README "Rasterizer choice".
+// size the rule does not look at). Auto: see raster_mode.cpp and docs/techniques/shadows.md.
 bool computeRasterFor(RasterMode mode, const VkPhysicalDeviceProperties& device, uint32_t layerSize = 0);
 
 }  // namespace penumbra

@@ -48,7 +48,7 @@ struct PinholeCamera {
 };
 
 // Kajiya-Kay hair shading as shaders/dsm/kajiya_kay.glsl defines it (written again from the formula,
-// README "Deep shadow maps"), per unit irradiance facing the light: a strand of unit tangent t lit
+// docs/techniques/dsm.md), per unit irradiance facing the light: a strand of unit tangent t lit
 // from l, seen from v. Diffuse albedo / pi sin(t, l); a white specular cone lobe around t,
 // (n + 2) / (2 pi) cos^n with cos = sin(t,l) sin(t,v) - (t.l)(t.v), times sin(t, l).
 constexpr float kHairSpecular = 0.08f, kHairExponent = 60.0f;  // the renderer's constants

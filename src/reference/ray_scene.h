@@ -3,7 +3,7 @@
 // GPU renderer's code, but it makes the same visibility decisions as the rasterizer:
 //  - a single-sided material is invisible from behind, both to rays from a viewer (camera, bounce)
 //    and as a shadow caster, which only blocks the light when its front faces the light (the shadow
-//    maps cull back faces; README "Shadows");
+//    maps cull back faces; docs/techniques/shadows.md);
 //  - alpha MASK texels under the cutoff are holes.
 // Translucent surfaces, hair strands (Embree flat linear curves: ribbons facing the ray, of the
 // strand's width, as the GPU's ribbons face each viewer) and alpha BLEND triangles, let light through:

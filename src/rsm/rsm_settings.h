@@ -17,7 +17,7 @@ enum class RsmMode {
 enum class RsmWeights { Unbiased, Paper };
 
 // Whether a VPL sees its receiver. Without it light reaches receivers through walls, floors and
-// curtains: on Sponza and VC the bounce came out 40-45% too bright (README, GI evaluation suite).
+// curtains, and scenes of rooms (Sponza, VC) get far too bright a bounce (docs/techniques/rsm.md).
 enum class RsmVisibility {
     None,    // every VPL lights every receiver it faces
     Depth,   // samples beyond r_max: two points of the segment tested against the RSM's depth
@@ -27,10 +27,10 @@ enum class RsmVisibility {
 
 // The pattern's radii: the same for every receiver (the seed's way), or shifted per receiver (xi1 +
 // a hash of its position, modulo 1). With the far disc, fixed radii are a fixed quadrature of the
-// near field, 8% dark at 400 samples on cornell, and shifting costs 0.15-0.34 ms at 1080p on the
-// H100. With flux draws the gather weighs every sample in the shader anyway: shifting costs 0.01-0.03
-// ms and makes neighbouring receivers' estimates independent, which the interpolation's filter
-// averages (VC 0.251 -> 0.230 at 400 samples on lavapipe). Voxel visibility always shifts.
+// near field that leaves it dark, and shifting needs the per-sample weights of a heavier pipeline.
+// With flux draws the gather weighs every sample in the shader anyway, so shifting is nearly free
+// and makes neighbouring receivers' estimates independent, which the interpolation's filter then
+// averages (docs/techniques/rsm.md). Voxel visibility always shifts.
 enum class RsmRadii { Fixed, Shifted };
 
 // Where the unbiased pattern's far half of the samples goes: a polar disc over the whole map (dense
@@ -42,9 +42,8 @@ inline constexpr uint32_t kMaxRsmSamples = 16384;  // --rsm-samples' range: the 
 
 struct RsmSettings {
     uint32_t resolution = 512;   // RSM texels per side (per shadowed light)
-    // Gather samples per receiver. 300 with views visibility (3 points a sample): the GI suite's RSM
-    // error within 0.01 of 350's (Sponza 0.387 against 0.383) at a gather about 12% cheaper on the H100
-    // (README, "RSM: visibility from two views").
+    // Gather samples per receiver. 300 with views visibility (3 points a sample): as accurate on the GI
+    // suite as 350 within its references' noise, for a cheaper gather (docs/techniques/rsm.md).
     uint32_t samples = 300;
     // Samples per receiver in a frame that adds to a GI history (src/temporal_gi): the history averages
     // a new pattern each frame, so each frame needs only a share of the estimate (at most `samples`).
@@ -57,20 +56,19 @@ struct RsmSettings {
     uint32_t lowResFactor = 4;   // low-resolution gather: one sample per factor x factor pixels
     float normalThreshold = 0.9f;    // interpolation: min |cos| between the pixel's and a sample's normal
     // A sun's RSM from its widest cascade only (default), or one per cascade with the seed's choice of
-    // cascade per receiver and r_max kept at the finest cascade's world size. Measured against the
-    // path-traced bounce on VC (README, Ground truth), per-cascade RSMs miss 73% of the bounce: a
-    // fine cascade does not hold the distant VPLs that light its receivers.
+    // cascade per receiver and r_max kept at the finest cascade's world size. Per-cascade RSMs miss most
+    // of the path-traced bounce on large scenes: a fine cascade does not hold the distant VPLs that
+    // light its receivers (docs/techniques/rsm.md).
     bool perCascade = false;
     float distanceThreshold = 1.0f;  // interpolation: max distance off the tangent plane, in low-res cell footprints
     // A sample reads the VPL of the texel it falls in (nearest), or the four around it weighted
     // bilinearly: 4x the VPL evaluations, but a sample's light moves continuously as the light's
-    // texel lattice moves under it (moving lights; README "Temporal stability").
+    // texel lattice moves under it (moving lights; docs/techniques/rsm.md).
     bool bilinearVpls = false;
-    // Voxels removes most of Sponza's and VC's light through walls (+39% and +43% energy -> +12% and
-    // +14%) but costs 4-6 ms at 1080p on the H100 with 16 rays, and its ratio's noise costs cornell
-    // and street 0.03-0.05 of rel L1 (README, "RSM visibility"): an expert's choice, not the default.
-    // Views (the default) takes Sponza's RSM from 0.519 / +40% to 0.387 / +18% on the GI suite, and no
-    // scene's error grows, for 0.35-0.5 ms more at 1080p on the H100 (README, "RSM: visibility from two views").
+    // Voxels removes most of the light through walls but marches every ray through a volume, several
+    // times the cost of the whole gather, and its ratio's noise adds error on small rooms: an expert's
+    // choice. Views (the default) removes about half of the excess light on walled scenes and makes no
+    // scene of the GI suite worse, for a fraction of the gather's cost (docs/techniques/rsm.md).
     RsmVisibility visibility = RsmVisibility::Views;
     RsmRadii radii = RsmRadii::Shifted;
     RsmFar far = RsmFar::Flux;
@@ -78,8 +76,9 @@ struct RsmSettings {
     // Voxels: of a pixel's samples, this many (evenly strided) walk the occupancy volume; the
     // visible share of their light scales the light of all (a ratio estimate of the visibility).
     uint32_t visibilityRays = 16;
-    // Views: points a VPL-receiver segment is tested at (rsm/gather.glsl, segmentVisibility). Each
-    // costs 0.17-0.22 ms at 1080p on the H100; from 2 to 3 Sponza's error falls 0.404 -> 0.383.
+    // Views: points a VPL-receiver segment is tested at (rsm/gather.glsl, segmentVisibility). Each point
+    // costs a fixed share of the gather; 3 is where a further point stopped paying for itself on the
+    // GI suite (docs/techniques/rsm.md).
     uint32_t visibilityPoints = 3;
 };
 

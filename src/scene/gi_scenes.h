@@ -1,6 +1,5 @@
 // Built-in scenes of the GI evaluation suite (`penumbra eval --suite`): an open sunlit street and a
-// closed room under a point light, the two cases the outside measurements covered besides
-// cornell (README, "GI evaluation suite").
+// closed room under a point light: the open and the closed case beside cornell (docs/evaluation.md).
 #pragma once
 #include "scene/scene.h"
 

@@ -11,7 +11,7 @@
 
 namespace penumbra {
 
-// Paths as text (README "Motion"); empty = none.
+// Paths as text (docs/cli.md: --sun-path, --light-path, --camera-keys); empty = none.
 struct MotionPaths {
     std::string sun;                 // AZ0,EL0,AZ1,EL1,SECONDS (degrees)
     std::vector<std::string> lights; // N:T,X,Y,Z;T,X,Y,Z;...

@@ -40,8 +40,8 @@ struct ShadowSettings {
     // Who draws the layers (and the camera's visibility buffer): the raster hardware, or the compute
     // rasterizer (src/raster) for every light but paraboloid point lights (their bent edges stay with
     // the tessellated hardware pass). Auto: by the device's kind (computeRasterFor): the compute
-    // rasterizer where the raster path is narrow (H100, H200: every frame measured was faster), the
-    // hardware elsewhere, lavapipe included.
+    // rasterizer where the raster path is narrow (H100, H200: faster over the whole rasterizer sweep,
+    // docs/techniques/shadows.md), the hardware elsewhere, lavapipe included.
     RasterMode raster = RasterMode::Auto;
 };
 

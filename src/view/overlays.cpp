@@ -11,7 +11,7 @@
 namespace penumbra::view {
 namespace {
 
-// The layer colours of the cascade AOV (README): cascade 0 red, 1 green, 2 blue, 3 yellow, ...
+// The layer colours of the cascade AOV (docs/viewer.md): cascade 0 red, 1 green, 2 blue, 3 yellow, ...
 const std::array<ImU32, 8> kLayerColors = {IM_COL32(255, 64, 64, 255),  IM_COL32(64, 255, 64, 255),
                                            IM_COL32(80, 120, 255, 255), IM_COL32(255, 255, 64, 255),
                                            IM_COL32(255, 64, 255, 255), IM_COL32(64, 255, 255, 255),

@@ -1,4 +1,4 @@
-// `penumbra view --script FILE`: one command per line (README, "Viewer"), for tests and
+// `penumbra view --script FILE`: one command per line (docs/viewer.md), for tests and
 // reproducible captures. Lines that only change state are applied to the session at once; the
 // first that needs frames rendered is handed back to the viewer.
 #pragma once

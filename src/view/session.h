@@ -50,7 +50,7 @@ public:
     const std::vector<Light>& lights() const { return lights_; }
     void setLights(std::vector<Light> lights);
     void setLight(size_t index, const Light& light);  // index == count appends; throws out of range
-    // Scene time (seconds): animation and motion paths (README "Motion") at this time; `time T`,
+    // Scene time (seconds): animation and motion paths (docs/cli.md) at this time; `time T`,
     // play/pause. Starts at --time.
     float time = 0.0f;
     bool playing = false;

@@ -38,7 +38,7 @@ const OptionTable& viewCommandOptions() {
 }
 
 CLI::App* addViewCommand(CLI::App& app, ViewCommand& view) {
-    view.cmd = app.add_subcommand("view", "Interactive viewer: a window with every render option live (README, Viewer)");
+    view.cmd = app.add_subcommand("view", "Interactive viewer: a window with every render option live (docs/viewer.md)");
     addFrameOptions(*view.cmd, view.frame, view.settings);
     addOptionRows(*view.cmd, viewCommandOptions(), &view.options);
     return view.cmd;

@@ -154,7 +154,7 @@ CycleMemory cycleSettings(vk::Context& ctx) {
 // cycle's at that state, no pipeline is added after the first cycle, and the host's resident memory
 // grows over the last ten cycles no more than over as many frames without a change (plus 1 MiB):
 // lavapipe (Mesa 22.3) itself adds about 0.77 MiB of RSS per frame, changes or not, in `penumbra
-// render --frames N` as well (not on the H100's driver: README, "The frame layer").
+// render --frames N` as well (not on NVIDIA's driver).
 TEST(ViewSession, CyclingSettingsLeavesMemoryFlat) {
     auto ctx = validatingContext();
     const CycleMemory m = cycleSettings(*ctx);

@@ -1,7 +1,7 @@
 // One Xvfb per test process for the scripted viewer tests, started by the harness instead of
 // xvfb-run per command: Debian 12's xvfb-run (under dash 0.5.12) can print "xvfb-run: error:
 // problem while cleaning up temporary directory" and exit 5 after a command that failed, which
-// breaks every test that checks penumbra's one error line (README "Tests").
+// breaks every test that checks penumbra's one error line.
 #pragma once
 
 #include <string>
