@@ -371,7 +371,7 @@ TEST_F(RasterSceneTest, SponzaEqualsTheHardware) {
     expectSameShadows(scene, camera, "Sponza", 256, false);
 }
 
-// The RSM's shadow layers drawn with visibility IDs (render/visibility.glsl) by both rasterizers:
+// The RSM's shadow layers drawn with visibility IDs (core/visibility.glsl) by both rasterizers:
 // the hardware's depth + R32_UINT pass and the compute rasterizer's 64-bit depth << 32 | ID. Where
 // both cover, the same triangle; coverage within 0.01% (the depth-only rule above).
 TEST_F(RasterSceneTest, VisibilityIdsEqualTheHardware) {

@@ -1,9 +1,9 @@
 #version 460
-// DSM build for alphaMode BLEND meshes (drawn with render/scene.vert): alpha is the material's
+// DSM build for alphaMode BLEND meshes (drawn with core/scene.vert): alpha is the material's
 // base-colour alpha (factor x texture).
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
-#include "render/material.glsl"
+#include "core/material.glsl"
 #include "dsm/dsm_common.glsl"
 
 layout(push_constant) uniform Push { HairDrawPush draw; };

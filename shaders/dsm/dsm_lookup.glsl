@@ -1,4 +1,4 @@
-// Deep-shadow-map lookup for the deferred lighting pass (render/lighting.comp includes it after its
+// Deep-shadow-map lookup for the deferred lighting pass (lighting/lighting.comp includes it after its
 // own bindings): the transmittance of semi-transparent casters (hair, blended meshes) between a
 // light and a receiver, filtered (PCF) over the neighbouring texels through the resolve's links.
 // Opaque casters are not in the DSM: lighting multiplies this with the ordinary shadow map.

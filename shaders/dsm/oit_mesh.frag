@@ -1,11 +1,11 @@
 #version 460
-// Camera translucency build for alphaMode BLEND meshes (render/scene.vert): base colour and alpha
+// Camera translucency build for alphaMode BLEND meshes (core/scene.vert): base colour and alpha
 // (factor x texture), the interpolated normal.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_shader_atomic_int64 : require
 #include "shared/types.h"
-#include "render/material.glsl"
+#include "core/material.glsl"
 
 layout(push_constant) uniform Push { HairDrawPush draw; };
 layout(location = 0) in vec3 inNormal;

@@ -18,7 +18,7 @@
 // Set 0 starts like the scene's draw set (render/scene_gpu.h): views, materials; set 1: the textures.
 layout(set = 0, binding = 0, std430) readonly buffer Views { mat4 viewProj[]; } views;
 layout(set = 0, binding = 1, std430) readonly buffer Materials { GpuMaterial materials[]; };
-#include "render/material_textures.glsl"
+#include "core/material_textures.glsl"
 layout(set = 0, binding = 3, std430) buffer Depth { uint depthBits[]; };
 layout(set = 0, binding = 4, std430) buffer Records { RasterTriangle records[]; };
 layout(set = 0, binding = 5, std430) buffer TileEntries { uvec2 tileEntries[]; };

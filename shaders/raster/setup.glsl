@@ -9,7 +9,7 @@
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
 #include "raster/raster.glsl"
-#include "render/instances.glsl"
+#include "core/instances.glsl"
 
 layout(set = 0, binding = 7, std430) readonly buffer Vertices { float vertexData[]; };  // penumbra::Vertex
 layout(set = 0, binding = 8, std430) readonly buffer Indices { uint indices[]; };
@@ -119,7 +119,7 @@ struct Caster {
     uint layer, material;
     bool singleSided, alphaTested;
     bool flipped;  // fronts counter-clockwise: the camera's y-flipped projection xor a mirroring instance
-    uvec2 ids;     // the visibility ID (render/visibility.glsl) and ID layer + 1
+    uvec2 ids;     // the visibility ID (core/visibility.glsl) and ID layer + 1
 };
 
 // Snapped window position (subpixel units, pixel centres at + half a pixel): lavapipe snaps

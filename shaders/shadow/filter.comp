@@ -7,8 +7,8 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
 #include "shared/types.h"
-#include "render/lights.glsl"
-#include "render/reconstruct.glsl"
+#include "core/lights.glsl"
+#include "core/reconstruct.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 

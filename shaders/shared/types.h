@@ -45,7 +45,7 @@ using uint = uint32_t;
 #define ALPHA_BLEND 2
 
 #define NO_TEXTURE 0xFFFFFFFFu
-// Slots of the material texture table (render/material_textures.glsl, SceneGpu): with a pass's own
+// Slots of the material texture table (core/material_textures.glsl, SceneGpu): with a pass's own
 // sampled images within lavapipe's 32 per stage (SceneGpu::checkTextureTable says why).
 #define MATERIAL_TEXTURE_SLOTS 28
 // A material's texture handle: slot | layer << TEXTURE_LAYER_SHIFT (each slot is a 2D array of one size).
@@ -79,7 +79,7 @@ struct FrameUniforms {
 
 #define PROBE_OFF 0xFFFFFFFFu
 
-// Every AOV at one pixel (the viewer's pixel probe), written by render/lighting.comp for the pixel
+// Every AOV at one pixel (the viewer's pixel probe), written by lighting/lighting.comp for the pixel
 // FrameUniforms.probeX, probeY name, as the AOV images would hold them.
 struct PixelProbe {
     vec4 finalRadiance;  // rgb = direct + indirect, w = 1 on a surface, 0 on the background
@@ -139,7 +139,7 @@ struct DrawPush {
     uint material;
     uint pad0;
     uint triangleBase;  // the draw's first triangle within its mesh: visibility IDs are the instance's
-                        // drawn-triangle base + this + gl_PrimitiveID + 1 (render/visibility.glsl)
+                        // drawn-triangle base + this + gl_PrimitiveID + 1 (core/visibility.glsl)
 };
 
 // Tone-map modes: radiance is exposed and tone-mapped, colour data only sRGB-encoded, other data
@@ -148,7 +148,7 @@ struct DrawPush {
 #define TONEMAP_SRGB 1
 #define TONEMAP_LINEAR 2
 
-// render/debug_view.comp: mode.x = AOV_RSM_* or AOV_SHADOW_MAP, mode.y = the source's layer.
+// lighting/debug_view.comp: mode.x = AOV_RSM_* or AOV_SHADOW_MAP, mode.y = the source's layer.
 struct DebugViewPush {
     uvec4 mode;
 };
@@ -263,7 +263,7 @@ struct RsmResolvePush {
     uint pad1;
 };
 
-// Push constants of the camera's visibility resolve (render/visibility_resolve.comp).
+// Push constants of the camera's visibility resolve (lighting/visibility_resolve.comp).
 struct VisibilityResolvePush {
     uvec4 size;   // xy = image size, zw unused
 };
@@ -408,7 +408,7 @@ struct GpuHairPoint {
 
 // Push constants of every ribbon draw or compute raster (camera G-buffer and lists, shadow maps, DSM
 // and DOM builds) and of the DSM build's mesh draws. Starts like DrawPush (views row, material) so
-// that render/scene.vert reads it. ids.x = views row (the DSM layer in its builds), y = material
+// that core/scene.vert reads it. ids.x = views row (the DSM layer in its builds), y = material
 // (DOM build: its step, 0 first depths, 1 layers), z = the DSM build's depth-test light (DSM_NONE:
 // none), the camera lists' image width, the DOM build's layer thickness (float bits), w = node
 // capacity of the lists.

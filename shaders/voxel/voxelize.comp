@@ -10,7 +10,7 @@
 // (pc.counts.y = 1) of one workgroup per chunk. A full list leaves the triangle to its own thread.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
-#include "render/triangles.glsl"
+#include "core/triangles.glsl"
 
 layout(local_size_x = OCCUPANCY_GROUP) in;
 

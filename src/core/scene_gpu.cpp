@@ -15,7 +15,7 @@ SceneGpu::SceneGpu(vk::CommandContext& cmd, const Scene& scene)
     if (scene.indices.empty() && scene.strands.empty()) throw vk::VulkanError("scene has no triangles");
     checkTextureTable(ctx_.limits());
     texturePlan_ = planTextureTable(scene.textures);
-    // Visibility IDs are 32-bit: triangle + 1, 0 meaning nothing drawn (render/visibility.glsl).
+    // Visibility IDs are 32-bit: triangle + 1, 0 meaning nothing drawn (core/visibility.glsl).
     if (scene.indices.size() / 3 >= 0xFFFFFFFFull)
         throw vk::VulkanError("scene has more triangles than 32-bit visibility IDs can name");
     // A hair-only scene (glTF lines) still binds a vertex and an index buffer: one unused element each.
@@ -88,7 +88,7 @@ std::vector<vk::Binding> SceneGpu::drawSetBindings() {
 
 namespace {
 
-// Set 1 (render/material_textures.glsl): the texture slots and their sampler.
+// Set 1 (core/material_textures.glsl): the texture slots and their sampler.
 std::vector<vk::Binding> textureTableBindings() {
     return {{0, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, MATERIAL_TEXTURE_SLOTS}, {1, VK_DESCRIPTOR_TYPE_SAMPLER}};
 }

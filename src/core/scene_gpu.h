@@ -37,7 +37,7 @@ public:
     // The base-colour textures at their own sizes with their full mip chains: one 2D array per size
     // (texturePlan() says which texture is in which slot and layer; a last 1x1 white array fills the
     // table's unused slots). Sampled through the texture table, set 1 of every pipeline that draws
-    // the scene (render/material_textures.glsl).
+    // the scene (core/material_textures.glsl).
     const std::vector<vk::Image>& textures() const { return textures_; }
     const TextureTablePlan& texturePlan() const { return texturePlan_; }
     // GPU memory of the textures' images (the scene's, without the white filler).
@@ -56,7 +56,7 @@ public:
     static std::vector<VkDescriptorSetLayout> drawLayouts(vk::Context& ctx, VkDescriptorSetLayout set0);
     static VkDescriptorSetLayout textureTableLayout(vk::Context& ctx);
     static std::vector<vk::Binding> drawSetBindings();
-    // The triangles as compute resolves of visibility IDs fetch them (render/visibility.glsl):
+    // The triangles as compute resolves of visibility IDs fetch them (core/visibility.glsl):
     // vertices, indices, triangle materials and the drawn (instance, triangle) list at bindings 12-14
     // and 16 (with the draw set).
     void declareTriangles(PassBuilder& pass);
@@ -67,7 +67,7 @@ public:
     std::vector<gpu::GpuInstance> instanceRows(const std::vector<glm::mat4>& transforms,
                                                const std::vector<glm::mat4>& previous = {}) const;
     // Draw `d`'s first triangle within its mesh. A visibility ID is the drawn-triangle index + 1:
-    // the instance's base (GpuInstance.info.y) + this + gl_PrimitiveID + 1 (render/visibility.glsl).
+    // the instance's base (GpuInstance.info.y) + this + gl_PrimitiveID + 1 (core/visibility.glsl).
     uint32_t triangleBase(const Draw& d) const { return drawTriangleInMesh_[size_t(&d - scene_.draws.data())]; }
 
     // Vertex input of penumbra::Vertex for GraphicsDesc.
@@ -87,7 +87,7 @@ public:
     // Winding: glTF fronts are counter-clockwise; views with a y-flipped projection (the camera)
     // keep that, views without (shadow maps) see them clockwise: see sceneFrontFace().
     // `layers` > 1: layered passes draw `layers` instances per scene instance, one per target layer
-    // (shadow maps; render/instances.glsl).
+    // (shadow maps; core/instances.glsl).
     template <class PerDraw, class Filter>
     void draw(VkCommandBuffer cmd, PerDraw perDraw, Filter filter, uint32_t layers = 1) const;
 

@@ -3,7 +3,7 @@
 // resampled on the CPU (that took 12-27 s for one 4096^2 texture), and one texture's staging memory
 // at a time is alive.
 //
-// The table (render/material_textures.glsl) has MATERIAL_TEXTURE_SLOTS slots, each a 2D array: the
+// The table (core/material_textures.glsl) has MATERIAL_TEXTURE_SLOTS slots, each a 2D array: the
 // textures of one size share a slot, a layer each, so any number of textures of up to that many
 // sizes keep their own size. Beyond that many sizes, the textures of the rarest sizes share one last
 // slot at their largest width and height (blitted up on the GPU, a warning says so).

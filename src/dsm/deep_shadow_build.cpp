@@ -32,7 +32,7 @@ DeepShadowBuildPass::DeepShadowBuildPass(vk::Allocator& alloc, SceneGpu& scene, 
     offsets_ = vk::ComputeKernel(ctx, "dsm/offsets.comp", {ssbo, ssbo, ssbo, ssbo}, sizeof(gpu::DsmPush));
     if (hasBlended_) {
         vk::GraphicsDesc d;
-        d.vertexShader = "render/scene.vert";
+        d.vertexShader = "core/scene.vert";
         d.fragmentShader = "dsm/build_mesh.frag";
         d.vertexStride = SceneGpu::vertexStride();
         d.vertexAttributes = SceneGpu::vertexAttributes();

@@ -62,7 +62,7 @@ CameraTranslucency::CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, co
                                                SceneGpu::drawLayouts(ctx, buildLayout_.handle()), sizeof(gpu::HairDrawPush));
     if (hasBlended_) {
         vk::GraphicsDesc d;
-        d.vertexShader = "render/scene.vert";
+        d.vertexShader = "core/scene.vert";
         d.fragmentShader = "dsm/oit_mesh.frag";
         d.vertexStride = SceneGpu::vertexStride();
         d.vertexAttributes = SceneGpu::vertexAttributes();

@@ -1,7 +1,7 @@
 #include "lighting/gbuffer_pass.h"
 
 #include "core/raster.h"
-#include "render/gbuffer_bindings.h"
+#include "lighting/gbuffer_bindings.h"
 
 namespace penumbra {
 
@@ -26,8 +26,8 @@ GBufferPass::GBufferPass(vk::Allocator& alloc, SceneGpu& scene, uint32_t width, 
                                   VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                               "gbuffer-depth"});
     vk::GraphicsDesc d;
-    d.vertexShader = "render/scene.vert";
-    d.fragmentShader = visibility ? "render/visibility.frag" : "render/gbuffer.frag";
+    d.vertexShader = "core/scene.vert";
+    d.fragmentShader = visibility ? "core/visibility.frag" : "lighting/gbuffer.frag";
     d.depthFormat = VK_FORMAT_D32_SFLOAT;
     d.vertexStride = SceneGpu::vertexStride();
     d.vertexAttributes = SceneGpu::vertexAttributes();
@@ -48,7 +48,7 @@ GBufferPass::GBufferPass(vk::Allocator& alloc, SceneGpu& scene, uint32_t width, 
     } else {
         d.colorFormats = {ids.format()};
         pipeline_ = vk::Pipeline::graphics(ctx, d, SceneGpu::drawLayouts(ctx, drawLayout), sizeof(gpu::DrawPush));
-        d.fragmentShader = "render/visibility_masked.frag";
+        d.fragmentShader = "core/visibility_masked.frag";
         masked_ = vk::Pipeline::graphics(ctx, d, SceneGpu::drawLayouts(ctx, drawLayout), sizeof(gpu::DrawPush));
     }
     std::vector<vk::Binding> bindings = SceneGpu::resolveSetBindings();
@@ -57,7 +57,7 @@ GBufferPass::GBufferPass(vk::Allocator& alloc, SceneGpu& scene, uint32_t width, 
     bindings.push_back({VISIBILITY_RESOLVE_ALBEDO, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
     bindings.push_back({VISIBILITY_RESOLVE_NORMAL, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
     resolveLayout_ = vk::DescriptorLayout(ctx, bindings);
-    resolve_ = vk::Pipeline::compute(ctx, "render/visibility_resolve.comp",
+    resolve_ = vk::Pipeline::compute(ctx, "lighting/visibility_resolve.comp",
                                      SceneGpu::drawLayouts(ctx, resolveLayout_.handle()),
                                      sizeof(gpu::VisibilityResolvePush));
     nearest_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});

@@ -1,8 +1,8 @@
 // The camera's G-buffer: albedo, world normal and depth per pixel, by one of two paths.
 //   gbuffer:    one raster pass writes all three (scene.vert / gbuffer.frag; albedo sRGB 8-bit).
-//   visibility: the raster writes depth and a 32-bit visibility ID only (render/visibility.frag;
+//   visibility: the raster writes depth and a 32-bit visibility ID only (core/visibility.frag;
 //               alpha-masked materials still test alpha there), then a compute pass resolves albedo
-//               (RGBA16F) and normal from the ID (render/visibility_resolve.comp; texture level of
+//               (RGBA16F) and normal from the ID (lighting/visibility_resolve.comp; texture level of
 //               detail from the neighbouring pixels' rays, as the raster's 2x2 quads take it).
 // Each colour target a raster pass writes costs fill rate on GPUs whose raster path is narrow
 // (issue 14); the visibility path writes one 32-bit target, or none: with `computeRaster` the

@@ -22,9 +22,9 @@ ShadowRaster::ShadowRaster(vk::Context& ctx, const SceneGpu& scene, const Shadow
     layered_ = make(ctx, d, drawLayout);
     vk::GraphicsDesc id = d;
     id.colorFormats = {VK_FORMAT_R32_UINT};
-    id.fragmentShader = "render/visibility.frag";
+    id.fragmentShader = "core/visibility.frag";
     ids_.opaque = vk::Pipeline::graphics(ctx, id, SceneGpu::drawLayouts(ctx, drawLayout), sizeof(gpu::ShadowDrawPush));
-    id.fragmentShader = "render/visibility_masked.frag";
+    id.fragmentShader = "core/visibility_masked.frag";
     ids_.masked = vk::Pipeline::graphics(ctx, id, SceneGpu::drawLayouts(ctx, drawLayout), sizeof(gpu::ShadowDrawPush));
     d.vertexShader = "shadow/paraboloid.vert";
     // Position and uv only: the paraboloid stages have no use for the normal.

@@ -3,7 +3,7 @@
 // (gl_InstanceIndex), one view matrix per pass.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
-#include "render/instances.glsl"
+#include "core/instances.glsl"
 
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
@@ -15,7 +15,7 @@ layout(push_constant) uniform Push { DrawPush draw; };
 layout(location = 0) out vec3 outNormal;
 layout(location = 1) out vec2 outUv;
 layout(location = 2) out vec3 outWorld;
-layout(location = 3) flat out uint outIdBase;  // visibility ID base (render/visibility.glsl)
+layout(location = 3) flat out uint outIdBase;  // visibility ID base (core/visibility.glsl)
 
 void main() {
     const vec3 world = instanceWorld(gl_InstanceIndex, inPosition);

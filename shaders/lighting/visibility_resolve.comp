@@ -5,9 +5,9 @@
 // interpolated world normal (w = SHADING_SURFACE). No ID: zeros, as the raster path clears.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
-#include "render/gbuffer_bindings.h"
-#include "render/material.glsl"
-#include "render/visibility.glsl"
+#include "lighting/gbuffer_bindings.h"
+#include "core/material.glsl"
+#include "core/visibility.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = VISIBILITY_RESOLVE_FRAME) uniform Frame { FrameUniforms frame; };

@@ -1,4 +1,4 @@
-// Binding numbers of the lighting pass's set 0 (render/lighting.comp), included by the GLSL and by
+// Binding numbers of the lighting pass's set 0 (lighting/lighting.comp), included by the GLSL and by
 // src/render/lighting_pass.cpp: each number is written here only.
 #ifndef PENUMBRA_LIGHTING_BINDINGS_H
 #define PENUMBRA_LIGHTING_BINDINGS_H
@@ -17,14 +17,14 @@
 #define LIGHTING_DSM_NODES 10
 #define LIGHTING_DSM_SIDE 11
 #define LIGHTING_PROBE 12
-// render/motion.glsl's three (visibility IDs, drawn triangles, instances) from here on.
+// core/motion.glsl's three (visibility IDs, drawn triangles, instances) from here on.
 #define LIGHTING_MOTION_FIRST 13
 
-// render/tonemap.comp.
+// lighting/tonemap.comp.
 #define TONEMAP_HDR 0
 #define TONEMAP_LDR 1
 
-// render/debug_view.comp.
+// lighting/debug_view.comp.
 #define DEBUG_VIEW_SOURCE 0
 #define DEBUG_VIEW_OUT 1
 

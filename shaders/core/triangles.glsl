@@ -3,7 +3,7 @@
 // set 0 (SceneGpu::declareTriangles) and the instance table.
 #ifndef PENUMBRA_TRIANGLES_GLSL
 #define PENUMBRA_TRIANGLES_GLSL
-#include "render/instances.glsl"
+#include "core/instances.glsl"
 layout(set = 0, binding = 12, std430) readonly buffer VisVertices { float visVertex[]; };  // penumbra::Vertex
 layout(set = 0, binding = 13, std430) readonly buffer VisIndices { uint visIndex[]; };
 layout(set = 0, binding = 14, std430) readonly buffer VisTriangleMaterials { uint visTriangleMaterial[]; };

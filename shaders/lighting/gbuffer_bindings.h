@@ -1,4 +1,4 @@
-// Binding numbers of the camera's visibility resolve (render/visibility_resolve.comp), included by
+// Binding numbers of the camera's visibility resolve (lighting/visibility_resolve.comp), included by
 // the GLSL and by src/render/gbuffer_pass.cpp; bindings 0-2 are the scene's resolve set
 // (SceneGpu::resolveSetBindings), 4 is free.
 #ifndef PENUMBRA_GBUFFER_BINDINGS_H

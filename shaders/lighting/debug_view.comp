@@ -3,7 +3,7 @@
 // of the source, letterboxed as a square into the output image before tone mapping.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
-#include "render/lighting_bindings.h"
+#include "lighting/lighting_bindings.h"
 #include "shared/octahedral.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;

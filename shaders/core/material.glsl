@@ -1,6 +1,6 @@
 // Material lookup shared by the fragment shaders that draw the scene.
 layout(set = 0, binding = 1, std430) readonly buffer Materials { GpuMaterial materials[]; };
-#include "render/material_textures.glsl"
+#include "core/material_textures.glsl"
 
 vec4 baseColor(uint index, vec2 uv) {
     GpuMaterial m = materials[index];
@@ -14,7 +14,7 @@ bool alphaDiscarded(uint index, float alpha) {
     return m.info.y == ALPHA_MASK && alpha < m.params.x;
 }
 
-// With explicit uv gradients (compute resolves of visibility IDs: render/visibility.glsl).
+// With explicit uv gradients (compute resolves of visibility IDs: core/visibility.glsl).
 vec4 baseColorGrad(uint index, vec2 uv, vec2 dx, vec2 dy) {
     GpuMaterial m = materials[index];
     vec4 c = m.baseColor;
