@@ -9,7 +9,7 @@ layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec2 inUv;
 
-layout(set = 0, binding = 0, std430) readonly buffer Views { mat4 viewProj[]; } views;
+layout(set = 0, binding = SCENE_VIEWS, std430) readonly buffer Views { mat4 viewProj[]; } views;
 layout(push_constant) uniform Push { DrawPush draw; };
 
 layout(location = 0) out vec3 outNormal;
@@ -23,5 +23,5 @@ void main() {
     outNormal = instanceNormal(gl_InstanceIndex, inNormal);
     outUv = inUv;
     outWorld = world;
-    outIdBase = instances[gl_InstanceIndex].info.y + draw.triangleBase;
+    outIdBase = instances[gl_InstanceIndex].firstDrawnTriangle + draw.triangleBase;
 }

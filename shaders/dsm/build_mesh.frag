@@ -6,10 +6,10 @@
 #include "core/material.glsl"
 #include "dsm/dsm_common.glsl"
 
-layout(push_constant) uniform Push { HairDrawPush draw; };
+layout(push_constant) uniform Push { DsmBuildPush draw; };
 layout(location = 1) in vec2 inUv;
 layout(location = 2) in vec3 inWorld;
 
 #include "dsm/dsm_insert.glsl"
 
-void main() { dsmInsert(uvec2(gl_FragCoord.xy), dsmDepth(draw.viewer, inWorld), baseColor(draw.ids.y, inUv).a, inWorld); }
+void main() { dsmInsert(uvec2(gl_FragCoord.xy), dsmDepth(draw.view.viewer, draw.view.viewerIsPoint, inWorld), baseColor(draw.material, inUv).a, inWorld); }

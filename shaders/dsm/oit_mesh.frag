@@ -7,13 +7,13 @@
 #include "shared/types.h"
 #include "core/material.glsl"
 
-layout(push_constant) uniform Push { HairDrawPush draw; };
+layout(push_constant) uniform Push { OitBuildPush draw; };
 layout(location = 0) in vec3 inNormal;
 layout(location = 1) in vec2 inUv;
 
 #include "dsm/oit_insert.glsl"
 
 void main() {
-    vec4 c = baseColor(draw.ids.y, inUv);
+    vec4 c = baseColor(draw.material, inUv);
     oitInsert(ivec2(gl_FragCoord.xy), gl_FragCoord.z, c.rgb, c.a, normalize(inNormal), OIT_NOT_HAIR);
 }

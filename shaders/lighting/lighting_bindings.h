@@ -1,7 +1,9 @@
 // Binding numbers of the lighting pass's set 0 (lighting/lighting.comp), included by the GLSL and by
-// src/render/lighting_pass.cpp: each number is written here only.
+// src/lighting/lighting_pass.cpp: each number is written here only.
 #ifndef PENUMBRA_LIGHTING_BINDINGS_H
 #define PENUMBRA_LIGHTING_BINDINGS_H
+
+#include "dsm/bindings.h"
 
 #define LIGHTING_FRAME 0
 #define LIGHTING_LIGHTS 1
@@ -11,11 +13,11 @@
 #define LIGHTING_SHADOW_MASK 5
 #define LIGHTING_HDR 6
 #define LIGHTING_INDIRECT 7
-// dsm/dsm_lookup.glsl's four buffers (lights, heads, nodes, side lists) sit at 8-11.
-#define LIGHTING_DSM_LIGHTS 8
-#define LIGHTING_DSM_HEADS 9
-#define LIGHTING_DSM_NODES 10
-#define LIGHTING_DSM_SIDE 11
+// dsm/dsm_lookup.glsl's four buffers (lights, heads, nodes, side lists), numbered there.
+#define LIGHTING_DSM_LIGHTS DSM_LOOKUP_LIGHTS
+#define LIGHTING_DSM_HEADS DSM_LOOKUP_HEADS
+#define LIGHTING_DSM_NODES DSM_LOOKUP_NODES
+#define LIGHTING_DSM_SIDE DSM_LOOKUP_SIDE
 #define LIGHTING_PROBE 12
 // core/motion.glsl's three (visibility IDs, drawn triangles, instances) from here on.
 #define LIGHTING_MOTION_FIRST 13

@@ -18,7 +18,7 @@ layout(push_constant) uniform Push { VisibilityResolvePush pc; };
 
 void main() {
     const ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(pixel, ivec2(pc.size.xy)))) return;
+    if (any(greaterThanEqual(pixel, ivec2(pc.width, pc.height)))) return;
     const uint id = texelFetch(ids, pixel, 0).r;
     if (id == 0u) {
         imageStore(outAlbedo, pixel, vec4(0.0));
@@ -26,7 +26,7 @@ void main() {
         return;
     }
     VisRay centre, dx0, dx1, dy0, dy1;
-    quadRays(frame.invViewProj, pixel, vec2(pc.size.xy), centre, dx0, dx1, dy0, dy1);
+    quadRays(frame.invViewProj, pixel, vec2(pc.width, pc.height), centre, dx0, dx1, dy0, dy1);
     const VisSurface s = resolveSurface(fetchTriangle(id), centre, dx0, dx1, dy0, dy1);
     imageStore(outAlbedo, pixel, vec4(surfaceBaseColor(s).rgb, 1.0));
     imageStore(outNormal, pixel, vec4(s.normal, SHADING_SURFACE));

@@ -13,7 +13,7 @@ layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec2 inUv;
 
-layout(set = 0, binding = 0, std430) readonly buffer Views { mat4 viewProj[]; } views;
+layout(set = 0, binding = SCENE_VIEWS, std430) readonly buffer Views { mat4 viewProj[]; } views;
 layout(push_constant) uniform Push { ShadowDrawPush draw; };
 
 layout(location = 0) out vec3 outNormal;
@@ -26,5 +26,5 @@ void main() {
     gl_Layer = int(draw.firstLayer) + layer;
     outNormal = instanceNormal(instance, inNormal);
     outUv = inUv;
-    outIdBase = instances[instance].info.y + draw.ids.x;
+    outIdBase = instances[instance].firstDrawnTriangle + draw.triangleBase;
 }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/frame_graph.h"
+#include "core/scene_bindings.h"  // shaders/core: the sets' binding numbers
 #include "core/texture_upload.h"
 #include "scene/scene.h"
 #include "shared/types.h"
@@ -45,8 +46,8 @@ public:
     // The table's MATERIAL_TEXTURE_SLOTS plus a pass's own sampled images against the device's per
     // stage; throws std::invalid_argument naming both.
     static void checkTextureTable(const vk::DeviceLimits& limits);
-    // Set 0 of the pipelines that draw the scene: views and materials (bindings 0-1) and the frame's
-    // instance table (SCENE_INSTANCES_BINDING, the graph's "instances"); a pass may declare more
+    // Set 0 of the pipelines that draw the scene: views and materials (SCENE_VIEWS, SCENE_MATERIALS)
+    // and the frame's instance table (SCENE_INSTANCES_BINDING, the graph's "instances"); a pass may declare more
     // bindings of its own. Set 1: the texture table. Both are bound by declareDrawSet.
     void declareDrawSet(PassBuilder& pass, BufferHandle views);
     // The frame's instance table ("instances"), or the table at rest in graphs without one (tests).
@@ -57,8 +58,8 @@ public:
     static VkDescriptorSetLayout textureTableLayout(vk::Context& ctx);
     static std::vector<vk::Binding> drawSetBindings();
     // The triangles as compute resolves of visibility IDs fetch them (core/visibility.glsl):
-    // vertices, indices, triangle materials and the drawn (instance, triangle) list at bindings 12-14
-    // and 16 (with the draw set).
+    // vertices, indices, triangle materials and the drawn (instance, triangle) list (SCENE_VERTICES
+    // and on, with the draw set).
     void declareTriangles(PassBuilder& pass);
     static std::vector<vk::Binding> resolveSetBindings();
     // The rows of the instance table for these transforms (Scene::instances' order): normal matrix,

@@ -30,7 +30,7 @@ struct TextureSlot {
 
 struct TextureTablePlan {
     std::vector<TextureSlot> slots;  // at most MATERIAL_TEXTURE_SLOTS
-    // Per scene texture, what GpuMaterial.info.x holds: slot | layer << TEXTURE_LAYER_SHIFT.
+    // Per scene texture, what GpuMaterial.texture holds: slot | layer << TEXTURE_LAYER_SHIFT.
     std::vector<uint32_t> handles;
     uint32_t resampled = 0;  // textures not at their own size (the rarest sizes beyond the slots)
     uint64_t bytes() const;  // every slot's array with its mip chain

@@ -132,7 +132,7 @@ void GBufferPass::addResolve(FrameGraph& graph, ImageHandle a, ImageHandle n, Im
         .storageImage(VISIBILITY_RESOLVE_NORMAL, n)
         .bytes(VkDeviceSize(w) * h * (4 + 8 + 8))
         .record([this, w, h](PassContext& c) {
-            resolve_.push(c.cmd, gpu::VisibilityResolvePush{{w, h, 0, 0}});
+            resolve_.push(c.cmd, gpu::VisibilityResolvePush{w, h, 0, 0});
             vkCmdDispatch(c.cmd, vk::divUp(w, 8), vk::divUp(h, 8), 1);
         });
 }

@@ -64,7 +64,7 @@ void DebugViewPass::addTo(FrameGraph& graph, Aov aov, uint32_t layer) {
     if (!source || !graph.hasImage(source)) return;
     const ImageHandle image = graph.image(source), out = graph.image("hdr");
     const uint32_t last = graph.imageOf(image).layers() - 1;
-    const gpu::DebugViewPush push{{uint32_t(aov), std::min(layer, last), 0, 0}};
+    const gpu::DebugViewPush push{uint32_t(aov), std::min(layer, last), 0, 0};
     graph.pass("debug-view")
         .pipeline(kernel_.pipeline)
         .sampled(DEBUG_VIEW_SOURCE, image, nearest_.handle())

@@ -88,7 +88,7 @@ public:
     const vk::Buffer& depth() const { return depth_; }
     const vk::Buffer& counters() const { return counters_; }
     uint32_t recordCapacity() const { return recordCapacity_; }
-    uint32_t smallExtent() const;  // RasterPush.capacity.z
+    uint32_t smallExtent() const;  // RasterPush.smallExtent
 
 private:
     gpu::RasterPush push(RasterBias bias) const;

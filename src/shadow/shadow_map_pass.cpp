@@ -86,7 +86,8 @@ void ShadowMapPass::update(const std::vector<Light>& lights, const Camera& camer
     if (!layers.empty()) layerTable_.write(layers.data(), layers.size() * sizeof(layers[0]));
     // A layer's depth depends on its projection only (the split distances only pick layers).
     const auto same = [](const gpu::GpuShadowLayer& a, const gpu::GpuShadowLayer& b) {
-        return a.viewProj == b.viewProj && a.params == b.params;
+        return a.viewProj == b.viewProj && a.texelSize == b.texelSize && a.zNear == b.zNear && a.zFar == b.zFar &&
+               a.discScale == b.discScale;
     };
     dirty_.assign(layers.size(), true);
     for (size_t k = 0; k < layers.size() && k < held_.size(); ++k) dirty_[k] = !same(layers[k], held_[k]);

@@ -55,7 +55,7 @@ void ShadowRaster::drawLight(VkCommandBuffer cmd, const Pipelines& pipelines, co
                 gpu::ShadowDrawPush dp = push;
                 dp.material = d.material;
                 dp.layerCount = instances;
-                dp.ids.x = scene_.triangleBase(d);
+                dp.triangleBase = scene_.triangleBase(d);
                 p->push(cmd, dp);
             },
             // Blended materials cast like masked ones, unless the light's deep shadow map takes them.
@@ -121,7 +121,10 @@ void ShadowRaster::record(VkCommandBuffer cmd, vk::Image& map, uint32_t firstVie
         gpu::ShadowDrawPush push{firstView + run.first, 0, run.first, 0, {}};
         if (paraboloid) {
             const LightProjection& first = layout.layers()[s.firstLayer].projection;
-            push.paraboloid = {first.zNear, first.zFar, first.discScale, maxEdge};
+            push.paraboloidNear = first.zNear;
+            push.paraboloidFar = first.zFar;
+            push.paraboloidDiscScale = first.discScale;
+            push.maxEdgeAngle = maxEdge;
         }
         drawLight(cmd, paraboloid ? paraboloid_ : layered_, push, run.count, drawsBlended(s.light));
     }
