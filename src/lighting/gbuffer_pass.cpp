@@ -43,8 +43,7 @@ GBufferPass::GBufferPass(vk::Allocator& alloc, SceneGpu& scene, uint32_t width, 
                                 VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_STORAGE_BIT,
                             "gbuffer-ids"});
     if (computeRaster) {  // the compute rasterizer draws the IDs: no raster pipelines
-        compute_ = std::make_unique<ComputeRaster>(alloc, scene, VkExtent2D{width, height}, 1,
-                                                   ComputeRaster::Views::Camera);
+        compute_ = makeDepthRaster(alloc, scene, VkExtent2D{width, height}, 1, DepthRaster::Views::Camera);
     } else {
         d.colorFormats = {ids.format()};
         pipeline_ = vk::Pipeline::graphics(ctx, d, SceneGpu::drawLayouts(ctx, drawLayout), sizeof(gpu::DrawPush));

@@ -347,4 +347,9 @@ void ComputeRaster::addIdSplit(FrameGraph& graph, const std::string& name, Image
         });
 }
 
+std::unique_ptr<DepthRaster> makeDepthRaster(vk::Allocator& alloc, SceneGpu& scene, VkExtent2D size, uint32_t layers,
+                                             DepthRaster::Views kind) {
+    return std::make_unique<ComputeRaster>(alloc, scene, size, layers, kind);
+}
+
 }  // namespace penumbra

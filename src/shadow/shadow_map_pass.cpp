@@ -45,8 +45,7 @@ void ShadowMapPass::assign(const std::vector<Light>& lights) {
                                   "shadow-map", 1, true});
     }
     if (useCompute_ && (resized || !compute_))
-        compute_ = std::make_unique<ComputeRaster>(alloc_, scene_, VkExtent2D{settings_.resolution, settings_.resolution},
-                                                   layers);
+        compute_ = makeDepthRaster(alloc_, scene_, VkExtent2D{settings_.resolution, settings_.resolution}, layers);
     moments_.resize(layout_.momentLayerCount());
     // Host-visible tables, one copy per frame in flight, rewritten by update(); kept while their sizes hold.
     const size_t shadowed = std::max<size_t>(layout_.shadowed().size(), 1);
