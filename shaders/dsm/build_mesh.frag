@@ -12,4 +12,7 @@ layout(location = 2) in vec3 inWorld;
 
 #include "dsm/dsm_insert.glsl"
 
-void main() { dsmInsert(uvec2(gl_FragCoord.xy), dsmDepth(draw.view.viewer, draw.view.viewerIsPoint, inWorld), baseColor(draw.material, inUv).a, inWorld); }
+void main() {
+    float depth = dsmDepth(draw.view.viewer, draw.view.viewerIsPoint, inWorld);
+    dsmInsert(uvec2(gl_FragCoord.xy), depth, baseColor(draw.material, inUv).a, inWorld);
+}

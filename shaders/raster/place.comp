@@ -12,7 +12,7 @@
 layout(local_size_x = RASTER_PLACE_GROUP) in;
 #include "raster/bindings.h"
 layout(set = 0, binding = RASTER_PLACE_TILE_BINS, std430) buffer TileBins { uvec4 tileBins[]; };  // x count, y offset
-layout(set = 0, binding = RASTER_PLACE_COUNTERS, std430) buffer Counters { RasterCounters counters; };  // w: list entries placed
+layout(set = 0, binding = RASTER_PLACE_COUNTERS, std430) buffer Counters { RasterCounters counters; };  // counts the entries placed
 layout(push_constant) uniform Push { uvec4 bins; };                                // x = number of bins
 
 void main() {
