@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
 # The module structure of src/ (docs/architecture.md): the core, the Vulkan layer, scene and io include no
-# technique, service or assembly header; no technique includes another technique's header; shared
-# services include no technique. Prints each offending include and exits 1; run by CTest.
+# technique, service or assembly header; no technique includes another technique's or a shared
+# service's header; shared services include no technique. Prints each offending include and exits 1; run by CTest.
 set -euo pipefail
 root="${1:-$(cd "$(dirname "$0")/.." && pwd)}"
 cd "$root/src"
 
 # Technique folders: each a module that reaches the others only through core/names.h.
 techniques=(shadow dsm rsm lpv lighting temporal_gi)
-# Shared service modules: techniques may use them; they use only the layers below.
+# Shared service modules: techniques reach them through core interfaces (core/depth_raster.h) and
+# published names (core/names.h), never through their headers; they use only the layers below.
 services=(raster voxel)
 # The assembly above the techniques, and the front ends above it.
 above=(renderer app view eval reference)
@@ -35,7 +36,7 @@ for s in "${services[@]}"; do forbid "$s" "${techniques[@]}" "${above[@]}"; done
 for t in "${techniques[@]}"; do
     others=()
     for o in "${techniques[@]}"; do [ "$o" != "$t" ] && others+=("$o"); done
-    forbid "$t" "${others[@]}" "${above[@]}"
+    forbid "$t" "${others[@]}" "${services[@]}" "${above[@]}"
 done
 [ "$status" -eq 0 ] && echo "check-structure: ok (core, vk, scene, io, ${services[*]}, ${techniques[*]})"
 exit "$status"

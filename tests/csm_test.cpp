@@ -247,11 +247,11 @@ TEST(ShadowLayoutTest, LayersPerLightTypeAndMomentLayersOnlyForMomentFilters) {
     EXPECT_EQ(layout.momentLayerCount(), 1u);
     layout.update(lights, lookingAt({0, 1, 4}, {0, 0, 0}), 1.0f, 20.0f);
     const auto gpu = layout.gpuLayers();
-    EXPECT_EQ(gpu[3].info.y, 0u);
-    EXPECT_EQ(gpu[0].info.y, SHADOW_NO_MOMENTS);
-    EXPECT_EQ(gpu[4].info.x, uint32_t(SHADOW_PROJ_PARABOLOID));
+    EXPECT_EQ(gpu[3].momentLayer, 0u);
+    EXPECT_EQ(gpu[0].momentLayer, SHADOW_NO_MOMENTS);
+    EXPECT_EQ(gpu[4].projection, uint32_t(SHADOW_PROJ_PARABOLOID));
     EXPECT_EQ(layout.layers()[5].index, 1u);
-    EXPECT_GT(gpu[2].split.y, gpu[1].split.y);
+    EXPECT_GT(gpu[2].splitFar, gpu[1].splitFar);
 }
 
 TEST(ShadowCli, FiltersAndPerLightOverrides) {

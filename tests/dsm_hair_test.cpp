@@ -259,7 +259,7 @@ double tapWeight(double s, double width, int i) {
 double listTransmittance(const gpu::GpuDsmLight& dsm, const glm::dvec3& p, const uint32_t* heads,
                          const glm::uvec4* nodes) {
     const glm::dvec3 viewer(dsm.viewer);
-    const bool spot = dsm.viewer.w > 0.5f;
+    const bool spot = dsm.viewerIsPoint != 0;
     const double texel = dsm.texelSize * (dsm.projection != DSM_PROJECTION_ORTHO ? glm::distance(p, viewer) : 1.0);
     const glm::dvec3 q = p + (spot ? glm::normalize(viewer - p) : viewer) * (dsm.normalOffset * texel);
     const glm::dvec4 clip = glm::dmat4(dsm.viewProj) * glm::dvec4(q, 1.0);
@@ -323,7 +323,7 @@ TEST_F(GpuTest, HairShadowEqualsTheListsAtEveryPoint) {
     double worst = 0.0, sumError = 0.0;
     for (uint32_t light = 0; light < 2; ++light)
         for (uint32_t i = 0; i < points; ++i) {
-            if (point[i].position.w <= 0.0f) continue;  // the zero-width copies bracketing a strand: never drawn
+            if (point[i].width <= 0.0f) continue;  // the zero-width copies bracketing a strand: never drawn
             const double cpu = listTransmittance(table[light], glm::dvec3(point[i].position),
                                                  reinterpret_cast<const uint32_t*>(headBytes.data()),
                                                  reinterpret_cast<const glm::uvec4*>(nodeBytes.data()));

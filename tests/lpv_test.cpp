@@ -474,8 +474,8 @@ TEST_F(GpuTest, LpvVoxelFacesAreTheShareOfOpenColumns) {
                             start[axis] -= size;
                             start[u] += ((i % n + 0.5) / n - 0.5) * size;
                             start[v] += ((i / n + 0.5) / n - 0.5) * size;
-                            const glm::dvec3 p = (start - glm::dvec3(g.origin)) / double(g.origin.w);
-                            const double end = p[axis] + size / g.origin.w;
+                            const glm::dvec3 p = (start - glm::dvec3(g.origin)) / double(g.voxelSize);
+                            const double end = p[axis] + size / g.voxelSize;
                             unsure |= nearBoundary(p.x) || nearBoundary(p.y) || nearBoundary(p.z) || nearBoundary(end);
                             glm::ivec3 c = glm::ivec3(glm::floor(p));
                             bool hit = false;

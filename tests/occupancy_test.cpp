@@ -81,14 +81,14 @@ TEST(OccupancyGrid, CubicVoxelsWithAMarginAroundTheBoundsInWholeBricks) {
     b.extend({-2, 0, 1});
     b.extend({6, 1, 3});
     const gpu::GpuOccupancyGrid g = occupancyGrid(b, 34);
-    EXPECT_FLOAT_EQ(g.origin.w, 8.0f / 32.0f);
+    EXPECT_FLOAT_EQ(g.voxelSize, 8.0f / 32.0f);
     EXPECT_EQ(g.dims.x, 36u);  // 34 rounded up to bricks of 4
     EXPECT_EQ(g.dims.y, 8u);   // ceil(1 / 0.25) + 2 = 6, rounded up
     EXPECT_EQ(g.dims.z, 12u);  // ceil(2 / 0.25) + 2 = 10, rounded up
-    EXPECT_EQ(g.dims.w, 36u * 8u * 12u / 32u) << "the brick bits follow the voxels' words";
+    EXPECT_EQ(g.firstBrickWord, 36u * 8u * 12u / 32u) << "the brick bits follow the voxels' words";
     for (int a = 0; a < 3; ++a) {
-        EXPECT_LE(g.origin[a] + g.origin.w, b.min[a] + 1e-5f) << "axis " << a;
-        EXPECT_GE(g.origin[a] + g.origin.w * (float(g.dims[a]) - 1.0f), b.max[a] - 1e-5f) << "axis " << a;
+        EXPECT_LE(g.origin[a] + g.voxelSize, b.min[a] + 1e-5f) << "axis " << a;
+        EXPECT_GE(g.origin[a] + g.voxelSize * (float(g.dims[a]) - 1.0f), b.max[a] - 1e-5f) << "axis " << a;
     }
 }
 
@@ -116,7 +116,7 @@ TEST_F(OccupancyTest, VoxelsAreExactlyThoseTheTrianglesMeet) {
         // none they miss by as much (the box grown by 1e-3) may be. Between the two lie the voxels a
         // triangle only touches, where float and double may disagree.
         std::vector<uint8_t> surely(voxels, 0), maybe(voxels, 0);
-        const double size = g.origin.w, half = 0.5 * size, slack = 1e-3 * size;
+        const double size = g.voxelSize, half = 0.5 * size, slack = 1e-3 * size;
         for (const Draw& d : scene.draws) {
             if (scene.materials[d.material].alphaMode == AlphaMode::Blend) continue;
             Tri t;
@@ -148,7 +148,7 @@ TEST_F(OccupancyTest, VoxelsAreExactlyThoseTheTrianglesMeet) {
                 const glm::uvec3 v = c * 4u + glm::uvec3(k % 4, (k / 4) % 4, k / 16);
                 any |= gpuBit(v.x + g.dims.x * (v.y + size_t(g.dims.y) * v.z));
             }
-            const uint32_t bit = (u32(bytes, sizeof(header) / 4 + g.dims.w + b / 32) >> (b % 32)) & 1u;
+            const uint32_t bit = (u32(bytes, sizeof(header) / 4 + g.firstBrickWord + b / 32) >> (b % 32)) & 1u;
             brickErrors += bit != any;
             bricksSet += bit;
         }

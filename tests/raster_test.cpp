@@ -11,6 +11,7 @@
 #include "app/cli_parse.h"
 #include "gpu_fixture.h"
 #include "core/scene_gpu.h"
+#include "raster/compute_raster.h"
 #include "raster/overflow_limits.glsl"
 #include "scene/builders.h"
 #include "shadow/shadow_map_pass.h"
@@ -72,12 +73,12 @@ protected:
         graph.publish("views", graph.import(views));
         pass.addTo(graph, 0);
         cmd.submitAndWait([&](VkCommandBuffer c) { graph.execute(c, nullptr); });
-        if (const ComputeRaster* r = pass.computeRaster()) {
+        if (const auto* r = static_cast<const ComputeRaster*>(pass.computeRaster())) {
             gpu::RasterCounters counters;
             std::memcpy(&counters, cmd.readBuffer(r->counters(), sizeof(counters)).data(), sizeof(counters));
-            EXPECT_EQ(counters.counts.z, 0u) << "bins overflowed";
-            std::printf("[ raster ] %u large triangles binned into %u tile entries\n", counters.counts.x,
-                        counters.counts.y);
+            EXPECT_EQ(counters.inlined, 0u) << "bins overflowed";
+            std::printf("[ raster ] %u large triangles binned into %u tile entries\n", counters.records,
+                        counters.tileEntries);
             std::memcpy(&work_, cmd.readBuffer(r->counters(), sizeof(counters) + sizeof(work_)).data() + sizeof(counters),
                         sizeof(work_));
             smallExtent_ = r->smallExtent();
@@ -371,7 +372,7 @@ TEST_F(RasterSceneTest, SponzaEqualsTheHardware) {
     expectSameShadows(scene, camera, "Sponza", 256, false);
 }
 
-// The RSM's shadow layers drawn with visibility IDs (render/visibility.glsl) by both rasterizers:
+// The RSM's shadow layers drawn with visibility IDs (core/visibility.glsl) by both rasterizers:
 // the hardware's depth + R32_UINT pass and the compute rasterizer's 64-bit depth << 32 | ID. Where
 // both cover, the same triangle; coverage within 0.01% (the depth-only rule above).
 TEST_F(RasterSceneTest, VisibilityIdsEqualTheHardware) {

@@ -51,12 +51,17 @@ const std::map<std::string, StructLayout>& sharedStructs() {
                MEMBER(GpuLight, cosInner), MEMBER(GpuLight, cosOuter), MEMBER(GpuLight, normalOffset),
                MEMBER(GpuLight, perspective), MEMBER(GpuLight, shadowTexelSize), MEMBER(GpuLight, pad0),
                MEMBER(GpuLight, pad1), MEMBER(GpuLight, pad2), MEMBER(GpuLight, shadowViewProj)),
-        STRUCT(GpuMaterial, MEMBER(GpuMaterial, baseColor), MEMBER(GpuMaterial, info), MEMBER(GpuMaterial, params)),
+        STRUCT(GpuMaterial, MEMBER(GpuMaterial, baseColor), MEMBER(GpuMaterial, texture),
+               MEMBER(GpuMaterial, alphaMode), MEMBER(GpuMaterial, doubleSided), MEMBER(GpuMaterial, pad0),
+               MEMBER(GpuMaterial, alphaCutoff), MEMBER(GpuMaterial, pad1), MEMBER(GpuMaterial, pad2),
+               MEMBER(GpuMaterial, pad3)),
         STRUCT(GpuInstance, MEMBER(GpuInstance, model), MEMBER(GpuInstance, normal), MEMBER(GpuInstance, toPrevious),
-               MEMBER(GpuInstance, info)),
+               MEMBER(GpuInstance, mirrored), MEMBER(GpuInstance, firstDrawnTriangle), MEMBER(GpuInstance, pad0),
+               MEMBER(GpuInstance, pad1)),
         STRUCT(DrawPush, MEMBER(DrawPush, viewIndex), MEMBER(DrawPush, material), MEMBER(DrawPush, pad0),
                MEMBER(DrawPush, triangleBase)),
-        STRUCT(DebugViewPush, MEMBER(DebugViewPush, mode)),
+        STRUCT(DebugViewPush, MEMBER(DebugViewPush, aov), MEMBER(DebugViewPush, layer), MEMBER(DebugViewPush, pad0),
+               MEMBER(DebugViewPush, pad1)),
         STRUCT(TonemapPush, MEMBER(TonemapPush, scale), MEMBER(TonemapPush, bias), MEMBER(TonemapPush, mode),
                MEMBER(TonemapPush, pad0)),
         STRUCT(GpuRsmLayer, MEMBER(GpuRsmLayer, viewProj), MEMBER(GpuRsmLayer, invViewProj),
@@ -73,15 +78,18 @@ const std::map<std::string, StructLayout>& sharedStructs() {
         STRUCT(RsmFluxPush, MEMBER(RsmFluxPush, rsmResolution), MEMBER(RsmFluxPush, layerCount),
                MEMBER(RsmFluxPush, curve), MEMBER(RsmFluxPush, step), MEMBER(RsmFluxPush, seed),
                MEMBER(RsmFluxPush, pad0), MEMBER(RsmFluxPush, pad1), MEMBER(RsmFluxPush, pad2)),
-        STRUCT(GpuOccupancyGrid, MEMBER(GpuOccupancyGrid, origin), MEMBER(GpuOccupancyGrid, dims)),
-        STRUCT(OccupancyPush, MEMBER(OccupancyPush, counts)),
+        STRUCT(GpuOccupancyGrid, MEMBER(GpuOccupancyGrid, origin), MEMBER(GpuOccupancyGrid, voxelSize),
+               MEMBER(GpuOccupancyGrid, dims), MEMBER(GpuOccupancyGrid, firstBrickWord)),
+        STRUCT(OccupancyPush, MEMBER(OccupancyPush, triangleCount), MEMBER(OccupancyPush, walkChunks),
+               MEMBER(OccupancyPush, chunkCapacity), MEMBER(OccupancyPush, pad0)),
         STRUCT(GiAccumulatePush, MEMBER(GiAccumulatePush, minWeight), MEMBER(GiAccumulatePush, changeWeight),
                MEMBER(GiAccumulatePush, historyValid), MEMBER(GiAccumulatePush, pad0)),
         STRUCT(GiFilterPush, MEMBER(GiFilterPush, step), MEMBER(GiFilterPush, firstIteration),
                MEMBER(GiFilterPush, luminanceSigma), MEMBER(GiFilterPush, pad0)),
         STRUCT(RsmResolvePush, MEMBER(RsmResolvePush, rsmResolution), MEMBER(RsmResolvePush, idResolution),
                MEMBER(RsmResolvePush, pad0), MEMBER(RsmResolvePush, pad1)),
-        STRUCT(VisibilityResolvePush, MEMBER(VisibilityResolvePush, size)),
+        STRUCT(VisibilityResolvePush, MEMBER(VisibilityResolvePush, width), MEMBER(VisibilityResolvePush, height),
+               MEMBER(VisibilityResolvePush, pad0), MEMBER(VisibilityResolvePush, pad1)),
         STRUCT(GpuLpvCascade, MEMBER(GpuLpvCascade, origin)),
         STRUCT(GpuVpl, MEMBER(GpuVpl, position), MEMBER(GpuVpl, normal), MEMBER(GpuVpl, flux)),
         STRUCT(LpvPush, MEMBER(LpvPush, resolution), MEMBER(LpvPush, cascadeCount), MEMBER(LpvPush, iteration),
@@ -90,26 +98,73 @@ const std::map<std::string, StructLayout>& sharedStructs() {
                MEMBER(LpvPush, blendCells), MEMBER(LpvPush, cameraGeometryStep), MEMBER(LpvPush, voxelFaces),
                MEMBER(LpvPush, sliceAxis), MEMBER(LpvPush, sliceIndex), MEMBER(LpvPush, pad0),
                MEMBER(LpvPush, pad1), MEMBER(LpvPush, cascades)),
-        STRUCT(GpuShadowLight, MEMBER(GpuShadowLight, info), MEMBER(GpuShadowLight, params)),
-        STRUCT(GpuShadowLayer, MEMBER(GpuShadowLayer, viewProj), MEMBER(GpuShadowLayer, params),
-               MEMBER(GpuShadowLayer, split), MEMBER(GpuShadowLayer, info)),
-        STRUCT(GpuShadowParams, MEMBER(GpuShadowParams, kernel), MEMBER(GpuShadowParams, moments),
-               MEMBER(GpuShadowParams, info), MEMBER(GpuShadowParams, poisson)),
+        STRUCT(GpuShadowLight, MEMBER(GpuShadowLight, firstLayer), MEMBER(GpuShadowLight, layerCount),
+               MEMBER(GpuShadowLight, kind), MEMBER(GpuShadowLight, filterMode), MEMBER(GpuShadowLight, normalOffset),
+               MEMBER(GpuShadowLight, penumbraScale), MEMBER(GpuShadowLight, pad0), MEMBER(GpuShadowLight, pad1)),
+        STRUCT(GpuShadowLayer, MEMBER(GpuShadowLayer, viewProj), MEMBER(GpuShadowLayer, texelSize),
+               MEMBER(GpuShadowLayer, zNear), MEMBER(GpuShadowLayer, zFar), MEMBER(GpuShadowLayer, discScale),
+               MEMBER(GpuShadowLayer, splitNear), MEMBER(GpuShadowLayer, splitFar), MEMBER(GpuShadowLayer, pad0),
+               MEMBER(GpuShadowLayer, pad1), MEMBER(GpuShadowLayer, projection), MEMBER(GpuShadowLayer, momentLayer),
+               MEMBER(GpuShadowLayer, momentFilter), MEMBER(GpuShadowLayer, pad2)),
+        STRUCT(GpuShadowParams, MEMBER(GpuShadowParams, pcfRadius), MEMBER(GpuShadowParams, pcssMaxRadius),
+               MEMBER(GpuShadowParams, cascadeBlend), MEMBER(GpuShadowParams, pad0), MEMBER(GpuShadowParams, moments),
+               MEMBER(GpuShadowParams, resolution), MEMBER(GpuShadowParams, blurRadius),
+               MEMBER(GpuShadowParams, shadowedLights), MEMBER(GpuShadowParams, pad1),
+               MEMBER(GpuShadowParams, poisson)),
         STRUCT(ShadowDrawPush, MEMBER(ShadowDrawPush, viewIndex), MEMBER(ShadowDrawPush, material),
-               MEMBER(ShadowDrawPush, firstLayer), MEMBER(ShadowDrawPush, layerCount), MEMBER(ShadowDrawPush, ids),
-               MEMBER(ShadowDrawPush, paraboloid)),
-        STRUCT(GpuHairPoint, MEMBER(GpuHairPoint, position), MEMBER(GpuHairPoint, tangent)),
-        STRUCT(HairDrawPush, MEMBER(HairDrawPush, ids), MEMBER(HairDrawPush, viewer), MEMBER(HairDrawPush, footprint),
-               MEMBER(HairDrawPush, buckets)),
-        STRUCT(GpuDsmLight, MEMBER(GpuDsmLight, viewProj), MEMBER(GpuDsmLight, viewer), MEMBER(GpuDsmLight, texelSize),
-               MEMBER(GpuDsmLight, projection), MEMBER(GpuDsmLight, layer), MEMBER(GpuDsmLight, resolution),
-               MEMBER(GpuDsmLight, filterWidth), MEMBER(GpuDsmLight, depthBias), MEMBER(GpuDsmLight, normalOffset),
-               MEMBER(GpuDsmLight, firstFace), MEMBER(GpuDsmLight, opacityMaps), MEMBER(GpuDsmLight, layerThickness),
-               MEMBER(GpuDsmLight, pad0), MEMBER(GpuDsmLight, binarySearch)),
-        STRUCT(DsmStats, MEMBER(DsmStats, build), MEMBER(DsmStats, lists)),
-        STRUCT(DsmPush, MEMBER(DsmPush, sizes), MEMBER(DsmPush, buckets)),
-        STRUCT(OitStats, MEMBER(OitStats, counts), MEMBER(OitStats, cut)),
-        STRUCT(OitPush, MEMBER(OitPush, sizes)),
+               MEMBER(ShadowDrawPush, firstLayer), MEMBER(ShadowDrawPush, layerCount),
+               MEMBER(ShadowDrawPush, triangleBase), MEMBER(ShadowDrawPush, pad0), MEMBER(ShadowDrawPush, pad1),
+               MEMBER(ShadowDrawPush, pad2), MEMBER(ShadowDrawPush, paraboloidNear),
+               MEMBER(ShadowDrawPush, paraboloidFar), MEMBER(ShadowDrawPush, paraboloidDiscScale),
+               MEMBER(ShadowDrawPush, maxEdgeAngle)),
+        STRUCT(GpuHairPoint, MEMBER(GpuHairPoint, position), MEMBER(GpuHairPoint, width), MEMBER(GpuHairPoint, tangent),
+               MEMBER(GpuHairPoint, strand)),
+        STRUCT(RibbonDrawPush, MEMBER(RibbonDrawPush, viewRow), MEMBER(RibbonDrawPush, pad0),
+               MEMBER(RibbonDrawPush, pad1), MEMBER(RibbonDrawPush, pad2), MEMBER(RibbonDrawPush, view)),
+        STRUCT(GpuDsmLight, MEMBER(GpuDsmLight, viewProj), MEMBER(GpuDsmLight, viewer),
+               MEMBER(GpuDsmLight, viewerIsPoint), MEMBER(GpuDsmLight, texelSize), MEMBER(GpuDsmLight, projection),
+               MEMBER(GpuDsmLight, layer), MEMBER(GpuDsmLight, resolution), MEMBER(GpuDsmLight, filterWidth),
+               MEMBER(GpuDsmLight, depthBias), MEMBER(GpuDsmLight, normalOffset), MEMBER(GpuDsmLight, firstFace),
+               MEMBER(GpuDsmLight, opacityMaps), MEMBER(GpuDsmLight, layerThickness), MEMBER(GpuDsmLight, pad0),
+               MEMBER(GpuDsmLight, binarySearch)),
+        STRUCT(DsmStats, MEMBER(DsmStats, fragments), MEMBER(DsmStats, hidden), MEMBER(DsmStats, overflow),
+               MEMBER(DsmStats, runEntries), MEMBER(DsmStats, kept), MEMBER(DsmStats, beyondMaxList),
+               MEMBER(DsmStats, longest), MEMBER(DsmStats, lists)),
+        STRUCT(DsmPush, MEMBER(DsmPush, resolution), MEMBER(DsmPush, layerCount), MEMBER(DsmPush, nodeCapacity),
+               MEMBER(DsmPush, maxList), MEMBER(DsmPush, bucketsPerTexel), MEMBER(DsmPush, pad0),
+               MEMBER(DsmPush, pad1), MEMBER(DsmPush, pad2)),
+        STRUCT(OitStats, MEMBER(OitStats, runEntries), MEMBER(OitStats, kept), MEMBER(OitStats, beyondMaxList),
+               MEMBER(OitStats, longest), MEMBER(OitStats, fragments), MEMBER(OitStats, leftOut),
+               MEMBER(OitStats, overflow), MEMBER(OitStats, pad0)),
+        STRUCT(OitPush, MEMBER(OitPush, width), MEMBER(OitPush, height), MEMBER(OitPush, nodeCapacity),
+               MEMBER(OitPush, bucketsPerPixel)),
+        STRUCT(GpuMomentParams, MEMBER(GpuMomentParams, bleedReduction), MEMBER(GpuMomentParams, evsmPositive),
+               MEMBER(GpuMomentParams, evsmNegative), MEMBER(GpuMomentParams, msmBias)),
+        STRUCT(GpuRibbonView, MEMBER(GpuRibbonView, viewer), MEMBER(GpuRibbonView, viewerIsPoint),
+               MEMBER(GpuRibbonView, pixelSize), MEMBER(GpuRibbonView, perspective), MEMBER(GpuRibbonView, minWidth),
+               MEMBER(GpuRibbonView, pad0)),
+        STRUCT(GpuDepthBuckets, MEMBER(GpuDepthBuckets, nearest), MEMBER(GpuDepthBuckets, perDepth),
+               MEMBER(GpuDepthBuckets, perCell), MEMBER(GpuDepthBuckets, store)),
+        STRUCT(DsmBuildPush, MEMBER(DsmBuildPush, viewRow), MEMBER(DsmBuildPush, material),
+               MEMBER(DsmBuildPush, depthTestLight), MEMBER(DsmBuildPush, resolution), MEMBER(DsmBuildPush, view),
+               MEMBER(DsmBuildPush, buckets)),
+        STRUCT(DomBuildPush, MEMBER(DomBuildPush, viewRow), MEMBER(DomBuildPush, layers),
+               MEMBER(DomBuildPush, layerThickness), MEMBER(DomBuildPush, resolution), MEMBER(DomBuildPush, view)),
+        STRUCT(OitBuildPush, MEMBER(OitBuildPush, viewRow), MEMBER(OitBuildPush, material),
+               MEMBER(OitBuildPush, width), MEMBER(OitBuildPush, pad0), MEMBER(OitBuildPush, view),
+               MEMBER(OitBuildPush, buckets)),
+        STRUCT(RasterTriangle, MEMBER(RasterTriangle, xy01), MEMBER(RasterTriangle, xy2),
+               MEMBER(RasterTriangle, origin), MEMBER(RasterTriangle, depth), MEMBER(RasterTriangle, uOverW),
+               MEMBER(RasterTriangle, vOverW), MEMBER(RasterTriangle, invW), MEMBER(RasterTriangle, ids)),
+        STRUCT(RasterLayer, MEMBER(RasterLayer, viewRow), MEMBER(RasterLayer, targetLayer),
+               MEMBER(RasterLayer, skipBlended), MEMBER(RasterLayer, idLayerPlusOne)),
+        STRUCT(RasterPush, MEMBER(RasterPush, width), MEMBER(RasterPush, subpixelBits),
+               MEMBER(RasterPush, triangleCount), MEMBER(RasterPush, layerCount), MEMBER(RasterPush, recordCapacity),
+               MEMBER(RasterPush, entryCapacity), MEMBER(RasterPush, smallExtent), MEMBER(RasterPush, height),
+               MEMBER(RasterPush, biasConstant), MEMBER(RasterPush, biasSlope),
+               MEMBER(RasterPush, frontsCounterClockwise), MEMBER(RasterPush, pad0)),
+        STRUCT(RasterCounters, MEMBER(RasterCounters, records), MEMBER(RasterCounters, tileEntries),
+               MEMBER(RasterCounters, inlined), MEMBER(RasterCounters, placed)),
     };
     return table;
 }
@@ -389,17 +444,19 @@ TEST(SpirvReflection, SharedStructsMatchTheCppLayouts) {
         }
     }
     for (const auto& [name, layout] : sharedStructs()) EXPECT_TRUE(seen.count(name)) << name << " seen by no shader";
-    // Every struct of shared/types.h has its row above (the compute rasterizer's, Raster*, belong to
-    // its own module and are left to it).
-    std::ifstream types(std::string(PENUMBRA_SOURCE_DIR) + "/shaders/shared/types.h");
-    const std::string text((std::istreambuf_iterator<char>(types)), std::istreambuf_iterator<char>());
+    // Every struct of shared/types.h and of the modules' types.h has its row above.
     const std::regex declaration(R"(\nstruct (\w+) \{)");
     size_t declared = 0;
-    for (std::sregex_iterator it(text.begin(), text.end(), declaration), end; it != end; ++it) {
-        const std::string name = (*it)[1];
-        if (name.rfind("Raster", 0) == 0) continue;
-        ++declared;
-        EXPECT_TRUE(sharedStructs().count(name)) << "shared/types.h declares " << name << ", which has no row here";
+    for (const char* header : {"shared", "shadow", "dsm", "raster", "voxel"}) {
+        std::ifstream types(std::string(PENUMBRA_SOURCE_DIR) + "/shaders/" + header + "/types.h");
+        ASSERT_TRUE(types) << header << "/types.h";
+        const std::string text((std::istreambuf_iterator<char>(types)), std::istreambuf_iterator<char>());
+        for (std::sregex_iterator it(text.begin(), text.end(), declaration), end; it != end; ++it) {
+            const std::string name = (*it)[1];
+            ++declared;
+            EXPECT_TRUE(sharedStructs().count(name))
+                << header << "/types.h declares " << name << ", which has no row here";
+        }
     }
     EXPECT_EQ(declared, sharedStructs().size());
     EXPECT_GT(compared, 500u);

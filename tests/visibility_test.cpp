@@ -155,7 +155,7 @@ TEST_F(VisibilityTest, ComputeRasterizedVisibilityEqualsTheHardware) {
 }
 
 // Textured (VC, 8.4k triangles, many smaller than a pixel at 160x120): depth bit-exact; albedo
-// samples the same mip level from the same 2x2 quad's differences (render/visibility.glsl). The
+// samples the same mip level from the same 2x2 quad's differences (core/visibility.glsl). The
 // raster interpolates attributes over vertices snapped to its subpixel grid (8 bits on lavapipe),
 // the resolve over the exact triangle: on triangles under a pixel that moves barycentrics by a
 // percent, which turns normals of strongly curved tiny triangles by up to a few hundredths.

@@ -1,10 +1,13 @@
 #version 460
 // The sum of two indirect-irradiance contributions per pixel (core/irradiance_sum.h): each sampled
 // at the output pixel's centre, so contributions of another resolution are filtered to it.
+#extension GL_GOOGLE_include_directive : require
+#include "core/irradiance_sum_bindings.h"
+
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(set = 0, binding = 0) uniform sampler2D first;
-layout(set = 0, binding = 1) uniform sampler2D second;
-layout(set = 0, binding = 2, rgba32f) uniform writeonly image2D sum;
+layout(set = 0, binding = IRRADIANCE_SUM_FIRST) uniform sampler2D first;
+layout(set = 0, binding = IRRADIANCE_SUM_SECOND) uniform sampler2D second;
+layout(set = 0, binding = IRRADIANCE_SUM_OUT, rgba32f) uniform writeonly image2D sum;
 
 void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);

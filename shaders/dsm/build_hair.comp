@@ -6,7 +6,7 @@
 #include "dsm/dsm_common.glsl"
 
 layout(local_size_x = 64) in;
-layout(push_constant) uniform Push { HairDrawPush draw; };
+layout(push_constant) uniform Push { DsmBuildPush draw; };
 
 #include "dsm/ribbon.glsl"
 #include "dsm/dsm_insert.glsl"
@@ -19,5 +19,5 @@ void ribbonFragment(ivec2 pixel, float ndcDepth, float viewerDepth, float alpha,
 
 void main() {
     uint i;
-    if (ribbonSegmentIndex(i)) rasterRibbonSegment(i, vec2(draw.footprint.z));
+    if (ribbonSegmentIndex(i)) rasterRibbonSegment(i, vec2(float(draw.resolution)));
 }

@@ -3,7 +3,7 @@
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
 
-layout(push_constant) uniform Push { HairDrawPush draw; };
+layout(push_constant) uniform Push { DsmBuildPush draw; };
 layout(location = 2) in float inAlpha;
 layout(location = 3) in float inDepth;
 layout(location = 4) in vec3 inWorld;

@@ -1,8 +1,7 @@
 // Depth buckets of the translucent casters' builds, the DSM's (texels: dsm/dsm_insert.glsl,
 // dsm/offsets.comp) and the camera's (pixels: dsm/oit_insert.glsl, dsm/oit_offsets.comp): a cell's
-// fragments counted per bucket, equal slices of the casters' depth range (HairDrawPush.buckets: x =
-// nearest depth, y = buckets per unit of depth, z = buckets per cell; outside the range, the end
-// slices); only the buckets up to the one whose count reaches the list cap are kept: every fragment
+// fragments counted per bucket, equal slices of the casters' depth range (GpuDepthBuckets; outside the
+// range, the end slices); only the buckets up to the one whose count reaches the list cap are kept: every fragment
 // behind it has at least the cap's number of fragments in front, so none of it could be kept. Exact
 // for any range; the range only decides how much is left out. The includer declares `buckets` (a
 // uint per bucket of every cell: counts, then each kept bucket's place in its cell's run) and
@@ -13,16 +12,17 @@
 #endif
 
 
-uint depthBucket(float depth, vec4 buckets) {
-    return uint(clamp((depth - buckets.x) * buckets.y, 0.0, buckets.z - 1.0));
+uint depthBucket(float depth, GpuDepthBuckets buckets) {
+    return uint(clamp((depth - buckets.nearest) * buckets.perDepth, 0.0, float(buckets.perCell) - 1.0));
 }
 
 // The same slices over the cell's own part of the range, in front of `far` (the camera's pixel: its
 // opaque surface, behind which no fragment is kept): over a pixel whose surface lies within the
 // casters' depths the buckets are finer, and fewer fragments beyond the cap's bucket are stored.
-uint depthBucketBefore(float depth, vec4 buckets, float far) {
-    float span = min(buckets.z / buckets.y, far - buckets.x);
-    return span > 0.0 ? uint(clamp((depth - buckets.x) / span * buckets.z, 0.0, buckets.z - 1.0))
+uint depthBucketBefore(float depth, GpuDepthBuckets buckets, float far) {
+    float cells = float(buckets.perCell);
+    float span = min(cells / buckets.perDepth, far - buckets.nearest);
+    return span > 0.0 ? uint(clamp((depth - buckets.nearest) / span * cells, 0.0, cells - 1.0))
                       : depthBucket(depth, buckets);
 }
 

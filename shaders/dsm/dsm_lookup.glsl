@@ -1,4 +1,4 @@
-// Deep-shadow-map lookup for the deferred lighting pass (render/lighting.comp includes it after its
+// Deep-shadow-map lookup for the deferred lighting pass (lighting/lighting.comp includes it after its
 // own bindings): the transmittance of semi-transparent casters (hair, blended meshes) between a
 // light and a receiver, filtered (PCF) over the neighbouring texels through the resolve's links.
 // Opaque casters are not in the DSM: lighting multiplies this with the ordinary shadow map.
@@ -6,11 +6,12 @@
 #include "dsm/dsm_common.glsl"
 #include "shadow/cube_face.glsl"
 
-layout(set = 0, binding = 8, std430) readonly buffer DsmLights { GpuDsmLight dsmLights[]; };
-layout(set = 0, binding = 9, std430) readonly buffer DsmHeads { uint dsmHeads[]; };
-layout(set = 0, binding = 10, std430) readonly buffer DsmNodes { uvec4 dsmNodes[]; };
+#include "dsm/bindings.h"
+layout(set = 0, binding = DSM_LOOKUP_LIGHTS, std430) readonly buffer DsmLights { GpuDsmLight dsmLights[]; };
+layout(set = 0, binding = DSM_LOOKUP_HEADS, std430) readonly buffer DsmHeads { uint dsmHeads[]; };
+layout(set = 0, binding = DSM_LOOKUP_NODES, std430) readonly buffer DsmNodes { uvec4 dsmNodes[]; };
 // The side buffer: per node its upper link (--dsm-lookup links) or, packed, its depth (search).
-layout(set = 0, binding = 11, std430) readonly buffer DsmSide { uint dsmSide[]; };
+layout(set = 0, binding = DSM_LOOKUP_SIDE, std430) readonly buffer DsmSide { uint dsmSide[]; };
 
 float dsmNodeDepth(uint n) { return uintBitsToFloat(dsmNodes[n].x); }
 float dsmTransmittanceOf(uint n) { return n == DSM_NONE ? 1.0 : uintBitsToFloat(dsmNodes[n].y); }
@@ -136,16 +137,16 @@ float deepShadowTransmittance(uint lightIndex, vec3 p, vec3 n, bool hair) {
     if (dsm.layer < 0) return 1.0;
     // A point light: the cube face in p's direction (faces overlap by a margin, so the filter's taps
     // stay inside it).
-    if (dsm.projection == DSM_PROJECTION_CUBE) dsm = dsmLights[dsm.firstFace + cubeFace(p - dsm.viewer.xyz)];
-    float texel = dsm.texelSize * (dsm.projection != DSM_PROJECTION_ORTHO ? distance(p, dsm.viewer.xyz) : 1.0);
-    vec3 towardsLight = dsm.viewer.w > 0.5 ? normalize(dsm.viewer.xyz - p) : dsm.viewer.xyz;
+    if (dsm.projection == DSM_PROJECTION_CUBE) dsm = dsmLights[dsm.firstFace + cubeFace(p - dsm.viewer)];
+    float texel = dsm.texelSize * (dsm.projection != DSM_PROJECTION_ORTHO ? distance(p, dsm.viewer) : 1.0);
+    vec3 towardsLight = dsm.viewerIsPoint != 0u ? normalize(dsm.viewer - p) : dsm.viewer;
     vec3 q = p + (hair ? towardsLight : n) * (dsm.normalOffset * texel);
     vec4 clip = dsm.viewProj * vec4(q, 1.0);
     if (clip.w <= 0.0) return 1.0;
     const int res = int(dsm.resolution);
     const float width = dsm.filterWidth;
     vec2 s = (clip.xy / clip.w * 0.5 + 0.5) * float(res);  // texel i covers [i, i + 1)
-    float d = dsmDepth(dsm.viewer, q) - dsm.depthBias * texel;
+    float d = dsmDepth(dsm.viewer, dsm.viewerIsPoint, q) - dsm.depthBias * texel;
     ivec2 lo = ivec2(floor(s - 0.5 * width - 0.5)), hi = ivec2(floor(s + 0.5 * width - 0.5)) + 1;
     uint base = uint(dsm.layer) * uint(res * res);
     float sum = 0.0;

@@ -7,7 +7,7 @@
 #include "shared/types.h"
 #include "dsm/dsm_common.glsl"
 
-layout(push_constant) uniform Push { HairDrawPush draw; };
+layout(push_constant) uniform Push { RibbonDrawPush draw; };
 #include "dsm/ribbon.glsl"
 
 layout(location = 0) out vec3 outTangent;
@@ -22,13 +22,13 @@ layout(location = 5) flat out uint outSegment;
 void main() {
     GpuHairPoint point = points[gl_VertexIndex >> 1];
     RibbonSection s = ribbonSection(point);
-    vec3 p = point.position.xyz;
+    vec3 p = point.position;
     vec3 world = p + s.side * (((gl_VertexIndex & 1) != 0 ? 0.5 : -0.5) * s.drawn);
-    gl_Position = views.viewProj[draw.ids.x] * vec4(world, 1.0);
-    outTangent = point.tangent.xyz;
-    outColor = strands[uint(point.tangent.w)].rgb;
+    gl_Position = views.viewProj[draw.viewRow] * vec4(world, 1.0);
+    outTangent = point.tangent;
+    outColor = strands[point.strand].rgb;
     outAlpha = s.alpha;
-    outDepth = dsmDepth(draw.viewer, p);
+    outDepth = dsmDepth(draw.view.viewer, draw.view.viewerIsPoint, p);
     outWorld = world;
     outSegment = uint(gl_VertexIndex >> 1);
 }

@@ -6,11 +6,12 @@
 // kernel without walking their lists from the head.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
+#include "dsm/bindings.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(set = 0, binding = 0, std430) readonly buffer Heads { uint heads[]; };
-layout(set = 0, binding = 1, std430) buffer Nodes { uvec4 nodes[]; };
-layout(set = 0, binding = 2, std430) writeonly buffer UpLinks { uint upLinks[]; };  // the side buffer
+layout(set = 0, binding = DSM_LINK_HEADS, std430) readonly buffer Heads { uint heads[]; };
+layout(set = 0, binding = DSM_LINK_NODES, std430) buffer Nodes { uvec4 nodes[]; };
+layout(set = 0, binding = DSM_LINK_UP_LINKS, std430) writeonly buffer UpLinks { uint upLinks[]; };  // the side buffer
 layout(push_constant) uniform Push { DsmPush pc; };
 
 float depthOf(uint n) { return uintBitsToFloat(nodes[n].x); }
@@ -31,7 +32,7 @@ void link(uint head, uint other, bool right) {
 }
 
 void main() {
-    const uint res = pc.sizes.x;
+    const uint res = pc.resolution;
     uvec3 id = gl_GlobalInvocationID;
     if (id.x >= res || id.y >= res) return;
     uint texel = (id.z * res + id.y) * res + id.x;

@@ -13,12 +13,13 @@
 // dropped beyond the cap, longest, lists) are counted here, once per tile.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
+#include "dsm/bindings.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(set = 0, binding = 0, std430) writeonly buffer Heads { uint heads[]; };
-layout(set = 0, binding = 1, std430) buffer Stats { DsmStats stats; };
-layout(set = 0, binding = 2, std430) buffer Work { uvec4 header; uint texels[]; } work;
-layout(set = 0, binding = 3, std430) buffer Buckets { uint buckets[]; };  // counts in, places out
+layout(set = 0, binding = DSM_OFFSETS_HEADS, std430) writeonly buffer Heads { uint heads[]; };
+layout(set = 0, binding = DSM_OFFSETS_STATS, std430) buffer Stats { DsmStats stats; };
+layout(set = 0, binding = DSM_OFFSETS_WORK, std430) buffer Work { uvec4 header; uint texels[]; } work;
+layout(set = 0, binding = DSM_OFFSETS_BUCKETS, std430) buffer Buckets { uint buckets[]; };  // counts in, places out
 layout(push_constant) uniform Push { DsmPush pc; };
 
 #define CELL_BUCKETS DSM_BUCKETS
@@ -29,7 +30,7 @@ shared uint groupEntries, groupAll, groupKept, groupLongest, groupLists, groupRu
 void main() {
     if (gl_LocalInvocationIndex == 0) groupEntries = groupAll = groupKept = groupLongest = groupLists = 0u;
     barrier();
-    const uint res = pc.sizes.x, perTexel = pc.buckets.x, maxList = pc.sizes.w;
+    const uint res = pc.resolution, perTexel = pc.bucketsPerTexel, maxList = pc.maxList;
     uvec3 id = gl_GlobalInvocationID;
     bool inside = id.x < res && id.y < res;
     uint texel = (id.z * res + id.y) * res + id.x;
@@ -47,18 +48,18 @@ void main() {
     }
     barrier();
     if (gl_LocalInvocationIndex == 0 && groupLists > 0u) {
-        atomicAdd(stats.build.x, groupAll);
-        groupRun = atomicAdd(stats.build.w, groupEntries);
+        atomicAdd(stats.fragments, groupAll);
+        groupRun = atomicAdd(stats.runEntries, groupEntries);
         groupWork = atomicAdd(work.header.x, groupLists);
-        if (groupRun + groupEntries > pc.sizes.z) {  // no room: the tile is dropped
-            atomicAdd(stats.build.w, 0u - groupEntries);
-            atomicAdd(stats.build.z, groupAll);
+        if (groupRun + groupEntries > pc.nodeCapacity) {  // no room: the tile is dropped
+            atomicAdd(stats.runEntries, 0u - groupEntries);
+            atomicAdd(stats.overflow, groupAll);
             groupRun = DSM_NONE;
         } else {
-            atomicAdd(stats.lists.x, groupKept);
-            atomicAdd(stats.lists.y, groupAll - groupKept);
-            atomicMax(stats.lists.z, groupLongest);
-            atomicAdd(stats.lists.w, groupLists);
+            atomicAdd(stats.kept, groupKept);
+            atomicAdd(stats.beyondMaxList, groupAll - groupKept);
+            atomicMax(stats.longest, groupLongest);
+            atomicAdd(stats.lists, groupLists);
         }
     }
     barrier();

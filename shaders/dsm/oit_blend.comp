@@ -9,23 +9,24 @@
 // others keep the opaque surface.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
+#include "dsm/bindings.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(set = 0, binding = 0) uniform Frame { FrameUniforms frame; };
-layout(set = 0, binding = 1, std430) readonly buffer Heads { uint heads[]; };
-layout(set = 0, binding = 2, std430) readonly buffer Layers { uvec4 header; uvec2 entries[]; } layers;
-layout(set = 0, binding = 3, std430) readonly buffer Nodes { uvec4 nodes[]; };
-layout(set = 0, binding = 4, rgba32f) uniform image2D hdr;
+layout(set = 0, binding = OIT_BLEND_FRAME) uniform Frame { FrameUniforms frame; };
+layout(set = 0, binding = OIT_BLEND_HEADS, std430) readonly buffer Heads { uint heads[]; };
+layout(set = 0, binding = OIT_BLEND_LAYERS, std430) readonly buffer Layers { uvec4 header; uvec2 entries[]; } layers;
+layout(set = 0, binding = OIT_BLEND_NODES, std430) readonly buffer Nodes { uvec4 nodes[]; };
+layout(set = 0, binding = OIT_BLEND_HDR, rgba32f) uniform image2D hdr;
 layout(push_constant) uniform Push { OitPush pc; };
 
 void main() {
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     uint aov = frame.aov;
-    if (any(greaterThanEqual(pixel, ivec2(pc.sizes.xy))) ||
+    if (any(greaterThanEqual(pixel, ivec2(pc.width, pc.height))) ||
         (aov != AOV_FINAL && aov != AOV_DIRECT && aov != AOV_INDIRECT))
         return;
-    uint base = (uint(pixel.y) * pc.sizes.x + uint(pixel.x)) * OIT_HEADER_UINTS;
+    uint base = (uint(pixel.y) * pc.width + uint(pixel.x)) * OIT_HEADER_UINTS;
     uint first = heads[base];
     if (first == DSM_NONE) return;  // no translucent fragment in front of the opaque surface
     uint count = heads[base + 1u], length = heads[base + 3u];

@@ -9,7 +9,7 @@
 #include "dsm/dsm_common.glsl"
 
 layout(local_size_x = 64) in;
-layout(push_constant) uniform Push { HairDrawPush draw; };
+layout(push_constant) uniform Push { OitBuildPush draw; };
 
 #include "dsm/ribbon.glsl"
 #include "dsm/oit_insert.glsl"

@@ -6,7 +6,7 @@
 #extension GL_EXT_shader_atomic_int64 : require
 #include "shared/types.h"
 
-layout(push_constant) uniform Push { HairDrawPush draw; };
+layout(push_constant) uniform Push { OitBuildPush draw; };
 layout(location = 0) in vec3 inTangent;
 layout(location = 1) in vec3 inColor;
 layout(location = 2) in float inAlpha;

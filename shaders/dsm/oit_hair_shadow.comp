@@ -10,21 +10,22 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
 #include "shared/types.h"
-#include "render/lights.glsl"
+#include "dsm/bindings.h"
+#include "core/lights.glsl"
 
 layout(local_size_x = 64) in;
 
-layout(set = 0, binding = 0) uniform Frame { FrameUniforms frame; };
-layout(set = 0, binding = 1, std430) readonly buffer Lights { GpuLight lights[]; };
-layout(set = 0, binding = 6) uniform Params { GpuShadowParams params; };
-layout(set = 0, binding = 7, std430) readonly buffer ShadowLayers { GpuShadowLayer shadowLayers[]; };
+layout(set = 0, binding = OIT_SHADE_FRAME) uniform Frame { FrameUniforms frame; };
+layout(set = 0, binding = OIT_SHADE_LIGHTS, std430) readonly buffer Lights { GpuLight lights[]; };
+layout(set = 0, binding = OIT_SHADE_SHADOW_PARAMS) uniform Params { GpuShadowParams params; };
+layout(set = 0, binding = OIT_SHADE_SHADOW_LAYERS, std430) readonly buffer ShadowLayers { GpuShadowLayer shadowLayers[]; };
 // 8-11: the deep shadow maps (dsm/dsm_lookup.glsl)
-layout(set = 0, binding = 12) uniform sampler2DArray shadowDepth;
-layout(set = 0, binding = 13) uniform sampler2DArray shadowMoments;
-layout(set = 0, binding = 14, std430) readonly buffer ShadowLights { GpuShadowLight shadowLights[]; };
-layout(set = 0, binding = 15, std430) writeonly buffer HairShadow { float hairShadow[]; };
-layout(set = 0, binding = 16, std430) readonly buffer Points { GpuHairPoint points[]; };
-layout(set = 0, binding = 17, std430) readonly buffer Spatial { uint spatialPoints[]; };
+layout(set = 0, binding = OIT_SHADE_SHADOW_DEPTH) uniform sampler2DArray shadowDepth;
+layout(set = 0, binding = OIT_SHADE_SHADOW_MOMENTS) uniform sampler2DArray shadowMoments;
+layout(set = 0, binding = OIT_SHADE_SHADOW_LIGHTS, std430) readonly buffer ShadowLights { GpuShadowLight shadowLights[]; };
+layout(set = 0, binding = OIT_SHADE_HAIR_SHADOW, std430) writeonly buffer HairShadow { float hairShadow[]; };
+layout(set = 0, binding = OIT_SHADE_HAIR_POINTS, std430) readonly buffer Points { GpuHairPoint points[]; };
+layout(set = 0, binding = OIT_HAIR_SHADOW_SPATIAL, std430) readonly buffer Spatial { uint spatialPoints[]; };
 
 #include "shadow/project.glsl"
 #include "shadow/moments.glsl"
@@ -45,7 +46,7 @@ void main() {
         if (dsmLights[i].layer < 0) continue;
         GpuLight light = lights[i];
         vec3 l;
-        incidentIrradiance(light, p.position.xyz, l);
-        hairShadow[i * count + point] = layerShadow(i, light, p.position.xyz, p.tangent.xyz, l, true, angle);
+        incidentIrradiance(light, p.position, l);
+        hairShadow[i * count + point] = layerShadow(i, light, p.position, p.tangent, l, true, angle);
     }
 }

@@ -1,16 +1,17 @@
 // Camera translucency build (src/dsm/translucency.h): every hair or BLEND fragment (raster, or hair
 // in compute: dsm/ribbon_raster.glsl) in front of the opaque surface (the G-buffer depth), in two steps
-// (HairDrawPush.buckets.w), as the DSM's (dsm/dsm_insert.glsl): first counted in its pixel's depth
+// (OitBuildPush.buckets.store), as the DSM's (dsm/dsm_insert.glsl): first counted in its pixel's depth
 // bucket, its -log(1 - alpha) added to the pixel's sum; then, after oit.offsets gave the kept buckets
 // places in the pixel's run, stored there as a node (one atomic add, two stores); a fragment of a
-// bucket left out stores nothing. Needs `draw` (HairDrawPush: ids.z = image width) and, in the
+// bucket left out stores nothing. Needs `draw` (OitBuildPush) and, in the
 // includer, GL_EXT_shader_atomic_int64 with 64-bit integer types.
-layout(set = 0, binding = 6, std430) writeonly buffer Nodes { uvec4 nodes[]; };
-layout(set = 0, binding = 7, std430) writeonly buffer Normals { uint normals[]; };
-layout(set = 0, binding = 8, std430) buffer Stats { OitStats stats; };
-layout(set = 0, binding = 9) uniform sampler2D opaqueDepth;
-layout(set = 0, binding = 10, std430) buffer Buckets { uint buckets[]; };   // per pixel, OitPush.sizes.w
-layout(set = 0, binding = 11, std430) buffer Tails { uint64_t tails[]; };  // per pixel, OIT_LOG_SCALE
+#include "dsm/bindings.h"
+layout(set = 0, binding = OIT_BUILD_NODES, std430) writeonly buffer Nodes { uvec4 nodes[]; };
+layout(set = 0, binding = OIT_BUILD_NORMALS, std430) writeonly buffer Normals { uint normals[]; };
+layout(set = 0, binding = OIT_BUILD_STATS, std430) buffer Stats { OitStats stats; };
+layout(set = 0, binding = OIT_BUILD_OPAQUE_DEPTH) uniform sampler2D opaqueDepth;
+layout(set = 0, binding = OIT_BUILD_BUCKETS, std430) buffer Buckets { uint buckets[]; };   // per pixel, OitPush.bucketsPerPixel
+layout(set = 0, binding = OIT_BUILD_TAILS, std430) buffer Tails { uint64_t tails[]; };  // per pixel, OIT_LOG_SCALE
 
 #include "dsm/octahedral.glsl"
 #include "dsm/depth_buckets.glsl"
@@ -30,9 +31,9 @@ void oitInsert(ivec2 pixel, float depth, vec3 albedo, float alpha, vec3 normal, 
     alpha = min(alpha, 1.0);
     float stored = unpackHalf2x16(packHalf2x16(vec2(alpha, 0.0))).x;
     if (stored <= 0.0) return;
-    uint p = uint(pixel.y) * draw.ids.z + uint(pixel.x);
-    uint slot = p * uint(draw.buckets.z) + depthBucketBefore(depth, draw.buckets, opaque);
-    if (draw.buckets.w < 0.5) {  // the first step: count
+    uint p = uint(pixel.y) * draw.width + uint(pixel.x);
+    uint slot = p * draw.buckets.perCell + depthBucketBefore(depth, draw.buckets, opaque);
+    if (draw.buckets.store == 0u) {  // the first step: count
         atomicAdd(buckets[slot], 1u);
         float optical = max(-log(max(1.0 - stored, 1e-7)), 0.0);  // >= 0 whatever the log's rounding
         atomicAdd(tails[p], max(uint64_t(optical * OIT_LOG_SCALE + 0.5), 1ul));

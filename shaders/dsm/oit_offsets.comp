@@ -11,12 +11,13 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #include "shared/types.h"
+#include "dsm/bindings.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
-layout(set = 0, binding = 0, std430) buffer Buckets { uint buckets[]; };  // counts in, places out
-layout(set = 0, binding = 1, std430) buffer Stats { OitStats stats; };
-layout(set = 0, binding = 2, std430) writeonly buffer Heads { uint heads[]; };
-layout(set = 0, binding = 3, std430) readonly buffer Tails { uint64_t tails[]; };  // per pixel (oit.count)
+layout(set = 0, binding = OIT_OFFSETS_BUCKETS, std430) buffer Buckets { uint buckets[]; };  // counts in, places out
+layout(set = 0, binding = OIT_OFFSETS_STATS, std430) buffer Stats { OitStats stats; };
+layout(set = 0, binding = OIT_OFFSETS_HEADS, std430) writeonly buffer Heads { uint heads[]; };
+layout(set = 0, binding = OIT_OFFSETS_TAILS, std430) readonly buffer Tails { uint64_t tails[]; };  // per pixel (oit.count)
 layout(push_constant) uniform Push { OitPush pc; };
 
 #define CELL_BUCKETS OIT_BUCKETS
@@ -28,8 +29,8 @@ void main() {
     if (gl_LocalInvocationIndex == 0) groupAll = groupEntries = 0u;
     barrier();
     uvec2 pixel = gl_GlobalInvocationID.xy;
-    const uint perPixel = pc.sizes.w, p = pixel.y * pc.sizes.x + pixel.x;
-    const bool inside = all(lessThan(pixel, pc.sizes.xy));
+    const uint perPixel = pc.bucketsPerPixel, p = pixel.y * pc.width + pixel.x;
+    const bool inside = all(lessThan(pixel, uvec2(pc.width, pc.height)));
     uint counts[CELL_BUCKETS];
     readBucketCounts(p, perPixel, inside && tails[p] != 0ul, counts);
     uint entries, count;
@@ -41,12 +42,12 @@ void main() {
     }
     barrier();
     if (gl_LocalInvocationIndex == 0 && groupAll > 0u) {
-        atomicAdd(stats.cut.x, groupAll);
-        atomicAdd(stats.cut.y, groupAll - groupEntries);
-        groupRun = atomicAdd(stats.counts.x, groupEntries);
-        if (groupRun + groupEntries > pc.sizes.z) {  // no room: the tile is dropped
-            atomicAdd(stats.counts.x, 0u - groupEntries);
-            atomicAdd(stats.cut.z, groupAll);
+        atomicAdd(stats.fragments, groupAll);
+        atomicAdd(stats.leftOut, groupAll - groupEntries);
+        groupRun = atomicAdd(stats.runEntries, groupEntries);
+        if (groupRun + groupEntries > pc.nodeCapacity) {  // no room: the tile is dropped
+            atomicAdd(stats.runEntries, 0u - groupEntries);
+            atomicAdd(stats.overflow, groupAll);
             groupRun = DSM_NONE;
         }
     }

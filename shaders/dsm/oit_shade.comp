@@ -11,25 +11,26 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
 #include "shared/types.h"
-#include "render/lights.glsl"
-#include "render/reconstruct.glsl"
+#include "dsm/bindings.h"
+#include "core/lights.glsl"
+#include "core/reconstruct.glsl"
 
 layout(local_size_x = 64) in;
 
-layout(set = 0, binding = 0) uniform Frame { FrameUniforms frame; };
-layout(set = 0, binding = 1, std430) readonly buffer Lights { GpuLight lights[]; };
-layout(set = 0, binding = 2, std430) readonly buffer Layers { uvec4 header; uvec2 entries[]; } layers;
-layout(set = 0, binding = 3, std430) buffer Nodes { uvec4 nodes[]; };
-layout(set = 0, binding = 4, std430) readonly buffer Normals { uint normals[]; };
-layout(set = 0, binding = 5) uniform sampler2D indirectIrradiance;  // GI (frame.giValid != 0)
-layout(set = 0, binding = 6) uniform Params { GpuShadowParams params; };
-layout(set = 0, binding = 7, std430) readonly buffer ShadowLayers { GpuShadowLayer shadowLayers[]; };
+layout(set = 0, binding = OIT_SHADE_FRAME) uniform Frame { FrameUniforms frame; };
+layout(set = 0, binding = OIT_SHADE_LIGHTS, std430) readonly buffer Lights { GpuLight lights[]; };
+layout(set = 0, binding = OIT_SHADE_LAYERS, std430) readonly buffer Layers { uvec4 header; uvec2 entries[]; } layers;
+layout(set = 0, binding = OIT_SHADE_NODES, std430) buffer Nodes { uvec4 nodes[]; };
+layout(set = 0, binding = OIT_SHADE_NORMALS, std430) readonly buffer Normals { uint normals[]; };
+layout(set = 0, binding = OIT_SHADE_INDIRECT) uniform sampler2D indirectIrradiance;  // GI (frame.giValid != 0)
+layout(set = 0, binding = OIT_SHADE_SHADOW_PARAMS) uniform Params { GpuShadowParams params; };
+layout(set = 0, binding = OIT_SHADE_SHADOW_LAYERS, std430) readonly buffer ShadowLayers { GpuShadowLayer shadowLayers[]; };
 // 8-11: the deep shadow maps (dsm/dsm_lookup.glsl)
-layout(set = 0, binding = 12) uniform sampler2DArray shadowDepth;
-layout(set = 0, binding = 13) uniform sampler2DArray shadowMoments;
-layout(set = 0, binding = 14, std430) readonly buffer ShadowLights { GpuShadowLight shadowLights[]; };
-layout(set = 0, binding = 15, std430) readonly buffer HairShadow { float hairShadow[]; };
-layout(set = 0, binding = 16, std430) readonly buffer Points { GpuHairPoint points[]; };
+layout(set = 0, binding = OIT_SHADE_SHADOW_DEPTH) uniform sampler2DArray shadowDepth;
+layout(set = 0, binding = OIT_SHADE_SHADOW_MOMENTS) uniform sampler2DArray shadowMoments;
+layout(set = 0, binding = OIT_SHADE_SHADOW_LIGHTS, std430) readonly buffer ShadowLights { GpuShadowLight shadowLights[]; };
+layout(set = 0, binding = OIT_SHADE_HAIR_SHADOW, std430) readonly buffer HairShadow { float hairShadow[]; };
+layout(set = 0, binding = OIT_SHADE_HAIR_POINTS, std430) readonly buffer Points { GpuHairPoint points[]; };
 
 #include "shadow/project.glsl"
 #include "shadow/moments.glsl"
@@ -48,7 +49,7 @@ bool hasStrandShadow(uint i) {
 // The shadow of light i (with a DSM) at hair fragment p of `segment` (its first point's index): the
 // strand's own at the segment's two points (oit_hair_shadow.comp), interpolated at p's projection.
 float strandShadow(uint i, vec3 p, uint segment) {
-    vec3 a = points[segment].position.xyz, ab = points[segment + 1u].position.xyz - a;
+    vec3 a = points[segment].position, ab = points[segment + 1u].position - a;
     float s = clamp(dot(p - a, ab) / max(dot(ab, ab), 1e-30), 0.0, 1.0);
     uint first = i * uint(points.length()) + segment;
     return mix(hairShadow[first], hairShadow[first + 1u], s);

@@ -12,17 +12,18 @@
 #extension GL_EXT_control_flow_attributes : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #include "shared/types.h"
+#include "dsm/bindings.h"
 
 #define GROUP_SIZE 64
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(set = 0, binding = 0, std430) buffer Heads { uint heads[]; };
-layout(set = 0, binding = 1, std430) readonly buffer Nodes { uvec4 nodes[]; };
-layout(set = 0, binding = 2, std430) readonly buffer Normals { uint normals[]; };
-layout(set = 0, binding = 3, std430) buffer Stats { OitStats stats; };
-layout(set = 0, binding = 4, std430) buffer Layers { uvec4 header; uvec2 entries[]; } layers;  // (node, pixel)
-layout(set = 0, binding = 5, std430) buffer Tails { uint64_t tails[]; };  // sum of -log(1 - alpha)
-layout(set = 0, binding = 6, std430) writeonly buffer Buckets { uint buckets[]; };  // per pixel, pc.sizes.w
+layout(set = 0, binding = OIT_SORT_HEADS, std430) buffer Heads { uint heads[]; };
+layout(set = 0, binding = OIT_SORT_NODES, std430) readonly buffer Nodes { uvec4 nodes[]; };
+layout(set = 0, binding = OIT_SORT_NORMALS, std430) readonly buffer Normals { uint normals[]; };
+layout(set = 0, binding = OIT_SORT_STATS, std430) buffer Stats { OitStats stats; };
+layout(set = 0, binding = OIT_SORT_LAYERS, std430) buffer Layers { uvec4 header; uvec2 entries[]; } layers;  // (node, pixel)
+layout(set = 0, binding = OIT_SORT_TAILS, std430) buffer Tails { uint64_t tails[]; };  // sum of -log(1 - alpha)
+layout(set = 0, binding = OIT_SORT_BUCKETS, std430) writeonly buffer Buckets { uint buckets[]; };  // per pixel, pc.bucketsPerPixel
 layout(push_constant) uniform Push { OitPush pc; };
 
 // (depth, node)
@@ -100,12 +101,12 @@ void main() {
     if (gl_LocalInvocationIndex == 0) groupKept = groupDropped = groupLongest = 0u;
     barrier();
     ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-    bool inside = all(lessThan(pixel, ivec2(pc.sizes.xy)));
-    uint p = uint(pixel.y) * pc.sizes.x + uint(pixel.x), base = p * OIT_HEADER_UINTS;
+    bool inside = all(lessThan(pixel, ivec2(pc.width, pc.height)));
+    uint p = uint(pixel.y) * pc.width + uint(pixel.x), base = p * OIT_HEADER_UINTS;
     uint64_t tail = inside ? tails[p] : 0ul;
     if (tail != 0ul) {  // this frame's counts read for the last time: zero for the next frame
         tails[p] = 0ul;
-        for (uint b = 0u; b < pc.sizes.w; ++b) buckets[p * pc.sizes.w + b] = 0u;
+        for (uint b = 0u; b < pc.bucketsPerPixel; ++b) buckets[p * pc.bucketsPerPixel + b] = 0u;
     }
     uint start = tail != 0ul ? heads[base] : DSM_NONE;  // oit.offsets' header: the run, its nodes, all fragments
     bool listed = start != DSM_NONE;
@@ -130,8 +131,8 @@ void main() {
         heads[base + 2u] = floatBitsToUint(-float(tail) / OIT_LOG_SCALE);
     }
     if (gl_LocalInvocationIndex == 0 && (groupKept | groupDropped) != 0u) {
-        atomicAdd(stats.counts.y, groupKept);
-        atomicAdd(stats.counts.z, groupDropped);
-        atomicMax(stats.counts.w, groupLongest);
+        atomicAdd(stats.kept, groupKept);
+        atomicAdd(stats.beyondMaxList, groupDropped);
+        atomicMax(stats.longest, groupLongest);
     }
 }

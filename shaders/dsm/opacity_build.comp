@@ -13,28 +13,28 @@
 #include "dsm/dsm_common.glsl"
 
 layout(local_size_x = 64) in;
-layout(push_constant) uniform Push { HairDrawPush draw; };
+layout(push_constant) uniform Push { DomBuildPush draw; };
 
 #include "dsm/ribbon.glsl"
-layout(set = 0, binding = 5, std430) buffer Heads { uint firstDepth[]; };
-layout(set = 0, binding = 6, std430) buffer Layers { float opticalDepth[]; };  // DOM_LAYERS per texel
+layout(set = 0, binding = DOM_BUILD_FIRST_DEPTHS, std430) buffer Heads { uint firstDepth[]; };
+layout(set = 0, binding = DOM_BUILD_LAYERS, std430) buffer Layers { float opticalDepth[]; };  // DOM_LAYERS per texel
 #include "dsm/ribbon_raster.glsl"
 
 void ribbonFragment(ivec2 pixel, float ndcDepth, float viewerDepth, float alpha, vec3 world, vec3 tangent,
                     vec3 colour, uint segment) {
     if (alpha <= 0.0) return;
-    uint res = uint(draw.footprint.z);
-    uint texel = (draw.ids.x * res + uint(pixel.y)) * res + uint(pixel.x);
-    if (draw.ids.y == 0u) {
+    uint res = draw.resolution;
+    uint texel = (draw.viewRow * res + uint(pixel.y)) * res + uint(pixel.x);
+    if (draw.layers == 0u) {
         atomicMin(firstDepth[texel], orderedDepth(viewerDepth));
         return;
     }
-    float layer = (viewerDepth - fromOrderedDepth(firstDepth[texel])) / uintBitsToFloat(draw.ids.z);
+    float layer = (viewerDepth - fromOrderedDepth(firstDepth[texel])) / draw.layerThickness;
     uint k = uint(clamp(layer, 0.0, float(DOM_LAYERS - 1)));
     atomicAdd(opticalDepth[texel * DOM_LAYERS + k], -log(max(1.0 - alpha, 1e-6)));
 }
 
 void main() {
     uint i;
-    if (ribbonSegmentIndex(i)) rasterRibbonSegment(i, vec2(draw.footprint.z));
+    if (ribbonSegmentIndex(i)) rasterRibbonSegment(i, vec2(float(draw.resolution)));
 }

@@ -17,18 +17,19 @@
 // the list's length. Equal depths are ordered by alpha, so that the same nodes are kept every run.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
+#include "dsm/bindings.h"
 
 #define GROUP_SIZE 64
 // Shared sort slots: up to DSM_MAX_LIST_CAP kept nodes and the batches that come after them.
 #define SORT_SLOTS (2 * DSM_MAX_LIST_CAP)
 
 layout(local_size_x = GROUP_SIZE) in;
-layout(set = 0, binding = 0, std430) buffer Heads { uint heads[]; };
-layout(set = 0, binding = 1, std430) buffer Nodes { uvec4 nodes[]; };
-layout(set = 0, binding = 2, std430) writeonly buffer Side { uint side[]; };  // the search keys
-layout(set = 0, binding = 3, std430) readonly buffer Work { uvec4 header; uint texels[]; } work;
-layout(set = 0, binding = 4, std430) readonly buffer Runs { uvec2 runs[]; };  // (depth, alpha) bits
-layout(set = 0, binding = 5, std430) writeonly buffer Buckets { uint buckets[]; };  // pc.buckets.x per texel
+layout(set = 0, binding = DSM_RESOLVE_HEADS, std430) buffer Heads { uint heads[]; };
+layout(set = 0, binding = DSM_RESOLVE_NODES, std430) buffer Nodes { uvec4 nodes[]; };
+layout(set = 0, binding = DSM_RESOLVE_SIDE, std430) writeonly buffer Side { uint side[]; };  // the search keys
+layout(set = 0, binding = DSM_RESOLVE_WORK, std430) readonly buffer Work { uvec4 header; uint texels[]; } work;
+layout(set = 0, binding = DSM_RESOLVE_RUNS, std430) readonly buffer Runs { uvec2 runs[]; };  // (depth, alpha) bits
+layout(set = 0, binding = DSM_RESOLVE_BUCKETS, std430) writeonly buffer Buckets { uint buckets[]; };  // pc.bucketsPerTexel per texel
 layout(push_constant) uniform Push { DsmPush pc; };
 
 shared uvec2 slots[SORT_SLOTS];  // (depth bits, alpha bits)
@@ -136,13 +137,13 @@ void writeList(uint texel, uint count, uint first) {
 }
 
 void main() {
-    const uint perTexel = pc.buckets.x;
+    const uint perTexel = pc.bucketsPerTexel;
     for (uint w = gl_WorkGroupID.x; w < work.header.x; w += gl_NumWorkGroups.x) {
         uint entry = work.texels[w], texel = entry & ~DSM_WORK_UNLISTED;
         // The build is done with the texel's counts: zeroed for the next frame's (dsm.offsets).
         if (gl_LocalInvocationIndex < perTexel) buckets[texel * perTexel + gl_LocalInvocationIndex] = 0u;
         if (entry != texel) continue;  // counted, but its tile found no room in the pool
         uint count = heads[texel * DSM_HEAD_UINTS], run = heads[texel * DSM_HEAD_UINTS + 1u];
-        writeList(texel, sortNearest(run, count, pc.sizes.w), run);
+        writeList(texel, sortNearest(run, count, pc.maxList), run);
     }
 }

@@ -26,23 +26,23 @@ RibbonEnd ribbonEnd(GpuHairPoint point, mat4 viewProj) {
     RibbonEnd e;
     e.point = point;
     e.section = ribbonSection(point);
-    e.clip = viewProj * vec4(point.position.xyz, 1.0);
+    e.clip = viewProj * vec4(point.position, 1.0);
     return e;
 }
 
 // The end moved to parameter s along the segment towards `other` (near-plane clipping).
 RibbonEnd clipEnd(RibbonEnd e, RibbonEnd other, float s, mat4 viewProj) {
-    e.point.position.xyz = mix(e.point.position.xyz, other.point.position.xyz, s);
-    e.point.tangent.xyz = mix(e.point.tangent.xyz, other.point.tangent.xyz, s);
+    e.point.position = mix(e.point.position, other.point.position, s);
+    e.point.tangent = mix(e.point.tangent, other.point.tangent, s);
     e.section = ribbonSection(e.point);
-    e.clip = viewProj * vec4(e.point.position.xyz, 1.0);
+    e.clip = viewProj * vec4(e.point.position, 1.0);
     return e;
 }
 
 vec2 toPixels(vec4 clip, vec2 size) { return (clip.xy / clip.w * 0.5 + 0.5) * size; }
 
 void rasterRibbonSegment(uint i, vec2 size) {
-    mat4 viewProj = views.viewProj[draw.ids.x];
+    mat4 viewProj = views.viewProj[draw.viewRow];
     RibbonEnd a = ribbonEnd(points[i], viewProj), b = ribbonEnd(points[i + 1], viewProj);
     if (a.section.drawn <= 0.0 || b.section.drawn <= 0.0) return;  // a join between strands
     if (a.clip.z < 0.0 && b.clip.z < 0.0) return;
@@ -52,10 +52,10 @@ void rasterRibbonSegment(uint i, vec2 size) {
     // The quad a-, a+, b+, b- in pixels (corners in order around it).
     vec2 q[4];
     float halfA = 0.5 * a.section.drawn, halfB = 0.5 * b.section.drawn;
-    vec4 corners[4] = vec4[4](viewProj * vec4(a.point.position.xyz - a.section.side * halfA, 1.0),
-                              viewProj * vec4(a.point.position.xyz + a.section.side * halfA, 1.0),
-                              viewProj * vec4(b.point.position.xyz + b.section.side * halfB, 1.0),
-                              viewProj * vec4(b.point.position.xyz - b.section.side * halfB, 1.0));
+    vec4 corners[4] = vec4[4](viewProj * vec4(a.point.position - a.section.side * halfA, 1.0),
+                              viewProj * vec4(a.point.position + a.section.side * halfA, 1.0),
+                              viewProj * vec4(b.point.position + b.section.side * halfB, 1.0),
+                              viewProj * vec4(b.point.position - b.section.side * halfB, 1.0));
     for (int k = 0; k < 4; ++k) {
         if (corners[k].w <= 0.0) return;  // a ribbon wider than its distance to the eye: not drawn
         q[k] = toPixels(corners[k], size);
@@ -66,8 +66,9 @@ void rasterRibbonSegment(uint i, vec2 size) {
     int u = alongX ? 0 : 1, v = 1 - u;
     vec2 pa = toPixels(a.clip, size), pb = toPixels(b.clip, size), ab = pb - pa;
     float invWa = 1.0 / a.clip.w, invWb = 1.0 / b.clip.w, len2 = max(dot(ab, ab), 1e-12);
-    float depthA = dsmDepth(draw.viewer, a.point.position.xyz), depthB = dsmDepth(draw.viewer, b.point.position.xyz);
-    vec3 colour = strands[uint(a.point.tangent.w)].rgb;
+    float depthA = dsmDepth(draw.view.viewer, draw.view.viewerIsPoint, a.point.position);
+    float depthB = dsmDepth(draw.view.viewer, draw.view.viewerIsPoint, b.point.position);
+    vec3 colour = strands[a.point.strand].rgb;
 
     int first = max(int(ceil(lo[u] - 0.5)), 0), last = min(int(floor(hi[u] - 0.5)), int(size[u]) - 1);
     for (int column = first; column <= last; ++column) {
@@ -87,8 +88,8 @@ void rasterRibbonSegment(uint i, vec2 size) {
             float ndcDepth = mix(a.clip.z * invWa, b.clip.z * invWb, screen);
             if (ndcDepth > 1.0) continue;
             ribbonFragment(ivec2(pixel), ndcDepth, mix(depthA, depthB, s), mix(a.section.alpha, b.section.alpha, s),
-                           mix(a.point.position.xyz, b.point.position.xyz, s),
-                           normalize(mix(a.point.tangent.xyz, b.point.tangent.xyz, s)), colour, i);
+                           mix(a.point.position, b.point.position, s),
+                           normalize(mix(a.point.tangent, b.point.tangent, s)), colour, i);
         }
     }
 }

@@ -6,8 +6,8 @@
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
 #include "lpv/bindings.h"
-#include "render/lights.glsl"
-#include "render/reconstruct.glsl"
+#include "core/lights.glsl"
+#include "core/reconstruct.glsl"
 #include "shared/octahedral.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;

@@ -9,7 +9,7 @@
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
 #include "lpv/bindings.h"
-#include "render/reconstruct.glsl"
+#include "core/reconstruct.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = LPV_GATHER_FRAME) uniform Frame { FrameUniforms frame; };

@@ -12,9 +12,9 @@ layout(local_size_x = RASTER_BIN_GROUP) in;
 layout(push_constant) uniform Push { RasterPush push; };
 
 void main() {
-    const ivec2 size = ivec2(push.target.x, push.capacity.w);
-    const int bits = int(push.target.y);
-    const uint count = min(counters.counts.x, push.capacity.x);
+    const ivec2 size = ivec2(push.width, push.height);
+    const int bits = int(push.subpixelBits);
+    const uint count = min(counters.records, push.recordCapacity);
     for (uint r = gl_WorkGroupID.x; r < count; r += gl_NumWorkGroups.x) {
         const RasterTriangle t = records[r];
         if (t.origin.w < 0.0) continue;  // no entries: the overflow pass rasterizes it

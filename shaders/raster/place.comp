@@ -10,8 +10,9 @@
 #include "shared/types.h"
 
 layout(local_size_x = RASTER_PLACE_GROUP) in;
-layout(set = 0, binding = 0, std430) buffer TileBins { uvec4 tileBins[]; };  // x count, y offset
-layout(set = 0, binding = 1, std430) buffer Counters { RasterCounters counters; };  // w: list entries placed
+#include "raster/bindings.h"
+layout(set = 0, binding = RASTER_PLACE_TILE_BINS, std430) buffer TileBins { uvec4 tileBins[]; };  // x count, y offset
+layout(set = 0, binding = RASTER_PLACE_COUNTERS, std430) buffer Counters { RasterCounters counters; };  // counts the entries placed
 layout(push_constant) uniform Push { uvec4 bins; };                                // x = number of bins
 
 void main() {
@@ -19,7 +20,7 @@ void main() {
     const uint count = bin < bins.x ? tileBins[bin].x : 0u;
     const uint before = subgroupExclusiveAdd(count), total = subgroupAdd(count);
     uint base = 0u;
-    if (subgroupElect() && total > 0u) base = atomicAdd(counters.counts.w, total);
+    if (subgroupElect() && total > 0u) base = atomicAdd(counters.placed, total);
     base = subgroupBroadcastFirst(base);
     if (count > 0u) tileBins[bin].y = base + before;
 }

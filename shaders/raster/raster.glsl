@@ -16,24 +16,26 @@
 #extension GL_EXT_shader_atomic_int64 : require
 
 // Set 0 starts like the scene's draw set (render/scene_gpu.h): views, materials; set 1: the textures.
-layout(set = 0, binding = 0, std430) readonly buffer Views { mat4 viewProj[]; } views;
-layout(set = 0, binding = 1, std430) readonly buffer Materials { GpuMaterial materials[]; };
-#include "render/material_textures.glsl"
-layout(set = 0, binding = 3, std430) buffer Depth { uint depthBits[]; };
-layout(set = 0, binding = 4, std430) buffer Records { RasterTriangle records[]; };
-layout(set = 0, binding = 5, std430) buffer TileEntries { uvec2 tileEntries[]; };
+#include "core/scene_bindings.h"
+#include "raster/bindings.h"
+layout(set = 0, binding = SCENE_VIEWS, std430) readonly buffer Views { mat4 viewProj[]; } views;
+layout(set = 0, binding = SCENE_MATERIALS, std430) readonly buffer Materials { GpuMaterial materials[]; };
+#include "core/material_textures.glsl"
+layout(set = 0, binding = RASTER_SET_DEPTH, std430) buffer Depth { uint depthBits[]; };
+layout(set = 0, binding = RASTER_SET_RECORDS, std430) buffer Records { RasterTriangle records[]; };
+layout(set = 0, binding = RASTER_SET_TILE_ENTRIES, std430) buffer TileEntries { uvec2 tileEntries[]; };
 // After the binning counts, the work counters (ComputeRaster::Work): work.x = the most pixels a setup
 // thread tested for one triangle, y = (triangle, layer) pairs queued for the overflow pass, z = the most
 // pixels an overflow thread tested for one triangle, w = the largest box (tiles) in the huge queue;
 // queues.x, y = the pairs in the medium and the huge queue (raster/overflow.comp).
-layout(set = 0, binding = 6, std430) buffer Counters { RasterCounters counters; uvec4 work; uvec4 queues; };
-layout(set = 0, binding = 16, std430) buffer DepthIds { uint64_t depthIds[]; };  // per texel of the ID layers
+layout(set = 0, binding = RASTER_SET_COUNTERS, std430) buffer Counters { RasterCounters counters; uvec4 work; uvec4 queues; };
+layout(set = 0, binding = RASTER_SET_DEPTH_IDS, std430) buffer DepthIds { uint64_t depthIds[]; };  // per texel of the ID layers
 // Per tile of every target layer (layer-major, rows of tiles): the bin pass counts its triangles
 // (count), the place pass puts its list in the list buffer (offset), the scatter pass fills the
 // tile's list (cursor: its fill so far). Lists hold record indices (raster/tiles.comp).
 // w: RASTER_TILE_TOUCHED where a setup thread drew into the tile (else its depth is the cleared value).
-layout(set = 0, binding = 12, std430) buffer TileBins { uvec4 tileBins[]; };  // x count, y offset, z cursor
-layout(set = 0, binding = 13, std430) buffer TileLists { uint tileLists[]; };
+layout(set = 0, binding = RASTER_SET_TILE_BINS, std430) buffer TileBins { uvec4 tileBins[]; };  // x count, y offset, z cursor
+layout(set = 0, binding = RASTER_SET_TILE_LISTS, std430) buffer TileLists { uint tileLists[]; };
 
 uint tilesAcross(ivec2 size) { return uint((size.x + RASTER_TILE_SIZE - 1) / RASTER_TILE_SIZE); }
 uint tilesDown(ivec2 size) { return uint((size.y + RASTER_TILE_SIZE - 1) / RASTER_TILE_SIZE); }
@@ -118,13 +120,13 @@ bool alphaDiscarded(RasterTriangle t, vec2 offset) {
     const vec2 uvw = vec2(planeAt(t.uOverW, offset), planeAt(t.vOverW, offset));
     const vec2 uv = uvw / iw;
     float alpha = m.baseColor.a;
-    if (m.info.x != NO_TEXTURE) {
+    if (m.texture != NO_TEXTURE) {
         // d(uvw / iw) = (d uvw - uv d iw) / iw
         const vec2 dx = (vec2(t.uOverW.y, t.vOverW.y) - uv * t.invW.y) / iw;
         const vec2 dy = (vec2(t.uOverW.z, t.vOverW.z) - uv * t.invW.z) / iw;
-        alpha *= materialTextureGrad(m.info.x, uv, dx, dy).a;
+        alpha *= materialTextureGrad(m.texture, uv, dx, dy).a;
     }
-    return alpha < m.params.x;
+    return alpha < m.alphaCutoff;
 }
 
 // Depth test and write of one covered sample. Depth as lavapipe's interpolator takes it (setup.comp's

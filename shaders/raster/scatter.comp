@@ -13,9 +13,9 @@ layout(local_size_x = RASTER_SCATTER_GROUP) in;
 layout(push_constant) uniform Push { RasterPush push; };
 
 void main() {
-    const ivec2 size = ivec2(push.target.x, push.capacity.w);
-    const uint entries = min(counters.counts.y, push.capacity.y);
-    const uint recordCount = min(counters.counts.x, push.capacity.x);
+    const ivec2 size = ivec2(push.width, push.height);
+    const uint entries = min(counters.tileEntries, push.entryCapacity);
+    const uint recordCount = min(counters.records, push.recordCapacity);
     for (uint k = gl_GlobalInvocationID.x; k < entries; k += gl_NumWorkGroups.x * RASTER_SCATTER_GROUP) {
         const uvec2 entry = tileEntries[k];
         if (entry.x >= recordCount) continue;  // RASTER_NO_RECORD, or stale

@@ -24,14 +24,14 @@ bool inlineLarge = false;     // the overflow queue is full too: rasterize large
 // a list is full (the caller queues its pair for the overflow pass). The record's ids.z holds its
 // first entry, origin.w -1 where it has none.
 bool bin(RasterTriangle t, Edges e) {
-    const uint record = atomicAdd(counters.counts.x, 1u);
-    if (record >= push.capacity.x) return false;
+    const uint record = atomicAdd(counters.records, 1u);
+    if (record >= push.recordCapacity) return false;
     const ivec4 tiles = ivec4(e.bbox.xy / RASTER_TILE_SIZE, e.bbox.zw / RASTER_TILE_SIZE);
     const uint n = uint((tiles.z - tiles.x + 1) * (tiles.w - tiles.y + 1));
     // Once the entries are taken, no more are counted: the count cannot wrap around 2^32 and seem to
     // fit again (only the threads between this read and their add overshoot).
-    const uint first = counters.counts.y > push.capacity.y ? push.capacity.y + 1u : atomicAdd(counters.counts.y, n);
-    const bool fits = first <= push.capacity.y && n <= push.capacity.y - first;
+    const uint first = counters.tileEntries > push.entryCapacity ? push.entryCapacity + 1u : atomicAdd(counters.tileEntries, n);
+    const bool fits = first <= push.entryCapacity && n <= push.entryCapacity - first;
     t.origin.w = fits ? float(first) : -1.0;  // -1: no entries (the first one, rounded above 2^24)
     t.ids.z = first;                          // the first entry, exact
     records[record] = t;
@@ -56,7 +56,7 @@ void takeTriangle(RasterTriangle t, Edges e, int bits, ivec2 size) {
         if (!bin(t, e)) pairOverflowed = true;
         return;
     }
-    if (!small) atomicAdd(counters.counts.z, 1u);
+    if (!small) atomicAdd(counters.inlined, 1u);
     markTiles(t.xy2.z, e.bbox, size);
     mostPixels = max(mostPixels, uint(e.bbox.z - e.bbox.x + 1) * uint(e.bbox.w - e.bbox.y + 1));
     if (small && bits <= 8 && smallEnough(e))
@@ -87,7 +87,7 @@ void main() {
     const uint stride = gl_NumWorkGroups.x * RASTER_SETUP_GROUP;
     const uint row = gl_GlobalInvocationID.y;
     const RasterLayer target = rasterLayers[row];
-    for (uint t = gl_GlobalInvocationID.x; t < push.target.z; t += stride) {
+    for (uint t = gl_GlobalInvocationID.x; t < push.triangleCount; t += stride) {
         pairOverflowed = false;
         pairMostTiles = 0u;
         setupTriangle(t, target);

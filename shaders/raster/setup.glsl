@@ -9,17 +9,18 @@
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
 #include "raster/raster.glsl"
-#include "render/instances.glsl"
+#include "core/instances.glsl"
 
-layout(set = 0, binding = 7, std430) readonly buffer Vertices { float vertexData[]; };  // penumbra::Vertex
-layout(set = 0, binding = 8, std430) readonly buffer Indices { uint indices[]; };
-layout(set = 0, binding = 9, std430) readonly buffer TriangleMaterials { uint triangleMaterials[]; };
-layout(set = 0, binding = 10, std430) readonly buffer Layers { RasterLayer rasterLayers[]; };
-layout(set = 0, binding = 11, std430) readonly buffer DrawnTriangles { uvec2 drawnTriangles[]; };  // (instance, triangle)
+#include "raster/bindings.h"
+layout(set = 0, binding = RASTER_SET_VERTICES, std430) readonly buffer Vertices { float vertexData[]; };  // penumbra::Vertex
+layout(set = 0, binding = RASTER_SET_INDICES, std430) readonly buffer Indices { uint indices[]; };
+layout(set = 0, binding = RASTER_SET_TRIANGLE_MATERIALS, std430) readonly buffer TriangleMaterials { uint triangleMaterials[]; };
+layout(set = 0, binding = RASTER_SET_LAYERS, std430) readonly buffer Layers { RasterLayer rasterLayers[]; };
+layout(set = 0, binding = RASTER_SET_DRAWN_TRIANGLES, std430) readonly buffer DrawnTriangles { uvec2 drawnTriangles[]; };  // (instance, triangle)
 layout(push_constant) uniform Push { RasterPush push; };
 // (triangle, layer row) pairs whose large triangles did not fit the lists (raster/overflow.comp): the
 // medium queue in the first half, the huge queue in the second.
-layout(set = 0, binding = 19, std430) buffer OverflowPairs { uvec2 overflowPairs[]; };
+layout(set = 0, binding = RASTER_SET_OVERFLOW_PAIRS, std430) buffer OverflowPairs { uvec2 overflowPairs[]; };
 uint overflowQueueCapacity() { return uint(overflowPairs.length()) / 2u; }
 
 // The tiles of a set-up triangle's box.
@@ -89,12 +90,12 @@ vec4 plane(vec3 a, vec2 p0, vec2 p1, vec2 p2, float invDet) {
 // unsnapped window vertices (cross products times 1/area), r = 2^(e - 23) with e the exponent of the
 // largest |z| (0 below the smallest normal), no clamp (the passes set depthBiasClamp 0).
 float depthBias(vec3 p0, vec3 p1, vec3 p2, vec3 d01, vec3 d20, float ooa) {
-    if (push.bias.x == 0.0 && push.bias.y == 0.0) return 0.0;  // no bias: no 0 * inf on degenerate planes
+    if (push.biasConstant == 0.0 && push.biasSlope == 0.0) return 0.0;  // no bias: no 0 * inf on degenerate planes
     precise const float dzdx = abs((d20.z * d01.y - d20.y * d01.z) * ooa);
     precise const float dzdy = abs((d20.x * d01.z - d20.z * d01.x) * ooa);
     const float maxZ = max(abs(p2.z), max(abs(p0.z), abs(p1.z)));
     const float r = intBitsToFloat(max((floatBitsToInt(maxZ) & 0x7F800000) - (23 << 23), 0));
-    precise const float bias = r * push.bias.x + max(dzdx, dzdy) * push.bias.y;  // unclamped
+    precise const float bias = r * push.biasConstant + max(dzdx, dzdy) * push.biasSlope;  // unclamped
     return bias;
 }
 
@@ -119,7 +120,7 @@ struct Caster {
     uint layer, material;
     bool singleSided, alphaTested;
     bool flipped;  // fronts counter-clockwise: the camera's y-flipped projection xor a mirroring instance
-    uvec2 ids;     // the visibility ID (render/visibility.glsl) and ID layer + 1
+    uvec2 ids;     // the visibility ID (core/visibility.glsl) and ID layer + 1
 };
 
 // Snapped window position (subpixel units, pixel centres at + half a pixel): lavapipe snaps
@@ -134,14 +135,14 @@ void takeTriangle(RasterTriangle t, Edges e, int bits, ivec2 size);
 
 // Whether a set-up triangle is small: rasterized by the thread that set it up (bounded work).
 bool isSmall(Edges e) {
-    const int smallExtent = int(push.capacity.z);
+    const int smallExtent = int(push.smallExtent);
     return e.bbox.z - e.bbox.x < smallExtent && e.bbox.w - e.bbox.y < smallExtent;
 }
 
 // One triangle of the clipped polygon, in clip space.
 void emitTriangle(ClipVertex c0, ClipVertex c1, ClipVertex c2, Caster caster) {
-    const ivec2 size = ivec2(push.target.x, push.capacity.w);
-    const int bits = int(push.target.y);
+    const ivec2 size = ivec2(push.width, push.height);
+    const int bits = int(push.subpixelBits);
     const vec2 halfSize = 0.5 * vec2(size);
     vec4 w0 = toWindow(c0, halfSize), w1 = toWindow(c1, halfSize), w2 = toWindow(c2, halfSize);
     ivec2 s0 = snap(w0.xy, bits), s1 = snap(w1.xy, bits), s2 = snap(w2.xy, bits);
@@ -212,16 +213,16 @@ void setupTriangle(uint drawn, RasterLayer target) {
     const uint triangle = ref.y;
     const uint material = triangleMaterials[triangle];
     const GpuMaterial m = materials[material];
-    if (m.info.y == ALPHA_BLEND && target.info.z != 0u) return;  // a deep shadow map takes it
-    const mat4 viewProj = views.viewProj[target.info.x];
+    if (m.alphaMode == ALPHA_BLEND && target.skipBlended != 0u) return;  // a deep shadow map takes it
+    const mat4 viewProj = views.viewProj[target.viewRow];
     ClipVertex v[3];  // in index order, as the hardware gets them (its plane setup depends on the order)
     for (int i = 0; i < 3; ++i) v[i] = fetch(indices[triangle * 3 + i], int(ref.x), viewProj);
     const uint c0 = outcode(v[0].position), c1 = outcode(v[1].position), c2 = outcode(v[2].position);
     if ((c0 & c1 & c2) != 0u) return;  // entirely outside one plane
     // A mirroring instance turns its fronts' winding, as the hardware's cull-mode flip takes it.
-    const bool mirrored = instances[ref.x].info.x != 0u;
-    const Caster caster = Caster(target.info.y, material, m.info.z == 0u, m.info.y == ALPHA_MASK,
-                                 (push.bias.z != 0.0) != mirrored, uvec2(drawn + 1u, target.info.w));
+    const bool mirrored = instances[ref.x].mirrored != 0u;
+    const Caster caster = Caster(target.targetLayer, material, m.doubleSided == 0u, m.alphaMode == ALPHA_MASK,
+                                 (push.frontsCounterClockwise != 0u) != mirrored, uvec2(drawn + 1u, target.idLayerPlusOne));
     if ((c0 | c1 | c2) == 0u)
         emitTriangle(v[0], v[1], v[2], caster);
     else

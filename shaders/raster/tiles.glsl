@@ -9,15 +9,16 @@
 // target (and the ID image), so no split or store pass follows (RASTER_ID_IMAGE_2D: the camera's
 // 2D images); else changed pixels go back into the depth buffers (a copy then fills a D32 target).
 layout(local_size_x = RASTER_TILE_GROUP) in;
-layout(set = 0, binding = 10, std430) readonly buffer Layers { RasterLayer rasterLayers[]; };
+#include "raster/bindings.h"
+layout(set = 0, binding = RASTER_SET_LAYERS, std430) readonly buffer Layers { RasterLayer rasterLayers[]; };
 #ifdef RASTER_TARGET_IMAGE
 #ifdef RASTER_ID_IMAGE_2D
-layout(set = 0, binding = 17, r32f) uniform writeonly image2D depthMap;
-layout(set = 0, binding = 18, r32ui) uniform writeonly uimage2D idMap;
+layout(set = 0, binding = RASTER_SET_TARGET, r32f) uniform writeonly image2D depthMap;
+layout(set = 0, binding = RASTER_SET_ID_IMAGE, r32ui) uniform writeonly uimage2D idMap;
 #define TARGET_TEXEL(p, layer) ivec2(p)
 #else
-layout(set = 0, binding = 17, r32f) uniform writeonly image2DArray depthMap;
-layout(set = 0, binding = 18, r32ui) uniform writeonly uimage2DArray idMap;
+layout(set = 0, binding = RASTER_SET_TARGET, r32f) uniform writeonly image2DArray depthMap;
+layout(set = 0, binding = RASTER_SET_ID_IMAGE, r32ui) uniform writeonly uimage2DArray idMap;
 #define TARGET_TEXEL(p, layer) ivec3(p, layer)
 #endif
 #endif
@@ -71,10 +72,10 @@ void storePixels(uint64_t nearest[kPixels], uint64_t first[kPixels], uint index[
 }
 
 void main() {
-    const ivec2 size = ivec2(push.target.x, push.capacity.w);
-    const int bits = int(push.target.y);
+    const ivec2 size = ivec2(push.width, push.height);
+    const int bits = int(push.subpixelBits);
     const RasterLayer row = rasterLayers[gl_WorkGroupID.z];
-    const uint layer = row.info.y, idLayer = row.info.w;  // ID layer + 1, or 0: depth only
+    const uint layer = row.targetLayer, idLayer = row.idLayerPlusOne;  // ID layer + 1, or 0: depth only
     const ivec2 tile = ivec2(gl_WorkGroupID.xy);
     const uvec4 bin = tileBins[tileIndex(layer, tile, size)];
     const uint count = min(bin.x, bin.z);

@@ -8,8 +8,8 @@
 // gather_voxels.comp (that and RSM_VOXEL_VISIBILITY).
 #include "shared/types.h"
 #include "rsm/bindings.h"
-#include "render/lights.glsl"
-#include "render/reconstruct.glsl"
+#include "core/lights.glsl"
+#include "core/reconstruct.glsl"
 #include "shared/hash.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;

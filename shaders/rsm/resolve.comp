@@ -10,9 +10,9 @@
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
 #include "rsm/bindings.h"
-#include "render/material.glsl"
-#include "render/lights.glsl"
-#include "render/visibility.glsl"
+#include "core/material.glsl"
+#include "core/lights.glsl"
+#include "core/visibility.glsl"
 #include "shared/octahedral.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;

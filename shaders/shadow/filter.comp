@@ -7,21 +7,22 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
 #include "shared/types.h"
-#include "render/lights.glsl"
-#include "render/reconstruct.glsl"
+#include "core/lights.glsl"
+#include "core/reconstruct.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(set = 0, binding = 0) uniform Frame { FrameUniforms frame; };
-layout(set = 0, binding = 1, std430) readonly buffer Lights { GpuLight lights[]; };
-layout(set = 0, binding = 2) uniform sampler2D gDepth;
-layout(set = 0, binding = 3) uniform sampler2D gNormal;
-layout(set = 0, binding = 4) uniform sampler2DArray shadowDepth;
-layout(set = 0, binding = 5) uniform sampler2DArray shadowMoments;
-layout(set = 0, binding = 6, std430) readonly buffer Layers { GpuShadowLayer shadowLayers[]; };
-layout(set = 0, binding = 7, std430) readonly buffer ShadowLights { GpuShadowLight shadowLights[]; };
-layout(set = 0, binding = 8) uniform Params { GpuShadowParams params; };
-layout(set = 0, binding = 9, rg16f) uniform writeonly image2DArray shadowMask;
+#include "shadow/bindings.h"
+layout(set = 0, binding = SHADOW_MASK_FRAME) uniform Frame { FrameUniforms frame; };
+layout(set = 0, binding = SHADOW_MASK_LIGHTS, std430) readonly buffer Lights { GpuLight lights[]; };
+layout(set = 0, binding = SHADOW_MASK_GBUFFER_DEPTH) uniform sampler2D gDepth;
+layout(set = 0, binding = SHADOW_MASK_GBUFFER_NORMAL) uniform sampler2D gNormal;
+layout(set = 0, binding = SHADOW_MASK_DEPTH_MAP) uniform sampler2DArray shadowDepth;
+layout(set = 0, binding = SHADOW_MASK_MOMENTS) uniform sampler2DArray shadowMoments;
+layout(set = 0, binding = SHADOW_MASK_LAYERS, std430) readonly buffer Layers { GpuShadowLayer shadowLayers[]; };
+layout(set = 0, binding = SHADOW_MASK_SHADOW_LIGHTS, std430) readonly buffer ShadowLights { GpuShadowLight shadowLights[]; };
+layout(set = 0, binding = SHADOW_MASK_PARAMS) uniform Params { GpuShadowParams params; };
+layout(set = 0, binding = SHADOW_MASK_OUT, rg16f) uniform writeonly image2DArray shadowMask;
 
 #include "shadow/project.glsl"
 #include "shadow/moments.glsl"

@@ -8,20 +8,20 @@
 const float SHADOW_MIN_VARIANCE = 1e-8;
 
 float linearShadowDepth(GpuShadowLayer layer, float depth) {
-    if (layer.info.x != SHADOW_PROJ_PERSPECTIVE) return depth;
-    float n = layer.params.y, f = layer.params.z;
+    if (layer.projection != SHADOW_PROJ_PERSPECTIVE) return depth;
+    float n = layer.zNear, f = layer.zFar;
     float z = n * f / (f - depth * (f - n));  // inverse of Vulkan's [0,1] perspective depth
     return (z - n) / (f - n);
 }
 
 // EVSM warp (Lauritzen & McCool 2008) of depth z in [0,1]: positive and negative exponentials of 2z - 1.
-vec2 evsmWarp(float z, vec4 m) {
+vec2 evsmWarp(float z, GpuMomentParams m) {
     float w = 2.0 * z - 1.0;
-    return vec2(exp(m.y * w), -exp(-m.z * w));
+    return vec2(exp(m.evsmPositive * w), -exp(-m.evsmNegative * w));
 }
 
-// `m` = GpuShadowParams.moments (bleeding reduction, EVSM exponents, MSM bias).
-vec4 encodeMoments(uint filterMode, float z, vec4 m) {
+// `m` = GpuShadowParams.moments.
+vec4 encodeMoments(uint filterMode, float z, GpuMomentParams m) {
     if (filterMode == SHADOW_FILTER_VSM) return vec4(z, z * z, 0.0, 0.0);
     if (filterMode == SHADOW_FILTER_EVSM) {
         vec2 e = evsmWarp(z, m);
@@ -46,10 +46,10 @@ float reduceBleeding(float p, float amount) {
     return clamp((p - amount) / max(1.0 - amount, 1e-4), 0.0, 1.0);
 }
 
-float evsmVisibility(vec4 moments, float z, vec4 m) {
+float evsmVisibility(vec4 moments, float z, GpuMomentParams m) {
     vec2 e = evsmWarp(z, m);
     // The variance floor scales with the warp's slope at z (d/dz of the exponentials).
-    vec2 slope = 2.0 * vec2(m.y * e.x, m.z * e.y);
+    vec2 slope = 2.0 * vec2(m.evsmPositive * e.x, m.evsmNegative * e.y);
     float pos = chebyshevUpperBound(moments.xy, e.x, SHADOW_MIN_VARIANCE * slope.x * slope.x);
     float neg = chebyshevUpperBound(moments.zw, e.y, SHADOW_MIN_VARIANCE * slope.y * slope.y);
     return min(pos, neg);
@@ -90,10 +90,10 @@ float msmVisibility(vec4 moments, float depth, float bias) {
 }
 
 // Visibility of linear depth z from filtered moments, with light-bleeding reduction.
-float momentVisibility(uint filterMode, vec4 moments, float z, vec4 m) {
+float momentVisibility(uint filterMode, vec4 moments, float z, GpuMomentParams m) {
     float p;
     if (filterMode == SHADOW_FILTER_VSM) p = chebyshevUpperBound(moments.xy, z, SHADOW_MIN_VARIANCE);
     else if (filterMode == SHADOW_FILTER_EVSM) p = evsmVisibility(moments, z, m);
-    else p = msmVisibility(moments, z, m.w);
-    return reduceBleeding(p, m.x);
+    else p = msmVisibility(moments, z, m.msmBias);
+    return reduceBleeding(p, m.bleedReduction);
 }

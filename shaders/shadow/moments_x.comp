@@ -8,27 +8,28 @@
 #include "shadow/blur.glsl"
 
 layout(local_size_x = BLUR_GROUP, local_size_y = BLUR_LANES) in;
-layout(set = 0, binding = 0) uniform sampler2DArray shadowDepth;  // nearest
-layout(set = 0, binding = 1, rgba32f) uniform writeonly image2DArray rowMoments;
-layout(set = 0, binding = 2, std430) readonly buffer Layers { GpuShadowLayer shadowLayers[]; };
-layout(set = 0, binding = 3) uniform Params { GpuShadowParams params; };
+#include "shadow/bindings.h"
+layout(set = 0, binding = MOMENT_ROWS_DEPTH_MAP) uniform sampler2DArray shadowDepth;  // nearest
+layout(set = 0, binding = MOMENT_ROWS_OUT, rgba32f) uniform writeonly image2DArray rowMoments;
+layout(set = 0, binding = MOMENT_ROWS_LAYERS, std430) readonly buffer Layers { GpuShadowLayer shadowLayers[]; };
+layout(set = 0, binding = MOMENT_ROWS_PARAMS) uniform Params { GpuShadowParams params; };
 
 void main() {
     uint layerIndex = gl_WorkGroupID.z;
     GpuShadowLayer layer = shadowLayers[layerIndex];
-    if (layer.info.y == SHADOW_NO_MOMENTS) return;  // the same for the whole group
-    int res = int(params.info.x);
-    int radius = min(int(params.info.z), BLUR_MAX_RADIUS);
+    if (layer.momentLayer == SHADOW_NO_MOMENTS) return;  // the same for the whole group
+    int res = int(params.resolution);
+    int radius = min(int(params.blurRadius), BLUR_MAX_RADIUS);
     uint lane = gl_LocalInvocationID.y;
     int y = min(int(gl_GlobalInvocationID.y), res - 1);
     int start = int(gl_WorkGroupID.x) * BLUR_GROUP - radius;
     for (int i = int(gl_LocalInvocationID.x); i < BLUR_GROUP + 2 * radius; i += BLUR_GROUP) {
         int x = clamp(start + i, 0, res - 1);
         float depth = texelFetch(shadowDepth, ivec3(x, y, layerIndex), 0).r;
-        blurTile[lane][i] = encodeMoments(layer.info.z, linearShadowDepth(layer, depth), params.moments);
+        blurTile[lane][i] = encodeMoments(layer.momentFilter, linearShadowDepth(layer, depth), params.moments);
     }
     barrier();
     ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(texel, ivec2(res)))) return;
-    imageStore(rowMoments, ivec3(texel, layer.info.y), blurTaps(lane, int(gl_LocalInvocationID.x), radius));
+    imageStore(rowMoments, ivec3(texel, layer.momentLayer), blurTaps(lane, int(gl_LocalInvocationID.x), radius));
 }

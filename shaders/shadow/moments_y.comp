@@ -6,20 +6,21 @@
 #include "shadow/blur.glsl"
 
 layout(local_size_x = BLUR_LANES, local_size_y = BLUR_GROUP) in;
-layout(set = 0, binding = 0, rgba32f) uniform readonly image2DArray rowMoments;
-layout(set = 0, binding = 1, rgba32f) uniform writeonly image2DArray moments;
-layout(set = 0, binding = 2, std430) readonly buffer Layers { GpuShadowLayer shadowLayers[]; };
-layout(set = 0, binding = 3) uniform Params { GpuShadowParams params; };
+#include "shadow/bindings.h"
+layout(set = 0, binding = MOMENT_COLUMNS_ROWS, rgba32f) uniform readonly image2DArray rowMoments;
+layout(set = 0, binding = MOMENT_COLUMNS_OUT, rgba32f) uniform writeonly image2DArray moments;
+layout(set = 0, binding = MOMENT_COLUMNS_LAYERS, std430) readonly buffer Layers { GpuShadowLayer shadowLayers[]; };
+layout(set = 0, binding = MOMENT_COLUMNS_PARAMS) uniform Params { GpuShadowParams params; };
 
 void main() {
     GpuShadowLayer layer = shadowLayers[gl_WorkGroupID.z];
-    if (layer.info.y == SHADOW_NO_MOMENTS) return;  // the same for the whole group
-    int res = int(params.info.x);
-    int radius = min(int(params.info.z), BLUR_MAX_RADIUS);
+    if (layer.momentLayer == SHADOW_NO_MOMENTS) return;  // the same for the whole group
+    int res = int(params.resolution);
+    int radius = min(int(params.blurRadius), BLUR_MAX_RADIUS);
     uint lane = gl_LocalInvocationID.x;
     int x = min(int(gl_GlobalInvocationID.x), res - 1);
     int start = int(gl_WorkGroupID.y) * BLUR_GROUP - radius;
-    int slice = int(layer.info.y);
+    int slice = int(layer.momentLayer);
     for (int i = int(gl_LocalInvocationID.y); i < BLUR_GROUP + 2 * radius; i += BLUR_GROUP)
         blurTile[lane][i] = imageLoad(rowMoments, ivec3(x, clamp(start + i, 0, res - 1), slice));
     barrier();

@@ -1,14 +1,15 @@
 #version 460
 // Dual-paraboloid depth pass, tessellation control: straight edges become curves under the
-// paraboloid mapping, so each edge is split until it spans at most `paraboloid.w` radians as seen
+// paraboloid mapping, so each edge is split until it spans at most `maxEdgeAngle` radians as seen
 // from the light (small pieces, whose straight edges are then sub-texel accurate). Triangles
 // entirely behind the hemisphere's rim are dropped here (tessellation level 0).
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
+#include "core/scene_bindings.h"
 #include "shadow/paraboloid.glsl"
 
 layout(vertices = 3) out;
-layout(set = 0, binding = 0, std430) readonly buffer Views { mat4 viewProj[]; } views;
+layout(set = 0, binding = SCENE_VIEWS, std430) readonly buffer Views { mat4 viewProj[]; } views;
 layout(push_constant) uniform Push { ShadowDrawPush draw; };
 
 layout(location = 0) in vec3 inWorld[];
@@ -20,7 +21,7 @@ layout(location = 2) flat out int outInstance[];
 
 float edgeLevel(vec3 a, vec3 b) {
     float angle = acos(clamp(dot(normalize(a), normalize(b)), -1.0, 1.0));
-    return clamp(ceil(angle / draw.paraboloid.w), 1.0, 64.0);
+    return clamp(ceil(angle / draw.maxEdgeAngle), 1.0, 64.0);
 }
 
 void main() {
@@ -31,7 +32,7 @@ void main() {
     mat4 view = views.viewProj[draw.viewIndex + inInstance[0]];
     vec3 v0 = (view * vec4(inWorld[0], 1.0)).xyz, v1 = (view * vec4(inWorld[1], 1.0)).xyz,
          v2 = (view * vec4(inWorld[2], 1.0)).xyz;
-    float rim = paraboloidRimCos(draw.paraboloid.z);
+    float rim = paraboloidRimCos(draw.paraboloidDiscScale);
     // Behind the rim: every vertex beyond it. The region beyond the rim is a convex cone (the rim is
     // past 90 degrees), so such a triangle lies wholly inside it.
     bool behind = -v0.z < rim * length(v0) && -v1.z < rim * length(v1) && -v2.z < rim * length(v2);

@@ -5,10 +5,11 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_ARB_shader_viewport_layer_array : require
 #include "shared/types.h"
+#include "core/scene_bindings.h"
 #include "shadow/paraboloid.glsl"
 
 layout(triangles, equal_spacing, cw) in;
-layout(set = 0, binding = 0, std430) readonly buffer Views { mat4 viewProj[]; } views;
+layout(set = 0, binding = SCENE_VIEWS, std430) readonly buffer Views { mat4 viewProj[]; } views;
 layout(push_constant) uniform Push { ShadowDrawPush draw; };
 
 layout(location = 0) in vec3 inWorld[];
@@ -26,7 +27,7 @@ void main() {
     outNormal = vec3(0.0);
     int instance = inInstance[0];
     vec3 v = (views.viewProj[draw.viewIndex + instance] * vec4(world, 1.0)).xyz;
-    gl_Position = vec4(paraboloidProject(v, draw.paraboloid.x, draw.paraboloid.y, draw.paraboloid.z), 1.0);
-    gl_ClipDistance[0] = -v.z / max(length(v), 1e-20) - paraboloidRimCos(draw.paraboloid.z);
+    gl_Position = vec4(paraboloidProject(v, draw.paraboloidNear, draw.paraboloidFar, draw.paraboloidDiscScale), 1.0);
+    gl_ClipDistance[0] = -v.z / max(length(v), 1e-20) - paraboloidRimCos(draw.paraboloidDiscScale);
     gl_Layer = int(draw.firstLayer) + instance;
 }

@@ -3,7 +3,7 @@
 // paraboloid mapping is not linear, so it is applied after tessellation (paraboloid.tese).
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
-#include "render/instances.glsl"
+#include "core/instances.glsl"
 
 layout(location = 0) in vec3 inPosition;
 layout(location = 2) in vec2 inUv;

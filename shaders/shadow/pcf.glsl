@@ -35,7 +35,7 @@ struct ShadowReceiver {
 // hardware's bilinear compare quantises them, to 8 bits on NVIDIA).
 float compareBilinear(ShadowCoord c) {
     float ref = min(c.depth, 1.0);  // beyond the far plane: compare against the far plane
-    float res = float(params.info.x);
+    float res = float(params.resolution);
     vec2 t = c.uvLayer.xy * res - 0.5;
     vec2 f = fract(t);
     // Sample exactly at the corner shared by the 4 texels, so the gather picks the same 4 as floor(t).
@@ -86,7 +86,7 @@ float receiverDistance(ShadowReceiver r) {
     if (r.local) return distance(r.p, r.lightPos);
     ShadowCoord c = shadowProject(r.layer, r.p);
     GpuShadowLayer layer = shadowLayers[r.layer];
-    return layer.params.y + c.depth * (layer.params.z - layer.params.y);
+    return layer.zNear + c.depth * (layer.zFar - layer.zNear);
 }
 
 // PCSS (blocker search and penumbra estimate): the PCF radius w / 2 from the penumbra width
@@ -94,13 +94,13 @@ float receiverDistance(ShadowReceiver r) {
 // `size`), or w = (d_receiver - d_blocker) * 2 tan(angular radius) for a directional light.
 // Returns 0 when no blocker is found (fully lit).
 float pcssRadius(GpuShadowLight s, GpuLight light, ShadowReceiver r) {
-    float size = s.params.y;
+    float size = s.penumbraScale;
     float dr = receiverDistance(r);
-    float maxRadius = params.kernel.y * r.texel;
+    float maxRadius = params.pcssMaxRadius * r.texel;
     // Blockers can sit anywhere between the light's near plane (the top of the scene for a
     // directional light) and the receiver: the search region is the light's footprint seen from
     // the receiver there, limited to the configured radius.
-    float nearDistance = shadowLayers[r.layer].params.y;
+    float nearDistance = shadowLayers[r.layer].zNear;
     float search = 0.5 * size * (dr - nearDistance) / (r.local ? max(nearDistance, 1e-6) : 1.0);
     search = min(search, maxRadius);
     float blockerSum = 0.0;

@@ -14,16 +14,16 @@ struct ShadowCoord {
 // cross faces and the paraboloid seam seamlessly).
 uint shadowLayerFor(GpuShadowLight s, GpuLight light, uint chosen, vec3 q) {
     vec3 d = q - light.position;
-    if (s.info.z == SHADOW_KIND_CUBE) return s.info.x + cubeFace(d);
-    if (s.info.z == SHADOW_KIND_PARABOLOID) return s.info.x + (dot(d, light.direction) >= 0.0 ? 0u : 1u);
+    if (s.kind == SHADOW_KIND_CUBE) return s.firstLayer + cubeFace(d);
+    if (s.kind == SHADOW_KIND_PARABOLOID) return s.firstLayer + (dot(d, light.direction) >= 0.0 ? 0u : 1u);
     return chosen;
 }
 
 ShadowCoord shadowProject(uint layerIndex, vec3 q) {
     GpuShadowLayer layer = shadowLayers[layerIndex];
-    if (layer.info.x == SHADOW_PROJ_PARABOLOID) {
+    if (layer.projection == SHADOW_PROJ_PARABOLOID) {
         vec3 v = (layer.viewProj * vec4(q, 1.0)).xyz;
-        vec3 m = paraboloidProject(v, layer.params.y, layer.params.z, layer.params.w);
+        vec3 m = paraboloidProject(v, layer.zNear, layer.zFar, layer.discScale);
         return ShadowCoord(vec3(m.xy * 0.5 + 0.5, float(layerIndex)), m.z);
     }
     vec4 clip = layer.viewProj * vec4(q, 1.0);
@@ -36,17 +36,17 @@ ShadowCoord shadowProject(uint layerIndex, vec3 q) {
 // World size of one texel of the layer at q (normal offset, filter radii).
 float shadowTexelAt(uint layerIndex, vec3 q, vec3 lightPosition) {
     GpuShadowLayer layer = shadowLayers[layerIndex];
-    if (layer.info.x == SHADOW_PROJ_ORTHO) return layer.params.x;
-    if (layer.info.x == SHADOW_PROJ_PARABOLOID) return layer.params.x * distance(q, lightPosition);
-    return layer.params.x * (layer.viewProj * vec4(q, 1.0)).w;  // w = depth along the face's axis
+    if (layer.projection == SHADOW_PROJ_ORTHO) return layer.texelSize;
+    if (layer.projection == SHADOW_PROJ_PARABOLOID) return layer.texelSize * distance(q, lightPosition);
+    return layer.texelSize * (layer.viewProj * vec4(q, 1.0)).w;  // w = depth along the face's axis
 }
 
 // Distance from the light of a stored depth on the ray through q (PCSS): along the light direction
 // from the near plane for orthographic layers, from the light's position otherwise.
 float shadowDistance(uint layerIndex, float depth, vec3 q, vec3 lightPosition) {
     GpuShadowLayer layer = shadowLayers[layerIndex];
-    float n = layer.params.y, f = layer.params.z;
-    if (layer.info.x != SHADOW_PROJ_PERSPECTIVE) return n + depth * (f - n);  // stored linear
+    float n = layer.zNear, f = layer.zFar;
+    if (layer.projection != SHADOW_PROJ_PERSPECTIVE) return n + depth * (f - n);  // stored linear
     // Perspective: depth -> view depth, then to the distance along q's ray.
     float z = n * f / (f - depth * (f - n));
     return z * distance(q, lightPosition) / max((layer.viewProj * vec4(q, 1.0)).w, 1e-20);

@@ -1,24 +1,24 @@
 #version 460
 // Layered depth pass: one instance per layer of a light (cascades, cube faces, a spot's single
 // layer), so that every layer of a light is drawn by one draw call (per run of scene instances:
-// render/instances.glsl). Layer i uses view row
+// core/instances.glsl). Layer i uses view row
 // viewIndex + i and writes array layer firstLayer + i (gl_Layer from the vertex stage: Vulkan 1.2
 // shaderOutputLayer).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_ARB_shader_viewport_layer_array : require
 #include "shared/types.h"
-#include "render/instances.glsl"
+#include "core/instances.glsl"
 
 layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
 layout(location = 2) in vec2 inUv;
 
-layout(set = 0, binding = 0, std430) readonly buffer Views { mat4 viewProj[]; } views;
+layout(set = 0, binding = SCENE_VIEWS, std430) readonly buffer Views { mat4 viewProj[]; } views;
 layout(push_constant) uniform Push { ShadowDrawPush draw; };
 
 layout(location = 0) out vec3 outNormal;
 layout(location = 1) out vec2 outUv;
-layout(location = 3) flat out uint outIdBase;  // visibility ID base (render/visibility.glsl)
+layout(location = 3) flat out uint outIdBase;  // visibility ID base (core/visibility.glsl)
 
 void main() {
     const int layers = int(draw.layerCount), instance = sceneInstance(layers), layer = instanceLayer(layers);
@@ -26,5 +26,5 @@ void main() {
     gl_Layer = int(draw.firstLayer) + layer;
     outNormal = instanceNormal(instance, inNormal);
     outUv = inUv;
-    outIdBase = instances[instance].info.y + draw.ids.x;
+    outIdBase = instances[instance].firstDrawnTriangle + draw.triangleBase;
 }

@@ -1,4 +1,4 @@
-// Shadow visibility as the lighting pass reads it (included by render/lighting.comp, which declares
+// Shadow visibility as the lighting pass reads it (included by lighting/lighting.comp, which declares
 // `shadowMask`, `lights` and `frame`). The filtering itself runs before, in its own pass
 // (shadow/filter.comp: hard, PCF, PCSS, VSM, EVSM, MSM; cascades, cube faces, paraboloids), which
 // leaves per shadowed light r = visibility, g = layer code in layer GpuLight.shadowIndex of the mask.

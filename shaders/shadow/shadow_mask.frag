@@ -2,7 +2,7 @@
 // Depth-only shadow pass for alphaMode MASK materials: discard cut-out texels, write nothing else.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
-#include "render/material.glsl"
+#include "core/material.glsl"
 
 layout(location = 0) in vec3 inNormal;
 layout(location = 1) in vec2 inUv;

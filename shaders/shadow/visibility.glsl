@@ -10,7 +10,7 @@ ShadowReceiver makeReceiver(GpuShadowLight s, GpuLight light, uint layer, vec3 p
     r.lightPos = light.position;
     r.layer = shadowLayerFor(s, light, layer, p);
     r.texel = shadowTexelAt(r.layer, p, r.lightPos);
-    r.p = p + n * (s.params.x * r.texel);
+    r.p = p + n * (s.normalOffset * r.texel);
     r.n = n;
     r.rayDir = r.local ? normalize(r.p - r.lightPos) : light.direction;
     vec3 helper = abs(r.rayDir.y) < 0.99 ? vec3(0.0, 1.0, 0.0) : vec3(1.0, 0.0, 0.0);
@@ -25,16 +25,16 @@ float momentsLookup(GpuShadowLight s, GpuLight light, ShadowReceiver r) {
     ShadowCoord c = shadowProject(layerIndex, r.p);
     GpuShadowLayer layer = shadowLayers[layerIndex];
     if (any(lessThan(c.uvLayer.xy, vec2(0.0))) || any(greaterThan(c.uvLayer.xy, vec2(1.0)))) return 1.0;
-    vec4 m = texture(shadowMoments, vec3(c.uvLayer.xy, float(layer.info.y)));
-    return momentVisibility(s.info.w, m, clamp(linearShadowDepth(layer, c.depth), 0.0, 1.0), params.moments);
+    vec4 m = texture(shadowMoments, vec3(c.uvLayer.xy, float(layer.momentLayer)));
+    return momentVisibility(s.filterMode, m, clamp(linearShadowDepth(layer, c.depth), 0.0, 1.0), params.moments);
 }
 
 float visibilityIn(GpuShadowLight s, GpuLight light, uint layer, vec3 p, vec3 n, float angle) {
     ShadowReceiver r = makeReceiver(s, light, layer, p, n, angle);
-    uint mode = s.info.w;
+    uint mode = s.filterMode;
     if (mode >= SHADOW_FILTER_VSM) return momentsLookup(s, light, r);
     if (mode == SHADOW_FILTER_HARD) return hardVisibility(s, light, r);
-    float radius = params.kernel.x * r.texel;
+    float radius = params.pcfRadius * r.texel;
     int taps = 16;
     if (mode == SHADOW_FILTER_PCSS) {
         radius = pcssRadius(s, light, r);
@@ -49,17 +49,17 @@ float visibilityIn(GpuShadowLight s, GpuLight light, uint layer, vec3 p, vec3 n,
 // t; for point lights the face or hemisphere of p. Returns (visibility, layer code). `visible` =
 // false: only the layer code is wanted (the light does not reach the pixel).
 vec2 lightVisibility(GpuShadowLight s, GpuLight light, vec3 p, vec3 n, float angle, bool visible) {
-    uint layer = shadowLayerFor(s, light, s.info.x, p);
-    float t = 0.0, code = float(layer - s.info.x);
-    if (s.info.z == SHADOW_KIND_CASCADES) {
+    uint layer = shadowLayerFor(s, light, s.firstLayer, p);
+    float t = 0.0, code = float(layer - s.firstLayer);
+    if (s.kind == SHADOW_KIND_CASCADES) {
         float viewDepth = (frame.viewProj * vec4(p, 1.0)).w;
-        uint count = s.info.y, i = 0u;
-        while (i + 1u < count && viewDepth > shadowLayers[s.info.x + i].split.y) ++i;
-        vec4 split = shadowLayers[s.info.x + i].split;
-        if (viewDepth > split.y) return vec2(1.0, 8.0);  // beyond the shadowed distance (code 8: grey)
-        float band = params.kernel.z * (split.y - split.x);
-        if (i + 1u < count && band > 0.0) t = clamp((viewDepth - (split.y - band)) / band, 0.0, 1.0);
-        layer = s.info.x + i;
+        uint count = s.layerCount, i = 0u;
+        while (i + 1u < count && viewDepth > shadowLayers[s.firstLayer + i].splitFar) ++i;
+        float splitNear = shadowLayers[s.firstLayer + i].splitNear, splitFar = shadowLayers[s.firstLayer + i].splitFar;
+        if (viewDepth > splitFar) return vec2(1.0, 8.0);  // beyond the shadowed distance (code 8: grey)
+        float band = params.cascadeBlend * (splitFar - splitNear);
+        if (i + 1u < count && band > 0.0) t = clamp((viewDepth - (splitFar - band)) / band, 0.0, 1.0);
+        layer = s.firstLayer + i;
         code = float(i) + t;
     }
     if (!visible) return vec2(0.0, code);

@@ -1,6 +1,6 @@
 #version 460
 // Temporal accumulation of the indirect irradiance. Per pixel: where its surface point was in the
-// previous frame (render/motion.glsl: the previous camera and the instance's motion), the history
+// previous frame (core/motion.glsl: the previous camera and the instance's motion), the history
 // there, bilinear over the taps that hold the same surface (view depth within 2%, normals within
 // about 25 degrees: the rest are disoccluded), blended with this frame's estimate at weight
 // alpha = max(1 / frames, minWeight, changeWeight). frames counts the frames the history spans, so a
@@ -11,7 +11,7 @@
 #include "shared/types.h"
 #include "shared/octahedral.glsl"
 #include "temporal_gi/bindings.h"
-#include "render/reconstruct.glsl"
+#include "core/reconstruct.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = GI_ACCUMULATE_FRAME) uniform Frame { FrameUniforms frame; };
@@ -26,7 +26,7 @@ layout(set = 0, binding = GI_ACCUMULATE_OUT_MOMENTS, rg32f) uniform writeonly im
 layout(set = 0, binding = GI_ACCUMULATE_OUT_GEOMETRY, rgba16f) uniform writeonly image2D outGeometry;
 layout(push_constant) uniform Push { GiAccumulatePush pc; };
 #define MOTION_FIRST_BINDING GI_ACCUMULATE_MOTION_FIRST
-#include "render/motion.glsl"
+#include "core/motion.glsl"
 
 const float kDepthTolerance = 0.02;  // relative view depth
 const float kNormalCos = 0.9;

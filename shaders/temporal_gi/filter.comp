@@ -15,7 +15,7 @@
 #include "shared/types.h"
 #include "shared/octahedral.glsl"
 #include "temporal_gi/bindings.h"
-#include "render/reconstruct.glsl"
+#include "core/reconstruct.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = GI_FILTER_FRAME) uniform Frame { FrameUniforms frame; };

@@ -3,13 +3,14 @@
 // OCCUPANCY_BRICK^3 voxels sets its bit where any of its voxels is occupied.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
+#include "voxel/bindings.h"
 
 layout(local_size_x = 64) in;
 
-layout(set = 0, binding = 0, std430) buffer Occupancy { GpuOccupancyGrid grid; uint bits[]; } occupancy;
+layout(set = 0, binding = BRICKS_OCCUPANCY, std430) buffer Occupancy { GpuOccupancyGrid grid; uint bits[]; } occupancy;
 
 void main() {
-    const uvec3 dims = occupancy.grid.dims.xyz, bricks = dims / OCCUPANCY_BRICK;
+    const uvec3 dims = occupancy.grid.dims, bricks = dims / OCCUPANCY_BRICK;
     const uint brick = gl_GlobalInvocationID.x;
     if (brick >= bricks.x * bricks.y * bricks.z) return;
     const uvec3 b = uvec3(brick % bricks.x, (brick / bricks.x) % bricks.y, brick / (bricks.x * bricks.y));
@@ -21,5 +22,5 @@ void main() {
             const uint index = v.x + dims.x * (v.y + dims.y * v.z);
             any = any || ((occupancy.bits[index >> 5u] >> (index & 31u)) & 0xFu) != 0u;
         }
-    if (any) atomicOr(occupancy.bits[occupancy.grid.dims.w + (brick >> 5u)], 1u << (brick & 31u));
+    if (any) atomicOr(occupancy.bits[occupancy.grid.firstBrickWord + (brick >> 5u)], 1u << (brick & 31u));
 }

@@ -7,20 +7,20 @@ layout(set = 0, binding = OCCUPANCY_BINDING, std430) readonly buffer OccupancyBi
     uint bits[];
 } occupancy;
 
-float occupancyVoxelSize() { return occupancy.grid.origin.w; }
+float occupancyVoxelSize() { return occupancy.grid.voxelSize; }
 
 bool voxelOccupied(ivec3 c) {
-    const ivec3 dims = ivec3(occupancy.grid.dims.xyz);
+    const ivec3 dims = ivec3(occupancy.grid.dims);
     if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, dims))) return false;  // outside: empty
     const uint index = uint(c.x) + uint(dims.x) * (uint(c.y) + uint(dims.y) * uint(c.z));
     return (occupancy.bits[index >> 5u] & (1u << (index & 31u))) != 0u;
 }
 
 bool brickOccupied(ivec3 b) {
-    const ivec3 bricks = ivec3(occupancy.grid.dims.xyz) / OCCUPANCY_BRICK;
+    const ivec3 bricks = ivec3(occupancy.grid.dims) / OCCUPANCY_BRICK;
     if (any(lessThan(b, ivec3(0))) || any(greaterThanEqual(b, bricks))) return false;
     const uint index = uint(b.x) + uint(bricks.x) * (uint(b.y) + uint(bricks.y) * uint(b.z));
-    return (occupancy.bits[occupancy.grid.dims.w + (index >> 5u)] & (1u << (index & 31u))) != 0u;
+    return (occupancy.bits[occupancy.grid.firstBrickWord + (index >> 5u)] & (1u << (index & 31u))) != 0u;
 }
 
 // A segment p + t d, t in [0, 1] (voxel units), walked through the grid: empty bricks in one step
@@ -80,8 +80,8 @@ void rayStep(inout VoxelRay r) {
 // of walks would reach.
 bool segmentClear(vec3 a, vec3 b, float skip) {
     if (occupancy.grid.dims.x == 0u) return true;  // no volume bound
-    const vec3 pa = (a - occupancy.grid.origin.xyz) / occupancy.grid.origin.w;
-    const vec3 pb = (b - occupancy.grid.origin.xyz) / occupancy.grid.origin.w;
+    const vec3 pa = (a - occupancy.grid.origin) / occupancy.grid.voxelSize;
+    const vec3 pb = (b - occupancy.grid.origin) / occupancy.grid.voxelSize;
     const float len = length(pb - pa);
     if (len <= 2.0 * skip) return true;
     const vec3 dir = (pb - pa) / len;

@@ -7,17 +7,18 @@
 // then tested in 3D (triangleMeetsVoxel).
 // A triangle over at most OCCUPANCY_SMALL_COLUMNS columns is walked by its own thread; larger ones
 // are cut into chunks of OCCUPANCY_CHUNK_COLUMNS columns, listed for a second, indirect dispatch
-// (pc.counts.y = 1) of one workgroup per chunk. A full list leaves the triangle to its own thread.
+// (pc.walkChunks = 1) of one workgroup per chunk. A full list leaves the triangle to its own thread.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
-#include "render/triangles.glsl"
+#include "core/triangles.glsl"
+#include "voxel/bindings.h"
 
 layout(local_size_x = OCCUPANCY_GROUP) in;
 
-layout(set = 0, binding = 1, std430) readonly buffer Materials { GpuMaterial materials[]; };
-layout(set = 0, binding = 2, std430) buffer Occupancy { GpuOccupancyGrid grid; uint bits[]; } occupancy;
+layout(set = 0, binding = VOXELIZE_MATERIALS, std430) readonly buffer Materials { GpuMaterial materials[]; };
+layout(set = 0, binding = VOXELIZE_OCCUPANCY, std430) buffer Occupancy { GpuOccupancyGrid grid; uint bits[]; } occupancy;
 // x = chunks listed (the indirect dispatch's x; y = z = 1), then (triangle, first column) per chunk.
-layout(set = 0, binding = 3, std430) buffer Chunks { uvec4 args; uvec2 chunks[]; } list;
+layout(set = 0, binding = VOXELIZE_CHUNKS, std430) buffer Chunks { uvec4 args; uvec2 chunks[]; } list;
 layout(push_constant) uniform Push { OccupancyPush pc; };
 
 struct Walk {
@@ -32,15 +33,15 @@ struct Walk {
 // nothing (blended, degenerate, or outside the grid).
 bool setup(uint drawn, out Walk walk) {
     const VisTriangle tri = fetchTriangle(drawn + 1u);
-    if (materials[tri.material].info.y == ALPHA_BLEND) return false;
+    if (materials[tri.material].alphaMode == ALPHA_BLEND) return false;
     const vec3 n3 = cross(tri.p[1] - tri.p[0], tri.p[2] - tri.p[0]);
     const vec3 a = abs(n3);
     if (max(a.x, max(a.y, a.z)) <= 0.0) return false;
     walk.axes = a.z >= a.x && a.z >= a.y ? ivec3(0, 1, 2) : (a.y >= a.x ? ivec3(2, 0, 1) : ivec3(1, 2, 0));
-    const ivec3 dims = ivec3(occupancy.grid.dims.xyz);
+    const ivec3 dims = ivec3(occupancy.grid.dims);
     vec3 lo = vec3(1e30), hi = vec3(-1e30);
     for (int k = 0; k < 3; ++k) {
-        const vec3 p = (tri.p[k] - occupancy.grid.origin.xyz) / occupancy.grid.origin.w;
+        const vec3 p = (tri.p[k] - occupancy.grid.origin) / occupancy.grid.voxelSize;
         walk.v[k] = vec3(p[walk.axes.x], p[walk.axes.y], p[walk.axes.z]);
         lo = min(lo, walk.v[k]);
         hi = max(hi, walk.v[k]);
@@ -60,7 +61,7 @@ void setVoxel(ivec3 uvw, ivec3 axes) {
     c[axes.x] = uvw.x;
     c[axes.y] = uvw.y;
     c[axes.z] = uvw.z;
-    const uvec3 dims = occupancy.grid.dims.xyz;
+    const uvec3 dims = occupancy.grid.dims;
     const uint index = uint(c.x) + dims.x * (uint(c.y) + dims.y * uint(c.z));
     atomicOr(occupancy.bits[index >> 5u], 1u << (index & 31u));
 }
@@ -115,7 +116,7 @@ void walkColumn(Walk walk, int column) {
 }
 
 void main() {
-    if (pc.counts.y == 1u) {  // one listed chunk per workgroup
+    if (pc.walkChunks == 1u) {  // one listed chunk per workgroup
         const uvec2 chunk = list.chunks[gl_WorkGroupID.x];
         Walk walk;
         setup(chunk.x, walk);  // true: it was listed
@@ -126,12 +127,12 @@ void main() {
     const uint group = gl_WorkGroupID.x + gl_WorkGroupID.y * gl_NumWorkGroups.x;  // 2D beyond 65535 groups
     const uint drawn = group * OCCUPANCY_GROUP + gl_LocalInvocationIndex;
     Walk walk;
-    if (drawn >= pc.counts.x || !setup(drawn, walk)) return;
+    if (drawn >= pc.triangleCount || !setup(drawn, walk)) return;
     const int columns = walk.size.x * walk.size.y;
     if (columns > OCCUPANCY_SMALL_COLUMNS) {
         const uint count = uint(columns + OCCUPANCY_CHUNK_COLUMNS - 1) / OCCUPANCY_CHUNK_COLUMNS;
         const uint first = atomicAdd(list.args.x, count);
-        if (first + count <= pc.counts.z) {
+        if (first + count <= pc.chunkCapacity) {
             for (uint k = 0u; k < count; ++k) list.chunks[first + k] = uvec2(drawn, k * OCCUPANCY_CHUNK_COLUMNS);
             return;
         }

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include "core/irradiance_sum_bindings.h"  // shaders/core
 #include "core/names.h"
 
 namespace penumbra {
@@ -10,7 +11,10 @@ IrradianceSum::IrradianceSum(vk::Allocator& alloc, uint32_t width, uint32_t heig
     : alloc_(alloc), width_(width), height_(height) {
     constexpr VkDescriptorType kTex = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     kernel_ = vk::ComputeKernel(alloc.context(), "core/irradiance_sum.comp",
-                                {kTex, kTex, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, 0);
+                                std::vector<vk::Binding>{{IRRADIANCE_SUM_FIRST, kTex},
+                                                         {IRRADIANCE_SUM_SECOND, kTex},
+                                                         {IRRADIANCE_SUM_OUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}},
+                                0);
     linear_ = vk::Sampler(alloc.context(), {VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
 }
 
@@ -26,9 +30,9 @@ ImageHandle IrradianceSum::addTo(FrameGraph& graph) {
         const ImageHandle out = graph.import(*sums_[k - 1]);
         graph.pass("gi.sum." + std::to_string(k))
             .pipeline(kernel_.pipeline)
-            .sampled(0, sum, linear_.handle())
-            .sampled(1, parts[k], linear_.handle())
-            .storageImage(2, out)
+            .sampled(IRRADIANCE_SUM_FIRST, sum, linear_.handle())
+            .sampled(IRRADIANCE_SUM_SECOND, parts[k], linear_.handle())
+            .storageImage(IRRADIANCE_SUM_OUT, out)
             .record([this](PassContext& c) {
                 vkCmdDispatch(c.cmd, vk::divUp(width_, 8), vk::divUp(height_, 8), 1);
             });

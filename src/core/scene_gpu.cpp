@@ -15,7 +15,7 @@ SceneGpu::SceneGpu(vk::CommandContext& cmd, const Scene& scene)
     if (scene.indices.empty() && scene.strands.empty()) throw vk::VulkanError("scene has no triangles");
     checkTextureTable(ctx_.limits());
     texturePlan_ = planTextureTable(scene.textures);
-    // Visibility IDs are 32-bit: triangle + 1, 0 meaning nothing drawn (render/visibility.glsl).
+    // Visibility IDs are 32-bit: triangle + 1, 0 meaning nothing drawn (core/visibility.glsl).
     if (scene.indices.size() / 3 >= 0xFFFFFFFFull)
         throw vk::VulkanError("scene has more triangles than 32-bit visibility IDs can name");
     // A hair-only scene (glTF lines) still binds a vertex and an index buffer: one unused element each.
@@ -35,9 +35,10 @@ SceneGpu::SceneGpu(vk::CommandContext& cmd, const Scene& scene)
         gpu::GpuMaterial g{};
         g.baseColor = m.baseColor;
         const bool hasTexture = m.baseColorTexture >= 0 && size_t(m.baseColorTexture) < scene.textures.size();
-        g.info = {hasTexture ? texturePlan_.handles[m.baseColorTexture] : NO_TEXTURE, uint32_t(m.alphaMode),
-                  m.doubleSided ? 1u : 0u, 0u};
-        g.params = {m.alphaCutoff, 0, 0, 0};
+        g.texture = hasTexture ? texturePlan_.handles[m.baseColorTexture] : NO_TEXTURE;
+        g.alphaMode = uint32_t(m.alphaMode);
+        g.doubleSided = m.doubleSided ? 1u : 0u;
+        g.alphaCutoff = m.alphaCutoff;
         mats.push_back(g);
     }
     materials_ = cmd.createDeviceBuffer(mats.data(), mats.size() * sizeof(gpu::GpuMaterial),
@@ -81,16 +82,17 @@ std::vector<VkVertexInputAttributeDescription> SceneGpu::vertexAttributes() {
 }
 
 std::vector<vk::Binding> SceneGpu::drawSetBindings() {
-    return {{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
-            {1, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+    return {{SCENE_VIEWS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
+            {SCENE_MATERIALS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER},
             {SCENE_INSTANCES_BINDING, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
 }
 
 namespace {
 
-// Set 1 (render/material_textures.glsl): the texture slots and their sampler.
+// Set 1 (core/material_textures.glsl): the texture slots and their sampler.
 std::vector<vk::Binding> textureTableBindings() {
-    return {{0, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, MATERIAL_TEXTURE_SLOTS}, {1, VK_DESCRIPTOR_TYPE_SAMPLER}};
+    return {{SCENE_TEXTURES, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, MATERIAL_TEXTURE_SLOTS},
+            {SCENE_TEXTURE_SAMPLER, VK_DESCRIPTOR_TYPE_SAMPLER}};
 }
 
 // Sampled images a pass that draws the scene may declare besides the table.
@@ -122,10 +124,10 @@ VkDeviceSize SceneGpu::textureBytes() const {
 
 void SceneGpu::declareDrawSet(PassBuilder& pass, BufferHandle views) {
     FrameGraph& g = pass.graph();
-    pass.storageBuffer(0, views).storageBuffer(1, g.import(materials_));
+    pass.storageBuffer(SCENE_VIEWS, views).storageBuffer(SCENE_MATERIALS, g.import(materials_));
     std::vector<ImageHandle> textures;  // static after the upload: imported, only ever sampled
     for (vk::Image& t : textures_) textures.push_back(g.import(t));
-    pass.descriptorSet(1, textureTable_.handle(), textures);
+    pass.descriptorSet(SCENE_TEXTURE_SET, textureTable_.handle(), textures);
     pass.storageBuffer(SCENE_INSTANCES_BINDING, instanceTable(g));
 }
 
@@ -157,7 +159,8 @@ std::vector<gpu::GpuInstance> SceneGpu::instanceRows(const std::vector<glm::mat4
         gpu::GpuInstance row{};
         row.model = m;
         row.normal = glm::mat4(std::abs(det) > 0.0f ? glm::transpose(glm::inverse(linear)) : linear);
-        row.info = {det < 0.0f ? 1u : 0u, i < instanceTriangleBase_.size() ? instanceTriangleBase_[i] : 0u, 0u, 0u};
+        row.mirrored = det < 0.0f ? 1u : 0u;
+        row.firstDrawnTriangle = i < instanceTriangleBase_.size() ? instanceTriangleBase_[i] : 0u;
         // A singular transform (scale 0) has no inverse: such an instance covers no pixel anyway.
         const bool moved = i < previous.size() && previous[i] != m && std::abs(det) > 0.0f;
         row.toPrevious = moved ? previous[i] * glm::inverse(m) : glm::mat4(1.0f);
@@ -168,16 +171,17 @@ std::vector<gpu::GpuInstance> SceneGpu::instanceRows(const std::vector<glm::mat4
 
 std::vector<vk::Binding> SceneGpu::resolveSetBindings() {
     std::vector<vk::Binding> b = drawSetBindings();
-    for (uint32_t k : {12u, 13u, 14u, 16u}) b.push_back({k, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
+    for (uint32_t k : {SCENE_VERTICES, SCENE_INDICES, SCENE_TRIANGLE_MATERIALS, SCENE_DRAWN_TRIANGLES})
+        b.push_back({k, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
     return b;
 }
 
 void SceneGpu::declareTriangles(PassBuilder& pass) {
     FrameGraph& g = pass.graph();
-    pass.storageBuffer(12, g.import(vertices_))
-        .storageBuffer(13, g.import(indices_))
-        .storageBuffer(14, g.import(triangleMaterials_))
-        .storageBuffer(16, g.import(drawnTriangles_));
+    pass.storageBuffer(SCENE_VERTICES, g.import(vertices_))
+        .storageBuffer(SCENE_INDICES, g.import(indices_))
+        .storageBuffer(SCENE_TRIANGLE_MATERIALS, g.import(triangleMaterials_))
+        .storageBuffer(SCENE_DRAWN_TRIANGLES, g.import(drawnTriangles_));
 }
 
 void SceneGpu::uploadTextures(vk::CommandContext& cmd) {

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/frame_graph.h"
+#include "core/scene_bindings.h"  // shaders/core: the sets' binding numbers
 #include "core/texture_upload.h"
 #include "scene/scene.h"
 #include "shared/types.h"
@@ -37,7 +38,7 @@ public:
     // The base-colour textures at their own sizes with their full mip chains: one 2D array per size
     // (texturePlan() says which texture is in which slot and layer; a last 1x1 white array fills the
     // table's unused slots). Sampled through the texture table, set 1 of every pipeline that draws
-    // the scene (render/material_textures.glsl).
+    // the scene (core/material_textures.glsl).
     const std::vector<vk::Image>& textures() const { return textures_; }
     const TextureTablePlan& texturePlan() const { return texturePlan_; }
     // GPU memory of the textures' images (the scene's, without the white filler).
@@ -45,8 +46,8 @@ public:
     // The table's MATERIAL_TEXTURE_SLOTS plus a pass's own sampled images against the device's per
     // stage; throws std::invalid_argument naming both.
     static void checkTextureTable(const vk::DeviceLimits& limits);
-    // Set 0 of the pipelines that draw the scene: views and materials (bindings 0-1) and the frame's
-    // instance table (SCENE_INSTANCES_BINDING, the graph's "instances"); a pass may declare more
+    // Set 0 of the pipelines that draw the scene: views and materials (SCENE_VIEWS, SCENE_MATERIALS)
+    // and the frame's instance table (SCENE_INSTANCES_BINDING, the graph's "instances"); a pass may declare more
     // bindings of its own. Set 1: the texture table. Both are bound by declareDrawSet.
     void declareDrawSet(PassBuilder& pass, BufferHandle views);
     // The frame's instance table ("instances"), or the table at rest in graphs without one (tests).
@@ -56,9 +57,9 @@ public:
     static std::vector<VkDescriptorSetLayout> drawLayouts(vk::Context& ctx, VkDescriptorSetLayout set0);
     static VkDescriptorSetLayout textureTableLayout(vk::Context& ctx);
     static std::vector<vk::Binding> drawSetBindings();
-    // The triangles as compute resolves of visibility IDs fetch them (render/visibility.glsl):
-    // vertices, indices, triangle materials and the drawn (instance, triangle) list at bindings 12-14
-    // and 16 (with the draw set).
+    // The triangles as compute resolves of visibility IDs fetch them (core/visibility.glsl):
+    // vertices, indices, triangle materials and the drawn (instance, triangle) list (SCENE_VERTICES
+    // and on, with the draw set).
     void declareTriangles(PassBuilder& pass);
     static std::vector<vk::Binding> resolveSetBindings();
     // The rows of the instance table for these transforms (Scene::instances' order): normal matrix,
@@ -67,7 +68,7 @@ public:
     std::vector<gpu::GpuInstance> instanceRows(const std::vector<glm::mat4>& transforms,
                                                const std::vector<glm::mat4>& previous = {}) const;
     // Draw `d`'s first triangle within its mesh. A visibility ID is the drawn-triangle index + 1:
-    // the instance's base (GpuInstance.info.y) + this + gl_PrimitiveID + 1 (render/visibility.glsl).
+    // the instance's base (GpuInstance.info.y) + this + gl_PrimitiveID + 1 (core/visibility.glsl).
     uint32_t triangleBase(const Draw& d) const { return drawTriangleInMesh_[size_t(&d - scene_.draws.data())]; }
 
     // Vertex input of penumbra::Vertex for GraphicsDesc.
@@ -87,7 +88,7 @@ public:
     // Winding: glTF fronts are counter-clockwise; views with a y-flipped projection (the camera)
     // keep that, views without (shadow maps) see them clockwise: see sceneFrontFace().
     // `layers` > 1: layered passes draw `layers` instances per scene instance, one per target layer
-    // (shadow maps; render/instances.glsl).
+    // (shadow maps; core/instances.glsl).
     template <class PerDraw, class Filter>
     void draw(VkCommandBuffer cmd, PerDraw perDraw, Filter filter, uint32_t layers = 1) const;
 

@@ -3,7 +3,7 @@
 // resampled on the CPU (a large texture's filtering on one core stalls loading), and one texture's staging memory
 // at a time is alive.
 //
-// The table (render/material_textures.glsl) has MATERIAL_TEXTURE_SLOTS slots, each a 2D array: the
+// The table (core/material_textures.glsl) has MATERIAL_TEXTURE_SLOTS slots, each a 2D array: the
 // textures of one size share a slot, a layer each, so any number of textures of up to that many
 // sizes keep their own size. Beyond that many sizes, the textures of the rarest sizes share one last
 // slot at their largest width and height (blitted up on the GPU, a warning says so).
@@ -30,7 +30,7 @@ struct TextureSlot {
 
 struct TextureTablePlan {
     std::vector<TextureSlot> slots;  // at most MATERIAL_TEXTURE_SLOTS
-    // Per scene texture, what GpuMaterial.info.x holds: slot | layer << TEXTURE_LAYER_SHIFT.
+    // Per scene texture, what GpuMaterial.texture holds: slot | layer << TEXTURE_LAYER_SHIFT.
     std::vector<uint32_t> handles;
     uint32_t resampled = 0;  // textures not at their own size (the rarest sizes beyond the slots)
     uint64_t bytes() const;  // every slot's array with its mip chain

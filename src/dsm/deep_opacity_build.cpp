@@ -2,12 +2,16 @@
 
 #include <algorithm>
 
+#include "dsm/bindings.h"
+
 namespace penumbra {
 
 DeepOpacityBuildPass::DeepOpacityBuildPass(vk::Allocator& alloc, const HairGpu& hair, DsmResources& res)
     : hair_(hair), res_(res) {
     const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    kernel_ = HairGpu::segmentKernel(alloc.context(), "dsm/opacity_build.comp", {{5, storage}, {6, storage}});
+    kernel_ = HairGpu::segmentKernel(alloc.context(), "dsm/opacity_build.comp",
+                                     {{DOM_BUILD_FIRST_DEPTHS, storage}, {DOM_BUILD_LAYERS, storage}},
+                                     sizeof(gpu::DomBuildPush));
 }
 
 float DeepOpacityBuildPass::layerThickness(const Scene& scene) {
@@ -20,7 +24,8 @@ float DeepOpacityBuildPass::layerThickness(const Scene& scene) {
 void DeepOpacityBuildPass::addTo(FrameGraph& graph) {
     const BufferHandle heads = graph.import(res_.heads), layers = graph.import(res_.nodes),
                        views = graph.import(res_.views.current());
-    const VkDeviceSize layerBytes = VkDeviceSize(res_.resolution) * res_.resolution * res_.layerCount() * 16;
+    const VkDeviceSize layerBytes =
+        VkDeviceSize(res_.resolution) * res_.resolution * res_.layerCount() * DOM_LAYERS * sizeof(float);
     graph.pass("dom.clear", PassKind::Transfer)
         .use(heads, Use::TransferDst)
         .use(layers, Use::TransferDst)
@@ -31,16 +36,14 @@ void DeepOpacityBuildPass::addTo(FrameGraph& graph) {
         });
     for (uint32_t step : {0u, 1u}) {  // first depths, then the layers behind them
         PassBuilder pass = graph.pass(step == 0 ? "dom.depth" : "dom.layers");
-        pass.pipeline(kernel_.pipeline).storageBuffer(0, views);
+        pass.pipeline(kernel_.pipeline).storageBuffer(HAIR_VIEWS, views);
         hair_.declare(pass);
-        pass.storageBuffer(5, heads, step == 0 ? Use::StorageWrite : Use::StorageRead)
-            .storageBuffer(6, layers, Use::StorageWrite)
+        pass.storageBuffer(DOM_BUILD_FIRST_DEPTHS, heads, step == 0 ? Use::StorageWrite : Use::StorageRead)
+            .storageBuffer(DOM_BUILD_LAYERS, layers, Use::StorageWrite)
             .record([this, step](PassContext& c) {
                 for (uint32_t layer = 0; layer < res_.layerCount(); ++layer) {
                     const DsmLayer& l = res_.layers[layer];
-                    gpu::HairDrawPush push{{layer, step, glm::floatBitsToUint(res_.opacityLayer), 0}, l.view.viewer,
-                                           l.view.footprint};
-                    push.footprint.z = float(res_.resolution);
+                    const gpu::DomBuildPush push{layer, step, res_.opacityLayer, res_.resolution, l.view};
                     hair_.dispatchSegments(c.cmd, kernel_.pipeline, push);
                 }
             });

@@ -3,6 +3,7 @@
 #include <string>
 
 #include "core/raster.h"
+#include "dsm/bindings.h"
 
 namespace penumbra {
 
@@ -12,10 +13,12 @@ DeepShadowBuildPass::DeepShadowBuildPass(vk::Allocator& alloc, SceneGpu& scene, 
       casters_(scene.scene().translucentCasterBounds()), depthTest_(depthTest) {
     // Set 0: the scene's draw set (views = the DSM views, materials; set 1 the textures), the hair buffers,
     // then buckets, runs and counters, and for the depth test the lights, the shadow lights and layers
-    // and the opaque casters' shadow map (5-11: both builds, raster and compute, write the lists there).
+    // and the opaque casters' shadow map (DSM_BUILD_*: both builds, raster and compute, write the lists there).
     std::vector<vk::Binding> lists;
-    for (uint32_t i = 5; i <= 10; ++i) lists.push_back({i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
-    lists.push_back({11, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
+    for (uint32_t i : {DSM_BUILD_BUCKETS, DSM_BUILD_RUNS, DSM_BUILD_STATS, DSM_BUILD_LIGHTS, DSM_BUILD_SHADOW_LIGHTS,
+                       DSM_BUILD_SHADOW_LAYERS})
+        lists.push_back({i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
+    lists.push_back({DSM_BUILD_SHADOW_MAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
     std::vector<vk::Binding> b = SceneGpu::drawSetBindings();
     for (const vk::Binding& h : HairGpu::bindings()) b.push_back(h);
     b.insert(b.end(), lists.begin(), lists.end());
@@ -23,32 +26,37 @@ DeepShadowBuildPass::DeepShadowBuildPass(vk::Allocator& alloc, SceneGpu& scene, 
     vk::Context& ctx = alloc.context();
     layout_ = vk::DescriptorLayout(ctx, b);
     if (hair && computeHair) {
-        hairKernel_ = HairGpu::segmentKernel(ctx, "dsm/build_hair.comp", lists);
+        hairKernel_ = HairGpu::segmentKernel(ctx, "dsm/build_hair.comp", lists, sizeof(gpu::DsmBuildPush));
     } else if (hair) {
         hairPipeline_ = vk::Pipeline::graphics(ctx, HairGpu::pipelineDesc("dsm/build_hair.frag"), SceneGpu::drawLayouts(ctx, layout_.handle()),
-                                               sizeof(gpu::HairDrawPush));
+                                               sizeof(gpu::DsmBuildPush));
     }
     const VkDescriptorType ssbo = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
-    offsets_ = vk::ComputeKernel(ctx, "dsm/offsets.comp", {ssbo, ssbo, ssbo, ssbo}, sizeof(gpu::DsmPush));
+    offsets_ = vk::ComputeKernel(ctx, "dsm/offsets.comp",
+                                 std::vector<vk::Binding>{{DSM_OFFSETS_HEADS, ssbo},
+                                                          {DSM_OFFSETS_STATS, ssbo},
+                                                          {DSM_OFFSETS_WORK, ssbo},
+                                                          {DSM_OFFSETS_BUCKETS, ssbo}},
+                                 sizeof(gpu::DsmPush));
     if (hasBlended_) {
         vk::GraphicsDesc d;
-        d.vertexShader = "render/scene.vert";
+        d.vertexShader = "core/scene.vert";
         d.fragmentShader = "dsm/build_mesh.frag";
         d.vertexStride = SceneGpu::vertexStride();
         d.vertexAttributes = SceneGpu::vertexAttributes();
         d.dynamicCullMode = true;  // single-sided blended surfaces cast only from their front
         d.frontFace = SceneGpu::sceneFrontFace(false);
         meshPipeline_ = vk::Pipeline::graphics(ctx, d, SceneGpu::drawLayouts(ctx, layout_.handle()),
-                                               sizeof(gpu::HairDrawPush));
+                                               sizeof(gpu::DsmBuildPush));
     }
 }
 
 // The casters' depth range as dsm/dsm_common.glsl measures depth from `viewer` (from a spot light,
 // along a directional one): the depth buckets' (dsm/depth_buckets.glsl). Only how much the buckets
 // leave out depends on it, not what is kept.
-glm::vec2 DeepShadowBuildPass::casterDepthRange(const glm::vec4& viewer) const {
-    const glm::vec3 eye(viewer);
-    const bool fromPoint = viewer.w > 0.5f;
+glm::vec2 DeepShadowBuildPass::casterDepthRange(const RibbonView& view) const {
+    const glm::vec3 eye = view.viewer;
+    const bool fromPoint = view.viewerIsPoint != 0;
     glm::vec2 range{1e30f, -1e30f};
     for (int corner = 0; corner < 8; ++corner) {
         const glm::vec3 p = casters_.corner(corner);
@@ -59,19 +67,17 @@ glm::vec2 DeepShadowBuildPass::casterDepthRange(const glm::vec4& viewer) const {
     return range;
 }
 
-gpu::HairDrawPush DeepShadowBuildPass::layerPush(uint32_t layer, BuildStep step) const {
+gpu::DsmBuildPush DeepShadowBuildPass::layerPush(uint32_t layer, BuildStep step) const {
     const DsmLayer& l = res_.layers[layer];
     const uint32_t depthTestLight = depthTest_ ? l.light : DSM_NONE;
-    gpu::HairDrawPush push{{layer, 0, depthTestLight, uint32_t(res_.capacity)}, l.view.viewer, l.view.footprint, {}};
-    push.footprint.z = float(res_.resolution);
-    push.buckets = depthBuckets(casterDepthRange(l.view.viewer), res_.bucketCount, step);
-    return push;
+    return {layer, 0, depthTestLight, res_.resolution, l.view,
+            depthBuckets(casterDepthRange(l.view), res_.bucketCount, step)};
 }
 
 void DeepShadowBuildPass::recordLayer(VkCommandBuffer cmd, uint32_t layer, BuildStep step) const {
     RasterTarget target{{res_.resolution, res_.resolution}, {}, VK_NULL_HANDLE};  // no attachments
     beginRaster(cmd, target);
-    gpu::HairDrawPush push = layerPush(layer, step);
+    gpu::DsmBuildPush push = layerPush(layer, step);
     // Both pipelines share one set layout: the set the pass pushed stays bound across them.
     for (const vk::Pipeline* p : {&hairPipeline_, &meshPipeline_}) {
         if (!p->handle()) continue;
@@ -83,7 +89,7 @@ void DeepShadowBuildPass::recordLayer(VkCommandBuffer cmd, uint32_t layer, Build
         scene_.draw(
             cmd,
             [&](const Draw& d) {
-                push.ids.y = d.material;
+                push.material = d.material;
                 p->push(cmd, push);
             },
             [](const Material& m) { return m.alphaMode == AlphaMode::Blend; });
@@ -110,10 +116,10 @@ void DeepShadowBuildPass::addTo(FrameGraph& graph) {
     buckets_ = buckets, runs_ = graph.import(res_.runs), stats_ = stats;
     addRasterPasses(graph, BuildStep::Count);
     PassBuilder offsets = graph.pass("dsm.offsets");
-    offsets.storageBuffer(0, heads, Use::StorageWrite)  // each texel's run
-        .storageBuffer(1, stats, Use::StorageWrite)
-        .storageBuffer(2, work, Use::StorageWrite)
-        .storageBuffer(3, buckets, Use::StorageWrite)  // counts in, places out
+    offsets.storageBuffer(DSM_OFFSETS_HEADS, heads, Use::StorageWrite)  // each texel's run
+        .storageBuffer(DSM_OFFSETS_STATS, stats, Use::StorageWrite)
+        .storageBuffer(DSM_OFFSETS_WORK, work, Use::StorageWrite)
+        .storageBuffer(DSM_OFFSETS_BUCKETS, buckets, Use::StorageWrite)  // counts in, places out
         .pipeline(offsets_.pipeline)
         .record([this](PassContext& c) {
             offsets_.pipeline.push(c.cmd, res_.push());
@@ -137,7 +143,7 @@ void DeepShadowBuildPass::addRasterPasses(FrameGraph& graph, BuildStep step) {
     }
     if (hairKernel_.pipeline.handle()) {
         PassBuilder build = graph.pass(name + ".hair");
-        build.pipeline(hairKernel_.pipeline).storageBuffer(0, graph.import(res_.views.current()));
+        build.pipeline(hairKernel_.pipeline).storageBuffer(HAIR_VIEWS, graph.import(res_.views.current()));
         hair_->declare(build);
         declareLists(build).record([this, step](PassContext& c) {
             for (uint32_t layer = 0; layer < res_.layerCount(); ++layer)
@@ -146,16 +152,16 @@ void DeepShadowBuildPass::addRasterPasses(FrameGraph& graph, BuildStep step) {
     }
 }
 
-// Bindings 5-11 of both builds: buckets and runs, and what the depth test reads.
+// The lists of both builds (DSM_BUILD_*): buckets and runs, and what the depth test reads.
 PassBuilder& DeepShadowBuildPass::declareLists(PassBuilder& pass) const {
     FrameGraph& graph = pass.graph();
-    return pass.storageBuffer(5, buckets_, Use::StorageWrite)
-        .storageBuffer(6, runs_, Use::StorageWrite)
-        .storageBuffer(7, stats_, Use::StorageWrite)
-        .storageBuffer(8, graph.buffer("lights"))
-        .storageBuffer(9, graph.buffer("shadow.lights"))
-        .storageBuffer(10, graph.buffer("shadow.layers"))
-        .sampled(11, graph.image("shadow.map"), nearest_.handle());
+    return pass.storageBuffer(DSM_BUILD_BUCKETS, buckets_, Use::StorageWrite)
+        .storageBuffer(DSM_BUILD_RUNS, runs_, Use::StorageWrite)
+        .storageBuffer(DSM_BUILD_STATS, stats_, Use::StorageWrite)
+        .storageBuffer(DSM_BUILD_LIGHTS, graph.buffer("lights"))
+        .storageBuffer(DSM_BUILD_SHADOW_LIGHTS, graph.buffer("shadow.lights"))
+        .storageBuffer(DSM_BUILD_SHADOW_LAYERS, graph.buffer("shadow.layers"))
+        .sampled(DSM_BUILD_SHADOW_MAP, graph.image("shadow.map"), nearest_.handle());
 }
 
 }  // namespace penumbra

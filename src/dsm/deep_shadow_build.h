@@ -24,8 +24,8 @@ public:
 private:
     void addRasterPasses(FrameGraph& graph, BuildStep step);
     void recordLayer(VkCommandBuffer cmd, uint32_t layer, BuildStep step) const;
-    gpu::HairDrawPush layerPush(uint32_t layer, BuildStep step) const;
-    glm::vec2 casterDepthRange(const glm::vec4& viewer) const;
+    gpu::DsmBuildPush layerPush(uint32_t layer, BuildStep step) const;
+    glm::vec2 casterDepthRange(const RibbonView& view) const;
     PassBuilder& declareLists(PassBuilder& pass) const;
     const vk::Pipeline& setLayoutPipeline() const { return hairPipeline_.handle() ? hairPipeline_ : meshPipeline_; }
     vk::Allocator& alloc_;

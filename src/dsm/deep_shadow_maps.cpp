@@ -131,14 +131,14 @@ DsmFrameStats DeepShadowMaps::readStats(vk::CommandContext& cmd) const {
     gpu::DsmStats g;
     const std::vector<uint8_t> bytes = cmd.readBuffer(res_->stats, sizeof(g));
     std::memcpy(&g, bytes.data(), sizeof(g));
-    s.fragments = g.build.x;
-    s.hidden = g.build.y;
-    s.overflow = g.build.z;
-    s.kept = g.lists.x;
-    s.beyondMaxList = g.lists.y;
-    s.longest = g.lists.z;
-    s.lists = g.lists.w;
-    s.sorted = g.build.w;
+    s.fragments = g.fragments;
+    s.hidden = g.hidden;
+    s.overflow = g.overflow;
+    s.kept = g.kept;
+    s.beyondMaxList = g.beyondMaxList;
+    s.longest = g.longest;
+    s.lists = g.lists;
+    s.sorted = g.runEntries;
     s.usedBytes = s.sorted * DsmResources::kNodeBytes;  // the runs; the sorted lists reuse their indices
     return s;
 }

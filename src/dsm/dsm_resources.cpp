@@ -54,6 +54,7 @@ gpu::GpuDsmLight tableEntry(const DsmLayer& layer, int index, uint32_t resolutio
     gpu::GpuDsmLight g{};
     g.viewProj = layer.projection.viewProj;
     g.viewer = layer.view.viewer;
+    g.viewerIsPoint = layer.view.viewerIsPoint;
     g.texelSize = layer.projection.texelSize;
     g.projection = layer.projection.perspective ? DSM_PROJECTION_PERSPECTIVE : DSM_PROJECTION_ORTHO;
     g.layer = index;

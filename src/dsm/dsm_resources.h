@@ -93,7 +93,7 @@ struct DsmResources {
     uint32_t layerCount() const { return uint32_t(layers.size()); }
     // The push constants of the per-texel passes (offsets, resolve, link).
     gpu::DsmPush push() const {
-        return {{resolution, layerCount(), uint32_t(capacity), maxList}, {bucketCount, 0, 0, 0}};
+        return {resolution, layerCount(), uint32_t(capacity), maxList, bucketCount, 0, 0, 0};
     }
     // Writes frame slot `slot`'s tables from the layers' current projections.
     void writeTables(const DsmSettings& settings, uint32_t slot);

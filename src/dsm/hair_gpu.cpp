@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "dsm/bindings.h"
+
 namespace penumbra {
 namespace {
 
@@ -52,23 +54,22 @@ std::vector<gpu::GpuHairPoint> ribbonPoints(const Scene& scene, const std::vecto
     for (size_t k = 0; k < order.size(); ++k) {
         const Strand& strand = scene.strands[order[k]];
         const glm::vec3* p = &scene.strandPoints[strand.firstPoint];
-        const float index = float(k);
+        const uint32_t index = uint32_t(k);
         const uint32_t n = strand.pointCount;
         // Zero-width copies of the end points bracket the strand (degenerate strip joins).
-        out.push_back({glm::vec4(p[0], 0.0f), glm::vec4(tangentAt(p, n, 0), index)});
-        for (uint32_t i = 0; i < n; ++i)
-            out.push_back({glm::vec4(p[i], strand.width), glm::vec4(tangentAt(p, n, i), index)});
-        out.push_back({glm::vec4(p[n - 1], 0.0f), glm::vec4(tangentAt(p, n, n - 1), index)});
+        out.push_back({p[0], 0.0f, tangentAt(p, n, 0), index});
+        for (uint32_t i = 0; i < n; ++i) out.push_back({p[i], strand.width, tangentAt(p, n, i), index});
+        out.push_back({p[n - 1], 0.0f, tangentAt(p, n, n - 1), index});
     }
     return out;
 }
 
 }  // namespace
 
-glm::vec4 depthBuckets(glm::vec2 range, uint32_t count, BuildStep step) {
+gpu::GpuDepthBuckets depthBuckets(glm::vec2 range, uint32_t count, BuildStep step) {
     const float buckets = float(count);
-    return {range.x, range.y > range.x ? buckets / (range.y - range.x) : 0.0f, buckets,
-            step == BuildStep::Count ? 0.0f : 1.0f};
+    return {range.x, range.y > range.x ? buckets / (range.y - range.x) : 0.0f, count,
+            step == BuildStep::Count ? 0u : 1u};
 }
 
 uint32_t depthBucketCount(vk::Context& ctx, uint64_t cells, uint32_t wanted) {
@@ -78,14 +79,13 @@ uint32_t depthBucketCount(vk::Context& ctx, uint64_t cells, uint32_t wanted) {
 }
 
 RibbonView cameraRibbonView(const glm::vec3& eye, float pixelPerDistance) {
-    return {glm::vec4(eye, 1.0f), glm::vec4(pixelPerDistance, 1.0f, 0.0f, 1.0f)};
+    return {eye, 1u, pixelPerDistance, 1u, 1.0f, 0u};
 }
 
 RibbonView lightRibbonView(const Light& light, const LightProjection& projection) {
-    const glm::vec4 viewer = light.type == LightType::Directional
-                                 ? glm::vec4(-glm::normalize(light.direction), 0.0f)
-                                 : glm::vec4(light.position, 1.0f);
-    return {viewer, glm::vec4(projection.texelSize, projection.perspective ? 1.0f : 0.0f, 0.0f, 1.0f)};
+    const bool directional = light.type == LightType::Directional;
+    return {directional ? -glm::normalize(light.direction) : light.position, directional ? 0u : 1u,
+            projection.texelSize, projection.perspective ? 1u : 0u, 1.0f, 0u};
 }
 
 HairGpu::HairGpu(vk::CommandContext& cmd, const Scene& scene) : strandCount_(uint32_t(scene.strands.size())) {
@@ -109,7 +109,7 @@ HairGpu::HairGpu(vk::CommandContext& cmd, const Scene& scene) : strandCount_(uin
     std::vector<glm::vec3> drawn;
     std::vector<uint32_t> drawnIndex;
     for (uint32_t i = 0; i < points.size(); ++i)
-        if (points[i].position.w > 0.0f) drawn.push_back(glm::vec3(points[i].position)), drawnIndex.push_back(i);
+        if (points[i].width > 0.0f) drawn.push_back(points[i].position), drawnIndex.push_back(i);
     std::vector<uint32_t> spatial = mortonOrder(drawn);
     for (uint32_t& i : spatial) i = drawnIndex[i];
     points_ = cmd.createDeviceBuffer(points.data(), points.size() * sizeof(gpu::GpuHairPoint),
@@ -123,11 +123,11 @@ HairGpu::HairGpu(vk::CommandContext& cmd, const Scene& scene) : strandCount_(uin
 }
 
 std::vector<vk::Binding> HairGpu::bindings() {
-    return {{3, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, {4, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+    return {{HAIR_POINTS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, {HAIR_STRANDS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
 }
 
 void HairGpu::declare(PassBuilder& pass) const {
-    pass.storageBuffer(3, pass.graph().import(points_)).storageBuffer(4, pass.graph().import(strands_));
+    pass.storageBuffer(HAIR_POINTS, pass.graph().import(points_)).storageBuffer(HAIR_STRANDS, pass.graph().import(strands_));
 }
 
 vk::GraphicsDesc HairGpu::pipelineDesc(const std::string& fragmentShader) {
@@ -139,23 +139,14 @@ vk::GraphicsDesc HairGpu::pipelineDesc(const std::string& fragmentShader) {
     return d;
 }
 
-void HairGpu::draw(VkCommandBuffer cmd, const vk::Pipeline& pipeline, const gpu::HairDrawPush& push) const {
-    pipeline.push(cmd, push);
-    vkCmdDraw(cmd, vertexCount_, 1, 0, 0);
-}
+void HairGpu::drawRibbons(VkCommandBuffer cmd) const { vkCmdDraw(cmd, vertexCount_, 1, 0, 0); }
 
 vk::ComputeKernel HairGpu::segmentKernel(vk::Context& ctx, const std::string& shader,
-                                         const std::vector<vk::Binding>& outputs) {
-    std::vector<vk::Binding> b{{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+                                         const std::vector<vk::Binding>& outputs, uint32_t pushBytes) {
+    std::vector<vk::Binding> b{{HAIR_VIEWS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
     for (const vk::Binding& h : bindings()) b.push_back(h);
     b.insert(b.end(), outputs.begin(), outputs.end());
-    return vk::ComputeKernel(ctx, shader, b, sizeof(gpu::HairDrawPush));
-}
-
-void HairGpu::dispatchSegments(VkCommandBuffer cmd, const vk::Pipeline& pipeline,
-                               const gpu::HairDrawPush& push) const {
-    pipeline.push(cmd, push);
-    dispatch64(cmd, pointCount() - 1);
+    return vk::ComputeKernel(ctx, shader, b, pushBytes);
 }
 
 void HairGpu::dispatch64(VkCommandBuffer cmd, uint32_t invocations) {

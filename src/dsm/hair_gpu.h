@@ -11,11 +11,8 @@
 
 namespace penumbra {
 
-// Who a ribbon faces and how large a pixel/texel is there (HairDrawPush.viewer / .footprint).
-struct RibbonView {
-    glm::vec4 viewer{0.0f};
-    glm::vec4 footprint{0.0f};
-};
+// Who a ribbon faces and how large a pixel/texel is there (every hair push's `view`).
+using RibbonView = gpu::GpuRibbonView;
 
 // `pixelPerDistance`: world size of a pixel at unit distance (FrameUniforms.pixelSpread).
 RibbonView cameraRibbonView(const glm::vec3& eye, float pixelPerDistance);
@@ -25,8 +22,8 @@ RibbonView lightRibbonView(const Light& light, const LightProjection& projection
 // The translucent casters' builds (the DSM's and the camera's) make the same fragments twice: first
 // they count them per depth bucket, then they store the kept buckets' (dsm/depth_buckets.glsl).
 enum class BuildStep { Count, Store };
-// HairDrawPush.buckets: `count` depth buckets over the casters' depths [range.x, range.y], for `step`.
-glm::vec4 depthBuckets(glm::vec2 range, uint32_t count, BuildStep step);
+// `count` depth buckets over the casters' depths [range.x, range.y], for `step`.
+gpu::GpuDepthBuckets depthBuckets(glm::vec2 range, uint32_t count, BuildStep step);
 // How many depth buckets (`wanted`, or fewer where those would not fit one storage buffer) `cells`
 // texels or pixels get.
 uint32_t depthBucketCount(vk::Context& ctx, uint64_t cells, uint32_t wanted);
@@ -35,20 +32,27 @@ class HairGpu {
 public:
     HairGpu(vk::CommandContext& cmd, const Scene& scene);
 
-    // Bindings 3 (points) and 4 (strand colour and opacity) of the hair pipelines' set 0.
+    // The points and the strands' colour and opacity (HAIR_POINTS, HAIR_STRANDS) of the hair pipelines' set 0.
     static std::vector<vk::Binding> bindings();
     void declare(PassBuilder& pass) const;
     // A ribbon pipeline: dsm/hair.vert, no vertex input, triangle strip, no culling.
     static vk::GraphicsDesc pipelineDesc(const std::string& fragmentShader);
-    // Every ribbon of the scene in one draw; `push` says which view.
-    void draw(VkCommandBuffer cmd, const vk::Pipeline& pipeline, const gpu::HairDrawPush& push) const;
-    // A compute raster of the ribbons (dsm/ribbon_raster.glsl): set 0 holds the views (0) and the hair
-    // buffers (3, 4) that every such kernel reads, then the kernel's own `outputs`.
+    // Every ribbon of the scene in one draw; `push` (a hair push of dsm/types.h) says which view.
+    template <class Push> void draw(VkCommandBuffer cmd, const vk::Pipeline& pipeline, const Push& push) const {
+        pipeline.push(cmd, push);
+        drawRibbons(cmd);
+    }
+    // A compute raster of the ribbons (dsm/ribbon_raster.glsl): set 0 holds the views and the hair
+    // buffers (HAIR_*) that every such kernel reads, then the kernel's own `outputs`; `pushBytes`: its push's.
     static vk::ComputeKernel segmentKernel(vk::Context& ctx, const std::string& shader,
-                                           const std::vector<vk::Binding>& outputs);
+                                           const std::vector<vk::Binding>& outputs, uint32_t pushBytes);
     // Every ribbon segment in one dispatch of a compute raster (dsm/ribbon_raster.glsl: 64 segments
     // per group, groups in 2D); `push` says which view.
-    void dispatchSegments(VkCommandBuffer cmd, const vk::Pipeline& pipeline, const gpu::HairDrawPush& push) const;
+    template <class Push>
+    void dispatchSegments(VkCommandBuffer cmd, const vk::Pipeline& pipeline, const Push& push) const {
+        pipeline.push(cmd, push);
+        dispatch64(cmd, pointCount() - 1);
+    }
     // One invocation per drawn point (spatialPoints()), 64 per group, groups in 2D.
     void dispatchDrawnPoints(VkCommandBuffer cmd) const { dispatch64(cmd, drawnPointCount_); }
 
@@ -64,6 +68,7 @@ public:
 
 private:
     static void dispatch64(VkCommandBuffer cmd, uint32_t invocations);
+    void drawRibbons(VkCommandBuffer cmd) const;
     vk::Buffer points_, strands_, spatialPoints_;
     uint32_t vertexCount_ = 0, strandCount_ = 0, drawnPointCount_ = 0;
 };

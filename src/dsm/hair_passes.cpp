@@ -3,25 +3,24 @@
 #include <stdexcept>
 
 #include "core/raster.h"
+#include "dsm/bindings.h"
 
 namespace penumbra {
 namespace {
 
-// Set 0 of the ribbon passes that only draw: the views (binding 0) and the hair buffers (3, 4).
+// Set 0 of the ribbon passes that only draw: the views and the hair buffers.
 vk::DescriptorLayout ribbonLayout(vk::Context& ctx) {
-    std::vector<vk::Binding> b{{0, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
+    std::vector<vk::Binding> b{{HAIR_VIEWS, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}};
     for (const vk::Binding& h : HairGpu::bindings()) b.push_back(h);
     return vk::DescriptorLayout(ctx, b);
 }
 
 void declareRibbonSet(PassBuilder& pass, const HairGpu& hair) {
-    pass.storageBuffer(0, pass.graph().buffer("views"));
+    pass.storageBuffer(HAIR_VIEWS, pass.graph().buffer("views"));
     hair.declare(pass);
 }
 
-gpu::HairDrawPush ribbonPush(uint32_t viewRow, const RibbonView& v) {
-    return {{viewRow, 0, 0, 0}, v.viewer, v.footprint};
-}
+gpu::RibbonDrawPush ribbonPush(uint32_t viewRow, const RibbonView& v) { return {viewRow, 0, 0, 0, v}; }
 
 }  // namespace
 
@@ -35,7 +34,7 @@ void HairGBufferPass::makePipeline(const vk::Image& albedo, const vk::Image& nor
     if (depth.format() != VK_FORMAT_D32_SFLOAT)  // GBufferPass was not told `rasterAfter`
         throw std::logic_error("hair.gbuffer: the camera's depth is not a depth image");
     d.depthFormat = depth.format();
-    pipeline_ = vk::Pipeline::graphics(alloc_.context(), d, {layout_.handle()}, sizeof(gpu::HairDrawPush));
+    pipeline_ = vk::Pipeline::graphics(alloc_.context(), d, {layout_.handle()}, sizeof(gpu::RibbonDrawPush));
 }
 
 void HairGBufferPass::addTo(FrameGraph& graph, const RibbonView& camera) {
@@ -62,7 +61,7 @@ HairShadowPass::HairShadowPass(vk::Allocator& alloc, const HairGpu& hair, float 
     vk::GraphicsDesc d = HairGpu::pipelineDesc("");
     d.depthFormat = VK_FORMAT_D32_SFLOAT;
     d.depthBias = true;
-    pipeline_ = vk::Pipeline::graphics(alloc.context(), d, {layout_.handle()}, sizeof(gpu::HairDrawPush));
+    pipeline_ = vk::Pipeline::graphics(alloc.context(), d, {layout_.handle()}, sizeof(gpu::RibbonDrawPush));
 }
 
 void HairShadowPass::addTo(FrameGraph& graph, std::vector<HairShadowLayer> layers) {

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "core/raster.h"
+#include "dsm/bindings.h"
 
 namespace penumbra {
 namespace {
@@ -30,66 +31,85 @@ CameraTranslucency::CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, co
     capacity_ = std::min(pixels * kNodesPerPixel, devicePoolLimit(ctx));
     const VkBufferUsageFlags usage =
         VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
-    heads_ = vk::Buffer(alloc, pixels * 4 * OIT_HEADER_UINTS, usage, false, "oit-heads");
-    nodes_ = vk::Buffer(alloc, capacity_ * 16, usage, false, "oit-nodes");
-    normals_ = vk::Buffer(alloc, capacity_ * 4, usage, false, "oit-normals");
+    heads_ = vk::Buffer(alloc, pixels * sizeof(uint32_t) * OIT_HEADER_UINTS, usage, false, "oit-heads");
+    nodes_ = vk::Buffer(alloc, capacity_ * sizeof(glm::uvec4), usage, false, "oit-nodes");
+    normals_ = vk::Buffer(alloc, capacity_ * sizeof(uint32_t), usage, false, "oit-normals");
     stats_ = vk::Buffer(alloc, sizeof(gpu::OitStats), usage, false, "oit-stats");
     bucketCount_ = depthBucketCount(ctx, pixels, kBuckets);
-    buckets_ = vk::Buffer(alloc, pixels * 4 * bucketCount_, usage, false, "oit-buckets");
-    tails_ = vk::Buffer(alloc, pixels * 8, usage, false, "oit-tails");
-    layers_ = vk::Buffer(alloc, 16 + 8 * capacity_, usage, false, "oit-kept-layers");  // kept <= stored nodes
-    shadeArgs_ = vk::Buffer(alloc, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, false,
-                            "oit-shade-args");
+    buckets_ = vk::Buffer(alloc, pixels * sizeof(uint32_t) * bucketCount_, usage, false, "oit-buckets");
+    tails_ = vk::Buffer(alloc, pixels * sizeof(uint64_t), usage, false, "oit-tails");
+    layers_ = vk::Buffer(alloc, sizeof(glm::uvec4) + sizeof(glm::uvec2) * capacity_, usage, false,
+                         "oit-kept-layers");  // a header, then (node, pixel) per kept node <= stored nodes
+    shadeArgs_ = vk::Buffer(alloc, sizeof(glm::uvec4),  // render/indirect_args.comp's uvec4
+                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, false, "oit-shade-args");
     const size_t lights = std::max<size_t>(scene.scene().lights.size(), 1);
-    hairShadow_ = vk::Buffer(alloc, hair_ ? VkDeviceSize(lights) * hair_->pointCount() * 4 : 4,
+    hairShadow_ = vk::Buffer(alloc, hair_ ? VkDeviceSize(lights) * hair_->pointCount() * sizeof(float) : sizeof(float),
                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, false, "oit-hair-shadow");
 
-    // Build set: the scene's draw set (0, 1 and the instances; set 1 its textures), the hair buffers
-    // (3, 4), then nodes, normals, counters, the opaque depth, the depth buckets and the tails' sums
-    // (6-11: both builds, raster and compute, write the runs there; oit.offsets writes the heads).
-    std::vector<vk::Binding> lists;
-    for (uint32_t i = 6; i <= 8; ++i) lists.push_back({i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
-    lists.push_back({9, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER});
-    for (uint32_t i = 10; i <= 11; ++i) lists.push_back({i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
+    // Build set: the scene's draw set (set 1 its textures), the hair buffers, then nodes, normals,
+    // counters, the opaque depth, the depth buckets and the tails' sums (OIT_BUILD_*: both builds,
+    // raster and compute, write the runs there; oit.offsets writes the heads).
+    const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                           uniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    const std::vector<vk::Binding> lists{{OIT_BUILD_NODES, storage},        {OIT_BUILD_NORMALS, storage},
+                                         {OIT_BUILD_STATS, storage},        {OIT_BUILD_OPAQUE_DEPTH, sampled},
+                                         {OIT_BUILD_BUCKETS, storage},      {OIT_BUILD_TAILS, storage}};
     std::vector<vk::Binding> b = SceneGpu::drawSetBindings();
     for (const vk::Binding& h : HairGpu::bindings()) b.push_back(h);
     b.insert(b.end(), lists.begin(), lists.end());
     buildLayout_ = vk::DescriptorLayout(ctx, b);
     if (hair_ && computeHair)
-        hairKernel_ = HairGpu::segmentKernel(ctx, "dsm/oit_hair.comp", lists);
+        hairKernel_ = HairGpu::segmentKernel(ctx, "dsm/oit_hair.comp", lists, sizeof(gpu::OitBuildPush));
     else if (hair_)
         hairPipeline_ = vk::Pipeline::graphics(ctx, HairGpu::pipelineDesc("dsm/oit_hair.frag"),
-                                               SceneGpu::drawLayouts(ctx, buildLayout_.handle()), sizeof(gpu::HairDrawPush));
+                                               SceneGpu::drawLayouts(ctx, buildLayout_.handle()), sizeof(gpu::OitBuildPush));
     if (hasBlended_) {
         vk::GraphicsDesc d;
-        d.vertexShader = "render/scene.vert";
+        d.vertexShader = "core/scene.vert";
         d.fragmentShader = "dsm/oit_mesh.frag";
         d.vertexStride = SceneGpu::vertexStride();
         d.vertexAttributes = SceneGpu::vertexAttributes();
         d.dynamicCullMode = true;  // single-sided blended surfaces are invisible from behind
         d.frontFace = SceneGpu::sceneFrontFace(true);
-        meshPipeline_ = vk::Pipeline::graphics(ctx, d, SceneGpu::drawLayouts(ctx, buildLayout_.handle()), sizeof(gpu::HairDrawPush));
+        meshPipeline_ = vk::Pipeline::graphics(ctx, d, SceneGpu::drawLayouts(ctx, buildLayout_.handle()), sizeof(gpu::OitBuildPush));
     }
 
-    const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                           uniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-    offsets_ = vk::ComputeKernel(ctx, "dsm/oit_offsets.comp", {storage, storage, storage, storage}, sizeof(gpu::OitPush));
-    sort_ = vk::ComputeKernel(ctx, "dsm/oit_sort.comp", {storage, storage, storage, storage, storage, storage, storage},
+    offsets_ = vk::ComputeKernel(ctx, "dsm/oit_offsets.comp",
+                                 std::vector<vk::Binding>{{OIT_OFFSETS_BUCKETS, storage},
+                                                          {OIT_OFFSETS_STATS, storage},
+                                                          {OIT_OFFSETS_HEADS, storage},
+                                                          {OIT_OFFSETS_TAILS, storage}},
+                                 sizeof(gpu::OitPush));
+    sort_ = vk::ComputeKernel(ctx, "dsm/oit_sort.comp",
+                              std::vector<vk::Binding>{{OIT_SORT_HEADS, storage}, {OIT_SORT_NODES, storage},
+                                                       {OIT_SORT_NORMALS, storage}, {OIT_SORT_STATS, storage},
+                                                       {OIT_SORT_LAYERS, storage}, {OIT_SORT_TAILS, storage},
+                                                       {OIT_SORT_BUCKETS, storage}},
                               sizeof(gpu::OitPush));
     args_ = vk::ComputeKernel(ctx, "render/indirect_args.comp", {storage, storage}, sizeof(uint32_t));
-    shade_ = vk::ComputeKernel(ctx, "dsm/oit_shade.comp",
-                               {uniform, storage, storage, storage, storage, sampled, uniform, storage, storage, storage,
-                                storage, storage, sampled, sampled, storage, storage, storage},
-                               0);
-    if (hair_)  // the shade pass's bindings of lights, shadows and hair (0, 1, 6-16) and the points' order (17)
-        hairShadowKernel_ = vk::ComputeKernel(
-            ctx, "dsm/oit_hair_shadow.comp",
-            std::vector<vk::Binding>{{0, uniform}, {1, storage}, {6, uniform}, {7, storage}, {8, storage}, {9, storage},
-                                     {10, storage}, {11, storage}, {12, sampled}, {13, sampled}, {14, storage},
-                                     {15, storage}, {16, storage}, {17, storage}},
-            0);
+    // The shade pass's bindings of lights, shadows and hair, which oit.hair-shadow shares.
+    const std::vector<vk::Binding> shadows{
+        {OIT_SHADE_FRAME, uniform},          {OIT_SHADE_LIGHTS, storage},         {OIT_SHADE_SHADOW_PARAMS, uniform},
+        {OIT_SHADE_SHADOW_LAYERS, storage},  {DSM_LOOKUP_LIGHTS, storage},        {DSM_LOOKUP_HEADS, storage},
+        {DSM_LOOKUP_NODES, storage},         {DSM_LOOKUP_SIDE, storage},          {OIT_SHADE_SHADOW_DEPTH, sampled},
+        {OIT_SHADE_SHADOW_MOMENTS, sampled}, {OIT_SHADE_SHADOW_LIGHTS, storage},  {OIT_SHADE_HAIR_SHADOW, storage},
+        {OIT_SHADE_HAIR_POINTS, storage}};
+    std::vector<vk::Binding> shade = shadows;
+    shade.insert(shade.end(), {{OIT_SHADE_LAYERS, storage}, {OIT_SHADE_NODES, storage}, {OIT_SHADE_NORMALS, storage},
+                               {OIT_SHADE_INDIRECT, sampled}});
+    shade_ = vk::ComputeKernel(ctx, "dsm/oit_shade.comp", shade, 0);
+    if (hair_) {  // and the points' order
+        std::vector<vk::Binding> hairShadow = shadows;
+        hairShadow.push_back({OIT_HAIR_SHADOW_SPATIAL, storage});
+        hairShadowKernel_ = vk::ComputeKernel(ctx, "dsm/oit_hair_shadow.comp", hairShadow, 0);
+    }
     blend_ = vk::ComputeKernel(ctx, "dsm/oit_blend.comp",
-                               {uniform, storage, storage, storage, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, sizeof(gpu::OitPush));
+                               std::vector<vk::Binding>{{OIT_BLEND_FRAME, uniform},
+                                                        {OIT_BLEND_HEADS, storage},
+                                                        {OIT_BLEND_LAYERS, storage},
+                                                        {OIT_BLEND_NODES, storage},
+                                                        {OIT_BLEND_HDR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}},
+                               sizeof(gpu::OitPush));
     // The shadow map's samplers as shadow.filter makes them (the border reads as lit).
     nearest_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
     border_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER, false, false});
@@ -98,7 +118,7 @@ CameraTranslucency::CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, co
 
 // The depth buckets over the casters' window depths (their bounds' corners; 0 for a corner behind the
 // eye): only how much the buckets leave out depends on it, not what is kept (dsm/depth_buckets.glsl).
-gpu::HairDrawPush CameraTranslucency::cameraPush(const RibbonView& camera, const glm::mat4& viewProj,
+gpu::OitBuildPush CameraTranslucency::cameraPush(const RibbonView& camera, const glm::mat4& viewProj,
                                                 BuildStep step) const {
     glm::vec2 range{1.0f, 0.0f};
     for (int corner = 0; corner < 8; ++corner) {
@@ -106,12 +126,12 @@ gpu::HairDrawPush CameraTranslucency::cameraPush(const RibbonView& camera, const
         const float depth = clip.w > 0.0f ? glm::clamp(clip.z / clip.w, 0.0f, 1.0f) : 0.0f;
         range = {std::min(range.x, depth), std::max(range.y, depth)};
     }
-    return {{0, 0, width_, uint32_t(capacity_)}, camera.viewer, camera.footprint, depthBuckets(range, bucketCount_, step)};
+    return {0, 0, width_, 0, camera, depthBuckets(range, bucketCount_, step)};
 }
 
-void CameraTranslucency::recordBuild(VkCommandBuffer cmd, const gpu::HairDrawPush& cameraPush) const {
+void CameraTranslucency::recordBuild(VkCommandBuffer cmd, const gpu::OitBuildPush& cameraPush) const {
     beginRaster(cmd, {{width_, height_}, {}, VK_NULL_HANDLE});  // no attachments: the lists are the output
-    gpu::HairDrawPush push = cameraPush;
+    gpu::OitBuildPush push = cameraPush;
     if (hairPipeline_.handle()) {
         hairPipeline_.bind(cmd);
         hair_->draw(cmd, hairPipeline_, push);
@@ -121,7 +141,7 @@ void CameraTranslucency::recordBuild(VkCommandBuffer cmd, const gpu::HairDrawPus
         scene_.draw(
             cmd,
             [&](const Draw& d) {
-                push.ids.y = d.material;
+                push.material = d.material;
                 meshPipeline_.push(cmd, push);
             },
             [](const Material& m) { return m.alphaMode == AlphaMode::Blend; });
@@ -152,13 +172,13 @@ void CameraTranslucency::addBuildTo(FrameGraph& graph, const RibbonView& camera,
         });
     lists_ = {nodes, normals, stats, buckets, tails};
     addBuildPasses(graph, cameraPush(camera, viewProj, BuildStep::Count), "oit.count");
-    const gpu::OitPush push{{width_, height_, uint32_t(capacity_), bucketCount_}};
+    const gpu::OitPush push{width_, height_, uint32_t(capacity_), bucketCount_};
     graph.pass("oit.offsets")
         .pipeline(offsets_.pipeline)
-        .storageBuffer(0, buckets, Use::StorageWrite)  // counts in, places out
-        .storageBuffer(1, stats, Use::StorageWrite)
-        .storageBuffer(2, heads, Use::StorageWrite)  // each pixel's run
-        .storageBuffer(3, tails)                     // which pixels have fragments
+        .storageBuffer(OIT_OFFSETS_BUCKETS, buckets, Use::StorageWrite)  // counts in, places out
+        .storageBuffer(OIT_OFFSETS_STATS, stats, Use::StorageWrite)
+        .storageBuffer(OIT_OFFSETS_HEADS, heads, Use::StorageWrite)  // each pixel's run
+        .storageBuffer(OIT_OFFSETS_TAILS, tails)                     // which pixels have fragments
         .record([this, push](PassContext& c) {
             offsets_.pipeline.push(c.cmd, push);
             vkCmdDispatch(c.cmd, vk::divUp(width_, 8), vk::divUp(height_, 8), 1);
@@ -168,7 +188,7 @@ void CameraTranslucency::addBuildTo(FrameGraph& graph, const RibbonView& camera,
 
 // One step of the build: the raster (BLEND meshes, and hair without computeHair) and the compute
 // hair, the same pipelines both steps, so that both make the same fragments.
-void CameraTranslucency::addBuildPasses(FrameGraph& graph, const gpu::HairDrawPush& push, const std::string& name) {
+void CameraTranslucency::addBuildPasses(FrameGraph& graph, const gpu::OitBuildPush& push, const std::string& name) {
     if (hasBlended_ || hairPipeline_.handle()) {
         PassBuilder build = graph.pass(name, PassKind::Raster);
         build.pipeline(hairPipeline_.handle() ? hairPipeline_ : meshPipeline_);
@@ -178,20 +198,21 @@ void CameraTranslucency::addBuildPasses(FrameGraph& graph, const gpu::HairDrawPu
     }
     if (hairKernel_.pipeline.handle()) {
         PassBuilder build = graph.pass(name + ".hair");
-        build.pipeline(hairKernel_.pipeline).storageBuffer(0, graph.buffer("views"));
+        build.pipeline(hairKernel_.pipeline).storageBuffer(HAIR_VIEWS, graph.buffer("views"));
         hair_->declare(build);
         declareLists(build).record([this, push](PassContext& c) { hair_->dispatchSegments(c.cmd, hairKernel_.pipeline, push); });
     }
 }
 
-// Bindings 6-11 of both builds: the runs, the opaque depth they are tested against, the buckets and sums.
+// The lists of both builds (OIT_BUILD_*): the runs, the opaque depth they are tested against, the
+// buckets and sums.
 PassBuilder& CameraTranslucency::declareLists(PassBuilder& pass) const {
-    return pass.storageBuffer(6, lists_[0], Use::StorageWrite)
-        .storageBuffer(7, lists_[1], Use::StorageWrite)
-        .storageBuffer(8, lists_[2], Use::StorageWrite)
-        .sampled(9, pass.graph().image("gbuffer.depth"), nearest_.handle())
-        .storageBuffer(10, lists_[3], Use::StorageWrite)
-        .storageBuffer(11, lists_[4], Use::StorageWrite);
+    return pass.storageBuffer(OIT_BUILD_NODES, lists_[0], Use::StorageWrite)
+        .storageBuffer(OIT_BUILD_NORMALS, lists_[1], Use::StorageWrite)
+        .storageBuffer(OIT_BUILD_STATS, lists_[2], Use::StorageWrite)
+        .sampled(OIT_BUILD_OPAQUE_DEPTH, pass.graph().image("gbuffer.depth"), nearest_.handle())
+        .storageBuffer(OIT_BUILD_BUCKETS, lists_[3], Use::StorageWrite)
+        .storageBuffer(OIT_BUILD_TAILS, lists_[4], Use::StorageWrite);
 }
 
 // oit.sort (per pixel) -> oit.shade-args -> oit.shade (per kept layer, indirect) -> oit.blend (per pixel).
@@ -199,18 +220,18 @@ void CameraTranslucency::addCompositeTo(FrameGraph& graph) {
     if (!active()) return;
     const BufferHandle heads = graph.import(heads_), nodes = graph.import(nodes_), normals = graph.import(normals_),
                        layers = graph.import(layers_), args = graph.import(shadeArgs_);
-    const gpu::OitPush push{{width_, height_, uint32_t(capacity_), bucketCount_}};
+    const gpu::OitPush push{width_, height_, uint32_t(capacity_), bucketCount_};
     const uint32_t groupsX = vk::divUp(width_, 8), groupsY = vk::divUp(height_, 8);
     if (hair_) addHairShadowTo(graph);
     graph.pass("oit.sort")
         .pipeline(sort_.pipeline)
-        .storageBuffer(0, heads, Use::StorageWrite)
-        .storageBuffer(1, nodes, Use::StorageRead)
-        .storageBuffer(2, normals, Use::StorageRead)
-        .storageBuffer(3, graph.import(stats_), Use::StorageWrite)
-        .storageBuffer(4, layers, Use::StorageWrite)
-        .storageBuffer(5, graph.import(tails_), Use::StorageWrite)  // read, then zeroed where not 0
-        .storageBuffer(6, graph.import(buckets_), Use::StorageWrite)  // zeroed with them
+        .storageBuffer(OIT_SORT_HEADS, heads, Use::StorageWrite)
+        .storageBuffer(OIT_SORT_NODES, nodes, Use::StorageRead)
+        .storageBuffer(OIT_SORT_NORMALS, normals, Use::StorageRead)
+        .storageBuffer(OIT_SORT_STATS, graph.import(stats_), Use::StorageWrite)
+        .storageBuffer(OIT_SORT_LAYERS, layers, Use::StorageWrite)
+        .storageBuffer(OIT_SORT_TAILS, graph.import(tails_), Use::StorageWrite)  // read, then zeroed where not 0
+        .storageBuffer(OIT_SORT_BUCKETS, graph.import(buckets_), Use::StorageWrite)  // zeroed with them
         .record([this, push, groupsX, groupsY](PassContext& c) {
             sort_.pipeline.push(c.cmd, push);
             vkCmdDispatch(c.cmd, groupsX, groupsY, 1);
@@ -226,50 +247,50 @@ void CameraTranslucency::addCompositeTo(FrameGraph& graph) {
     PassBuilder shade = graph.pass("oit.shade");
     shade.pipeline(shade_.pipeline)
         .use(args, Use::IndirectArgs)
-        .storageBuffer(2, layers, Use::StorageRead)
-        .storageBuffer(3, nodes, Use::StorageWrite)
-        .storageBuffer(4, normals, Use::StorageRead)
-        .sampled(5, graph.image("gi.irradiance"), nearest_.handle())
-        .storageBuffer(15, graph.import(hairShadow_))
-        .storageBuffer(16, hair_ ? graph.import(hair_->points()) : heads);  // no hair: never read
+        .storageBuffer(OIT_SHADE_LAYERS, layers, Use::StorageRead)
+        .storageBuffer(OIT_SHADE_NODES, nodes, Use::StorageWrite)
+        .storageBuffer(OIT_SHADE_NORMALS, normals, Use::StorageRead)
+        .sampled(OIT_SHADE_INDIRECT, graph.image("gi.irradiance"), nearest_.handle())
+        .storageBuffer(OIT_SHADE_HAIR_SHADOW, graph.import(hairShadow_))
+        .storageBuffer(OIT_SHADE_HAIR_POINTS, hair_ ? graph.import(hair_->points()) : heads);  // no hair: never read
     declareShadows(shade).record([args](PassContext& c) { vkCmdDispatchIndirect(c.cmd, c.buffer(args).handle(), 0); });
     graph.pass("oit.blend")
         .pipeline(blend_.pipeline)
-        .uniform(0, graph.buffer("frame"))
-        .storageBuffer(1, heads, Use::StorageRead)
-        .storageBuffer(2, layers, Use::StorageRead)
-        .storageBuffer(3, nodes, Use::StorageRead)
-        .storageImage(4, graph.image("hdr"))
+        .uniform(OIT_BLEND_FRAME, graph.buffer("frame"))
+        .storageBuffer(OIT_BLEND_HEADS, heads, Use::StorageRead)
+        .storageBuffer(OIT_BLEND_LAYERS, layers, Use::StorageRead)
+        .storageBuffer(OIT_BLEND_NODES, nodes, Use::StorageRead)
+        .storageImage(OIT_BLEND_HDR, graph.image("hdr"))
         .record([this, push, groupsX, groupsY](PassContext& c) {
             blend_.pipeline.push(c.cmd, push);
             vkCmdDispatch(c.cmd, groupsX, groupsY, 1);
         });
 }
 
-// Bindings 0, 1 and 6-14 of oit.shade and oit.hair-shadow: the frame, the lights, their shadow maps
-// and deep shadow maps.
+// What oit.shade and oit.hair-shadow both read: the frame, the lights, their shadow maps and deep
+// shadow maps.
 PassBuilder& CameraTranslucency::declareShadows(PassBuilder& pass) const {
     FrameGraph& graph = pass.graph();
-    return pass.uniform(0, graph.buffer("frame"))
-        .storageBuffer(1, graph.buffer("lights"))
-        .uniform(6, graph.buffer("shadow.params"))
-        .storageBuffer(7, graph.buffer("shadow.layers"))
-        .storageBuffer(8, graph.buffer("dsm.lights"))
-        .storageBuffer(9, graph.buffer("dsm.heads"))
-        .storageBuffer(10, graph.buffer("dsm.nodes"))
-        .storageBuffer(11, graph.buffer("dsm.side"))
-        .sampled(12, graph.image("shadow.map"), border_.handle())
-        .sampled(13, graph.image("shadow.moments"), moments_.handle())
-        .storageBuffer(14, graph.buffer("shadow.lights"));
+    return pass.uniform(OIT_SHADE_FRAME, graph.buffer("frame"))
+        .storageBuffer(OIT_SHADE_LIGHTS, graph.buffer("lights"))
+        .uniform(OIT_SHADE_SHADOW_PARAMS, graph.buffer("shadow.params"))
+        .storageBuffer(OIT_SHADE_SHADOW_LAYERS, graph.buffer("shadow.layers"))
+        .storageBuffer(DSM_LOOKUP_LIGHTS, graph.buffer("dsm.lights"))
+        .storageBuffer(DSM_LOOKUP_HEADS, graph.buffer("dsm.heads"))
+        .storageBuffer(DSM_LOOKUP_NODES, graph.buffer("dsm.nodes"))
+        .storageBuffer(DSM_LOOKUP_SIDE, graph.buffer("dsm.side"))
+        .sampled(OIT_SHADE_SHADOW_DEPTH, graph.image("shadow.map"), border_.handle())
+        .sampled(OIT_SHADE_SHADOW_MOMENTS, graph.image("shadow.moments"), moments_.handle())
+        .storageBuffer(OIT_SHADE_SHADOW_LIGHTS, graph.buffer("shadow.lights"));
 }
 
 // One invocation per drawn hair point, in their Morton order.
 void CameraTranslucency::addHairShadowTo(FrameGraph& graph) {
     PassBuilder pass = graph.pass("oit.hair-shadow");
     pass.pipeline(hairShadowKernel_.pipeline)
-        .storageBuffer(15, graph.import(hairShadow_), Use::StorageWrite)
-        .storageBuffer(16, graph.import(hair_->points()))
-        .storageBuffer(17, graph.import(hair_->spatialPoints()));
+        .storageBuffer(OIT_SHADE_HAIR_SHADOW, graph.import(hairShadow_), Use::StorageWrite)
+        .storageBuffer(OIT_SHADE_HAIR_POINTS, graph.import(hair_->points()))
+        .storageBuffer(OIT_HAIR_SHADOW_SPATIAL, graph.import(hair_->spatialPoints()));
     declareShadows(pass).record([this](PassContext& c) { hair_->dispatchDrawnPoints(c.cmd); });
 }
 
@@ -280,12 +301,12 @@ OitFrameStats CameraTranslucency::readStats(vk::CommandContext& cmd) const {
     const std::vector<uint8_t> bytes = cmd.readBuffer(stats_, sizeof(g));
     std::memcpy(&g, bytes.data(), sizeof(g));
     s.capacity = capacity_;
-    s.fragments = g.cut.x;
-    s.leftOut = g.cut.y;
-    s.overflow = g.cut.z;
-    s.kept = g.counts.y;
-    s.beyondMaxList = g.counts.z;
-    s.longest = g.counts.w;
+    s.fragments = g.fragments;
+    s.leftOut = g.leftOut;
+    s.overflow = g.overflow;
+    s.kept = g.kept;
+    s.beyondMaxList = g.beyondMaxList;
+    s.longest = g.longest;
     s.poolBytes = capacity_ * kNodeBytes;
     return s;
 }

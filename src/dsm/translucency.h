@@ -53,11 +53,11 @@ public:
     static constexpr uint32_t kBuckets = OIT_BUCKETS;  // depth buckets per pixel
 
 private:
-    void addBuildPasses(FrameGraph& graph, const gpu::HairDrawPush& push, const std::string& name);
+    void addBuildPasses(FrameGraph& graph, const gpu::OitBuildPush& push, const std::string& name);
     void addHairShadowTo(FrameGraph& graph);
     PassBuilder& declareShadows(PassBuilder& pass) const;
-    void recordBuild(VkCommandBuffer cmd, const gpu::HairDrawPush& cameraPush) const;
-    gpu::HairDrawPush cameraPush(const RibbonView& camera, const glm::mat4& viewProj, BuildStep step) const;
+    void recordBuild(VkCommandBuffer cmd, const gpu::OitBuildPush& cameraPush) const;
+    gpu::OitBuildPush cameraPush(const RibbonView& camera, const glm::mat4& viewProj, BuildStep step) const;
     PassBuilder& declareLists(PassBuilder& pass) const;
     vk::Allocator& alloc_;
     SceneGpu& scene_;

@@ -1,7 +1,7 @@
 #include "lighting/gbuffer_pass.h"
 
 #include "core/raster.h"
-#include "render/gbuffer_bindings.h"
+#include "lighting/gbuffer_bindings.h"
 
 namespace penumbra {
 
@@ -26,8 +26,8 @@ GBufferPass::GBufferPass(vk::Allocator& alloc, SceneGpu& scene, uint32_t width, 
                                   VK_IMAGE_USAGE_TRANSFER_DST_BIT,
                               "gbuffer-depth"});
     vk::GraphicsDesc d;
-    d.vertexShader = "render/scene.vert";
-    d.fragmentShader = visibility ? "render/visibility.frag" : "render/gbuffer.frag";
+    d.vertexShader = "core/scene.vert";
+    d.fragmentShader = visibility ? "core/visibility.frag" : "lighting/gbuffer.frag";
     d.depthFormat = VK_FORMAT_D32_SFLOAT;
     d.vertexStride = SceneGpu::vertexStride();
     d.vertexAttributes = SceneGpu::vertexAttributes();
@@ -43,12 +43,11 @@ GBufferPass::GBufferPass(vk::Allocator& alloc, SceneGpu& scene, uint32_t width, 
                                 VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_STORAGE_BIT,
                             "gbuffer-ids"});
     if (computeRaster) {  // the compute rasterizer draws the IDs: no raster pipelines
-        compute_ = std::make_unique<ComputeRaster>(alloc, scene, VkExtent2D{width, height}, 1,
-                                                   ComputeRaster::Views::Camera);
+        compute_ = makeDepthRaster(alloc, scene, VkExtent2D{width, height}, 1, DepthRaster::Views::Camera);
     } else {
         d.colorFormats = {ids.format()};
         pipeline_ = vk::Pipeline::graphics(ctx, d, SceneGpu::drawLayouts(ctx, drawLayout), sizeof(gpu::DrawPush));
-        d.fragmentShader = "render/visibility_masked.frag";
+        d.fragmentShader = "core/visibility_masked.frag";
         masked_ = vk::Pipeline::graphics(ctx, d, SceneGpu::drawLayouts(ctx, drawLayout), sizeof(gpu::DrawPush));
     }
     std::vector<vk::Binding> bindings = SceneGpu::resolveSetBindings();
@@ -57,7 +56,7 @@ GBufferPass::GBufferPass(vk::Allocator& alloc, SceneGpu& scene, uint32_t width, 
     bindings.push_back({VISIBILITY_RESOLVE_ALBEDO, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
     bindings.push_back({VISIBILITY_RESOLVE_NORMAL, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
     resolveLayout_ = vk::DescriptorLayout(ctx, bindings);
-    resolve_ = vk::Pipeline::compute(ctx, "render/visibility_resolve.comp",
+    resolve_ = vk::Pipeline::compute(ctx, "lighting/visibility_resolve.comp",
                                      SceneGpu::drawLayouts(ctx, resolveLayout_.handle()),
                                      sizeof(gpu::VisibilityResolvePush));
     nearest_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
@@ -132,7 +131,7 @@ void GBufferPass::addResolve(FrameGraph& graph, ImageHandle a, ImageHandle n, Im
         .storageImage(VISIBILITY_RESOLVE_NORMAL, n)
         .bytes(VkDeviceSize(w) * h * (4 + 8 + 8))
         .record([this, w, h](PassContext& c) {
-            resolve_.push(c.cmd, gpu::VisibilityResolvePush{{w, h, 0, 0}});
+            resolve_.push(c.cmd, gpu::VisibilityResolvePush{w, h, 0, 0});
             vkCmdDispatch(c.cmd, vk::divUp(w, 8), vk::divUp(h, 8), 1);
         });
 }

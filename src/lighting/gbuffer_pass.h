@@ -1,18 +1,18 @@
 // The camera's G-buffer: albedo, world normal and depth per pixel, by one of two paths.
 //   gbuffer:    one raster pass writes all three (scene.vert / gbuffer.frag; albedo sRGB 8-bit).
-//   visibility: the raster writes depth and a 32-bit visibility ID only (render/visibility.frag;
+//   visibility: the raster writes depth and a 32-bit visibility ID only (core/visibility.frag;
 //               alpha-masked materials still test alpha there), then a compute pass resolves albedo
-//               (RGBA16F) and normal from the ID (render/visibility_resolve.comp; texture level of
+//               (RGBA16F) and normal from the ID (lighting/visibility_resolve.comp; texture level of
 //               detail from the neighbouring pixels' rays, as the raster's 2x2 quads take it).
-// Each colour target a raster pass writes costs fill rate on GPUs whose raster path is narrow
-// (docs/techniques/shadows.md); the visibility path writes one 32-bit target, or none: with `computeRaster` the
-// compute rasterizer (src/raster) writes depth and ID with 64-bit atomics instead of the hardware.
+// Each colour target a raster pass writes costs fill rate on GPUs whose raster path is narrow; the
+// visibility path writes one 32-bit target, or none: with `computeRaster` the compute rasterizer
+// (core/depth_raster.h) writes depth and ID with 64-bit atomics instead of the hardware.
 #pragma once
 #include <memory>
 
-#include "raster/compute_raster.h"
-#include "core/frame_graph.h"
 #include "core/core_settings.h"
+#include "core/depth_raster.h"
+#include "core/frame_graph.h"
 #include "core/scene_gpu.h"
 
 namespace penumbra {
@@ -21,7 +21,7 @@ class GBufferPass {
 public:
     // `drawBlended`: alphaMode BLEND materials are drawn opaque (no camera translucency).
     // `rasterAfter`: raster passes test and write the depth afterwards (opaque hair ribbons), so it
-    // stays D32_SFLOAT; else the compute rasterizer stores it as R32_SFLOAT (no copy, src/raster).
+    // stays D32_SFLOAT; else the compute rasterizer stores it as R32_SFLOAT (no copy).
     GBufferPass(vk::Allocator& alloc, SceneGpu& scene, uint32_t width, uint32_t height,
                 VkDescriptorSetLayout drawLayout, CameraPath path, bool drawBlended = true, bool computeRaster = false,
                 bool rasterAfter = false);
@@ -45,7 +45,7 @@ private:
     vk::DescriptorLayout resolveLayout_;
     vk::Pipeline resolve_;
     vk::Sampler nearest_;
-    std::unique_ptr<ComputeRaster> compute_;  // the visibility raster in compute (null: the hardware's)
+    std::unique_ptr<DepthRaster> compute_;  // the visibility raster in compute (null: the hardware's)
 };
 
 }  // namespace penumbra

@@ -1,7 +1,7 @@
 #include "lighting/lighting_pass.h"
 
 #include "core/previous_frame.h"
-#include "render/lighting_bindings.h"
+#include "lighting/lighting_bindings.h"
 
 namespace penumbra {
 
@@ -18,7 +18,7 @@ LightingPass::LightingPass(vk::Allocator& alloc, uint32_t width, uint32_t height
               {LIGHTING_DSM_HEADS, ssbo},     {LIGHTING_DSM_NODES, ssbo},      {LIGHTING_DSM_SIDE, ssbo},
               {LIGHTING_PROBE, ssbo},         {LIGHTING_MOTION_FIRST, tex},    {LIGHTING_MOTION_FIRST + 1, ssbo},
               {LIGHTING_MOTION_FIRST + 2, ssbo}});
-    pipeline_ = vk::Pipeline::compute(ctx, "render/lighting.comp", {layout_.handle()}, 0);
+    pipeline_ = vk::Pipeline::compute(ctx, "lighting/lighting.comp", {layout_.handle()}, 0);
     pointSampler_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
 }
 
@@ -49,7 +49,7 @@ void LightingPass::addTo(FrameGraph& graph) {
 }
 
 DebugViewPass::DebugViewPass(vk::Context& ctx)
-    : kernel_(ctx, "render/debug_view.comp",
+    : kernel_(ctx, "lighting/debug_view.comp",
               {{DEBUG_VIEW_SOURCE, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
                {DEBUG_VIEW_OUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}},
               sizeof(gpu::DebugViewPush)),
@@ -64,7 +64,7 @@ void DebugViewPass::addTo(FrameGraph& graph, Aov aov, uint32_t layer) {
     if (!source || !graph.hasImage(source)) return;
     const ImageHandle image = graph.image(source), out = graph.image("hdr");
     const uint32_t last = graph.imageOf(image).layers() - 1;
-    const gpu::DebugViewPush push{{uint32_t(aov), std::min(layer, last), 0, 0}};
+    const gpu::DebugViewPush push{uint32_t(aov), std::min(layer, last), 0, 0};
     graph.pass("debug-view")
         .pipeline(kernel_.pipeline)
         .sampled(DEBUG_VIEW_SOURCE, image, nearest_.handle())
@@ -82,7 +82,7 @@ TonemapPass::TonemapPass(vk::Allocator& alloc, uint32_t width, uint32_t height) 
                             VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, "ldr"});
     layout_ = vk::DescriptorLayout(
         ctx, {{TONEMAP_HDR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, {TONEMAP_LDR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}});
-    pipeline_ = vk::Pipeline::compute(ctx, "render/tonemap.comp", {layout_.handle()}, sizeof(gpu::TonemapPush));
+    pipeline_ = vk::Pipeline::compute(ctx, "lighting/tonemap.comp", {layout_.handle()}, sizeof(gpu::TonemapPush));
 }
 
 void TonemapPass::addTo(FrameGraph& graph, const gpu::TonemapPush& params) {

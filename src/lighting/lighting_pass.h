@@ -1,4 +1,4 @@
-// Deferred direct lighting in compute (render/lighting.comp): every light, shadow-map visibility,
+// Deferred direct lighting in compute (lighting/lighting.comp): every light, shadow-map visibility,
 // writes the HDR image or the selected AOV.
 #pragma once
 #include "core/frame_graph.h"

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "raster/bindings.h"
 #include "vk/commands.h"
 
 namespace penumbra {
@@ -51,8 +52,6 @@ uint32_t entryCapacityFor(uint32_t records, VkExtent2D size, uint32_t layers, ui
     return uint32_t(std::min<uint64_t>(uint64_t(double(wanted) * growth), std::max<uint64_t>(cap, 1u << 23)));
 }
 
-
-
 }  // namespace
 
 ComputeRaster::ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, VkExtent2D size, uint32_t layers, Views kind)
@@ -69,30 +68,43 @@ ComputeRaster::ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, VkExtent2D s
       overflowCapacity_(overflowCapacityFor(scene.drawnTriangleCount(), layers_)) {
     vk::Context& ctx = alloc.context();
     const uint32_t pushBytes = sizeof(gpu::RasterPush);
-    // The scene's draw set (bindings 0-1 and the instance table; set 1 its texture table); 3-6: depth, records, tile entries,
-    // counters (raster.glsl).
+    // The scene's draw set (set 1 its texture table); depth, records, tile entries, counters, tile
+    // bins and lists, depth << 32 | ID (raster.glsl).
     std::vector<vk::Binding> tiles = SceneGpu::drawSetBindings();
-    // 12-13: tile bins and lists; 16: depth << 32 | ID.
-    for (uint32_t b : {3u, 4u, 5u, 6u, 12u, 13u, 16u}) tiles.push_back({b, kBuffer});
+    for (uint32_t b : {RASTER_SET_DEPTH, RASTER_SET_RECORDS, RASTER_SET_TILE_ENTRIES, RASTER_SET_COUNTERS,
+                       RASTER_SET_TILE_BINS, RASTER_SET_TILE_LISTS, RASTER_SET_DEPTH_IDS})
+        tiles.push_back({b, kBuffer});
     const std::vector<VkDescriptorSetLayout> table{SceneGpu::textureTableLayout(ctx)};
     const bool camera = kind == Views::Camera;
-    std::vector<vk::Binding> fine = tiles;  // 10: the layer table; 17, 18: the target and ID images
-    fine.push_back({10, kBuffer});
+    std::vector<vk::Binding> fine = tiles;  // the layer table; then the target and ID images
+    fine.push_back({RASTER_SET_LAYERS, kBuffer});
     tiles_ = vk::ComputeKernel(ctx, "raster/tiles.comp", fine, pushBytes, table);
-    for (uint32_t b : {17u, 18u}) fine.push_back({b, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
+    for (uint32_t b : {RASTER_SET_TARGET, RASTER_SET_ID_IMAGE}) fine.push_back({b, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE});
     tilesImage_ = vk::ComputeKernel(ctx, camera ? "raster/tiles_image_2d.comp" : "raster/tiles_image.comp", fine,
                                     pushBytes, table);
     bin_ = vk::ComputeKernel(ctx, "raster/bin.comp", tiles, pushBytes, table);
     scatter_ = vk::ComputeKernel(ctx, "raster/scatter.comp", tiles, pushBytes, table);
-    place_ = vk::ComputeKernel(ctx, "raster/place.comp", {kBuffer, kBuffer}, sizeof(gpu::uvec4));
+    place_ = vk::ComputeKernel(ctx, "raster/place.comp",
+                               std::vector<vk::Binding>{{RASTER_PLACE_TILE_BINS, kBuffer}, {RASTER_PLACE_COUNTERS, kBuffer}},
+                               sizeof(gpu::uvec4));
     std::vector<vk::Binding> setup = tiles;
-    // vertices, indices, materials, layers, drawn triangles; 19: the overflow queue
-    for (uint32_t b : {7u, 8u, 9u, 10u, 11u, 19u}) setup.push_back({b, kBuffer});
+    // vertices, indices, materials, layers, drawn triangles, the overflow queue
+    for (uint32_t b : {RASTER_SET_VERTICES, RASTER_SET_INDICES, RASTER_SET_TRIANGLE_MATERIALS, RASTER_SET_LAYERS,
+                       RASTER_SET_DRAWN_TRIANGLES, RASTER_SET_OVERFLOW_PAIRS})
+        setup.push_back({b, kBuffer});
     setup_ = vk::ComputeKernel(ctx, "raster/setup.comp", setup, pushBytes, table);
     overflow_ = vk::ComputeKernel(ctx, "raster/overflow.comp", setup, pushBytes, table);
-    args_ = vk::ComputeKernel(ctx, "raster/args.comp", {kBuffer, kBuffer, kBuffer}, pushBytes);
+    args_ = vk::ComputeKernel(ctx, "raster/args.comp",
+                              std::vector<vk::Binding>{{RASTER_ARGS_COUNTERS, kBuffer},
+                                                       {RASTER_ARGS_DISPATCH, kBuffer},
+                                                       {RASTER_ARGS_OVERFLOW_PAIRS, kBuffer}},
+                              pushBytes);
     idSplit_ = vk::ComputeKernel(ctx, camera ? "raster/ids_2d.comp" : "raster/ids.comp",
-                                 {kBuffer, kBuffer, kBuffer, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, pushBytes);
+                                 std::vector<vk::Binding>{{RASTER_IDS_DEPTH, kBuffer},
+                                                          {RASTER_IDS_DEPTH_IDS, kBuffer},
+                                                          {RASTER_IDS_LAYERS, kBuffer},
+                                                          {RASTER_IDS_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}},
+                                 pushBytes);
     // Bound as the ID image where a frame draws no layer with IDs into an R32_SFLOAT target.
     noIds_ = vk::Image(alloc, {VK_FORMAT_R32_UINT, 1, 1, 1, VK_IMAGE_USAGE_STORAGE_BIT, "raster-no-ids", 1, !camera});
 
@@ -101,13 +113,14 @@ ComputeRaster::ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, VkExtent2D s
     depth_ = vk::Buffer(alloc, depthBytes(layerTexels(), layers_), storage | transfer, false, "raster-depth");
     records_ = vk::Buffer(alloc, VkDeviceSize(recordCapacity_) * sizeof(gpu::RasterTriangle), storage, false,
                           "raster-triangles");
-    entries_ = vk::Buffer(alloc, VkDeviceSize(entryCapacity_) * 8, storage, false, "raster-tile-entries");
+    entries_ = vk::Buffer(alloc, VkDeviceSize(entryCapacity_) * sizeof(glm::uvec2), storage, false, "raster-tile-entries");
     tileBins_ = vk::Buffer(alloc, VkDeviceSize(binCount()) * sizeof(gpu::uvec4), storage | transfer, false,
                            "raster-tile-bins");
-    tileLists_ = vk::Buffer(alloc, VkDeviceSize(entryCapacity_) * 4, storage, false, "raster-tile-lists");
+    tileLists_ = vk::Buffer(alloc, VkDeviceSize(entryCapacity_) * sizeof(uint32_t), storage, false, "raster-tile-lists");
     counters_ = vk::Buffer(alloc, sizeof(gpu::RasterCounters) + sizeof(Work), storage | transfer, false,
                            "raster-counters");
-    overflowPairs_ = vk::Buffer(alloc, VkDeviceSize(overflowCapacity_) * 8, storage, false, "raster-overflow-pairs");
+    overflowPairs_ = vk::Buffer(alloc, VkDeviceSize(overflowCapacity_) * sizeof(glm::uvec2), storage, false,
+                               "raster-overflow-pairs");
     dispatchArgs_ = vk::Buffer(alloc, 4 * sizeof(gpu::uvec4), storage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, false,
                                "raster-dispatch");
     layerTable_ = vk::BufferRing(alloc, sizeof(gpu::RasterLayer) * layers_, storage, "raster-layers");
@@ -120,8 +133,8 @@ void ComputeRaster::setViews(const std::vector<RasterViews>& views, uint32_t slo
     for (const RasterViews& v : views)
         for (uint32_t k = 0; k < v.layerCount; ++k) {
             const bool ids = v.firstIdLayer != RasterViews::kNoIds;
-            rows.push_back({{v.firstViewRow + k, v.firstLayer + k, v.skipBlended ? 1u : 0u,
-                             ids ? v.firstIdLayer + k + 1 : 0u}});
+            rows.push_back({v.firstViewRow + k, v.firstLayer + k, v.skipBlended ? 1u : 0u,
+                            ids ? v.firstIdLayer + k + 1 : 0u});
             if (ids) idLayers_ = std::max(idLayers_, v.firstIdLayer + k + 1);
         }
     if (rows.size() > layers_) throw std::invalid_argument("compute raster: more layers than it was made for");
@@ -149,9 +162,19 @@ uint32_t ComputeRaster::smallExtent() const {
 
 gpu::RasterPush ComputeRaster::push(RasterBias bias) const {
     const uint32_t triangles = scene_.drawnTriangleCount();
-    return {{size_.width, subpixelBits_, triangles, layerRows_},
-            {recordCapacity_, entryCapacity_, smallExtent(), size_.height},
-            {bias.constant, bias.slope, kind_ == Views::Camera ? 1.0f : 0.0f, 0.0f}};
+    gpu::RasterPush p{};
+    p.width = size_.width;
+    p.subpixelBits = subpixelBits_;
+    p.triangleCount = triangles;
+    p.layerCount = layerRows_;
+    p.recordCapacity = recordCapacity_;
+    p.entryCapacity = entryCapacity_;
+    p.smallExtent = smallExtent();
+    p.height = size_.height;
+    p.biasConstant = bias.constant;
+    p.biasSlope = bias.slope;
+    p.frontsCounterClockwise = kind_ == Views::Camera ? 1u : 0u;
+    return p;
 }
 
 // The setup pass (one thread per (triangle, layer)) and the overflow pass (one workgroup per queued
@@ -161,19 +184,19 @@ PassBuilder ComputeRaster::addSetupPass(FrameGraph& graph, const std::string& na
     PassBuilder setup = graph.pass(name);
     setup.pipeline(kernel.pipeline);
     scene_.declareDrawSet(setup, viewRows);
-    setup.storageBuffer(3, graph.import(depth_), Use::StorageWrite)
-        .storageBuffer(16, graph.import(depthIds_), Use::StorageWrite)
-        .storageBuffer(4, graph.import(records_), Use::StorageWrite)
-        .storageBuffer(5, graph.import(entries_), Use::StorageWrite)
-        .storageBuffer(6, graph.import(counters_), Use::StorageWrite)
-        .storageBuffer(7, graph.import(scene_.vertices()))
-        .storageBuffer(8, graph.import(scene_.indices()))
-        .storageBuffer(9, graph.import(scene_.triangleMaterials()))
-        .storageBuffer(10, graph.import(layerTable_.current()))
-        .storageBuffer(11, graph.import(scene_.drawnTriangles()))
-        .storageBuffer(12, graph.import(tileBins_), Use::StorageWrite)  // marks the tiles it draws into
-        .storageBuffer(13, graph.import(tileLists_), Use::StorageRead)   // in the layout, not used by setup
-        .storageBuffer(19, graph.import(overflowPairs_), overflowQueue);
+    setup.storageBuffer(RASTER_SET_DEPTH, graph.import(depth_), Use::StorageWrite)
+        .storageBuffer(RASTER_SET_DEPTH_IDS, graph.import(depthIds_), Use::StorageWrite)
+        .storageBuffer(RASTER_SET_RECORDS, graph.import(records_), Use::StorageWrite)
+        .storageBuffer(RASTER_SET_TILE_ENTRIES, graph.import(entries_), Use::StorageWrite)
+        .storageBuffer(RASTER_SET_COUNTERS, graph.import(counters_), Use::StorageWrite)
+        .storageBuffer(RASTER_SET_VERTICES, graph.import(scene_.vertices()))
+        .storageBuffer(RASTER_SET_INDICES, graph.import(scene_.indices()))
+        .storageBuffer(RASTER_SET_TRIANGLE_MATERIALS, graph.import(scene_.triangleMaterials()))
+        .storageBuffer(RASTER_SET_LAYERS, graph.import(layerTable_.current()))
+        .storageBuffer(RASTER_SET_DRAWN_TRIANGLES, graph.import(scene_.drawnTriangles()))
+        .storageBuffer(RASTER_SET_TILE_BINS, graph.import(tileBins_), Use::StorageWrite)  // marks the tiles it draws into
+        .storageBuffer(RASTER_SET_TILE_LISTS, graph.import(tileLists_), Use::StorageRead)  // in the layout, unused by setup
+        .storageBuffer(RASTER_SET_OVERFLOW_PAIRS, graph.import(overflowPairs_), overflowQueue);
     return setup;
 }
 
@@ -198,14 +221,14 @@ void ComputeRaster::addTo(FrameGraph& graph, const std::string& name, ImageHandl
     const gpu::RasterPush p = push(bias);
     addSetupPass(graph, name + ".setup", viewRows, setup_, Use::StorageWrite).record([this, p](PassContext& c) {
         setup_.pipeline.push(c.cmd, p);
-        const uint32_t groups = std::min(vk::divUp(p.target.z, RASTER_SETUP_GROUP), kMaxGroups);
+        const uint32_t groups = std::min(vk::divUp(p.triangleCount, RASTER_SETUP_GROUP), kMaxGroups);
         vkCmdDispatch(c.cmd, groups, layerRows_, 1);
     });
     graph.pass(name + ".args")
         .pipeline(args_.pipeline)
-        .storageBuffer(0, counters, Use::StorageRead)
-        .storageBuffer(1, args, Use::StorageWrite)
-        .storageBuffer(2, graph.import(overflowPairs_), Use::StorageRead)
+        .storageBuffer(RASTER_ARGS_COUNTERS, counters, Use::StorageRead)
+        .storageBuffer(RASTER_ARGS_DISPATCH, args, Use::StorageWrite)
+        .storageBuffer(RASTER_ARGS_OVERFLOW_PAIRS, graph.import(overflowPairs_), Use::StorageRead)
         .record([this, p](PassContext& c) {
             args_.pipeline.push(c.cmd, p);
             vkCmdDispatch(c.cmd, 1, 1, 1);
@@ -233,10 +256,11 @@ void ComputeRaster::addFineRaster(FrameGraph& graph, const std::string& name, Bu
     PassBuilder tiles = graph.pass(name + ".tiles");
     tiles.pipeline(kernel.pipeline);
     declareRasterSet(tiles, graph, viewRows, Use::StorageRead);
-    tiles.storageBuffer(3, graph.import(depth_), intoTarget ? Use::StorageRead : Use::StorageWrite)
-        .storageBuffer(16, graph.import(depthIds_), intoTarget ? Use::StorageRead : Use::StorageWrite)
-        .storageBuffer(10, graph.import(layerTable_.current()));
-    if (intoTarget) tiles.storageImage(17, target).storageImage(18, ids ? ids : graph.import(noIds_));
+    tiles.storageBuffer(RASTER_SET_DEPTH, graph.import(depth_), intoTarget ? Use::StorageRead : Use::StorageWrite)
+        .storageBuffer(RASTER_SET_DEPTH_IDS, graph.import(depthIds_), intoTarget ? Use::StorageRead : Use::StorageWrite)
+        .storageBuffer(RASTER_SET_LAYERS, graph.import(layerTable_.current()));
+    if (intoTarget)
+        tiles.storageImage(RASTER_SET_TARGET, target).storageImage(RASTER_SET_ID_IMAGE, ids ? ids : graph.import(noIds_));
     tiles.record([this, &kernel, p](PassContext& c) {
         kernel.pipeline.push(c.cmd, p);
         vkCmdDispatch(c.cmd, vk::divUp(size_.width, RASTER_TILE_SIZE), vk::divUp(size_.height, RASTER_TILE_SIZE),
@@ -251,11 +275,11 @@ void ComputeRaster::addFineRaster(FrameGraph& graph, const std::string& name, Bu
 // the tile entries, bins and lists; depth (3, 16) is declared by each pass itself.
 void ComputeRaster::declareRasterSet(PassBuilder& pass, FrameGraph& graph, BufferHandle viewRows, Use lists) const {
     scene_.declareDrawSet(pass, viewRows);
-    pass.storageBuffer(4, graph.import(records_), Use::StorageRead)
-        .storageBuffer(5, graph.import(entries_), lists)
-        .storageBuffer(6, graph.import(counters_), Use::StorageRead)
-        .storageBuffer(12, graph.import(tileBins_), lists)
-        .storageBuffer(13, graph.import(tileLists_), lists);
+    pass.storageBuffer(RASTER_SET_RECORDS, graph.import(records_), Use::StorageRead)
+        .storageBuffer(RASTER_SET_TILE_ENTRIES, graph.import(entries_), lists)
+        .storageBuffer(RASTER_SET_COUNTERS, graph.import(counters_), Use::StorageRead)
+        .storageBuffer(RASTER_SET_TILE_BINS, graph.import(tileBins_), lists)
+        .storageBuffer(RASTER_SET_TILE_LISTS, graph.import(tileLists_), lists);
 }
 
 // Bin (one workgroup per large triangle: its tile entries and the tiles' counts), place (each tile's
@@ -267,8 +291,8 @@ void ComputeRaster::addTileLists(FrameGraph& graph, const std::string& name, Buf
         PassBuilder pass = graph.pass(name + suffix);
         pass.pipeline(k.pipeline);
         declareRasterSet(pass, graph, viewRows, Use::StorageWrite);
-        pass.storageBuffer(3, graph.import(depth_), Use::StorageRead)
-            .storageBuffer(16, graph.import(depthIds_), Use::StorageRead)
+        pass.storageBuffer(RASTER_SET_DEPTH, graph.import(depth_), Use::StorageRead)
+            .storageBuffer(RASTER_SET_DEPTH_IDS, graph.import(depthIds_), Use::StorageRead)
             .use(graph.import(dispatchArgs_), Use::IndirectArgs)
             .record([this, &k, p, argsOffset](PassContext& c) {
                 k.pipeline.push(c.cmd, p);
@@ -279,8 +303,8 @@ void ComputeRaster::addTileLists(FrameGraph& graph, const std::string& name, Buf
     const gpu::uvec4 bins{binCount(), 0, 0, 0};
     graph.pass(name + ".place")
         .pipeline(place_.pipeline)
-        .storageBuffer(0, graph.import(tileBins_), Use::StorageWrite)
-        .storageBuffer(1, graph.import(counters_), Use::StorageWrite)
+        .storageBuffer(RASTER_PLACE_TILE_BINS, graph.import(tileBins_), Use::StorageWrite)
+        .storageBuffer(RASTER_PLACE_COUNTERS, graph.import(counters_), Use::StorageWrite)
         .record([this, bins](PassContext& c) {
             place_.pipeline.push(c.cmd, bins);
             vkCmdDispatch(c.cmd, vk::divUp(bins.x, RASTER_PLACE_GROUP), 1, 1);
@@ -312,15 +336,20 @@ void ComputeRaster::addResolve(FrameGraph& graph, const std::string& name, Image
 void ComputeRaster::addIdSplit(FrameGraph& graph, const std::string& name, ImageHandle ids, const gpu::RasterPush& p) {
     graph.pass(name + ".ids")
         .pipeline(idSplit_.pipeline)
-        .storageBuffer(0, graph.import(depth_), Use::StorageWrite)
-        .storageBuffer(1, graph.import(depthIds_), Use::StorageRead)
-        .storageBuffer(2, graph.import(layerTable_.current()))
-        .storageImage(3, ids)
+        .storageBuffer(RASTER_IDS_DEPTH, graph.import(depth_), Use::StorageWrite)
+        .storageBuffer(RASTER_IDS_DEPTH_IDS, graph.import(depthIds_), Use::StorageRead)
+        .storageBuffer(RASTER_IDS_LAYERS, graph.import(layerTable_.current()))
+        .storageImage(RASTER_IDS_IMAGE, ids)
         .bytes(layerTexels() * idLayers_ * 16)
         .record([this, p](PassContext& c) {
             idSplit_.pipeline.push(c.cmd, p);
             vkCmdDispatch(c.cmd, vk::divUp(size_.width, 8), vk::divUp(size_.height, 8), layerRows_);
         });
+}
+
+std::unique_ptr<DepthRaster> makeDepthRaster(vk::Allocator& alloc, SceneGpu& scene, VkExtent2D size, uint32_t layers,
+                                             DepthRaster::Views kind) {
+    return std::make_unique<ComputeRaster>(alloc, scene, size, layers, kind);
 }
 
 }  // namespace penumbra

@@ -1,5 +1,5 @@
-// The compute rasterizer for depth-only views (docs/techniques/shadows.md): shadow-map layers drawn without the raster
-// hardware, equal to it (same matrices, clipping, winding and culling, pixel centres, subpixel
+// The compute rasterizer for depth-only views (core/depth_raster.h): shadow-map layers drawn without
+// the raster hardware, equal to it (same matrices, clipping, winding and culling, pixel centres, subpixel
 // snapping, top-left rule, z/w plane, Vulkan's float depth bias, alpha-masked casters).
 //   <name>.clear   fill the depth buffer with 1.0 and the bin counters with 0 (transfer)
 //   <name>.setup   one thread per (triangle, layer), all layers in one dispatch: transform, clip,
@@ -29,29 +29,12 @@
 #include <algorithm>
 #include <vector>
 
-#include "core/frame_graph.h"
-#include "core/scene_gpu.h"
+#include "core/depth_raster.h"
 #include "shared/types.h"
 
 namespace penumbra {
 
-// A run of target layers (e.g. every layer of one light), view row k for layer firstLayer + k.
-struct RasterViews {
-    uint32_t firstViewRow = 0;
-    uint32_t firstLayer = 0;
-    uint32_t layerCount = 0;
-    bool skipBlended = false;  // alphaMode BLEND casters stay out (a deep shadow map takes them)
-    // Layer k of the run also writes visibility IDs into layer firstIdLayer + k of the ID image.
-    static constexpr uint32_t kNoIds = UINT32_MAX;
-    uint32_t firstIdLayer = kNoIds;
-};
-
-struct RasterBias {
-    float constant = 0.0f;  // Vulkan depthBiasConstantFactor
-    float slope = 0.0f;     // depthBiasSlopeFactor
-};
-
-class ComputeRaster {
+class ComputeRaster final : public DepthRaster {
 public:
     // Its buffers bound whole, shared with the device budget: depth (a float per texel of every layer)
     // and, for the layers with visibility IDs, depth << 32 | ID.
@@ -60,18 +43,13 @@ public:
         return std::max<uint64_t>(layerTexels * idLayers * sizeof(uint64_t), sizeof(uint64_t));
     }
 
-    // What it draws: light layers (y up, fronts clockwise, an array of ID layers), or the camera's
-    // view (a y-flipped projection, fronts counter-clockwise: SceneGpu::sceneFrontFace; a 2D ID image).
-    enum class Views { Light, Camera };
     // Targets of `size` texels with up to `layers` layers.
     ComputeRaster(vk::Allocator& alloc, SceneGpu& scene, VkExtent2D size, uint32_t layers, Views kind = Views::Light);
-    // Per frame: the layers to draw into this frame slot's table.
-    void setViews(const std::vector<RasterViews>& views, uint32_t slot);
-    // The passes (see above) drawing the views set for this frame with the "views" rows of `views`
-    // into `target` (an R32_SFLOAT array with STORAGE usage, or a D32_SFLOAT one with TRANSFER_DST) and, for views with ID layers, `ids` (R32_UINT
-    // array, storage); `name` prefixes the pass names.
+    void setViews(const std::vector<RasterViews>& views, uint32_t slot) override;
+    // The passes listed above (DepthRaster::addTo).
+    using DepthRaster::addTo;
     void addTo(FrameGraph& graph, const std::string& name, ImageHandle target, BufferHandle viewRows, RasterBias bias,
-               ImageHandle ids = {});
+               ImageHandle ids) override;
 
     // The work counters, after RasterCounters in the counters buffer (raster/raster.glsl).
     struct Work {
@@ -88,7 +66,7 @@ public:
     const vk::Buffer& depth() const { return depth_; }
     const vk::Buffer& counters() const { return counters_; }
     uint32_t recordCapacity() const { return recordCapacity_; }
-    uint32_t smallExtent() const;  // RasterPush.capacity.z
+    uint32_t smallExtent() const;  // RasterPush.smallExtent
 
 private:
     gpu::RasterPush push(RasterBias bias) const;

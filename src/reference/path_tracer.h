@@ -64,7 +64,7 @@ constexpr uint32_t kMaxReferenceBounces = 16;
 
 // Irradiance from `light` at p on a surface facing it (no cosine), KHR_lights_punctual falloff read
 // radiometrically (docs/evaluation.md); `toLight` gets the unit direction to the light, `distance` the
-// distance to it (infinity for a directional light). Written independently of shaders/render/lights.glsl.
+// distance to it (infinity for a directional light). Written independently of shaders/core/lights.glsl.
 glm::vec3 referenceIrradiance(const Light& light, const glm::vec3& p, glm::vec3& toLight, float& distance);
 
 }  // namespace penumbra

@@ -13,7 +13,7 @@
 
 #include "dsm/dsm_resources.h"
 #include "lpv/lpv.h"
-#include "raster/raster_mode.h"
+#include "core/raster_mode.h"
 #include "core/scene_gpu.h"
 #include "core/texture_upload.h"
 #include "dsm/dsm_options.h"

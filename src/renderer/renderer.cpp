@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "raster/raster_mode.h"
+#include "core/raster_mode.h"
 
 
 namespace penumbra {

@@ -1,15 +1,25 @@
 #include "shadow/shadow_filter.h"
 
+#include "shadow/bindings.h"
+
 namespace penumbra {
 
 ShadowFilterPass::ShadowFilterPass(vk::Allocator& alloc) : alloc_(alloc) {
     vk::Context& ctx = alloc.context();
     const VkDescriptorType sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+    const VkDescriptorType uniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
     kernel_ = vk::ComputeKernel(ctx, "shadow/filter.comp",
-                                {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, storage, sampled, sampled, sampled, sampled,
-                                 storage, storage, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER,
-                                 VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+                                std::vector<vk::Binding>{{SHADOW_MASK_FRAME, uniform},
+                                                         {SHADOW_MASK_LIGHTS, storage},
+                                                         {SHADOW_MASK_GBUFFER_DEPTH, sampled},
+                                                         {SHADOW_MASK_GBUFFER_NORMAL, sampled},
+                                                         {SHADOW_MASK_DEPTH_MAP, sampled},
+                                                         {SHADOW_MASK_MOMENTS, sampled},
+                                                         {SHADOW_MASK_LAYERS, storage},
+                                                         {SHADOW_MASK_SHADOW_LIGHTS, storage},
+                                                         {SHADOW_MASK_PARAMS, uniform},
+                                                         {SHADOW_MASK_OUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}},
                                 0);
     point_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
     // Outside a layer the border (depth 1) reads as lit: a point no layer covers casts and gets no shadow.
@@ -34,16 +44,16 @@ void ShadowFilterPass::addTo(FrameGraph& graph, uint32_t shadowedLights) {
     const ImageHandle map = graph.image("shadow.map");
     graph.pass("shadow.filter")
         .pipeline(kernel_.pipeline)
-        .uniform(0, graph.buffer("frame"))
-        .storageBuffer(1, graph.buffer("lights"))
-        .sampled(2, depth, point_.handle())
-        .sampled(3, graph.image("gbuffer.normal"), point_.handle())
-        .sampled(4, map, depth_.handle())
-        .sampled(5, graph.image("shadow.moments"), moments_.handle())
-        .storageBuffer(6, graph.buffer("shadow.layers"))
-        .storageBuffer(7, graph.buffer("shadow.lights"))
-        .uniform(8, graph.buffer("shadow.params"))
-        .storageImage(9, mask)
+        .uniform(SHADOW_MASK_FRAME, graph.buffer("frame"))
+        .storageBuffer(SHADOW_MASK_LIGHTS, graph.buffer("lights"))
+        .sampled(SHADOW_MASK_GBUFFER_DEPTH, depth, point_.handle())
+        .sampled(SHADOW_MASK_GBUFFER_NORMAL, graph.image("gbuffer.normal"), point_.handle())
+        .sampled(SHADOW_MASK_DEPTH_MAP, map, depth_.handle())
+        .sampled(SHADOW_MASK_MOMENTS, graph.image("shadow.moments"), moments_.handle())
+        .storageBuffer(SHADOW_MASK_LAYERS, graph.buffer("shadow.layers"))
+        .storageBuffer(SHADOW_MASK_SHADOW_LIGHTS, graph.buffer("shadow.lights"))
+        .uniform(SHADOW_MASK_PARAMS, graph.buffer("shadow.params"))
+        .storageImage(SHADOW_MASK_OUT, mask)
         .record([this](PassContext& c) {
             vkCmdDispatch(c.cmd, vk::divUp(mask_.width(), 8), vk::divUp(mask_.height(), 8), 1);
         });

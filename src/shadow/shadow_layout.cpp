@@ -106,9 +106,12 @@ std::vector<gpu::GpuShadowLight> ShadowLayout::gpuLights() const {
     const float sunScale = 2.0f * std::tan(0.5f * settings_.pcssSunAngle * 3.14159265f / 180.0f);
     for (const ShadowedLight& s : shadowed_) {
         gpu::GpuShadowLight g{};
-        g.info = {s.firstLayer, s.layerCount, s.kind, uint32_t(s.filter)};
-        const float penumbraScale = s.kind == SHADOW_KIND_CASCADES ? sunScale : settings_.pcssLightSize;
-        g.params = {settings_.normalOffset, penumbraScale, 0.0f, 0.0f};
+        g.firstLayer = s.firstLayer;
+        g.layerCount = s.layerCount;
+        g.kind = s.kind;
+        g.filterMode = uint32_t(s.filter);
+        g.normalOffset = settings_.normalOffset;
+        g.penumbraScale = s.kind == SHADOW_KIND_CASCADES ? sunScale : settings_.pcssLightSize;
         out.push_back(g);
     }
     return out;
@@ -122,10 +125,15 @@ std::vector<gpu::GpuShadowLayer> ShadowLayout::gpuLayers() const {
         const LightProjection& p = l.projection;
         gpu::GpuShadowLayer g{};
         g.viewProj = p.viewProj;
-        g.params = {p.texelSize, p.zNear, p.zFar, p.discScale};
-        g.split = {l.splitNear, l.splitFar, 0.0f, 0.0f};
-        const uint32_t proj = p.paraboloid ? SHADOW_PROJ_PARABOLOID : p.perspective ? SHADOW_PROJ_PERSPECTIVE : SHADOW_PROJ_ORTHO;
-        g.info = {proj, momentLayerOf_[i], uint32_t(s.filter), 0u};
+        g.texelSize = p.texelSize;
+        g.zNear = p.zNear;
+        g.zFar = p.zFar;
+        g.discScale = p.discScale;
+        g.splitNear = l.splitNear;
+        g.splitFar = l.splitFar;
+        g.projection = p.paraboloid ? SHADOW_PROJ_PARABOLOID : p.perspective ? SHADOW_PROJ_PERSPECTIVE : SHADOW_PROJ_ORTHO;
+        g.momentLayer = momentLayerOf_[i];
+        g.momentFilter = uint32_t(s.filter);
         out.push_back(g);
     }
     return out;
@@ -133,9 +141,13 @@ std::vector<gpu::GpuShadowLayer> ShadowLayout::gpuLayers() const {
 
 gpu::GpuShadowParams ShadowLayout::gpuParams() const {
     gpu::GpuShadowParams g{};
-    g.kernel = {settings_.pcfRadius, settings_.pcssMaxRadius, settings_.cascades.blend, 0.0f};
+    g.pcfRadius = settings_.pcfRadius;
+    g.pcssMaxRadius = settings_.pcssMaxRadius;
+    g.cascadeBlend = settings_.cascades.blend;
     g.moments = {settings_.bleedReduction, settings_.evsmPositive, settings_.evsmNegative, settings_.msmBias};
-    g.info = {settings_.resolution, 0u, settings_.blurRadius, uint32_t(shadowed_.size())};
+    g.resolution = settings_.resolution;
+    g.blurRadius = settings_.blurRadius;
+    g.shadowedLights = uint32_t(shadowed_.size());
     for (int i = 0; i < 16; ++i)
         g.poisson[i] = {kPoisson[2 * i][0], kPoisson[2 * i][1], kPoisson[2 * i + 1][0], kPoisson[2 * i + 1][1]};
     return g;

@@ -45,8 +45,7 @@ void ShadowMapPass::assign(const std::vector<Light>& lights) {
                                   "shadow-map", 1, true});
     }
     if (useCompute_ && (resized || !compute_))
-        compute_ = std::make_unique<ComputeRaster>(alloc_, scene_, VkExtent2D{settings_.resolution, settings_.resolution},
-                                                   layers);
+        compute_ = makeDepthRaster(alloc_, scene_, VkExtent2D{settings_.resolution, settings_.resolution}, layers);
     moments_.resize(layout_.momentLayerCount());
     // Host-visible tables, one copy per frame in flight, rewritten by update(); kept while their sizes hold.
     const size_t shadowed = std::max<size_t>(layout_.shadowed().size(), 1);
@@ -86,7 +85,8 @@ void ShadowMapPass::update(const std::vector<Light>& lights, const Camera& camer
     if (!layers.empty()) layerTable_.write(layers.data(), layers.size() * sizeof(layers[0]));
     // A layer's depth depends on its projection only (the split distances only pick layers).
     const auto same = [](const gpu::GpuShadowLayer& a, const gpu::GpuShadowLayer& b) {
-        return a.viewProj == b.viewProj && a.params == b.params;
+        return a.viewProj == b.viewProj && a.texelSize == b.texelSize && a.zNear == b.zNear && a.zFar == b.zFar &&
+               a.discScale == b.discScale;
     };
     dirty_.assign(layers.size(), true);
     for (size_t k = 0; k < layers.size() && k < held_.size(); ++k) dirty_[k] = !same(layers[k], held_[k]);

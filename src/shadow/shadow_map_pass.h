@@ -11,7 +11,7 @@
 #include <memory>
 #include <vector>
 
-#include "raster/compute_raster.h"
+#include "core/depth_raster.h"
 #include "core/frame_graph.h"
 #include "core/scene_gpu.h"
 #include "shadow/shadow_filter.h"
@@ -82,7 +82,7 @@ public:
     vk::Image& mask() { return filter_.mask(); }     // RG16F array, one layer per shadowed light
     vk::Image& moments() { return moments_.moments(); }
     // The compute rasterizer when it draws this pass's layers (null: the hardware does).
-    const ComputeRaster* computeRaster() const { return compute_.get(); }
+    const DepthRaster* computeRaster() const { return compute_.get(); }
     const ShadowSettings& settings() const { return settings_; }
 
 private:
@@ -94,7 +94,7 @@ private:
     ShadowRaster raster_;
     bool useCompute_;
     bool hardwareCasters_ = false;
-    std::unique_ptr<ComputeRaster> compute_;
+    std::unique_ptr<DepthRaster> compute_;
     uint32_t slot_ = 0;
     ShadowMoments moments_;
     ShadowFilterPass filter_;

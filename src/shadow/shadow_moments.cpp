@@ -1,5 +1,7 @@
 #include "shadow/shadow_moments.h"
 
+#include "shadow/bindings.h"
+
 namespace penumbra {
 namespace {
 constexpr uint32_t kGroup = 64, kLanes = 4;  // BLUR_GROUP, BLUR_LANES in shaders/shadow/blur.glsl
@@ -7,13 +9,19 @@ constexpr uint32_t kGroup = 64, kLanes = 4;  // BLUR_GROUP, BLUR_LANES in shader
 
 ShadowMoments::ShadowMoments(vk::Allocator& alloc, uint32_t resolution) : alloc_(alloc), resolution_(resolution) {
     vk::Context& ctx = alloc.context();
+    const VkDescriptorType image = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, buffer = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
+                           uniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
     rows_ = vk::ComputeKernel(ctx, "shadow/moments_x.comp",
-                              {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
-                               VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
+                              std::vector<vk::Binding>{{MOMENT_ROWS_DEPTH_MAP, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER},
+                                                       {MOMENT_ROWS_OUT, image},
+                                                       {MOMENT_ROWS_LAYERS, buffer},
+                                                       {MOMENT_ROWS_PARAMS, uniform}},
                               0);
     columns_ = vk::ComputeKernel(ctx, "shadow/moments_y.comp",
-                                 {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE,
-                                  VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER},
+                                 std::vector<vk::Binding>{{MOMENT_COLUMNS_ROWS, image},
+                                                          {MOMENT_COLUMNS_OUT, image},
+                                                          {MOMENT_COLUMNS_LAYERS, buffer},
+                                                          {MOMENT_COLUMNS_PARAMS, uniform}},
                                  0);
     nearest_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
     resize(0);
@@ -41,19 +49,19 @@ void ShadowMoments::addTo(FrameGraph& graph) {
     const uint32_t res = resolution_, shadowLayers = graph.imageOf(depthMap).layers();
     graph.pass("shadow.moments")
         .pipeline(rows_.pipeline)
-        .sampled(0, depthMap, nearest_.handle())
-        .storageImage(1, rows)
-        .storageBuffer(2, layerTable)
-        .uniform(3, params)
+        .sampled(MOMENT_ROWS_DEPTH_MAP, depthMap, nearest_.handle())
+        .storageImage(MOMENT_ROWS_OUT, rows)
+        .storageBuffer(MOMENT_ROWS_LAYERS, layerTable)
+        .uniform(MOMENT_ROWS_PARAMS, params)
         .record([res, shadowLayers](PassContext& c) {
             vkCmdDispatch(c.cmd, vk::divUp(res, kGroup), vk::divUp(res, kLanes), shadowLayers);
         });
     graph.pass("shadow.blur")
         .pipeline(columns_.pipeline)
-        .storageImage(0, rows, Use::StorageRead)
-        .storageImage(1, out)
-        .storageBuffer(2, layerTable)
-        .uniform(3, params)
+        .storageImage(MOMENT_COLUMNS_ROWS, rows, Use::StorageRead)
+        .storageImage(MOMENT_COLUMNS_OUT, out)
+        .storageBuffer(MOMENT_COLUMNS_LAYERS, layerTable)
+        .uniform(MOMENT_COLUMNS_PARAMS, params)
         .record([res, shadowLayers](PassContext& c) {
             vkCmdDispatch(c.cmd, vk::divUp(res, kLanes), vk::divUp(res, kGroup), shadowLayers);
         });

@@ -22,9 +22,9 @@ ShadowRaster::ShadowRaster(vk::Context& ctx, const SceneGpu& scene, const Shadow
     layered_ = make(ctx, d, drawLayout);
     vk::GraphicsDesc id = d;
     id.colorFormats = {VK_FORMAT_R32_UINT};
-    id.fragmentShader = "render/visibility.frag";
+    id.fragmentShader = "core/visibility.frag";
     ids_.opaque = vk::Pipeline::graphics(ctx, id, SceneGpu::drawLayouts(ctx, drawLayout), sizeof(gpu::ShadowDrawPush));
-    id.fragmentShader = "render/visibility_masked.frag";
+    id.fragmentShader = "core/visibility_masked.frag";
     ids_.masked = vk::Pipeline::graphics(ctx, id, SceneGpu::drawLayouts(ctx, drawLayout), sizeof(gpu::ShadowDrawPush));
     d.vertexShader = "shadow/paraboloid.vert";
     // Position and uv only: the paraboloid stages have no use for the normal.
@@ -55,7 +55,7 @@ void ShadowRaster::drawLight(VkCommandBuffer cmd, const Pipelines& pipelines, co
                 gpu::ShadowDrawPush dp = push;
                 dp.material = d.material;
                 dp.layerCount = instances;
-                dp.ids.x = scene_.triangleBase(d);
+                dp.triangleBase = scene_.triangleBase(d);
                 p->push(cmd, dp);
             },
             // Blended materials cast like masked ones, unless the light's deep shadow map takes them.
@@ -121,7 +121,10 @@ void ShadowRaster::record(VkCommandBuffer cmd, vk::Image& map, uint32_t firstVie
         gpu::ShadowDrawPush push{firstView + run.first, 0, run.first, 0, {}};
         if (paraboloid) {
             const LightProjection& first = layout.layers()[s.firstLayer].projection;
-            push.paraboloid = {first.zNear, first.zFar, first.discScale, maxEdge};
+            push.paraboloidNear = first.zNear;
+            push.paraboloidFar = first.zFar;
+            push.paraboloidDiscScale = first.discScale;
+            push.maxEdgeAngle = maxEdge;
         }
         drawLight(cmd, paraboloid ? paraboloid_ : layered_, push, run.count, drawsBlended(s.light));
     }

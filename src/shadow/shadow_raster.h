@@ -26,7 +26,7 @@ public:
     void record(VkCommandBuffer cmd, vk::Image& map, uint32_t firstView, const ShadowLayout& layout,
                 bool paraboloidOnly, const std::function<bool(uint32_t)>& draws) const;
     // Shadow layer `layer` of light `light` (not a paraboloid one) with its depth and, in layer
-    // `idLayer` of `ids` (R32_UINT), the visibility ID of every texel (render/visibility.glsl): the
+    // `idLayer` of `ids` (R32_UINT), the visibility ID of every texel (core/visibility.glsl): the
     // one raster of a light view that an RSM is resolved from (src/rsm).
     void recordIds(VkCommandBuffer cmd, vk::Image& map, vk::Image& ids, uint32_t layer, uint32_t idLayer,
                    uint32_t viewRow, uint32_t light) const;

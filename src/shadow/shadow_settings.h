@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "raster/raster_mode.h"
+#include "core/raster_mode.h"
 #include "scene/scene.h"
 #include "shadow/cascades.h"
 

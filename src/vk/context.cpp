@@ -230,7 +230,7 @@ std::vector<FeatureCheck> checkRequiredFeatures(VkPhysicalDevice device) {
         {"shaderInt64", is13 && f.features.shaderInt64},
         // Its layers with visibility IDs test depth << 32 | ID with one 64-bit atomicMin.
         {"shaderBufferInt64Atomics", is13 && f12.shaderBufferInt64Atomics},
-        // Visibility IDs (render/visibility.glsl): gl_PrimitiveID in fragment shaders needs the Geometry
+        // Visibility IDs (core/visibility.glsl): gl_PrimitiveID in fragment shaders needs the Geometry
         // capability; the RSM resolve writes its RG16_SNORM normals as a storage image.
         {"geometryShader", is13 && f.features.geometryShader},
         {"shaderStorageImageExtendedFormats", is13 && f.features.shaderStorageImageExtendedFormats},

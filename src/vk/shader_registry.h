@@ -6,7 +6,7 @@
 namespace penumbra::vk {
 
 struct EmbeddedShader {
-    const char* key;  // path below shaders/, e.g. "render/lighting.comp"
+    const char* key;  // path below shaders/, e.g. "lighting/lighting.comp"
     const unsigned char* code;
     unsigned long size;
 };

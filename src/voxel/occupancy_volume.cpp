@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "voxel/bindings.h"
+
 namespace penumbra {
 namespace {
 
@@ -18,20 +20,22 @@ gpu::GpuOccupancyGrid occupancyGrid(const Bounds& bounds, uint32_t resolution) {
     const glm::uvec3 dims = (fit + uint32_t(OCCUPANCY_BRICK - 1)) / uint32_t(OCCUPANCY_BRICK) * uint32_t(OCCUPANCY_BRICK);
     const glm::vec3 origin = bounds.center() - 0.5f * voxel * glm::vec3(dims);
     const uint64_t voxels = uint64_t(dims.x) * dims.y * dims.z;
-    return {glm::vec4(origin, voxel), glm::uvec4(dims, uint32_t((voxels + 31) / 32))};
+    return {origin, voxel, dims, uint32_t((voxels + 31) / 32)};
 }
 
 OccupancyVolume::OccupancyVolume(vk::Allocator& alloc, SceneGpu& scene, uint32_t resolution)
     : scene_(scene), grid_(occupancyGrid(scene.scene().bounds, resolution)) {
     std::vector<vk::Binding> bindings;  // materials, the bits, the chunks, then the instances and triangles
-    for (uint32_t k : {1u, 2u, 3u, uint32_t(SCENE_INSTANCES_BINDING), 12u, 13u, 14u, 16u})
+    for (uint32_t k : {VOXELIZE_MATERIALS, VOXELIZE_OCCUPANCY, VOXELIZE_CHUNKS, SCENE_INSTANCES_BINDING, SCENE_VERTICES,
+                       SCENE_INDICES, SCENE_TRIANGLE_MATERIALS, SCENE_DRAWN_TRIANGLES})
         bindings.push_back({k, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
     vk::Context& ctx = alloc.context();
     voxelize_ = vk::ComputeKernel(ctx, "voxel/voxelize.comp", bindings, sizeof(gpu::OccupancyPush));
-    bricks_ = vk::ComputeKernel(ctx, "voxel/bricks.comp", std::vector<VkDescriptorType>{VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}, 0);
+    bricks_ = vk::ComputeKernel(ctx, "voxel/bricks.comp",
+                                std::vector<vk::Binding>{{BRICKS_OCCUPANCY, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}}, 0);
     const glm::uvec3 bricks = glm::uvec3(grid_.dims) / uint32_t(OCCUPANCY_BRICK);
     brickCount_ = bricks.x * bricks.y * bricks.z;
-    const VkDeviceSize words = VkDeviceSize(grid_.dims.w) + (brickCount_ + 31) / 32;
+    const VkDeviceSize words = VkDeviceSize(grid_.firstBrickWord) + (brickCount_ + 31) / 32;
     const VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
     buffer_ = vk::Buffer(alloc, sizeof(gpu::GpuOccupancyGrid) + words * 4, usage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
                          false, "occupancy");
@@ -61,7 +65,7 @@ void OccupancyVolume::addTo(FrameGraph& graph) {
     addVoxelize(graph, "occupancy.voxelize-large", volume, chunks, true);
     graph.pass("occupancy.bricks")
         .pipeline(bricks_.pipeline)
-        .storageBuffer(0, volume, Use::StorageWrite)
+        .storageBuffer(BRICKS_OCCUPANCY, volume, Use::StorageWrite)
         .record([count = brickCount_](PassContext& c) { vkCmdDispatch(c.cmd, vk::divUp(count, 64u), 1, 1); });
 }
 
@@ -71,14 +75,14 @@ void OccupancyVolume::addVoxelize(FrameGraph& graph, const char* name, BufferHan
     const uint32_t triangles = scene_.drawnTriangleCount();
     PassBuilder pass = graph.pass(name);
     pass.pipeline(voxelize_.pipeline)
-        .storageBuffer(1, graph.import(scene_.materials()))
+        .storageBuffer(VOXELIZE_MATERIALS, graph.import(scene_.materials()))
         .storageBuffer(SCENE_INSTANCES_BINDING, scene_.instanceTable(graph))
-        .storageBuffer(2, volume, Use::StorageWrite)
-        .storageBuffer(3, chunks, listed ? Use::StorageRead : Use::StorageWrite);
+        .storageBuffer(VOXELIZE_OCCUPANCY, volume, Use::StorageWrite)
+        .storageBuffer(VOXELIZE_CHUNKS, chunks, listed ? Use::StorageRead : Use::StorageWrite);
     if (listed) pass.use(chunks, Use::IndirectArgs);
     scene_.declareTriangles(pass);
     pass.record([this, triangles, listed, chunks](PassContext& c) {
-        const gpu::OccupancyPush push{{triangles, listed ? 1u : 0u, kChunkCapacity, 0}};
+        const gpu::OccupancyPush push{triangles, listed ? 1u : 0u, kChunkCapacity, 0};
         voxelize_.pipeline.push(c.cmd, push);
         if (listed) {
             vkCmdDispatchIndirect(c.cmd, c.buffer(chunks).handle(), 0);

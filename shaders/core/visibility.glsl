@@ -3,8 +3,8 @@
 // drawn triangles are every instance's triangles, (instance, triangle in the index buffer), and a
 // raster computes the index as the instance's base + the draw's first triangle in its mesh +
 // gl_PrimitiveID (visibilityIdBase). fetchTriangle applies the instance's transform.
-// The includer includes shared/types.h and render/material.glsl first.
-#include "render/triangles.glsl"
+// The includer includes shared/types.h and core/material.glsl first.
+#include "core/triangles.glsl"
 
 struct VisRay {
     vec3 origin, direction;

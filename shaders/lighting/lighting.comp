@@ -4,9 +4,9 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_control_flow_attributes : require
 #include "shared/types.h"
-#include "render/lighting_bindings.h"
-#include "render/lights.glsl"
-#include "render/reconstruct.glsl"
+#include "lighting/lighting_bindings.h"
+#include "core/lights.glsl"
+#include "core/reconstruct.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -21,7 +21,7 @@ layout(set = 0, binding = LIGHTING_INDIRECT) uniform sampler2D indirectIrradianc
 layout(set = 0, binding = LIGHTING_PROBE, std430) writeonly buffer Probe { PixelProbe probe; };  // pixel FrameUniforms.probeX, probeY
 // Velocity: which instance a pixel shows (visibility IDs, frame.visibilityIds) and where it was.
 #define MOTION_FIRST_BINDING LIGHTING_MOTION_FIRST
-#include "render/motion.glsl"
+#include "core/motion.glsl"
 
 #include "shadow/shadow_lookup.glsl"
 #include "dsm/dsm_lookup.glsl"  // bindings 8-11: translucent casters (hair, blended meshes)

@@ -1,13 +1,13 @@
 // The drawn triangles as compute passes fetch them: every instance's triangles, (instance, triangle
-// in the index buffer), in world space (the instance's transform applied). Bindings 12-14 and 16 of
+// in the index buffer), in world space (the instance's transform applied). Bindings SCENE_VERTICES.. of
 // set 0 (SceneGpu::declareTriangles) and the instance table.
 #ifndef PENUMBRA_TRIANGLES_GLSL
 #define PENUMBRA_TRIANGLES_GLSL
-#include "render/instances.glsl"
-layout(set = 0, binding = 12, std430) readonly buffer VisVertices { float visVertex[]; };  // penumbra::Vertex
-layout(set = 0, binding = 13, std430) readonly buffer VisIndices { uint visIndex[]; };
-layout(set = 0, binding = 14, std430) readonly buffer VisTriangleMaterials { uint visTriangleMaterial[]; };
-layout(set = 0, binding = 16, std430) readonly buffer VisDrawnTriangles { uvec2 visDrawn[]; };  // (instance, triangle)
+#include "core/instances.glsl"
+layout(set = 0, binding = SCENE_VERTICES, std430) readonly buffer VisVertices { float visVertex[]; };  // penumbra::Vertex
+layout(set = 0, binding = SCENE_INDICES, std430) readonly buffer VisIndices { uint visIndex[]; };
+layout(set = 0, binding = SCENE_TRIANGLE_MATERIALS, std430) readonly buffer VisTriangleMaterials { uint visTriangleMaterial[]; };
+layout(set = 0, binding = SCENE_DRAWN_TRIANGLES, std430) readonly buffer VisDrawnTriangles { uvec2 visDrawn[]; };  // (instance, triangle)
 
 struct VisTriangle {
     vec3 p[3];   // world space

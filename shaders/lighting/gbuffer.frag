@@ -2,7 +2,7 @@
 // Thin G-buffer pass: albedo (sRGB attachment) and world normal; all lighting is in compute.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
-#include "render/material.glsl"
+#include "core/material.glsl"
 
 layout(location = 0) in vec3 inNormal;
 layout(location = 1) in vec2 inUv;

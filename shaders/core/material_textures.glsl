@@ -1,7 +1,7 @@
 // The scene's base-colour textures (SceneGpu's texture table, set 1): MATERIAL_TEXTURE_SLOTS slots, each
 // a 2D array of the textures of one size with their mip chains (unused slots hold a 1x1 white one),
 // one shared sampler (linear, mip-mapped, repeat). A material's handle `t` names slot and layer
-// (TEXTURE_LAYER_SHIFT; render/texture_upload.h plans them).
+// (TEXTURE_LAYER_SHIFT; core/texture_upload.h plans them).
 // Why a switch with constant indices: Mesa 22.3's lavapipe (Debian 12) offers no descriptor indexing
 // and not even shaderSampledImageArrayDynamicIndexing, so an image array may only be indexed by a
 // constant; each case below is one. It is legal for any index, uniform or not (compute resolves
@@ -9,8 +9,9 @@
 #if MATERIAL_TEXTURE_SLOTS != 28
 #error "the cases below name slots 0-27: keep them in step with MATERIAL_TEXTURE_SLOTS"
 #endif
-layout(set = 1, binding = 0) uniform texture2DArray materialTextures[MATERIAL_TEXTURE_SLOTS];
-layout(set = 1, binding = 1) uniform sampler materialSampler;
+#include "core/scene_bindings.h"
+layout(set = SCENE_TEXTURE_SET, binding = SCENE_TEXTURES) uniform texture2DArray materialTextures[MATERIAL_TEXTURE_SLOTS];
+layout(set = SCENE_TEXTURE_SET, binding = SCENE_TEXTURE_SAMPLER) uniform sampler materialSampler;
 
 #define MT_CASES4(L, i) L(i) L(i + 1) L(i + 2) L(i + 3)
 #define MT_CASES8(L, i) MT_CASES4(L, i) MT_CASES4(L, i + 4)

@@ -1,5 +1,5 @@
-// Binding numbers of the camera's visibility resolve (render/visibility_resolve.comp), included by
-// the GLSL and by src/render/gbuffer_pass.cpp; bindings 0-2 are the scene's resolve set
+// Binding numbers of the camera's visibility resolve (lighting/visibility_resolve.comp), included by
+// the GLSL and by src/lighting/gbuffer_pass.cpp; bindings 0-2 are the scene's resolve set
 // (SceneGpu::resolveSetBindings), 4 is free.
 #ifndef PENUMBRA_GBUFFER_BINDINGS_H
 #define PENUMBRA_GBUFFER_BINDINGS_H

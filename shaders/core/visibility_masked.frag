@@ -1,8 +1,8 @@
 #version 460
-// Visibility ID for alphaMode MASK materials: the alpha test stays in the raster (render/visibility.frag).
+// Visibility ID for alphaMode MASK materials: the alpha test stays in the raster (core/visibility.frag).
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
-#include "render/material.glsl"
+#include "core/material.glsl"
 
 layout(location = 1) in vec2 inUv;
 layout(location = 3) flat in uint inIdBase;

@@ -5,9 +5,9 @@
 // interpolated world normal (w = SHADING_SURFACE). No ID: zeros, as the raster path clears.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
-#include "render/gbuffer_bindings.h"
-#include "render/material.glsl"
-#include "render/visibility.glsl"
+#include "lighting/gbuffer_bindings.h"
+#include "core/material.glsl"
+#include "core/visibility.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = VISIBILITY_RESOLVE_FRAME) uniform Frame { FrameUniforms frame; };
@@ -18,7 +18,7 @@ layout(push_constant) uniform Push { VisibilityResolvePush pc; };
 
 void main() {
     const ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
-    if (any(greaterThanEqual(pixel, ivec2(pc.size.xy)))) return;
+    if (any(greaterThanEqual(pixel, ivec2(pc.width, pc.height)))) return;
     const uint id = texelFetch(ids, pixel, 0).r;
     if (id == 0u) {
         imageStore(outAlbedo, pixel, vec4(0.0));
@@ -26,7 +26,7 @@ void main() {
         return;
     }
     VisRay centre, dx0, dx1, dy0, dy1;
-    quadRays(frame.invViewProj, pixel, vec2(pc.size.xy), centre, dx0, dx1, dy0, dy1);
+    quadRays(frame.invViewProj, pixel, vec2(pc.width, pc.height), centre, dx0, dx1, dy0, dy1);
     const VisSurface s = resolveSurface(fetchTriangle(id), centre, dx0, dx1, dy0, dy1);
     imageStore(outAlbedo, pixel, vec4(surfaceBaseColor(s).rgb, 1.0));
     imageStore(outNormal, pixel, vec4(s.normal, SHADING_SURFACE));

@@ -1,4 +1,4 @@
-#include "raster/raster_mode.h"
+#include "core/raster_mode.h"
 
 #include <stdexcept>
 #include <string>

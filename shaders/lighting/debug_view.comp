@@ -3,7 +3,7 @@
 // of the source, letterboxed as a square into the output image before tone mapping.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
-#include "render/lighting_bindings.h"
+#include "lighting/lighting_bindings.h"
 #include "shared/octahedral.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -19,9 +19,9 @@ void main() {
     const vec2 uv = (vec2(pixel) + 0.5 - 0.5 * (vec2(size) - side)) / side;
     vec3 value = vec3(0.0);
     if (all(greaterThanEqual(uv, vec2(0.0))) && all(lessThan(uv, vec2(1.0)))) {
-        const vec4 texel = textureLod(source, vec3(uv, float(pc.mode.y)), 0.0);
-        if (pc.mode.x == AOV_RSM_NORMAL) value = octDecode(texel.xy) * 0.5 + 0.5;
-        else if (pc.mode.x == AOV_RSM_FLUX) {
+        const vec4 texel = textureLod(source, vec3(uv, float(pc.layer)), 0.0);
+        if (pc.aov == AOV_RSM_NORMAL) value = octDecode(texel.xy) * 0.5 + 0.5;
+        else if (pc.aov == AOV_RSM_FLUX) {
             // A texel's flux shrinks with the texel count: shown as the intensity (W/sr) of a light that
             // sent every texel's flux over the sphere, so that the view reads alike at every resolution.
             const ivec3 texels = textureSize(source, 0);

@@ -3,7 +3,7 @@
 // f(x) = x(2.51x + 0.03) / (x(2.43x + 0.59) + 0.14), clamped to [0,1], then the sRGB transfer curve.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
-#include "render/lighting_bindings.h"
+#include "lighting/lighting_bindings.h"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = TONEMAP_HDR, rgba32f) uniform readonly image2D hdrImage;

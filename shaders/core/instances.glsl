@@ -4,6 +4,7 @@
 // remainder.
 #ifndef PENUMBRA_INSTANCES_GLSL
 #define PENUMBRA_INSTANCES_GLSL
+#include "core/scene_bindings.h"
 layout(set = 0, binding = SCENE_INSTANCES_BINDING, std430) readonly buffer Instances { GpuInstance instances[]; };
 
 // Macros, not functions: compute shaders include this file too, and have no instance built-ins.
