@@ -1,5 +1,6 @@
 #version 460
-// Light and geometry injection of the down-sampled VPLs. Light: lpv/vpl_light.glsl. The RSM flux
+// Light and geometry injection of the down-sampled VPLs. Light: lpv/vpl_light.glsl (a trilinear
+// splat half a cell along the normal). The RSM flux
 // already contains the texel's footprint (rsm/rsm.frag), so no surfel-area guess is needed.
 // Geometry: the surfel blocks area / cell^2 of the cell's cross-section, as a cosine lobe around its
 // normal scaled to peak at that coverage, added at the nearest geometry-volume corner.
@@ -40,11 +41,14 @@ void main() {
     const int fractionBits = lightFractionBits(pc.vplCount);
     for (uint k = 0; k < pc.cascadeCount; ++k) {
         float cell = pc.cascades[k].origin.w;
-        ivec3 c = vplLightCell(v, k);
-        if (insideGrid(c)) {
+        const Splat splat = vplSplat(v, k);
+        for (uint corner = 0; corner < 8u; ++corner) {
+            const ivec3 c = splatCell(splat, corner);
+            const float w = splatWeight(splat, corner);
+            if (!insideGrid(c) || w == 0.0) continue;
             for (uint ch = 0; ch < 3u; ++ch) {
                 const int e = lightExponent(ranges[lightRangeIndex(k, ch, c)]);
-                const i64vec4 q = toFixed(vplLight(v, ch), fractionBits - e);
+                const i64vec4 q = toFixed(vplLight(v, ch) * w, fractionBits - e);
                 uint base = lightIndex(k, ch, c) * 4u;
                 ADD_FIXED(lightSums, base, q)
             }

@@ -24,17 +24,23 @@ void main() {
     if (i >= pc.vplCount) return;
     GpuVpl v = vpls[i];
     if (v.position.w < 0.5) return;
-    uvec3 bits;
-    for (uint ch = 0; ch < 3u; ++ch) bits[ch] = floatBitsToUint(largestMagnitude(vplLight(v, ch)));
+    vec3 largest;
+    for (uint ch = 0; ch < 3u; ++ch) largest[ch] = largestMagnitude(vplLight(v, ch));
     const uint colourStride = cellsPerVolume();
     for (uint k = 0; k < pc.cascadeCount; ++k) {
-        ivec3 c = vplLightCell(v, k);
-        if (!insideGrid(c)) continue;
-        const uint key = lightRangeIndex(k, 0u, c);
-        LPV_BY_CELL(key,
-                    const uvec3 largest_ = subgroupMax(bits);
-                    if (subgroupElect()) for (uint ch = 0u; ch < 3u; ++ch)
-                        atomicMax(ranges[cell_ + ch * colourStride], largest_[ch]);,
-                    for (uint ch = 0u; ch < 3u; ++ch) atomicMax(ranges[key + ch * colourStride], bits[ch]);)
+        const Splat splat = vplSplat(v, k);
+        for (uint corner = 0; corner < 8u; ++corner) {
+            const ivec3 c = splatCell(splat, corner);
+            const float w = splatWeight(splat, corner);
+            if (!insideGrid(c) || w == 0.0) continue;
+            // Rounding is monotonic: no coefficient times w rounds above the largest times w.
+            const uvec3 bits = floatBitsToUint(largest * w);
+            const uint key = lightRangeIndex(k, 0u, c);
+            LPV_BY_CELL(key,
+                        const uvec3 largest_ = subgroupMax(bits);
+                        if (subgroupElect()) for (uint ch = 0u; ch < 3u; ++ch)
+                            atomicMax(ranges[cell_ + ch * colourStride], largest_[ch]);,
+                        for (uint ch = 0u; ch < 3u; ++ch) atomicMax(ranges[key + ch * colourStride], bits[ch]);)
+        }
     }
 }

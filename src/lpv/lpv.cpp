@@ -202,21 +202,22 @@ void LightPropagationVolume::addInjection(FrameGraph& graph) {
     if (layers_ == 0) return;
     const BufferHandle vpls = graph.import(vpls_);
     const uint32_t groups = vk::divUp(push_.vplCount, 64);
-    // Each VPL read once; per cascade 3 atomic maxima of 4 bytes.
+    // Each VPL read once; per cascade and splat corner (8) 3 atomic maxima of 4 bytes.
     graph.pass("lpv.inject-range")
         .pipeline(injectRange_.pipeline)
         .storageBuffer(LPV_RANGE_VPLS, vpls)
         .storageBuffer(LPV_RANGE_RANGES, geometrySums, Use::StorageWrite)
-        .bytes(uint64_t(push_.vplCount) * (sizeof(gpu::GpuVpl) + cascadeCount_ * 3 * 8))
+        .bytes(uint64_t(push_.vplCount) * (sizeof(gpu::GpuVpl) + cascadeCount_ * 8 * 3 * 8))
         .record([this, push = push_, groups](PassContext& c) { run(c, injectRange_, push, {groups, 1, 1}); });
-    // Each VPL read once; per cascade 3 scales read and 16 atomic read-modify-writes of 8 bytes.
+    // Each VPL read once; per cascade and splat corner 3 scales read and 12 atomic read-modify-writes
+    // of 8 bytes, and 4 for the geometry.
     graph.pass("lpv.inject")
         .pipeline(inject_.pipeline)
         .storageBuffer(LPV_INJECT_VPLS, vpls)
         .storageBuffer(LPV_INJECT_LIGHT_SUMS, lightSums, Use::StorageWrite)
         .storageBuffer(LPV_INJECT_GEOMETRY_SUMS, geometrySums, Use::StorageWrite)
         .storageBuffer(LPV_INJECT_RANGES, geometrySums)
-        .bytes(uint64_t(push_.vplCount) * (sizeof(gpu::GpuVpl) + cascadeCount_ * (3 * 4 + 16 * 16)))
+        .bytes(uint64_t(push_.vplCount) * (sizeof(gpu::GpuVpl) + cascadeCount_ * (8 * (3 * 4 + 12 * 16) + 4 * 16)))
         .record([this, push = push_, groups](PassContext& c) { run(c, inject_, push, {groups, 1, 1}); });
 }
 

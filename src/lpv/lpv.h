@@ -2,7 +2,8 @@
 //   lpv.downsample        RSM (2048^2) -> VPLs (512^2): brightest texel + 26-neighbourhood merge
 //   lpv.clear             zero the injection's fixed-point sums
 //   lpv.inject-range      per cell and colour the largest coefficient a VPL adds: the scale of its sum
-//   lpv.inject            VPLs -> light (L1 SH per colour) and geometry sums, 64-bit fixed point
+//   lpv.inject            VPLs -> light (L1 SH per colour, a trilinear splat half a cell along the
+//                         normal: lpv/vpl_light.glsl) and geometry sums, 64-bit fixed point
 //                         (integer atomics: the same sum in any order, lpv/fixed_point.glsl)
 //   lpv.inject-camera     camera G-buffer surfels -> geometry sums
 //   lpv.resolve           the sums -> light volume A and the geometry volume (floats)
