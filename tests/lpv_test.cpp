@@ -317,7 +317,7 @@ TEST_F(LpvVolumeTest, InjectionIsOrderIndependent) {
         }
     for (size_t i = 0; i < a.geometry.size(); ++i)
         for (int k = 0; k < 4; ++k) maxDiff = std::max(maxDiff, double(std::abs(a.geometry[i][k] - b.geometry[i][k])));
-    // Float atomics add in any order: only rounding may differ.
+    // Fixed-point sums (lpv/fixed_point.glsl) are the same in any order; the bound is float rounding's.
     EXPECT_LT(maxDiff, 1e-5 * maxValue);
 }
 
@@ -444,7 +444,7 @@ TEST_F(GpuTest, LpvVoxelFacesAreTheShareOfOpenColumns) {
     EXPECT_LT(ambiguous, compared / 10);
 
     // The next frame of the static scene keeps the faces: neither the voxels nor the grids moved. Its
-    // image is the first's but for the order of the injection's float atomics (1e-4 relative).
+    // image is the first's (the injection's fixed-point sums do not depend on their order).
     const std::vector<float> first = r.readHdr();
     r.render(scene.cameras[0]);
     for (const PassDesc& p : r.passes())
