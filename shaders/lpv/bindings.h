@@ -12,16 +12,28 @@
 #define LPV_DOWNSAMPLE_LIGHTS 4
 #define LPV_DOWNSAMPLE_VPLS 5
 
+// lpv/inject_range.comp.
+#define LPV_RANGE_VPLS 0
+#define LPV_RANGE_RANGES 1
+
 // lpv/inject.comp.
 #define LPV_INJECT_VPLS 0
-#define LPV_INJECT_LIGHT 1
-#define LPV_INJECT_GEOMETRY 2
+#define LPV_INJECT_LIGHT_SUMS 1
+#define LPV_INJECT_GEOMETRY_SUMS 2
+#define LPV_INJECT_RANGES 3
 
 // lpv/inject_camera.comp.
 #define LPV_CAMERA_FRAME 0
 #define LPV_CAMERA_GBUFFER_NORMAL 1
 #define LPV_CAMERA_GBUFFER_DEPTH 2
-#define LPV_CAMERA_GEOMETRY 3
+#define LPV_CAMERA_GEOMETRY_SUMS 3
+
+// lpv/resolve.comp.
+#define LPV_RESOLVE_LIGHT_SUMS 0
+#define LPV_RESOLVE_GEOMETRY_SUMS 1
+#define LPV_RESOLVE_RANGES 2
+#define LPV_RESOLVE_LIGHT 3
+#define LPV_RESOLVE_GEOMETRY 4
 
 // lpv/face_transmittance.comp.
 #define LPV_FACES_OCCUPANCY 0

@@ -114,15 +114,18 @@ void main() {
                 result[ch] += (solid * transmit * scale[ch] * max(dot(source[ch], y), 0.0) * PI) * y;
         }
     }
+    // The first step writes both halves of the sum: until then the buffer held the injection's
+    // fixed-point sums (lpv/volume.glsl).
     for (uint ch = 0; ch < 3u; ++ch) {
-        uint i = lightIndex(cascade, ch, cell);
+        uint i = lightIndex(cascade, ch, cell), f = i + 3u * pc.cascadeCount * cellsPerVolume();
         dst[i] = result[ch];
-        if (far) {
-            if (first) accum[i] = src[i];
-            uint f = i + 3u * pc.cascadeCount * cellsPerVolume();
+        if (first) {
+            accum[i] = src[i] + (far ? vec4(0.0) : result[ch]);
+            accum[f] = far ? result[ch] : vec4(0.0);
+        } else if (far) {
             accum[f] += result[ch];
         } else {
-            accum[i] = (first ? src[i] : accum[i]) + result[ch];
+            accum[i] += result[ch];
         }
     }
 }

@@ -13,3 +13,11 @@ uint geometryIndex(uint cascade, ivec3 c) { return cascade * cellsPerVolume() + 
 
 // Position in cell units of cascade k (cell i spans [i, i + 1); its centre is at i + 0.5).
 vec3 gridCoord(uint k, vec3 x) { return (x - pc.cascades[k].origin.xyz) / pc.cascades[k].origin.w; }
+
+// During injection (lpv.h) the fixed-point sums (lpv/fixed_point.glsl) take buffers that are free
+// until the first propagation step: the light's (4 int64 per colour and cell, at 4 x lightIndex) the
+// sum buffer, the geometry's (4 int64 per cell, at 4 x geometryIndex) light volume B, followed there
+// by the light's scales (one uint per colour and cell, at lightRangeIndex).
+uint lightRangeIndex(uint cascade, uint channel, ivec3 c) {
+    return 8u * pc.cascadeCount * cellsPerVolume() + lightIndex(cascade, channel, c);
+}

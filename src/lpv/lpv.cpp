@@ -72,13 +72,21 @@ LightPropagationVolume::LightPropagationVolume(vk::Allocator& alloc, uint32_t wi
                                      {LPV_DOWNSAMPLE_RSM_FLUX, kTex}, {LPV_DOWNSAMPLE_LAYERS, kSsbo},
                                      {LPV_DOWNSAMPLE_LIGHTS, kSsbo}, {LPV_DOWNSAMPLE_VPLS, kSsbo}},
                                     push);
-    inject_ = vk::ComputeKernel(
-        ctx, "lpv/inject.comp", {{LPV_INJECT_VPLS, kSsbo}, {LPV_INJECT_LIGHT, kSsbo}, {LPV_INJECT_GEOMETRY, kSsbo}},
-        push);
+    injectRange_ = vk::ComputeKernel(ctx, "lpv/inject_range.comp",
+                                     {{LPV_RANGE_VPLS, kSsbo}, {LPV_RANGE_RANGES, kSsbo}}, push);
+    inject_ = vk::ComputeKernel(ctx, "lpv/inject.comp",
+                                {{LPV_INJECT_VPLS, kSsbo}, {LPV_INJECT_LIGHT_SUMS, kSsbo},
+                                 {LPV_INJECT_GEOMETRY_SUMS, kSsbo}, {LPV_INJECT_RANGES, kSsbo}},
+                                push);
     injectCamera_ = vk::ComputeKernel(ctx, "lpv/inject_camera.comp",
                                       {{LPV_CAMERA_FRAME, kUbo}, {LPV_CAMERA_GBUFFER_NORMAL, kTex},
-                                       {LPV_CAMERA_GBUFFER_DEPTH, kTex}, {LPV_CAMERA_GEOMETRY, kSsbo}},
+                                       {LPV_CAMERA_GBUFFER_DEPTH, kTex}, {LPV_CAMERA_GEOMETRY_SUMS, kSsbo}},
                                       push);
+    resolve_ = vk::ComputeKernel(ctx, "lpv/resolve.comp",
+                                 {{LPV_RESOLVE_LIGHT_SUMS, kSsbo}, {LPV_RESOLVE_GEOMETRY_SUMS, kSsbo},
+                                  {LPV_RESOLVE_RANGES, kSsbo}, {LPV_RESOLVE_LIGHT, kSsbo},
+                                  {LPV_RESOLVE_GEOMETRY, kSsbo}},
+                                 push);
     propagate_ = vk::ComputeKernel(ctx, "lpv/propagate.comp",
                                    {{LPV_PROPAGATE_SOURCE, kSsbo}, {LPV_PROPAGATE_DESTINATION, kSsbo},
                                     {LPV_PROPAGATE_SUM, kSsbo}, {LPV_PROPAGATE_GEOMETRY, kSsbo},
@@ -145,6 +153,7 @@ void LightPropagationVolume::addTo(FrameGraph& graph, uint32_t rsmLayers, uint64
     if (layers_ > 0) addDownsample(graph);
     addInjection(graph);
     addCameraGeometry(graph);
+    addResolve(graph);
     addPropagation(graph, occupancyGeneration);
     addGather(graph);
 }
@@ -158,6 +167,7 @@ void LightPropagationVolume::setVpls(vk::CommandContext& cmd, const std::vector<
 
 void LightPropagationVolume::addPropagationFromVpls(FrameGraph& graph) {
     addInjection(graph);
+    addResolve(graph);
     addPropagation(graph);
 }
 
@@ -179,24 +189,53 @@ void LightPropagationVolume::addDownsample(FrameGraph& graph) {
 }
 
 void LightPropagationVolume::addInjection(FrameGraph& graph) {
-    const BufferHandle a = graph.import(volumeA_), sum = graph.import(accum_), geometry = graph.import(geometry_);
+    // The fixed-point sums live in the sum buffer and volume B until the first step (lpv/volume.glsl).
+    const BufferHandle lightSums = graph.import(accum_), geometrySums = graph.import(volumeB_);
     graph.pass("lpv.clear", PassKind::Transfer)
-        .use(a, Use::TransferDst)
-        .use(sum, Use::TransferDst)
-        .use(geometry, Use::TransferDst)
-        .bytes(volumeA_.size() + accum_.size() + geometry_.size())
-        .record([a, sum, geometry](PassContext& c) {
-            for (BufferHandle h : {a, sum, geometry}) vkCmdFillBuffer(c.cmd, c.buffer(h).handle(), 0, VK_WHOLE_SIZE, 0);
+        .use(lightSums, Use::TransferDst)
+        .use(geometrySums, Use::TransferDst)
+        .bytes(accum_.size() + volumeB_.size())
+        .record([lightSums, geometrySums](PassContext& c) {
+            for (BufferHandle h : {lightSums, geometrySums})
+                vkCmdFillBuffer(c.cmd, c.buffer(h).handle(), 0, VK_WHOLE_SIZE, 0);
         });
     if (layers_ == 0) return;
-    // Each VPL read once; per cascade 16 atomic read-modify-writes of 4 bytes.
+    const BufferHandle vpls = graph.import(vpls_);
+    const uint32_t groups = vk::divUp(push_.vplCount, 64);
+    // Each VPL read once; per cascade and splat corner (8) 3 atomic maxima of 4 bytes.
+    graph.pass("lpv.inject-range")
+        .pipeline(injectRange_.pipeline)
+        .storageBuffer(LPV_RANGE_VPLS, vpls)
+        .storageBuffer(LPV_RANGE_RANGES, geometrySums, Use::StorageWrite)
+        .bytes(uint64_t(push_.vplCount) * (sizeof(gpu::GpuVpl) + cascadeCount_ * 8 * 3 * 8))
+        .record([this, push = push_, groups](PassContext& c) { run(c, injectRange_, push, {groups, 1, 1}); });
+    // Each VPL read once; per cascade and splat corner 3 scales read and 12 atomic read-modify-writes
+    // of 8 bytes, and 4 for the geometry.
     graph.pass("lpv.inject")
         .pipeline(inject_.pipeline)
-        .storageBuffer(LPV_INJECT_VPLS, graph.import(vpls_))
-        .storageBuffer(LPV_INJECT_LIGHT, a, Use::StorageWrite)
-        .storageBuffer(LPV_INJECT_GEOMETRY, geometry, Use::StorageWrite)
-        .bytes(uint64_t(push_.vplCount) * (sizeof(gpu::GpuVpl) + cascadeCount_ * 16 * 8))
-        .record([this, push = push_](PassContext& c) { run(c, inject_, push, {vk::divUp(push.vplCount, 64), 1, 1}); });
+        .storageBuffer(LPV_INJECT_VPLS, vpls)
+        .storageBuffer(LPV_INJECT_LIGHT_SUMS, lightSums, Use::StorageWrite)
+        .storageBuffer(LPV_INJECT_GEOMETRY_SUMS, geometrySums, Use::StorageWrite)
+        .storageBuffer(LPV_INJECT_RANGES, geometrySums)
+        .bytes(uint64_t(push_.vplCount) * (sizeof(gpu::GpuVpl) + cascadeCount_ * (8 * (3 * 4 + 12 * 16) + 4 * 16)))
+        .record([this, push = push_, groups](PassContext& c) { run(c, inject_, push, {groups, 1, 1}); });
+}
+
+// The fixed-point sums to the float light volume A and the geometry volume.
+void LightPropagationVolume::addResolve(FrameGraph& graph) {
+    const uint32_t r = settings_.resolution;
+    const BufferHandle sums = graph.import(volumeB_);
+    graph.pass("lpv.resolve")
+        .pipeline(resolve_.pipeline)
+        .storageBuffer(LPV_RESOLVE_LIGHT_SUMS, graph.import(accum_))
+        .storageBuffer(LPV_RESOLVE_GEOMETRY_SUMS, sums)
+        .storageBuffer(LPV_RESOLVE_RANGES, sums)
+        .storageBuffer(LPV_RESOLVE_LIGHT, graph.import(volumeA_), Use::StorageWrite)
+        .storageBuffer(LPV_RESOLVE_GEOMETRY, graph.import(geometry_), Use::StorageWrite)
+        .bytes(accum_.size() + volumeB_.size() + volumeA_.size() + geometry_.size())
+        .record([this, push = push_, r](PassContext& c) {
+            run(c, resolve_, push, {vk::divUp(r, 4), vk::divUp(r, 4), vk::divUp(r * cascadeCount_, 4)});
+        });
 }
 
 void LightPropagationVolume::addCameraGeometry(FrameGraph& graph) {
@@ -209,7 +248,7 @@ void LightPropagationVolume::addCameraGeometry(FrameGraph& graph) {
         .uniform(LPV_CAMERA_FRAME, graph.buffer("frame"))
         .sampled(LPV_CAMERA_GBUFFER_NORMAL, graph.image("gbuffer.normal"), point)
         .sampled(LPV_CAMERA_GBUFFER_DEPTH, graph.image("gbuffer.depth"), point)
-        .storageBuffer(LPV_CAMERA_GEOMETRY, graph.import(geometry_), Use::StorageWrite)
+        .storageBuffer(LPV_CAMERA_GEOMETRY_SUMS, graph.import(volumeB_), Use::StorageWrite)
         .record([this, push = push_, groups](PassContext& c) { run(c, injectCamera_, push, groups); });
 }
 

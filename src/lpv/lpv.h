@@ -1,8 +1,12 @@
 // Light propagation volumes (Kaplanyan 2009, Kaplanyan & Dachsbacher 2010), fed by the RSM:
 //   lpv.downsample        RSM (2048^2) -> VPLs (512^2): brightest texel + 26-neighbourhood merge
-//   lpv.clear             zero the light, accumulation and geometry volumes
-//   lpv.inject            VPLs -> light volume (L1 SH per colour, float atomics) and geometry volume
-//   lpv.inject-camera     camera G-buffer surfels -> geometry volume
+//   lpv.clear             zero the injection's fixed-point sums
+//   lpv.inject-range      per cell and colour the largest coefficient a VPL adds: the scale of its sum
+//   lpv.inject            VPLs -> light (L1 SH per colour, a trilinear splat half a cell along the
+//                         normal: lpv/vpl_light.glsl) and geometry sums, 64-bit fixed point
+//                         (integer atomics: the same sum in any order, lpv/fixed_point.glsl)
+//   lpv.inject-camera     camera G-buffer surfels -> geometry sums
+//   lpv.resolve           the sums -> light volume A and the geometry volume (floats)
 //   lpv.faces             (--lpv-geometry voxels) the open share of every cell face, from "occupancy"
 //   lpv.propagate[i]      6 neighbours x 5 faces, occlusion from the geometry volume (or the faces), running sum
 //   lpv.gather            per pixel irradiance from the summed volume (trilinear, cascades summed)
@@ -34,7 +38,10 @@ uint32_t automaticCascadeCount(const Bounds& scene);
 
 // Buffer sizes, shared with the device budget. A light volume: three RGBA32F SH colour planes per
 // cell of every cascade (the propagation's two, and the sum is twice that); a geometry volume: one
-// RGBA32F per cell; the VPL buffer: `n`^2 VPLs per RSM layer.
+// RGBA32F per cell; the VPL buffer: `n`^2 VPLs per RSM layer. The injection's fixed-point sums need
+// no memory of their own: until the first step reads light volume A, the light's (8 bytes per
+// coefficient) fill the sum buffer and the geometry's and the light's scales (44 bytes per cell) fit
+// in light volume B (48 bytes per cell).
 inline uint64_t lpvLightVolumeBytes(uint64_t resolution, uint64_t cascades) {
     return resolution * resolution * resolution * cascades * 3 * sizeof(glm::vec4);
 }
@@ -70,12 +77,15 @@ public:
     const vk::Buffer& accumulated() const { return accum_; }
     const vk::Buffer& lastStep() const { return settings_.iterations % 2 ? volumeB_ : volumeA_; }
     const vk::Buffer& geometry() const { return geometry_; }
+    // The injected light (light volume A): steps 2, 4, ... write A again, so one step leaves it.
+    const vk::Buffer& injected() const { return volumeA_; }
     const vk::Buffer& faces() const { return faces_; }  // --lpv-geometry voxels
     const vk::Buffer& vpls() const { return vpls_; }
 
 private:
     void addDownsample(FrameGraph& graph);
     void addInjection(FrameGraph& graph);
+    void addResolve(FrameGraph& graph);
     void addCameraGeometry(FrameGraph& graph);
     void addPropagation(FrameGraph& graph, uint64_t occupancyGeneration = 0);
     void addGather(FrameGraph& graph);
@@ -88,7 +98,7 @@ private:
     gpu::LpvPush push_{};
     bool voxels() const { return settings_.geometry == LpvGeometry::Voxels; }
 
-    vk::ComputeKernel downsample_, inject_, injectCamera_, propagate_, gather_, faceKernel_;
+    vk::ComputeKernel downsample_, injectRange_, inject_, injectCamera_, resolve_, propagate_, gather_, faceKernel_;
     vk::Sampler pointSampler_;
     vk::Buffer vpls_, volumeA_, volumeB_, accum_, geometry_;
     vk::Buffer faces_;  // --lpv-geometry voxels: per cell the open share of its -x, -y, -z faces

@@ -234,9 +234,9 @@ std::vector<FeatureCheck> checkRequiredFeatures(VkPhysicalDevice device) {
         // capability; the RSM resolve writes its RG16_SNORM normals as a storage image.
         {"geometryShader", is13 && f.features.geometryShader},
         {"shaderStorageImageExtendedFormats", is13 && f.features.shaderStorageImageExtendedFormats},
-        // LPV injection accumulates SH coefficients with float atomics (src/lpv).
+        // Deep opacity maps sum optical depth with float atomics (dsm/opacity_build.comp).
         {"shaderBufferFloat32AtomicAdd (VK_EXT_shader_atomic_float)", is13 && af.shaderBufferFloat32AtomicAdd},
-        // and sums a subgroup's VPLs per cell before its atomics (lpv/subgroup_add.glsl).
+        // LPV injection sums a subgroup's VPLs per cell before its atomics (lpv/subgroup_cells.glsl).
         {"subgroup basic, ballot and arithmetic in compute",
          is13 && (p11.subgroupSupportedOperations & subgroupNeed) == subgroupNeed &&
              (p11.subgroupSupportedStages & VK_SHADER_STAGE_COMPUTE_BIT)},
