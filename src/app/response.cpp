@@ -48,10 +48,16 @@ std::pair<std::vector<Light>, std::vector<Light>> changedLights(const std::vecto
     if (c.kind == LightChange::Kind::Off) after[0].intensity = 0.0f;
     if (c.kind == LightChange::Kind::On) before[0].intensity = 0.0f;
     if (c.kind == LightChange::Kind::SunTurn) {
-        const glm::quat turn = glm::angleAxis(glm::radians(c.degrees), glm::vec3(0, 1, 0));
         bool any = false;
-        for (Light& l : after)
-            if (l.type == LightType::Directional) l.direction = turn * l.direction, any = true;
+        for (Light& l : after) {
+            if (l.type != LightType::Directional) continue;
+            // About the horizontal axis across the sun's direction: its direction turns by DEG (its
+            // elevation changes), where a turn about the vertical would move a high sun by less.
+            glm::vec3 axis = glm::cross(l.direction, glm::vec3(0, 1, 0));
+            axis = glm::length(axis) > 1e-6f ? glm::normalize(axis) : glm::vec3(1, 0, 0);
+            l.direction = glm::angleAxis(glm::radians(c.degrees), axis) * l.direction;
+            any = true;
+        }
         if (!any) throw std::invalid_argument("the scene has no directional light to turn");
     }
     return {before, after};

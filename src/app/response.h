@@ -14,7 +14,7 @@ namespace penumbra {
 
 struct LightChange {
     enum class Kind { SunTurn, Off, On } kind = Kind::SunTurn;
-    float degrees = 0.0f;  // SunTurn: every directional light turned about the vertical axis
+    float degrees = 0.0f;  // SunTurn: every directional light's direction turned by this angle
 };
 // "sun:DEG", "off" (the first light goes out) or "on" (it comes on). Throws std::invalid_argument.
 LightChange parseLightChange(const std::string& text);

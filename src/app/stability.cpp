@@ -250,8 +250,9 @@ OptionTable makeStabilityCommandTable() {
                s.change = v;
            },
            kCommand,
-           "Measure the GI's response to a sudden change instead of flicker: sun:DEG (every directional light "
-           "turns DEG degrees about the vertical), off or on (the first light); r_k for k = 1 ... frames")
+           "Measure the GI's response to a sudden change instead of flicker: sun:DEG (every directional light's "
+           "direction turns DEG degrees, its elevation changing), off or on (the first light); r_k for k = 1 ... "
+           "frames")
         .placeholder = "sun:DEG|off|on";
     t.integer("--settle", "settle", [](S& s) -> auto& { return s.settle; }, 1, 100000, kCommand,
               "With {stability.change}: still frames before the change and after it (the converged images)");

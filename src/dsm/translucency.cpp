@@ -40,7 +40,7 @@ CameraTranslucency::CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, co
     tails_ = vk::Buffer(alloc, pixels * sizeof(uint64_t), usage, false, "oit-tails");
     layers_ = vk::Buffer(alloc, sizeof(glm::uvec4) + sizeof(glm::uvec2) * capacity_, usage, false,
                          "oit-kept-layers");  // a header, then (node, pixel) per kept node <= stored nodes
-    shadeArgs_ = vk::Buffer(alloc, sizeof(glm::uvec4),  // render/indirect_args.comp's uvec4
+    shadeArgs_ = vk::Buffer(alloc, sizeof(glm::uvec4),  // core/indirect_args.comp's uvec4
                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, false, "oit-shade-args");
     const size_t lights = std::max<size_t>(scene.scene().lights.size(), 1);
     hairShadow_ = vk::Buffer(alloc, hair_ ? VkDeviceSize(lights) * hair_->pointCount() * sizeof(float) : sizeof(float),
@@ -86,7 +86,7 @@ CameraTranslucency::CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, co
                                                        {OIT_SORT_LAYERS, storage}, {OIT_SORT_TAILS, storage},
                                                        {OIT_SORT_BUCKETS, storage}},
                               sizeof(gpu::OitPush));
-    args_ = vk::ComputeKernel(ctx, "render/indirect_args.comp", {storage, storage}, sizeof(uint32_t));
+    args_ = vk::ComputeKernel(ctx, "core/indirect_args.comp", {storage, storage}, sizeof(uint32_t));
     // The shade pass's bindings of lights, shadows and hair, which oit.hair-shadow shares.
     const std::vector<vk::Binding> shadows{
         {OIT_SHADE_FRAME, uniform},          {OIT_SHADE_LIGHTS, storage},         {OIT_SHADE_SHADOW_PARAMS, uniform},

@@ -85,7 +85,7 @@ RsmGather::RsmGather(vk::Allocator& alloc, vk::CommandContext& cmd, uint32_t wid
          {RSM_INTERPOLATE_LOW_IRRADIANCE, tex}, {RSM_INTERPOLATE_IRRADIANCE, img}, {RSM_INTERPOLATE_PIXEL_LIST, ssbo},
          {RSM_INTERPOLATE_LAYERS, ssbo}},
         sizeof(gpu::RsmPush));
-    args_ = vk::ComputeKernel(ctx, "render/indirect_args.comp", {ssbo, ssbo}, sizeof(uint32_t));
+    args_ = vk::ComputeKernel(ctx, "core/indirect_args.comp", {ssbo, ssbo}, sizeof(uint32_t));
     pointSampler_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
 
     const uint32_t f = std::max(1u, settings.lowResFactor);

@@ -1,2 +1,0 @@
-// Forwards to core/lights.glsl, where the file lives now, for includers that still name this path.
-#include "core/lights.glsl"

@@ -1,2 +1,0 @@
-// Forwards to core/reconstruct.glsl, where the file lives now, for includers that still name this path.
-#include "core/reconstruct.glsl"
