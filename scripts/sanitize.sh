@@ -20,6 +20,9 @@ supp="$PWD/scripts/sanitize"
 # processes (the CLI tests) inherit all of it.
 cc -shared -fPIC -O1 -o "$build/keep_loaded.so" scripts/sanitize/keep_loaded.c -ldl
 export LD_PRELOAD="$(gcc -print-file-name=libasan.so):$PWD/$build/keep_loaded.so"
+# embed_install builds examples/embed against the instrumented library, so with the same flags (cmake
+# takes CXXFLAGS and LDFLAGS as a new project's defaults); it runs its tools without the preload.
+export CXXFLAGS="$flags" LDFLAGS="-fsanitize=address,undefined"
 # The view tests start their Xvfb without it (tests/view/x_server.cpp): it is not ours to check.
 export ASAN_OPTIONS="halt_on_error=1:detect_leaks=1:strict_string_checks=1:check_initialization_order=1"
 export LSAN_OPTIONS="suppressions=$supp/lsan.supp:print_suppressions=0"

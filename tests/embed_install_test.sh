@@ -5,6 +5,12 @@
 # with the installed `penumbra render` of the same scene and settings (equal bytes).
 #   embed_install_test.sh BUILD_DIR SOURCE_DIR BUILD_TYPE
 set -euo pipefail
+# scripts/sanitize.sh preloads the sanitizer runtime into the tests: the tools run here (mktemp, cmake,
+# the compiler) are not ours to check, and LeakSanitizer fails mktemp, so only the two programs under
+# test keep it (as under_test).
+preload=${LD_PRELOAD:-}
+unset LD_PRELOAD
+under_test() { LD_PRELOAD=$preload "$@"; }
 build=$(cd "$1" && pwd)
 source=$(cd "$2" && pwd)
 build_type=${3:-Release}
@@ -36,8 +42,8 @@ found=$(sed -n 's/^penumbra_DIR:PATH=//p' "$tmp/embed/build/CMakeCache.txt")
 cmake --build "$tmp/embed/build" -j2 >/dev/null
 
 for scene in cornell "$tmp/embed/three_quads.gltf"; do
-    "$tmp/embed/build/embed" "$scene" "$tmp/embed.png" 96 64
-    "$prefix/bin/penumbra" render "$scene" --width 96 --height 64 --shadow pcf --gi rsm -q -o "$tmp/cli.png"
+    under_test "$tmp/embed/build/embed" "$scene" "$tmp/embed.png" 96 64
+    under_test "$prefix/bin/penumbra" render "$scene" --width 96 --height 64 --shadow pcf --gi rsm -q -o "$tmp/cli.png"
     cmp "$tmp/embed.png" "$tmp/cli.png" || fail "$scene: the example's image differs from penumbra render's"
     echo "$scene: equal images ($(stat -c %s "$tmp/cli.png") bytes)"
 done
