@@ -5,8 +5,7 @@
 // distance off the tangent plane, in pixel footprints at that spacing; its normal) and where its
 // luminance differs by more than the pixel's noise explains. The noise is the standard deviation of
 // the accumulated mean, sqrt(variance / frames), from the history's moments; for a history of fewer
-// than kFramesForVariance frames it is unknown and only the geometry stops the filter, so a fresh
-// pixel is smoothed over its surface while a converged one keeps its detail. Hair pixels (their
+// than kFramesForVariance frames it is estimated over the pixel's 3x3 neighbourhood instead. Hair pixels (their
 // G-buffer holds a strand's tangent, and neighbouring strands are no surface) are left as they are.
 // The guide is the history's geometry of this frame (view depth, normal), 8 bytes a tap; a tap's
 // offset from the pixel's tangent plane comes from its view depth along a ray that is affine in the
@@ -39,6 +38,24 @@ vec4 inputAt(ivec2 q) {
     return vec4(c.rgb, sigma);
 }
 
+// A short history's noise, estimated in space instead (as SVGF does): the standard deviation of the
+// luminance over the 3x3 pixels of the same surface (guide flag) around p. A smooth estimate (LPV's)
+// keeps its detail from the first frame; a noisy one (few RSM samples) is smoothed.
+float spatialSigma(ivec2 p, ivec2 size) {
+    vec2 m = vec2(0.0);
+    float n = 0.0;
+    for (int j = -1; j <= 1; ++j)
+        for (int i = -1; i <= 1; ++i) {
+            const ivec2 q = clamp(p + ivec2(i, j), ivec2(0), size - 1);
+            if (texelFetch(guide, q, 0).w < 0.5) continue;
+            const float l = luminance(texelFetch(filterInput, q, 0).rgb);
+            m += vec2(l, l * l);
+            n += 1.0;
+        }
+    m /= max(n, 1.0);
+    return sqrt(max(m.y - m.x * m.x, 0.0));
+}
+
 // The ray from the eye through pixel coordinate p (continuous, pixel centres at + 0.5), scaled to a
 // view depth of 1: world position = eye + viewDepth * ray(p).
 vec3 unitDepthRay(vec2 p) {
@@ -51,12 +68,13 @@ void main() {
     const ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     const ivec2 size = ivec2(frame.width, frame.height);
     if (any(greaterThanEqual(pixel, size))) return;
-    const vec4 centre = inputAt(pixel);
+    vec4 centre = inputAt(pixel);
     const vec4 g = texelFetch(guide, pixel, 0);
     if (g.w < 0.5) {
         imageStore(outFiltered, pixel, centre);
         return;
     }
+    if (pc.firstIteration != 0u && centre.a < 0.0) centre.a = spatialSigma(pixel, size);
     const vec3 n = octDecode(g.yz);
     // n . ray(p) is affine in p: its value at the pixel and its steps along x and y.
     const vec3 ray = unitDepthRay(vec2(pixel) + 0.5);
@@ -81,7 +99,8 @@ void main() {
                             exp(-offPlane / footprint - abs(luminance(c.rgb) - lumCentre) * lumScale);
             sum += w * c.rgb;
             weights += w;
-            variance += w * w * max(c.a, 0.0) * max(c.a, 0.0);
+            const float tapSigma = c.a >= 0.0 ? c.a : max(centre.a, 0.0);  // a fresh tap: the centre's estimate
+            variance += w * w * tapSigma * tapSigma;
         }
     }
     // The centre tap always counts (weight 0.25), so weights > 0.
