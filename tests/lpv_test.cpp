@@ -378,6 +378,7 @@ TEST_F(GpuTest, LpvVoxelFacesAreTheShareOfOpenColumns) {
     s.width = 64;
     s.height = 48;
     s.gi = GiMode::Lpv;
+    s.giTemporal = false;  // the next frame's image is its own estimate, not a blend with the first
     s.lpv.rsmResolution = 256;
     s.lpv.vplResolution = 64;
     s.lpv.geometry = LpvGeometry::Voxels;

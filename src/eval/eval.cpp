@@ -127,25 +127,30 @@ std::vector<EvalRow> runEval(vk::Context& ctx, const Scene& scene, const Camera&
     std::vector<EvalRow> rows;
     // One upload of the scene; each variant is a settings change of one renderer (frames waited for).
     GpuScene gpuScene(ctx, scene);
-    std::unique_ptr<Renderer> renderer;
+    // Two renderers in step, one per image: the frames of a GI history differ from one another, so the
+    // final image and the indirect light come from the same frame of two identical histories.
+    std::unique_ptr<Renderer> renderer, indirectRenderer;
     for (size_t i = 0; i < variants.size(); ++i) {
         const EvalVariant& v = variants[i];
         if (progress) progress(i, variants.size(), v.technique + " " + v.settings);
         RenderSettings s = v.render;
         s.aov = Aov::Final;
-        if (renderer) renderer->apply(s);
-        else renderer = std::make_unique<Renderer>(ctx, gpuScene, s, 1);
+        RenderSettings si = s;
+        si.aov = Aov::Indirect;
+        if (renderer) renderer->apply(s), indirectRenderer->apply(si);
+        else
+            renderer = std::make_unique<Renderer>(ctx, gpuScene, s, 1),
+            indirectRenderer = std::make_unique<Renderer>(ctx, gpuScene, si, 1);
         Renderer& r = *renderer;
         std::vector<double> ms;
         for (int f = 0; f < std::max(frames, 1); ++f) {
             r.render(camera);
+            indirectRenderer->render(camera);
             if (f > 0 || frames <= 1) ms.push_back(r.frameTimings().gpuMs);  // the first frame warms caches
         }
         EvalRow row{v, medianOf(ms), {}, {}, {}, {}, {}};
         ImageF final{s.width, s.height, r.readHdr()};
-        r.setAov(Aov::Indirect);
-        r.render(camera);
-        ImageF indirect{s.width, s.height, r.readHdr()};
+        ImageF indirect{s.width, s.height, indirectRenderer->readHdr()};
         // direct = final - indirect: the two frames are identical but for what the lighting pass writes.
         ImageF direct = final;
         for (size_t k = 0; k < direct.rgba.size(); ++k) direct.rgba[k] -= indirect.rgba[k];
