@@ -2,6 +2,7 @@
 // its type. A technique reads another's output only through these (or through names its own folder
 // declares for its own passes), never through the other's class.
 #pragma once
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -68,6 +69,15 @@ struct GiAccumulation {
     uint32_t frameSeed = 0;  // nonzero, different each frame, while accumulating
 };
 
+// The sky, published by the lighting module's update for every technique that lights with it or
+// bounces its light: its radiance as order-2 spherical harmonics (world space, +Y up, the user's
+// scale applied). `generation` changes whenever the sky does, so cached sky visibility restarts.
+struct SkyLight {
+    bool enabled = false;
+    std::array<glm::vec3, 9> radianceSh{};  // coefficients of Y00, Y1-1, Y10, Y11, Y2-2, Y2-1, Y20, Y21, Y22
+    uint64_t generation = 0;
+};
+
 namespace names {
 // Per-frame buffers the renderer writes.
 inline constexpr BufferName kFrame{"frame"};
@@ -101,6 +111,11 @@ inline constexpr HostName<GiAccumulation> kGiAccumulation{"gi.accumulation"};
 // "rsm.flux", "rsm.vpls", "rsm.layers") and its layer count this frame.
 inline constexpr ImageName kRsmDepth{"rsm.depth"};
 inline constexpr HostName<uint32_t> kRsmLayerCount{"rsm.layer-count"};
+
+// The sky's radiance (names.h SkyLight) and the visible sky's irradiance per pixel, which the
+// lighting pass adds to the direct light when a technique writes it.
+inline constexpr HostName<SkyLight> kSkyLight{"sky.light"};
+inline constexpr ImageName kSkyIrradiance{"sky.irradiance"};
 
 // Shared services.
 inline constexpr BufferName kOccupancy{"occupancy"};
