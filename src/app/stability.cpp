@@ -11,6 +11,7 @@
 #include "app/bench.h"
 #include "app/cli_app.h"
 #include "app/frame_setup.h"
+#include "app/ghosting.h"
 #include "app/option_checks.h"
 #include "app/option_cli.h"
 #include "app/response.h"
@@ -255,7 +256,13 @@ OptionTable makeStabilityCommandTable() {
            "frames")
         .placeholder = "sun:DEG|off|on";
     t.integer("--settle", "settle", [](S& s) -> auto& { return s.settle; }, 1, 100000, kCommand,
-              "With {stability.change}: still frames before the change and after it (the converged images)");
+              "With {stability.change}: still frames before the change and after it; with {stability.ghosting}: of each "
+              "instant's still image (the converged images)");
+    t.boolean("--ghosting", "ghosting", [](S& s) -> auto& { return s.ghosting; }, kCommand,
+              "Measure the GI's ghosting instead of flicker: over the pixels that moving geometry covered two frames "
+              "earlier and no longer covers, the indirect light against the converged still image of that instant, "
+              "at each of the measured frames after the warm-up (a scene with an animation: cornell-moving)")
+        .bareFlag = true;
     return t.build();
 }
 
@@ -289,6 +296,30 @@ int runResponse(const StabilityOptions& o, CliDeviceFrame& device, const SceneMo
     return 0;
 }
 
+// The ghosting of each GI configuration behind the scene's moving geometry.
+int runGhosting(const StabilityOptions& o, CliDeviceFrame& device, const SceneMotion& motion, GpuScene& scene,
+                const RenderSettings& settings) {
+    nlohmann::json results = nlohmann::json::array();
+    fmt::print("{:<14} {:>8} {:>8} {:>12}\n", "technique", "pixels", "rel L1", "beyond 10%");
+    for (const Config& c : configs(settings, o.all)) {
+        if (c.settings.gi == GiMode::None) continue;
+        RenderSettings s = c.settings;
+        s.aov = Aov::Indirect;
+        nlohmann::json j = measureGhosting(device.ctx, scene, s, motion, {o.frame.time, o.fps, o.warmup, o.frames, o.settle});
+        fmt::print("{:<14} {:>8} {:>8.4f} {:>12.4f}\n", c.name, j["pixels"].get<size_t>(), j["rel_l1"].get<double>(),
+                   j["share_beyond_10_percent"].get<double>());
+        j["technique"] = c.name;
+        j["settings"] = renderSettingsJson(c.settings);
+        results.push_back(j);
+    }
+    const nlohmann::json out{{"command", o.command}, {"scene", device.frame.scene.name}, {"fps", o.fps},
+                             {"warmup", o.warmup}, {"frames", o.frames}, {"settle", o.settle},
+                             {"width", settings.width}, {"height", settings.height}, {"techniques", results}};
+    if (!o.json.empty()) writeTextFile(o.json, out.dump(2));
+    device.checkValidation();
+    return 0;
+}
+
 }  // namespace
 
 const OptionTable& stabilityCommandOptions() {
@@ -311,8 +342,12 @@ CLI::App* addStabilityCommand(CLI::App& app, StabilityOptions& o, RenderSettings
 
 int runStability(const StabilityOptions& o, const vk::ContextOptions& vkOptions, RenderSettings settings, bool dryRun) {
     if (!o.json.empty()) checkWritable(o.json, stabilityCommandOptions().flagOf<StabilityOptions>([](StabilityOptions& s) -> auto& { return s.json; }));
+    if (o.ghosting && !o.change.empty()) throw std::invalid_argument("{stability.ghosting} and {stability.change} measure different things: give one");
     if (dryRun) return prepareFrame(o.frame, settings), 0;
     CliDeviceFrame device(o.frame, settings, vkOptions);
+    if (o.ghosting && device.frame.scene.animations.empty())
+        throw std::invalid_argument(fmt::format("{{stability.ghosting}} needs moving geometry: '{}' has no animation (try cornell-moving)",
+                                                device.frame.scene.name));
     const PreparedFrame& f = device.frame;
     const SceneMotion motion = frameMotion(o.frame, f);
     if (!motion.moves() && o.change.empty())
@@ -322,6 +357,7 @@ int runStability(const StabilityOptions& o, const vk::ContextOptions& vkOptions,
                    motionOptions().flagOf<FrameOptions>([](FrameOptions& m) -> auto& { return m.motion.camera; }));
     GpuScene scene(device.ctx, f.scene);
     if (!o.change.empty()) return runResponse(o, device, motion, scene, settings);
+    if (o.ghosting) return runGhosting(o, device, motion, scene, settings);
     const bool atWorldPoints = motion.cameraMoves();
     nlohmann::json results = nlohmann::json::array();
     fmt::print("{:<14} {:>13} {:>13}   {:>10} {:>12}\n", "technique", "final (L1)", "indirect (L1)", "final RMS",

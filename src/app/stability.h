@@ -24,7 +24,8 @@ struct StabilityOptions {
     uint32_t referenceMaxSpp = 256;
     bool reference = true;        // --no-reference: skip the path tracer's floor
     std::string change;           // --change: measure the response to it instead (app/response.h)
-    int settle = 64;              // --change: still frames before and after it
+    int settle = 64;              // --change: still frames before and after it; --ghosting: of each still image
+    bool ghosting = false;        // --ghosting: the GI's ghosting behind moving geometry (app/ghosting.h)
     std::string command;
 };
 

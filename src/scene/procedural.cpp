@@ -54,6 +54,33 @@ Scene makeCornell() {
     return s;
 }
 
+// Cornell with a 0.3 m box sliding across the back wall at 1 m/s, above the tall box (x from -0.75
+// to 0.75 and back, 3 s a cycle): moving geometry for the temporal GI's ghosting. The box is mesh 1,
+// drawn by node 0, which the animation moves.
+Scene makeMovingCornell() {
+    Scene s = makeCornell();
+    s.name = "cornell-moving";
+    const uint32_t staticDraws = uint32_t(s.draws.size());
+    const uint32_t boxMaterial = addMaterial(s, {0.725f, 0.71f, 0.68f});  // its own draw: not merged
+    addBox(s, glm::vec3(0.0f), glm::vec3(0.15f), 0.0f, boxMaterial);
+    s.meshes = {Mesh{0, staticDraws, {}}, Mesh{staticDraws, uint32_t(s.draws.size()) - staticDraws, {}}};
+    Node node;
+    node.translation = {-0.75f, 1.5f, -0.8f};
+    node.mesh = 1;
+    node.sourceNode = 0;
+    node.name = "sliding box";
+    s.nodes = {node};
+    s.instances = {Instance{0, -1}, Instance{1, 0}};
+    AnimationChannel slide;
+    slide.sourceNode = 0;
+    slide.path = AnimationPath::Translation;
+    slide.times = {0.0f, 1.5f, 3.0f};
+    slide.values = {glm::vec4(-0.75f, 1.5f, -0.8f, 0.0f), glm::vec4(0.75f, 1.5f, -0.8f, 0.0f),
+                    glm::vec4(-0.75f, 1.5f, -0.8f, 0.0f)};
+    s.animations = {Animation{"slide", {slide}, 3.0f}};
+    return s;
+}
+
 // 20x20 plane at y = 0 lit straight from above and seen straight from above: image x maps to
 // world +x and image up to world -z, which keeps test expectations simple.
 Scene makePlane() {
@@ -281,12 +308,14 @@ Scene makeTerrain() {
 
 }  // namespace
 
-std::vector<std::string> builtinSceneNames() { return {"cornell", "plane", "hair", "street", "room", "terrain"}; }
+std::vector<std::string> builtinSceneNames() { return {"cornell", "cornell-moving", "plane", "hair", "street", "room", "terrain"}; }
 
 Scene makeBuiltinScene(const std::string& name, const BuiltinOptions& options) {
     Scene s;
     if (name == "cornell") {
         s = makeCornell();
+    } else if (name == "cornell-moving") {
+        s = makeMovingCornell();
     } else if (name == "plane") {
         s = makePlane();
     } else if (name == "hair") {

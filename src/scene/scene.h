@@ -190,8 +190,9 @@ struct BuiltinOptions {
     static constexpr uint32_t kHairPointsPerStrand = 25;  // points of each grown strand
 };
 
-// Built-in procedural scenes: "cornell" (the default), "plane" (unit test scene), "hair" (a head
-// with procedural hair over a floor, under a spot light).
+// Built-in procedural scenes: "cornell" (the default), "cornell-moving" (a box sliding across its
+// back wall), "plane" (unit test scene), "hair" (a head with procedural hair over a floor, under a
+// spot light), "street", "room" and "terrain".
 std::vector<std::string> builtinSceneNames();
 Scene makeBuiltinScene(const std::string& name, const BuiltinOptions& options = {});
 
