@@ -21,6 +21,8 @@
 #define LIGHTING_PROBE 12
 // core/motion.glsl's three (visibility IDs, drawn triangles, instances) from here on.
 #define LIGHTING_MOTION_FIRST 13
+// The sky behind the geometry (src/lighting/sky_background.h), after motion.glsl's three.
+#define LIGHTING_SKY_BACKGROUND 16
 
 // lighting/tonemap.comp.
 #define TONEMAP_HDR 0

@@ -12,6 +12,7 @@
 
 #include "core/core_settings.h"
 #include "dsm/dsm_settings.h"
+#include "lighting/lighting_settings.h"
 #include "lpv/lpv_settings.h"
 #include "rsm/rsm_settings.h"
 #include "shadow/shadow_settings.h"
@@ -38,6 +39,7 @@ struct RenderSettings {
     RsmSettings rsm;
     LpvSettings lpv;
     DsmSettings dsm;
+    LightingSettings lighting;  // the sky
     // `--translucency`: hair and alphaMode BLEND surfaces composited over the opaque image in depth
     // order (src/dsm/translucency.h); off: both are drawn opaque into the G-buffer.
     bool translucency = true;
