@@ -27,6 +27,12 @@
 // lighting/tonemap.comp.
 #define TONEMAP_HDR 0
 #define TONEMAP_LDR 1
+#define TONEMAP_EXPOSURE 2
+
+// lighting/exposure_reduce.comp and exposure_resolve.comp.
+#define EXPOSURE_HDR 0
+#define EXPOSURE_PARTIALS 1
+#define EXPOSURE_STATE 2
 
 // lighting/debug_view.comp.
 #define DEBUG_VIEW_SOURCE 0

@@ -82,17 +82,19 @@ TonemapPass::TonemapPass(vk::Allocator& alloc, uint32_t width, uint32_t height) 
     ldr = vk::Image(alloc, {VK_FORMAT_R8G8B8A8_UNORM, width, height, 1,
                             VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, "ldr"});
     layout_ = vk::DescriptorLayout(
-        ctx, {{TONEMAP_HDR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, {TONEMAP_LDR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}});
+        ctx, {{TONEMAP_HDR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, {TONEMAP_LDR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+              {TONEMAP_EXPOSURE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}});
     pipeline_ = vk::Pipeline::compute(ctx, "lighting/tonemap.comp", {layout_.handle()}, sizeof(gpu::TonemapPush));
 }
 
-void TonemapPass::addTo(FrameGraph& graph, const gpu::TonemapPush& params) {
+void TonemapPass::addTo(FrameGraph& graph, const gpu::TonemapPush& params, BufferHandle exposure) {
     const ImageHandle out = graph.import(ldr);
     graph.publish("ldr", out);
     graph.pass("tonemap")
         .pipeline(pipeline_)
         .storageImage(TONEMAP_HDR, graph.image("hdr"), Use::StorageRead)
         .storageImage(TONEMAP_LDR, out)
+        .storageBuffer(TONEMAP_EXPOSURE, exposure)
         .record([this, out, params](PassContext& c) {
             pipeline_.push(c.cmd, params);
             vkCmdDispatch(c.cmd, vk::divUp(ldr.width(), 8), vk::divUp(ldr.height(), 8), 1);

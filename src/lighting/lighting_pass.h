@@ -44,8 +44,9 @@ private:
 class TonemapPass {
 public:
     TonemapPass(vk::Allocator& alloc, uint32_t width, uint32_t height);
-    // Reads "hdr", publishes "ldr".
-    void addTo(FrameGraph& graph, const gpu::TonemapPush& params);
+    // Reads "hdr" and, when params.autoExposure, the auto exposure's state (lighting/auto_exposure.h);
+    // publishes "ldr".
+    void addTo(FrameGraph& graph, const gpu::TonemapPush& params, BufferHandle exposure);
 
     vk::Image ldr;  // RGBA8, sRGB-encoded values in a UNORM image (storage images cannot be sRGB)
 

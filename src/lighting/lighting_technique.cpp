@@ -4,6 +4,7 @@
 #include "core/names.h"
 
 #include <algorithm>
+#include <cmath>
 
 namespace penumbra {
 
@@ -28,7 +29,7 @@ void CameraTechnique::addPasses(const FrameContext& f) {
 LightingTechnique::LightingTechnique(const TechniqueBuild& b, const LightingSettings& settings)
     : board_(b.board), irradiance_(b.alloc, b.core.width, b.core.height), lighting_(b.alloc, b.core.width, b.core.height),
       debugView_(b.alloc.context()), tonemap_(b.alloc, b.core.width, b.core.height), settings_(settings),
-      warnings_(b.warnings), background_(b.alloc) {
+      warnings_(b.warnings), background_(b.alloc), exposure_(b.alloc, b.core.width, b.core.height) {
     noIndirect_ = vk::Image(b.alloc, {VK_FORMAT_R16G16B16A16_SFLOAT, 1, 1, 1,
                                       VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, "no-indirect"});
     const uint64_t zero = 0;
@@ -48,7 +49,11 @@ gpu::TonemapPush LightingTechnique::tonemapParams(const FrameContext& f) const {
         case Aov::Final:
         case Aov::Indirect:
         case Aov::LpvSlice:
-        case Aov::RsmFlux: return {f.core.exposure, 0.0f, TONEMAP_ACES, 0};
+        case Aov::RsmFlux: {
+            const float compensation = std::exp2(f.core.exposureCompensation);
+            if (f.core.autoExposure) return {compensation, 0.0f, TONEMAP_ACES, 1};
+            return {f.core.exposure * compensation, 0.0f, TONEMAP_ACES, 0};
+        }
         case Aov::RsmDepth:
         case Aov::RsmNormal:
         case Aov::ShadowMap: return {1.0f, 0.0f, TONEMAP_LINEAR, 0};
@@ -114,7 +119,11 @@ void LightingTechnique::addPasses(const FrameContext& f) {
 
 void LightingTechnique::addOutputPasses(const FrameContext& f) {
     debugView_.addTo(f.graph, f.core.aov, f.core.aovLayer);
-    tonemap_.addTo(f.graph, tonemapParams(f));
+    const gpu::TonemapPush params = tonemapParams(f);
+    const bool autoExposure = params.autoExposure != 0;
+    if (autoExposure && !wasAuto_) exposure_.restart();
+    wasAuto_ = autoExposure;
+    tonemap_.addTo(f.graph, params, exposure_.addTo(f.graph, autoExposure));
 }
 
 }  // namespace penumbra

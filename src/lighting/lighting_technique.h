@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "core/irradiance_sum.h"
+#include "lighting/auto_exposure.h"
 #include "core/names.h"
 #include "core/sky.h"
 #include "core/technique.h"
@@ -44,6 +45,7 @@ public:
     void addOutputPasses(const FrameContext& f) override;
     LightingPass& lighting() { return lighting_; }
     TonemapPass& tonemap() { return tonemap_; }
+    AutoExposure& autoExposure() { return exposure_; }
     const Sky& sky() const { return sky_; }
 
 private:
@@ -71,6 +73,8 @@ private:
     bool skyMade_ = false;
     SkyLight skyLight_;
     SkyBackground background_;
+    AutoExposure exposure_;
+    bool wasAuto_ = false;  // the last frame's exposure was auto (switching it on restarts the adaptation)
     bool backgroundStale_ = true;  // the sky changed since the background was last filled
 };
 
