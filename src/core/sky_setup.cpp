@@ -114,7 +114,7 @@ Sky makeSky(const SkySettings& settings, const std::vector<Light>& lights, std::
         case SkyKind::Uniform: sky = Sky::uniform(settings.uniformRadiance); break;
         case SkyKind::Analytic: {
             if (!sun) {
-                warnings.push_back("--sky analytic follows the first directional light and the scene has none: no sky");
+                warnings.push_back("the analytic sky follows the first directional light and the scene has none: no sky");
                 return sky;
             }
             if (sun->direction.y > 0.0f)
