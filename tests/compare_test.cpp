@@ -218,7 +218,7 @@ protected:
 
 TEST_F(GroundTruthCli, ReferenceWritesRadianceAndCompareReadsIt) {
     const std::string ref = file("ref.exr"), other = file("other.exr"), heat = file("heat.png");
-    Cli r = runCli(dir_, "reference plane -o " + ref + " --width 16 --height 12 --spp 2 -q");
+    Cli r = runCli(dir_, "reference plane -o " + ref + " --width 16 --height 12 --spp 2 -q --sky none");
     ASSERT_EQ(r.status, 0) << r.err;
     EXPECT_EQ(r.err, "");
     const ImageF img = readExr(ref);

@@ -131,7 +131,7 @@ TEST(TextureTransform, RasterizerAndPathTracerShowTheHandPickedTexels) {
     // E = pi facing the light: the direct radiance of a Lambertian surface is its albedo.
     const Cli raster = runCli(dir, "render " + scene + view + " --gi none --aov albedo -o " + dir.file("raster.exr"));
     ASSERT_EQ(raster.status, 0) << raster.err;
-    const Cli traced = runCli(dir, "reference " + scene + view + " --spp 1 --bounces 0 --aov direct -q -o " +
+    const Cli traced = runCli(dir, "reference " + scene + view + " --spp 1 --bounces 0 --aov direct --sky none -q -o " +
                                        dir.file("traced.exr"));
     ASSERT_EQ(traced.status, 0) << traced.err;
     struct Probe {

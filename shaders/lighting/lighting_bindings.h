@@ -21,10 +21,18 @@
 #define LIGHTING_PROBE 12
 // core/motion.glsl's three (visibility IDs, drawn triangles, instances) from here on.
 #define LIGHTING_MOTION_FIRST 13
+// The sky behind the geometry (src/lighting/sky_background.h), after motion.glsl's three.
+#define LIGHTING_SKY_BACKGROUND 16
 
 // lighting/tonemap.comp.
 #define TONEMAP_HDR 0
 #define TONEMAP_LDR 1
+#define TONEMAP_EXPOSURE 2
+
+// lighting/exposure_reduce.comp and exposure_resolve.comp.
+#define EXPOSURE_HDR 0
+#define EXPOSURE_PARTIALS 1
+#define EXPOSURE_STATE 2
 
 // lighting/debug_view.comp.
 #define DEBUG_VIEW_SOURCE 0

@@ -8,6 +8,7 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = TONEMAP_HDR, rgba32f) uniform readonly image2D hdrImage;
 layout(set = 0, binding = TONEMAP_LDR, rgba8) uniform writeonly image2D ldrImage;
+layout(set = 0, binding = TONEMAP_EXPOSURE, std430) readonly buffer Exposure { AutoExposureState exposure; };
 layout(push_constant) uniform Push { TonemapPush pc; };
 
 vec3 acesFit(vec3 x) {
@@ -24,7 +25,8 @@ void main() {
     if (any(greaterThanEqual(pixel, imageSize(ldrImage)))) return;
     vec3 c = imageLoad(hdrImage, pixel).rgb;
     uint mode = pc.mode;
-    if (mode == TONEMAP_ACES) c = srgbEncode(acesFit(c * pc.scale));
+    float scale = pc.autoExposure != 0u ? pc.scale * exposure.exposure : pc.scale;
+    if (mode == TONEMAP_ACES) c = srgbEncode(acesFit(c * scale));
     else if (mode == TONEMAP_SRGB) c = srgbEncode(c);
     else c = clamp(c * pc.scale + pc.bias, 0.0, 1.0);
     imageStore(ldrImage, pixel, vec4(c, 1.0));

@@ -169,7 +169,22 @@ struct TonemapPush {
     float scale;  // the exposure (radiance) or the linear scale
     float bias;   // TONEMAP_LINEAR: added after the scale
     uint mode;    // TONEMAP_*
+    uint autoExposure;  // 1: scale also multiplies AutoExposureState.exposure (lighting/auto_exposure.h)
+};
+
+// The auto exposure's state across frames (lighting/exposure_resolve.comp).
+struct AutoExposureState {
+    float adaptedLog;  // log of the adapted exposure
+    float exposure;    // exp(adaptedLog): what the tone mapper multiplies by
+    float logAverage;  // this frame's log-average luminance of the geometry pixels
+    uint valid;        // 0 until a frame had geometry
+};
+
+struct AutoExposurePush {
+    uint partialCount;  // workgroups of the reduction
+    float rate;         // the adaptation's step, 1 - exp(-dt / tau); 1: snap
     uint pad0;
+    uint pad1;
 };
 
 // Reflective shadow maps (src/rsm): one RSM layer per shadow layer that has one.
@@ -324,6 +339,7 @@ static_assert(sizeof(RsmResolvePush) == 16 && offsetof(RsmResolvePush, idResolut
 static_assert(sizeof(LpvPush) == 128 && offsetof(LpvPush, vplCount) == 16 && offsetof(LpvPush, occlusion) == 32 &&
               offsetof(LpvPush, sliceAxis) == 48 && offsetof(LpvPush, cascades) == 64);
 static_assert(sizeof(TonemapPush) == 16 && offsetof(TonemapPush, mode) == 8);
+static_assert(sizeof(AutoExposureState) == 16 && sizeof(AutoExposurePush) == 16);
 static_assert(sizeof(GiAccumulatePush) == 16 && offsetof(GiAccumulatePush, historyValid) == 8);
 static_assert(sizeof(GiFilterPush) == 16 && offsetof(GiFilterPush, luminanceSigma) == 8);
 static_assert(offsetof(FrameUniforms, eye) == 256 && offsetof(FrameUniforms, farPlane) == 268 &&

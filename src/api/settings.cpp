@@ -115,6 +115,7 @@ Material::Material() {
 penumbra::RenderSettings toInternal(const Settings& s) {
     penumbra::RenderSettings out;
     settingsFields(s, out, AssignBack{});
+    out.autoExposure = false;  // the API's exposure is a fixed multiplier
     for (const auto& [pub, aov] : kOutputs)
         if (pub == s.output) out.aov = aov;
     return out;

@@ -42,6 +42,11 @@ struct CoreSettings {
     bool translucency = true;
     // The compute rasterizer draws the camera's and the lights' views (resolved for the device).
     bool computeRaster = false;
+    // Exposure like a camera's: the geometry's log-average luminance maps to middle grey, adapted
+    // over frames (src/lighting/auto_exposure.h); `exposure` is used when off. Either way the
+    // compensation (EV) multiplies it by 2^EV.
+    bool autoExposure = false;
+    float exposureCompensation = 0.0f;
 };
 
 }  // namespace penumbra

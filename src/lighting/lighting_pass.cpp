@@ -17,12 +17,12 @@ LightingPass::LightingPass(vk::Allocator& alloc, uint32_t width, uint32_t height
               {LIGHTING_HDR, img},            {LIGHTING_INDIRECT, tex},        {LIGHTING_DSM_LIGHTS, ssbo},
               {LIGHTING_DSM_HEADS, ssbo},     {LIGHTING_DSM_NODES, ssbo},      {LIGHTING_DSM_SIDE, ssbo},
               {LIGHTING_PROBE, ssbo},         {LIGHTING_MOTION_FIRST, tex},    {LIGHTING_MOTION_FIRST + 1, ssbo},
-              {LIGHTING_MOTION_FIRST + 2, ssbo}});
+              {LIGHTING_MOTION_FIRST + 2, ssbo}, {LIGHTING_SKY_BACKGROUND, tex}});
     pipeline_ = vk::Pipeline::compute(ctx, "lighting/lighting.comp", {layout_.handle()}, 0);
     pointSampler_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
 }
 
-void LightingPass::addTo(FrameGraph& graph) {
+void LightingPass::addTo(FrameGraph& graph, ImageHandle sky) {
     const ImageHandle out = graph.import(hdr);
     graph.publish("hdr", out);
     const VkSampler point = pointSampler_.handle();
@@ -42,6 +42,7 @@ void LightingPass::addTo(FrameGraph& graph) {
         .storageBuffer(LIGHTING_DSM_NODES, graph.buffer("dsm.nodes"))
         .storageBuffer(LIGHTING_DSM_SIDE, graph.buffer("dsm.side"))
         .storageBuffer(LIGHTING_PROBE, graph.buffer("probe"), Use::StorageWrite)
+        .sampled(LIGHTING_SKY_BACKGROUND, sky, point)
         .record([out](PassContext& c) {
             const vk::Image& image = c.image(out);
             vkCmdDispatch(c.cmd, vk::divUp(image.width(), 8), vk::divUp(image.height(), 8), 1);
@@ -81,17 +82,19 @@ TonemapPass::TonemapPass(vk::Allocator& alloc, uint32_t width, uint32_t height) 
     ldr = vk::Image(alloc, {VK_FORMAT_R8G8B8A8_UNORM, width, height, 1,
                             VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, "ldr"});
     layout_ = vk::DescriptorLayout(
-        ctx, {{TONEMAP_HDR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, {TONEMAP_LDR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}});
+        ctx, {{TONEMAP_HDR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}, {TONEMAP_LDR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE},
+              {TONEMAP_EXPOSURE, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}});
     pipeline_ = vk::Pipeline::compute(ctx, "lighting/tonemap.comp", {layout_.handle()}, sizeof(gpu::TonemapPush));
 }
 
-void TonemapPass::addTo(FrameGraph& graph, const gpu::TonemapPush& params) {
+void TonemapPass::addTo(FrameGraph& graph, const gpu::TonemapPush& params, BufferHandle exposure) {
     const ImageHandle out = graph.import(ldr);
     graph.publish("ldr", out);
     graph.pass("tonemap")
         .pipeline(pipeline_)
         .storageImage(TONEMAP_HDR, graph.image("hdr"), Use::StorageRead)
         .storageImage(TONEMAP_LDR, out)
+        .storageBuffer(TONEMAP_EXPOSURE, exposure)
         .record([this, out, params](PassContext& c) {
             pipeline_.push(c.cmd, params);
             vkCmdDispatch(c.cmd, vk::divUp(ldr.width(), 8), vk::divUp(ldr.height(), 8), 1);

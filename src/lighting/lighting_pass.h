@@ -16,8 +16,9 @@ public:
     // FrameUniforms.giValid = 0), and the deep shadow maps' lookup buffers "dsm.lights",
     // "dsm.heads", "dsm.nodes", "dsm.side" (bindings 8-11), and for the velocity AOV "gbuffer.ids"
     // (a 1x1 placeholder on the classic path, FrameUniforms.visibilityIds = 0), "drawn-triangles" and
-    // "instances"; writes "probe" (the pixel probe, FrameUniforms.probeX, probeY). Publishes "hdr".
-    void addTo(FrameGraph& graph);
+    // "instances"; writes "probe" (the pixel probe, FrameUniforms.probeX, probeY). `sky` is the
+    // background's radiance (lighting/sky_background.h). Publishes "hdr".
+    void addTo(FrameGraph& graph, ImageHandle sky);
 
     vk::Image hdr;  // RGBA32F radiance (or AOV values)
 
@@ -43,8 +44,9 @@ private:
 class TonemapPass {
 public:
     TonemapPass(vk::Allocator& alloc, uint32_t width, uint32_t height);
-    // Reads "hdr", publishes "ldr".
-    void addTo(FrameGraph& graph, const gpu::TonemapPush& params);
+    // Reads "hdr" and, when params.autoExposure, the auto exposure's state (lighting/auto_exposure.h);
+    // publishes "ldr".
+    void addTo(FrameGraph& graph, const gpu::TonemapPush& params, BufferHandle exposure);
 
     vk::Image ldr;  // RGBA8, sRGB-encoded values in a UNORM image (storage images cannot be sRGB)
 

@@ -125,7 +125,8 @@ void addBuiltinTechniques(TechniqueRegistry& r) {
     r.add(std::move(temporal));
 
     TechniqueEntry lighting{"lighting", 80, {}, kPartCamera};
-    lighting.create = [](B b, S) { return std::make_unique<LightingTechnique>(b); };
+    lighting.create = [](B b, S s) { return std::make_unique<LightingTechnique>(b, s.lighting); };
+    lighting.apply = [](Technique& t, S s) { as<LightingTechnique>(t).setSettings(s.lighting); };
     r.add(std::move(lighting));
 }
 

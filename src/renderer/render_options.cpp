@@ -10,6 +10,7 @@
 #include <fmt/ranges.h>
 
 #include "dsm/dsm_options.h"
+#include "lighting/lighting_options.h"
 #include "lpv/lpv_options.h"
 #include "renderer/technique_registry.h"
 #include "rsm/rsm_options.h"
@@ -72,6 +73,41 @@ std::pair<SettingsChange, std::vector<std::string>> classifyShadow(const void* a
     return {parts.empty() ? SettingsChange::None : kStructure, parts};
 }
 
+// `--exposure auto|X`: auto (log-average luminance to middle grey) or a fixed linear multiplier.
+void parseExposure(S& s, const std::string& value) {
+    if (value == "auto") return void(s.autoExposure = true);
+    size_t used = 0;
+    double v = 0.0;
+    try {
+        v = std::stod(value, &used);
+    } catch (const std::exception&) {
+        used = 0;
+    }
+    if (used == 0 || used != value.size() || !std::isfinite(v) || v < 1e-6 || v > 1e6)
+        throw std::invalid_argument("expected auto or a multiplier in [1e-06, 1e+06]");
+    s.autoExposure = false;
+    s.exposure = float(v);
+}
+
+void addExposureRows(OptionTableBuilder<S>& t) {
+    OptionRow& exposure = t.text(
+        "--exposure", "exposure", [](S& s) -> auto& { return s.exposure; },
+        [](const S& s) { return std::vector<std::string>{s.autoExposure ? "auto" : formatOptionNumber(s.exposure)}; },
+        parseExposure, kFrame,
+        "Exposure before tone mapping: auto (the log-average luminance of the geometry, sky excluded, maps to "
+        "middle grey 0.18, adapting over frames) or a linear multiplier");
+    exposure.placeholder = "auto|X";
+    exposure.classify = [](const void* a, const void* b) {
+        const S& x = *static_cast<const S*>(a);
+        const S& y = *static_cast<const S*>(b);
+        const bool same = x.autoExposure == y.autoExposure && x.exposure == y.exposure;
+        return std::pair<SettingsChange, std::vector<std::string>>{same ? SettingsChange::None : kFrame, {}};
+    };
+    t.alsoWrites([](S& s) -> auto& { return s.autoExposure; });
+    t.real("--exposure-compensation", "exposure_compensation", [](S& s) -> auto& { return s.exposureCompensation; },
+           -20.0, 20.0, kFrame, "Exposure compensation in EV: the exposure (auto or fixed) times 2^EV");
+}
+
 void addOutputRows(OptionTableBuilder<S>& t) {
     t.integer("--width", "width", [](S& s) -> auto& { return s.width; }, 1, 16384, kSizes, "Image width")
         .rebuild({"camera", "gi"});
@@ -81,8 +117,7 @@ void addOutputRows(OptionTableBuilder<S>& t) {
              "Output: the final image or a debug view");
     t.integer("--aov-layer", "aov_layer", [](S& s) -> auto& { return s.aovLayer; }, 0, 4096, kFrame,
               "Layer shown by the rsm-depth/normal/flux and shadow-map AOVs");
-    t.real("--exposure", "exposure", [](S& s) -> auto& { return s.exposure; }, 1e-6, 1e6, kFrame,
-           "Linear exposure multiplier before tone mapping");
+    addExposureRows(t);
     t.choice("--camera-path", "camera_path", [](S& s) -> auto& { return s.cameraPath; },
              std::vector<std::pair<std::string, CameraPath>>{{"visibility", CameraPath::Visibility},
                                                              {"gbuffer", CameraPath::Gbuffer}},
@@ -138,6 +173,7 @@ std::deque<BoundOptionTable>& tables() {
         bind(rsmOptions(), &S::rsm),
         bind(lpvOptions(), &S::lpv),
         bind(temporalGiOptions(), &S::temporalGi),
+        bind(lightingOptions(), &S::lighting),
     };
     // Techniques registered from outside src/ bring their tables (a deque: earlier entries stay put).
     static std::set<std::string> added;
@@ -167,6 +203,7 @@ void validateSettings(const RenderSettings& s) {
     checkRanges(frameOptionTable(), &s);
     validate(s.shadow);
     checkRanges(dsmOptions(), &s.dsm);
+    validate(s.lighting);
     if (s.gi != GiMode::None) validate(s.rsm);
     if (s.gi == GiMode::Lpv) validate(s.lpv);
     if (s.giTemporal) validate(s.temporalGi);

@@ -12,6 +12,7 @@
 
 #include "core/core_settings.h"
 #include "dsm/dsm_settings.h"
+#include "lighting/lighting_settings.h"
 #include "lpv/lpv_settings.h"
 #include "rsm/rsm_settings.h"
 #include "shadow/shadow_settings.h"
@@ -27,7 +28,11 @@ struct RenderSettings {
     uint32_t height = 720;
     Aov aov = Aov::Final;
     uint32_t aovLayer = 0;  // the layer the rsm-* and shadow-map AOVs show (clamped to the layers there are)
-    float exposure = 1.0f;  // linear multiplier before the tone mapper
+    float exposure = 1.0f;  // linear multiplier before the tone mapper, when autoExposure is off
+    // `--exposure auto`: the geometry's log-average luminance maps to 0.18 (the default of render and
+    // the viewer; tests, references, stability and eval read the linear HDR image, which it leaves alone).
+    bool autoExposure = true;
+    float exposureCompensation = 0.0f;  // EV: the exposure times 2^EV
     CameraPath cameraPath = CameraPath::Visibility;  // how the camera's G-buffer is made (lighting/gbuffer_pass.h)
     ShadowSettings shadow;
     GiMode gi = GiMode::None;
@@ -38,6 +43,7 @@ struct RenderSettings {
     RsmSettings rsm;
     LpvSettings lpv;
     DsmSettings dsm;
+    LightingSettings lighting;  // the sky
     // `--translucency`: hair and alphaMode BLEND surfaces composited over the opaque image in depth
     // order (src/dsm/translucency.h); off: both are drawn opaque into the G-buffer.
     bool translucency = true;
@@ -64,7 +70,8 @@ struct RenderSettings {
     }
     // The part that every technique shares; `computeRaster` resolved for the device.
     CoreSettings core(bool computeRaster) const {
-        return {width, height, aov, aovLayer, exposure, cameraPath, translucency, computeRaster};
+        return {width,        height,         aov,           aovLayer, exposure, cameraPath, translucency, computeRaster,
+                autoExposure, exposureCompensation};
     }
 };
 

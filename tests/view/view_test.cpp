@@ -127,7 +127,9 @@ TEST(ViewScript, EveryScreenshotEqualsTheHeadlessRender) {
     std::string script;
     // Options on the view's command line hold until a `set` replaces them. The GI without its history:
     // a screenshot after some frames equals a one-frame render.
-    std::map<std::string, std::string> options = {{"shadow-res", "512"}, {"pcf-radius", "1"}, {"gi-temporal", "off"}};
+    // A fixed exposure: the viewer's auto exposure adapts over frames, a one-frame render takes its target at once.
+    std::map<std::string, std::string> options = {
+        {"shadow-res", "512"}, {"pcf-radius", "1"}, {"gi-temporal", "off"}, {"exposure", "1"}};
     std::vector<std::vector<std::string>> renderArgs;
     std::vector<std::string> extra;
     for (size_t i = 0; i < states.size(); ++i) {
@@ -147,7 +149,7 @@ TEST(ViewScript, EveryScreenshotEqualsTheHeadlessRender) {
     }
     std::ofstream(dir / "session.txt") << script;
     ASSERT_TRUE(haveDisplay());
-    const ShellResult view = shell(viewCommand(dir / "session.txt", "--shadow-res 512 --pcf-radius 1 --gi-temporal off"), dir);
+    const ShellResult view = shell(viewCommand(dir / "session.txt", "--shadow-res 512 --pcf-radius 1 --gi-temporal off --exposure 1"), dir);
     ASSERT_EQ(view.status, 0) << view.out << view.err;
 
     for (size_t i = 0; i < states.size(); ++i) {
