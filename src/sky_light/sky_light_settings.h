@@ -18,8 +18,9 @@ struct SkyLightSettings {
     // 4x4 block of ray sets from every pixel.
     uint32_t filterRadius = 2;
     // Where the rays start: this many voxels off the surface along its normal, out of the voxels
-    // the surface itself occupies.
-    float startOffset = 2.0f;
+    // the surface itself occupies (half a voxel leaves many rays inside them; further off misses
+    // the occluders near the receiver).
+    float startOffset = 1.0f;
 };
 
 }  // namespace penumbra
