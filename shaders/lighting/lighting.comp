@@ -20,6 +20,8 @@ layout(set = 0, binding = LIGHTING_HDR, rgba32f) uniform writeonly image2D outIm
 layout(set = 0, binding = LIGHTING_INDIRECT) uniform sampler2D indirectIrradiance;  // GI (frame.giValid != 0)
 layout(set = 0, binding = LIGHTING_SKY_IRRADIANCE) uniform sampler2D skyIrradiance;  // 1x1 black without a sky
 layout(set = 0, binding = LIGHTING_PROBE, std430) writeonly buffer Probe { PixelProbe probe; };  // pixel FrameUniforms.probeX, probeY
+// The sky's radiance, equirectangular in world directions (core/sky.h): black without a sky.
+layout(set = 0, binding = LIGHTING_SKY_BACKGROUND) uniform sampler2D skyBackground;
 // Velocity: which instance a pixel shows (visibility IDs, frame.visibilityIds) and where it was.
 #define MOTION_FIRST_BINDING LIGHTING_MOTION_FIRST
 #include "core/motion.glsl"
@@ -88,11 +90,32 @@ vec2 pixelVelocity(ivec2 pixel, vec3 p) {
     return vec2(pixel) + 0.5 - (clip.xy / clip.w * 0.5 + 0.5) * vec2(frame.width, frame.height);
 }
 
+// The sky seen through `pixel`: bilinear in the equirectangular texture, wrapping in azimuth,
+// clamped at the poles (texel fetches: a sampler cannot wrap one axis and clamp the other).
+vec3 backgroundRadiance(ivec2 pixel) {
+    vec3 d = normalize(pixelWorldPosition(frame, pixel, 0.5) - frame.eye);
+    ivec2 size = textureSize(skyBackground, 0);
+    float theta = acos(clamp(d.y, -1.0, 1.0)), phi = atan(d.x, -d.z);
+    vec2 t = vec2((phi + PI) / (2.0 * PI), theta / PI) * vec2(size) - 0.5;
+    ivec2 i0 = ivec2(floor(t));
+    vec2 f = t - vec2(i0);
+    vec3 sum = vec3(0.0);
+    for (int k = 0; k < 4; ++k) {
+        ivec2 o = ivec2(k & 1, k >> 1);
+        ivec2 texel = ivec2((i0.x + o.x + size.x) % size.x, clamp(i0.y + o.y, 0, size.y - 1));
+        float w = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
+        sum += w * texelFetch(skyBackground, texel, 0).rgb;
+    }
+    return sum;
+}
+
 vec4 aovValue(Shading s, uint aov, ivec2 pixel) {
     if (aov == AOV_LPV_SLICE || aov == AOV_GV_SLICE)  // debug views drawn by lpv/gather.comp
         return vec4(texelFetch(indirectIrradiance, pixel, 0).rgb, 1.0);
     if (aov == AOV_DSM_LISTS)  // a light-space debug view: independent of the G-buffer
         return vec4(vec3(dsmListLengthAov(pixel, uvec2(frame.width, frame.height), frame.lightCount)), 1.0);
+    // Alpha 0 marks the background (auto exposure leaves it out).
+    if (!s.surface && (aov == AOV_FINAL || aov == AOV_DIRECT)) return vec4(backgroundRadiance(pixel), 0.0);
     if (!s.surface) return vec4(vec3(aov == AOV_DEPTH ? s.eyeDistance : 0.0), 0.0);
     if (aov == AOV_FINAL) return vec4(s.direct + s.indirect, 1.0);
     if (aov == AOV_DIRECT) return vec4(s.direct, 1.0);

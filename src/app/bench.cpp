@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/frame_setup.h"
+#include "core/sky.h"
 #include "app/option_cli.h"
 #include "renderer/render_options.h"
 #include "app/option_checks.h"
@@ -213,6 +214,7 @@ int runBench(const BenchOptions& o, const vk::ContextOptions& vkOptions, RenderS
     const PreparedFrame& f = device.frame;
     const double copyGbps = copyBandwidth(ctx);
     GpuScene scene(ctx, f.scene);
+    resolveAutoSky(settings.lighting.sky, f.scene.lights);
     Renderer renderer(ctx, scene, settings, uint32_t(o.framesInFlight));
     for (const std::string& w : renderer.warnings()) printWarning(w);
     const SceneMotion motion = frameMotion(o.frame, f);

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "app/frame_setup.h"
+#include "core/sky.h"
 #include "app/dsm_cli.h"
 #include "app/option_checks.h"
 #include "app/option_cli.h"
@@ -200,6 +201,7 @@ int runRender(const RenderCliOptions& o, const vk::ContextOptions& vkOptions, Re
     CliDeviceFrame device(o.frame, settings, vkOptions);
     const PreparedFrame& f = device.frame;
     const SceneMotion motion = frameMotion(o.frame, f);
+    resolveAutoSky(settings.lighting.sky, f.scene.lights);
     Renderer renderer(device.ctx, f.scene, settings);
     renderer.setPassScopes(true);  // the summary's per-pass table
     for (const std::string& w : renderer.warnings()) printWarning(w);

@@ -8,6 +8,7 @@
 
 #include "app/frame_options.h"
 #include "eval/suite.h"
+#include "lighting/lighting_settings.h"
 #include "reference/path_tracer.h"
 #include "vk/context.h"
 
@@ -20,6 +21,8 @@ struct ReferenceCliOptions {
     ReferenceAov aov = ReferenceAov::Final;
     float exposure = 1.0f;
     ReferenceSettings settings;
+    // `reference`'s sky, by the lighting module's rows (settings.sky takes it, Auto resolved).
+    LightingSettings lighting;
 };
 // The option tables of the ground-truth commands: size and sampling (`reference` and `eval`), the
 // output of `reference`, `compare`'s and `eval`'s own.

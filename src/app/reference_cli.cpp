@@ -8,6 +8,7 @@
 #include "app/ground_truth_cli.h"
 #include "eval/compare.h"
 #include "io/image_io.h"
+#include "lighting/lighting_options.h"
 #include "app/bench.h"
 #include "app/cli_app.h"
 #include "app/option_checks.h"
@@ -160,6 +161,7 @@ CLI::App* addReferenceCommand(CLI::App& app, ReferenceCliOptions& o) {
     CLI::App* cmd = app.add_subcommand("reference", "Path-trace the ground truth on the CPU (Embree): EXR radiance");
     addReferenceSceneOptions(*cmd, o);
     addOptionRows(*cmd, referenceCommandOptions(), &o);
+    addOptionRows(*cmd, lightingOptions(), &o.lighting);  // the sky, as `render` takes it
     return cmd;
 }
 
@@ -171,7 +173,11 @@ int runReferenceCommand(const ReferenceCliOptions& o, bool dryRun) {
     const ReferenceAov aov = o.aov;
     PreparedFrame f = prepareReferenceFrame(o);
     if (dryRun) return 0;
-    const ReferenceImage img = renderReference(f.scene, f.camera, o.settings);
+    ReferenceSettings settings = o.settings;
+    settings.sky = o.lighting.sky;
+    resolveAutoSky(settings.sky, f.scene.lights);
+    const ReferenceImage img = renderReference(f.scene, f.camera, settings);
+    for (const std::string& w : img.warnings) printWarning(w);
     const ImageF out{img.width, img.height, img.rgba(aov)};
     if (ext == ".exr") writeExr(o.output, out.width, out.height, out.rgba);
     else writePng(o.output, out.width, out.height, toneMap(out, o.exposure));

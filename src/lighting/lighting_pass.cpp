@@ -17,12 +17,13 @@ LightingPass::LightingPass(vk::Allocator& alloc, uint32_t width, uint32_t height
               {LIGHTING_HDR, img},            {LIGHTING_INDIRECT, tex},        {LIGHTING_DSM_LIGHTS, ssbo},
               {LIGHTING_DSM_HEADS, ssbo},     {LIGHTING_DSM_NODES, ssbo},      {LIGHTING_DSM_SIDE, ssbo},
               {LIGHTING_PROBE, ssbo},         {LIGHTING_MOTION_FIRST, tex},    {LIGHTING_MOTION_FIRST + 1, ssbo},
-              {LIGHTING_MOTION_FIRST + 2, ssbo}, {LIGHTING_SKY_IRRADIANCE, tex}});
+              {LIGHTING_MOTION_FIRST + 2, ssbo}, {LIGHTING_SKY_BACKGROUND, tex},
+              {LIGHTING_SKY_IRRADIANCE, tex}});
     pipeline_ = vk::Pipeline::compute(ctx, "lighting/lighting.comp", {layout_.handle()}, 0);
     pointSampler_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
 }
 
-void LightingPass::addTo(FrameGraph& graph) {
+void LightingPass::addTo(FrameGraph& graph, ImageHandle sky) {
     const ImageHandle out = graph.import(hdr);
     graph.publish("hdr", out);
     const VkSampler point = pointSampler_.handle();
@@ -43,6 +44,7 @@ void LightingPass::addTo(FrameGraph& graph) {
         .storageBuffer(LIGHTING_DSM_NODES, graph.buffer("dsm.nodes"))
         .storageBuffer(LIGHTING_DSM_SIDE, graph.buffer("dsm.side"))
         .storageBuffer(LIGHTING_PROBE, graph.buffer("probe"), Use::StorageWrite)
+        .sampled(LIGHTING_SKY_BACKGROUND, sky, point)
         .record([out](PassContext& c) {
             const vk::Image& image = c.image(out);
             vkCmdDispatch(c.cmd, vk::divUp(image.width(), 8), vk::divUp(image.height(), 8), 1);

@@ -17,8 +17,9 @@ public:
     // "dsm.heads", "dsm.nodes", "dsm.side" (bindings 8-11), and for the velocity AOV "gbuffer.ids"
     // (a 1x1 placeholder on the classic path, FrameUniforms.visibilityIds = 0), "drawn-triangles" and
     // "instances", and "sky.irradiance" (the visible sky's, added to the direct light; a 1x1 black
-    // image without a sky); writes "probe" (the pixel probe, FrameUniforms.probeX, probeY). Publishes "hdr".
-    void addTo(FrameGraph& graph);
+    // image without a sky); writes "probe" (the pixel probe, FrameUniforms.probeX, probeY). `sky` is the
+    // background's radiance (lighting/sky_background.h). Publishes "hdr".
+    void addTo(FrameGraph& graph, ImageHandle sky);
 
     vk::Image hdr;  // RGBA32F radiance (or AOV values)
 

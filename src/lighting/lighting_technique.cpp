@@ -3,6 +3,8 @@
 #include "core/gpu_scene.h"
 #include "core/names.h"
 
+#include <algorithm>
+
 namespace penumbra {
 
 CameraTechnique::CameraTechnique(const TechniqueBuild& b)
@@ -23,9 +25,10 @@ void CameraTechnique::addPasses(const FrameContext& f) {
     if (!f.graph.has(names::kGbufferIds)) f.graph.publish(names::kGbufferIds, f.graph.import(noIds_));
 }
 
-LightingTechnique::LightingTechnique(const TechniqueBuild& b)
+LightingTechnique::LightingTechnique(const TechniqueBuild& b, const LightingSettings& settings)
     : board_(b.board), irradiance_(b.alloc, b.core.width, b.core.height), lighting_(b.alloc, b.core.width, b.core.height),
-      debugView_(b.alloc.context()), tonemap_(b.alloc, b.core.width, b.core.height) {
+      debugView_(b.alloc.context()), tonemap_(b.alloc, b.core.width, b.core.height), settings_(settings),
+      warnings_(b.warnings), background_(b.alloc) {
     noIndirect_ = vk::Image(b.alloc, {VK_FORMAT_R16G16B16A16_SFLOAT, 1, 1, 1,
                                       VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, "no-indirect"});
     noSky_ = vk::Image(b.alloc, {VK_FORMAT_R16G16B16A16_SFLOAT, 1, 1, 1,
@@ -35,6 +38,8 @@ LightingTechnique::LightingTechnique(const TechniqueBuild& b)
     b.cmd.uploadImage(noSky_, &zero, sizeof(zero));
     b.board.put(names::kHdrImage, &lighting_.hdr, this);
     b.board.put(names::kLdrImage, &tonemap_.ldr, this);
+    b.board.put(names::kSkyLight, &skyLight_, this);
+    refreshSky(b.lights);  // at build: a map that cannot be read fails before the first frame
 }
 
 LightingTechnique::~LightingTechnique() { board_.dropOwner(this); }
@@ -66,11 +71,49 @@ gpu::TonemapPush LightingTechnique::tonemapParams(const FrameContext& f) const {
     return {};
 }
 
+LightingTechnique::SkyKey LightingTechnique::skyKey(const SkySettings& settings, const std::vector<Light>& lights) {
+    SkyKey key{settings};
+    for (const Light& l : lights)
+        if (l.type == LightType::Directional) {
+            key.hasSun = true;
+            key.sunDirection = l.direction, key.sunColor = l.color, key.sunIntensity = l.intensity;
+            break;
+        }
+    // Only the analytic sky follows the sun; a map only asks whether there is one (its clipping).
+    if (settings.kind != SkyKind::Analytic) key.sunDirection = key.sunColor = {}, key.sunIntensity = 0;
+    return key;
+}
+
+// The sky is made again only when what it is made from changes (a moving sun: every frame), and
+// each new sky gets a new generation, so that what others cache of it restarts.
+void LightingTechnique::update(const FrameContext& f) {
+    refreshSky(f.lights);
+    if (backgroundStale_) background_.fill(sky_, f.slot);
+    backgroundStale_ = false;
+}
+
+void LightingTechnique::refreshSky(const std::vector<Light>& lights) {
+    SkyKey key = skyKey(settings_.sky, lights);
+    if (skyMade_ && key == skyKey_) return;
+    std::vector<std::string> warnings;
+    sky_ = makeSky(settings_.sky, lights, warnings);
+    // A moving sun would repeat its warning every frame: each is said once.
+    for (const std::string& w : warnings)
+        if (std::find(warnings_.begin(), warnings_.end(), w) == warnings_.end()) warnings_.push_back(w);
+    skyKey_ = std::move(key);
+    skyMade_ = true;
+    skyLight_.enabled = sky_.enabled();
+    const std::array<glm::dvec3, 9> sh = sky_.sh();
+    for (size_t k = 0; k < sh.size(); ++k) skyLight_.radianceSh[k] = glm::vec3(sh[k]);
+    ++skyLight_.generation;
+    backgroundStale_ = true;
+}
+
 void LightingTechnique::addPasses(const FrameContext& f) {
     const ImageHandle indirect = irradiance_.addTo(f.graph);
     f.graph.publish(names::kIrradiance, indirect ? indirect : f.graph.import(noIndirect_));
     if (!f.graph.has(names::kSkyIrradiance)) f.graph.publish(names::kSkyIrradiance, f.graph.import(noSky_));
-    lighting_.addTo(f.graph);
+    lighting_.addTo(f.graph, background_.addTo(f.graph));
 }
 
 void LightingTechnique::addOutputPasses(const FrameContext& f) {

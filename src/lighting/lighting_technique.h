@@ -4,9 +4,13 @@
 #include <memory>
 
 #include "core/irradiance_sum.h"
+#include "core/names.h"
+#include "core/sky.h"
 #include "core/technique.h"
 #include "lighting/gbuffer_pass.h"
 #include "lighting/lighting_pass.h"
+#include "lighting/lighting_settings.h"
+#include "lighting/sky_background.h"
 
 namespace penumbra {
 
@@ -27,18 +31,32 @@ private:
 };
 
 // Deferred lighting (publishes "hdr") over the sum of the frame's irradiance contributions (a black
-// "gi.irradiance" when none), then the debug views and the tone mapper ("ldr").
+// "gi.irradiance" when none), then the debug views and the tone mapper ("ldr"). Its update makes the
+// sky for the frame's lights and publishes it (names::kSkyLight) for every technique's passes.
 class LightingTechnique : public Technique {
 public:
-    explicit LightingTechnique(const TechniqueBuild& b);
+    LightingTechnique(const TechniqueBuild& b, const LightingSettings& settings);
     ~LightingTechnique() override;
     const char* name() const override { return "lighting"; }
+    void setSettings(const LightingSettings& settings) { settings_ = settings; }
+    void update(const FrameContext& f) override;
     void addPasses(const FrameContext& f) override;
     void addOutputPasses(const FrameContext& f) override;
     LightingPass& lighting() { return lighting_; }
     TonemapPass& tonemap() { return tonemap_; }
+    const Sky& sky() const { return sky_; }
 
 private:
+    // What the sky was made from: the settings and the first directional light (the analytic sun).
+    struct SkyKey {
+        SkySettings settings;
+        bool hasSun = false;
+        glm::vec3 sunDirection{0.0f}, sunColor{0.0f};
+        float sunIntensity = 0.0f;
+        bool operator==(const SkyKey&) const = default;
+    };
+    static SkyKey skyKey(const SkySettings& settings, const std::vector<Light>& lights);
+    void refreshSky(const std::vector<Light>& lights);
     gpu::TonemapPush tonemapParams(const FrameContext& f) const;
     Blackboard& board_;
     IrradianceSum irradiance_;
@@ -47,6 +65,14 @@ private:
     TonemapPass tonemap_;
     vk::Image noIndirect_;  // bound in place of the indirect irradiance when GI is off
     vk::Image noSky_;       // and of the sky's irradiance without a sky
+    LightingSettings settings_;
+    std::vector<std::string>& warnings_;
+    Sky sky_;
+    SkyKey skyKey_;
+    bool skyMade_ = false;
+    SkyLight skyLight_;
+    SkyBackground background_;
+    bool backgroundStale_ = true;  // the sky changed since the background was last filled
 };
 
 }  // namespace penumbra

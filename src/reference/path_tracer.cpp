@@ -65,6 +65,7 @@ struct Tracer {
     const Scene& scene;
     const RayScene& rays;
     uint32_t bounces;
+    const Sky& sky;
 
     // Fraction of the light along unit `toLight` (at `dist`) that reaches s: a strand's shadow ray
     // leaves from its axis and ignores its own strand; a surface's from just above it.
@@ -126,14 +127,48 @@ struct Tracer {
         return 4.0f * s.albedo * std::sqrt(std::max(0.0f, 1.0f - tl * tl));
     }
 
-    // Radiance reflected at s after at least one bounce; every vertex is lit by next-event estimation.
-    // In a scene with translucent surfaces each bounce ray draws its own seed for them.
-    glm::vec3 indirect(SurfacePoint s, reference::Pcg32& rng, uint64_t& count) const {
-        glm::vec3 sum(0.0f), throughput(1.0f);
-        for (uint32_t b = 0; b < bounces; ++b) {
+    // The sky's light at s by sampling the sky, weighted against the scatter's density for the same
+    // direction (power heuristic). A strand's specular lobe is not sampled by scatter(): at strands
+    // the sky is sampled alone (weight 1) and escaping scatter rays add nothing.
+    glm::vec3 skyLight(const SurfacePoint& s, reference::Pcg32& rng, uint64_t& count) const {
+        if (!sky.enabled()) return glm::vec3(0.0f);
+        const SkySample l = sky.sample({rng.uniform(), rng.uniform()});
+        if (l.pdf <= 0.0f) return glm::vec3(0.0f);
+        glm::vec3 f;
+        float weight = 1.0f;
+        if (s.strand >= 0) {
+            f = kajiyaKay(s.albedo, s.tangent, l.direction, s.shadingNormal);
+        } else {
+            const float cosine = glm::dot(s.shadingNormal, l.direction);
+            if (cosine <= 0.0f) return glm::vec3(0.0f);
+            f = s.albedo * (cosine / kPi);
+            weight = powerHeuristic(l.pdf, cosine / kPi);
+        }
+        const float v = visibility(s, l.direction, std::numeric_limits<float>::infinity(), count);
+        return v > 0.0f ? f * l.radiance * (v * weight / l.pdf) : glm::vec3(0.0f);
+    }
+
+    static float powerHeuristic(float a, float b) { return a * a / std::max(a * a + b * b, 1e-30f); }
+
+    struct PathLight {
+        glm::vec3 direct{0.0f};    // the sky at the first vertex, unoccluded
+        glm::vec3 indirect{0.0f};  // everything reflected on the way
+    };
+
+    // The light of a path from the camera's surface s: every vertex is lit by next-event estimation
+    // (the sky by MIS), `bounces` scatters add further vertices; with a sky the last vertex's scatter
+    // ray is traced too, for the sky it sees. In a scene with translucent surfaces each bounce ray
+    // draws its own seed for them.
+    PathLight path(SurfacePoint s, reference::Pcg32& rng, uint64_t& count) const {
+        PathLight out;
+        glm::vec3 throughput(1.0f);
+        for (uint32_t b = 0;; ++b) {
+            glm::vec3& term = b == 0 ? out.direct : out.indirect;
+            term += throughput * skyLight(s, rng, count);
+            if (b >= bounces && !sky.enabled()) break;
             glm::vec3 dir;
-            throughput *= scatter(s, rng, dir);
-            if (throughput == glm::vec3(0.0f)) break;
+            const glm::vec3 next = throughput * scatter(s, rng, dir);
+            if (next == glm::vec3(0.0f)) break;
             const float eps = RayScene::epsilon(s.position);
             const glm::vec3 origin =
                 s.strand >= 0 ? s.position
@@ -143,11 +178,19 @@ struct Tracer {
             ++count;
             const std::optional<Hit> hit =
                 rays.intersect(origin, dir, 0.0f, std::numeric_limits<float>::infinity(), query);
-            if (!hit) break;
+            if (!hit) {
+                if (sky.enabled() && s.strand < 0) {
+                    const float scatterPdf = std::max(0.0f, glm::dot(s.shadingNormal, dir)) / kPi;
+                    term += next * sky.radiance(dir) * powerHeuristic(scatterPdf, sky.pdf(dir));
+                }
+                break;
+            }
+            if (b >= bounces) break;
             s = rays.surface(*hit, dir);
-            sum += throughput * direct(s, count);
+            throughput = next;
+            out.indirect += throughput * direct(s, count);
         }
-        return sum;
+        return out;
     }
 };
 
@@ -196,8 +239,9 @@ void renderPixel(const Tracer& tracer, const PinholeCamera& cam, const Reference
             translucent ? tracer.rays.intersect(cam.eye, dir, tmin, tmax, {0u, -1, true}) : hit;
         if (opaque) shadow += tracer.firstShadow(tracer.rays.surface(*opaque, dir), count);
         const uint32_t paths = primaries == s.spp ? 1 : s.spp;
-        if (!hit) {
-            for (uint32_t k = 0; k < paths; ++k) direct.add(glm::vec3(0.0f)), indirect.add(glm::vec3(0.0f));
+        if (!hit) {  // the sky the camera sees
+            const glm::vec3 background = tracer.sky.radiance(dir);
+            for (uint32_t k = 0; k < paths; ++k) direct.add(background), indirect.add(glm::vec3(0.0f));
             continue;
         }
         out.covered[index] = 1;
@@ -209,8 +253,9 @@ void renderPixel(const Tracer& tracer, const PinholeCamera& cam, const Reference
         const SurfacePoint sp = tracer.rays.surface(*hit, dir, &footprint);
         const glm::vec3 d = tracer.direct(sp, count);
         for (uint32_t k = 0; k < paths; ++k) {
-            direct.add(d);
-            indirect.add(tracer.indirect(sp, rng, count));
+            const Tracer::PathLight light = tracer.path(sp, rng, count);
+            direct.add(d + light.direct);
+            indirect.add(light.indirect);
         }
     }
     direct.finish(s.spp, out.direct[index], out.directVar[index]);
@@ -307,9 +352,10 @@ ReferenceImage renderReference(const Scene& scene, const Camera& camera, const R
 
     const auto start = std::chrono::steady_clock::now();
     const RayScene rays(scene);
-    const Tracer tracer{scene, rays, s.bounces};
-    const PinholeCamera cam(camera, s.width, s.height);
     ReferenceImage out;
+    const Sky sky = makeSky(s.sky, scene.lights, out.warnings);
+    const Tracer tracer{scene, rays, s.bounces, sky};
+    const PinholeCamera cam(camera, s.width, s.height);
     out.width = s.width, out.height = s.height, out.spp = s.spp;
     const size_t n = size_t(s.width) * s.height;
     out.direct.resize(n), out.indirect.resize(n), out.directVar.resize(n), out.indirectVar.resize(n);

@@ -2,7 +2,10 @@
 // rasterizer, the ground truth that `penumbra compare` and `penumbra eval` measure the techniques
 // against. Lambertian surfaces; punctual lights by next-event estimation (a shadow ray per light);
 // `bounces` diffuse bounces by cosine-weighted sampling, each bounce's hit lit by next-event
-// estimation again. Radiance meanings match the renderer's AOVs: direct = the light's first
+// estimation again. A sky (core/sky.h) lights every vertex by multiple importance sampling (the sky's
+// own distribution against the cosine-weighted scatter, power heuristic) and shows where camera rays
+// escape; the sky that reaches a camera ray's surface with nothing between is direct light, what is
+// reflected on the way is indirect. Radiance meanings match the renderer's AOVs: direct = the light's first
 // reflection, indirect = everything after it (one bounce by default, what RSM and LPV approximate),
 // final = direct + indirect. Hair strands are Kajiya-Kay-shaded ribbons and, like BLEND surfaces,
 // translucent (reference/ray_scene.h): camera and bounce rays stop at them with probability alpha,
@@ -14,6 +17,7 @@
 
 #include <glm/glm.hpp>
 
+#include "core/sky.h"
 #include "scene/scene.h"
 
 namespace penumbra {
@@ -30,6 +34,8 @@ struct ReferenceSettings {
     // far thinner than a pixel need, their coverage of the pixel's area).
     bool antialias = false;
     bool progress = true;    // single-line progress bar on stderr
+    // The sky (Auto: none; the `reference` command resolves it as `render` does).
+    SkySettings sky;
 };
 
 enum class ReferenceAov { Final, Direct, Indirect, Mask, Shadow, Hair };
@@ -40,6 +46,7 @@ struct ReferenceImage {
     std::vector<glm::vec3> direct, indirect;        // mean radiance per pixel, top row first
     std::vector<glm::vec3> directVar, indirectVar;  // variance of that mean (sample variance / n)
     std::vector<uint8_t> covered;                   // 1 where a camera ray of the pixel hit a surface
+                                                    // (elsewhere `direct` holds the visible sky)
     // The renderer's shadow AOV: mean visibility of the first shadow-casting light at the opaque
     // surface the camera ray meets behind any translucent layers (transmittance of hair and BLEND
     // surfaces included; 0 where that light does not reach it or nothing is hit).
@@ -49,6 +56,7 @@ struct ReferenceImage {
     std::vector<float> hair;
     double seconds = 0.0;
     uint64_t rays = 0;
+    std::vector<std::string> warnings;  // the sky's (a clipped map, a sun below the horizon)
 
     // RGBA32F of one AOV (mask: 1 on covered pixels), as writeExr takes it.
     std::vector<float> rgba(ReferenceAov aov) const;

@@ -34,7 +34,7 @@ HairCasterSettings hairCasters(const RenderSettings& s) {
 }
 
 // Whether the frames are lit by a sky (the lighting module publishes it as names::kSkyLight).
-bool skyOn(const RenderSettings&) { return true; }
+bool skyOn(const RenderSettings& s) { return s.lighting.sky.kind != SkyKind::None; }
 
 // The occupancy volume: the RSM gather's visibility, what blocks LPV's propagation, or what hides
 // the sky.
@@ -137,7 +137,8 @@ void addBuiltinTechniques(TechniqueRegistry& r) {
     r.add(std::move(sky));
 
     TechniqueEntry lighting{"lighting", 80, {}, kPartCamera};
-    lighting.create = [](B b, S) { return std::make_unique<LightingTechnique>(b); };
+    lighting.create = [](B b, S s) { return std::make_unique<LightingTechnique>(b, s.lighting); };
+    lighting.apply = [](Technique& t, S s) { as<LightingTechnique>(t).setSettings(s.lighting); };
     r.add(std::move(lighting));
 }
 

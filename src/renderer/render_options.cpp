@@ -10,6 +10,7 @@
 #include <fmt/ranges.h>
 
 #include "dsm/dsm_options.h"
+#include "lighting/lighting_options.h"
 #include "lpv/lpv_options.h"
 #include "renderer/technique_registry.h"
 #include "rsm/rsm_options.h"
@@ -140,6 +141,7 @@ std::deque<BoundOptionTable>& tables() {
         bind(lpvOptions(), &S::lpv),
         bind(temporalGiOptions(), &S::temporalGi),
         bind(skyLightOptions(), &S::skyLight),
+        bind(lightingOptions(), &S::lighting),
     };
     // Techniques registered from outside src/ bring their tables (a deque: earlier entries stay put).
     static std::set<std::string> added;
@@ -169,6 +171,7 @@ void validateSettings(const RenderSettings& s) {
     checkRanges(frameOptionTable(), &s);
     validate(s.shadow);
     checkRanges(dsmOptions(), &s.dsm);
+    validate(s.lighting);
     if (s.gi != GiMode::None) validate(s.rsm);
     if (s.gi == GiMode::Lpv) validate(s.lpv);
     if (s.giTemporal) validate(s.temporalGi);

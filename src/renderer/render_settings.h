@@ -12,6 +12,7 @@
 
 #include "core/core_settings.h"
 #include "dsm/dsm_settings.h"
+#include "lighting/lighting_settings.h"
 #include "lpv/lpv_settings.h"
 #include "rsm/rsm_settings.h"
 #include "shadow/shadow_settings.h"
@@ -39,6 +40,7 @@ struct RenderSettings {
     RsmSettings rsm;
     LpvSettings lpv;
     DsmSettings dsm;
+    LightingSettings lighting;  // the sky
     // How the sky's visibility is found per pixel (src/sky_light), while the sky is on.
     SkyLightSettings skyLight;
     // `--translucency`: hair and alphaMode BLEND surfaces composited over the opaque image in depth

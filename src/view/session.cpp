@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include "app/cli_parse.h"
+#include "core/sky.h"
 #include "renderer/device_budget.h"
 #include "app/shadow_cli.h"
 #include "renderer/render_options.h"
@@ -82,6 +83,7 @@ void ViewSession::adopt(std::vector<CliArg> args, Parsed p) {
     const bool newCamera = newScene || !sameCamera(p.options, options_);
     const Camera camera = newCamera ? frameCamera(p.options, s) : camera_;
     checkDeviceBudget(ctx_, p.settings, s, lights);  // as `render` checks it before any work
+    resolveAutoSky(p.settings.lighting.sky, lights);
     // Nothing above threw: commit.
     if (newScene) {
         renderer_.reset();  // they draw the old scene

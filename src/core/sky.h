@@ -1,0 +1,138 @@
+// The sky: radiance from every direction of the world's upper hemisphere (+Y up), its order-2
+// spherical harmonics, importance sampling of it and the irradiance it gives. CPU only: the lighting
+// module uploads it, the path tracer samples it, the tests integrate it.
+//
+// Kinds (`--sky`): none; uniform,r,g,b (radiance (r,g,b) over the upper hemisphere, black below the
+// horizon); analytic[,turbidity] (Preetham, Shirley and Smits 1999, driven by the first directional
+// light, scaled so that the sun's illuminance equals the light's intensity); FILE.exr (an
+// equirectangular map, orientation below).
+//
+// Equirectangular layout, for maps and for the table every kind is sampled from: row v (0 at the top)
+// looks at polar angle theta = pi v from +Y, column u at azimuth phi = 2 pi u - pi, the direction
+// (sin(theta) sin(phi), cos(theta), -sin(theta) cos(phi)): the map's centre column looks toward -Z,
+// its right quarter toward +X, its left and right edges toward +Z. `rotation` turns a map about +Y by
+// that many degrees, counter-clockwise seen from above (the map's -Z column then looks toward -X at
+// 90 degrees).
+#pragma once
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "scene/scene.h"
+
+namespace penumbra {
+
+enum class SkyKind { Auto, None, Uniform, Analytic, Map };
+
+// What the user asked for. Auto: the commands that show a scene (render, view, bench, reference)
+// resolve it at their frame set-up (resolveSkyKind: analytic for a scene with a directional light,
+// none otherwise); anything that never resolves it (tests, eval, stability, a program linking the
+// library) gets no sky, so that what it measured with the sun alone stays comparable.
+struct SkySettings {
+    SkyKind kind = SkyKind::Auto;
+    glm::vec3 uniformRadiance{1.0f};
+    float turbidity = 3.0f;  // analytic: Preetham's atmospheric turbidity, [2, 10]
+    std::string mapPath;
+    float scale = 1.0f;            // multiplies every kind's radiance
+    float rotationDegrees = 0.0f;  // a map's turn about +Y
+    bool operator==(const SkySettings&) const = default;
+};
+inline constexpr float kDefaultTurbidity = 3.0f;
+inline constexpr float kMinTurbidity = 2.0f, kMaxTurbidity = 10.0f;
+
+// `--sky` text: none | auto | uniform,r,g,b | analytic[,turbidity] | FILE.exr (the file must exist
+// and be an OpenEXR file). Throws std::invalid_argument with the reason; skyText is its inverse.
+void parseSky(SkySettings& settings, const std::string& text);
+std::string skyText(const SkySettings& settings);
+
+// The nine real SH basis functions (Ramamoorthi and Hanrahan 2001) at unit `d`, world axes:
+// 0.282095; 0.488603 y, z, x; 1.092548 xy, 1.092548 yz, 0.315392 (3z^2 - 1), 1.092548 xz,
+// 0.546274 (x^2 - y^2).
+std::array<double, 9> skyShBasis(const glm::dvec3& d);
+
+struct SkySample {
+    glm::vec3 direction{0.0f};
+    float pdf = 0.0f;  // per unit solid angle
+    glm::vec3 radiance{0.0f};
+};
+
+// A piecewise-constant table over the equirectangular layout.
+struct SkyTable {
+    uint32_t width = 0, height = 0;
+    std::vector<glm::vec3> texels;  // top row first
+};
+
+class Sky {
+public:
+    Sky() = default;  // none
+    static Sky uniform(const glm::vec3& radiance);
+    // `toSun`: unit direction toward the sun; `sunIlluminance`: the sun's luminous irradiance normal
+    // to it in the renderer's units (the directional light's intensity times its colour's luminance).
+    static Sky analytic(float turbidity, const glm::vec3& toSun, float sunIlluminance);
+    // A map (RGB texels, top row first, the layout above) turned by `rotationDegrees` about +Y.
+    static Sky map(SkyTable texels, float rotationDegrees);
+
+    bool enabled() const { return kind_ != SkyKind::None; }
+    SkyKind kind() const { return kind_; }
+    glm::vec3 radiance(const glm::vec3& direction) const;
+    // Radiance in direction d times `factor` (the user's scale).
+    void scale(float factor);
+
+    // Order-2 SH of the radiance, integrated over the table's texels in double precision.
+    std::array<glm::dvec3, 9> sh() const;
+    // A direction by the table's luminance (u in [0,1)^2), and the density of that sampling.
+    SkySample sample(const glm::vec2& u) const;
+    float pdf(const glm::vec3& direction) const;
+    // Irradiance on a surface of unit normal n, unoccluded, over the table in double precision.
+    glm::dvec3 irradiance(const glm::vec3& normal) const;
+    // The table in the layout above, in the map's own orientation; `rotationRadians` turns it.
+    const SkyTable& table() const { return table_; }
+    float rotationRadians() const { return rotation_; }
+    // Clips texels of the map brighter than a threshold (the sun, which a directional light already
+    // gives): returns how many were clipped.
+    uint32_t clipSun();
+
+private:
+    glm::vec3 analyticRadiance(const glm::vec3& d) const;
+    void buildTable(uint32_t width, uint32_t height);
+    void buildDistribution();
+    glm::vec3 toMap(const glm::vec3& world) const;
+    glm::vec3 toWorld(const glm::vec3& map) const;
+    uint32_t texelOf(const glm::vec3& mapDirection) const;
+
+    SkyKind kind_ = SkyKind::None;
+    glm::vec3 uniform_{0.0f};
+    struct Perez { double a, b, c, d, e; };
+    std::array<Perez, 3> perez_{};   // Y, x, y
+    glm::dvec3 zenith_{0.0};         // Yz (cd/m^2), xz, yz
+    glm::vec3 toSun_{0, 1, 0};
+    double sunZenith_ = 0.0;
+    double analyticScale_ = 1.0;     // cd/m^2 -> renderer radiance
+    float scale_ = 1.0f;
+    float rotation_ = 0.0f;
+    SkyTable table_;
+    std::vector<double> rowCdf_;     // height + 1
+    std::vector<double> columnCdf_;  // height x (width + 1)
+    std::vector<double> rowWeight_;  // per row, the row's share
+    double totalWeight_ = 0.0;
+};
+
+// The sky for the frame's lights (Auto: none; a map read from disk and, with a directional light,
+// its sun clipped). Throws std::runtime_error when a map cannot be read. Things the user should know
+// (clipping, a sun below the horizon) are appended to `warnings`.
+Sky makeSky(const SkySettings& settings, const std::vector<Light>& lights, std::vector<std::string>& warnings);
+// The kind Auto stands for with these lights (other kinds: themselves).
+SkyKind resolveSkyKind(const SkySettings& settings, const std::vector<Light>& lights);
+// Auto replaced by what it stands for (the commands' frame set-up).
+inline void resolveAutoSky(SkySettings& settings, const std::vector<Light>& lights) {
+    settings.kind = resolveSkyKind(settings, lights);
+}
+
+// Preetham's model in its own units, for the tests to check against: the sun's illuminance normal to
+// it through the atmosphere (lux) at zenith angle `sunZenith`.
+double preethamSunIlluminance(double turbidity, double sunZenith);
+
+}  // namespace penumbra
