@@ -53,7 +53,9 @@ void main() {
     uint clear = 0u;
     for (uint k = 0u; k < pc.rays; ++k) {
         const vec3 d = rayDirection(r.n, k, pc.rays, rank);
-        const vec3 l = skyRadiance(pc, d);
+        // Weighted by the sky above the horizon only: the truncated series rings below it, where
+        // the ground blocks the rays, and would count that as hidden sky.
+        const vec3 l = d.y > 0.0 ? skyRadiance(pc, d) : vec3(0.0);
         const bool open = segmentClear(start, start + d * reach, 0.5);
         total += l;
         if (open) { seen += l; ++clear; }
