@@ -87,6 +87,7 @@
 #define OIT_SHADE_HAIR_SHADOW 15
 #define OIT_SHADE_HAIR_POINTS 16
 #define OIT_HAIR_SHADOW_SPATIAL 17  // dsm/oit_hair_shadow.comp only
+#define OIT_SHADE_SKY_IRRADIANCE 18  // the visible sky's irradiance at the pixel (names::kSkyIrradiance)
 
 // dsm/oit_blend.comp.
 #define OIT_BLEND_FRAME 0

@@ -23,6 +23,7 @@ layout(set = 0, binding = OIT_SHADE_LAYERS, std430) readonly buffer Layers { uve
 layout(set = 0, binding = OIT_SHADE_NODES, std430) buffer Nodes { uvec4 nodes[]; };
 layout(set = 0, binding = OIT_SHADE_NORMALS, std430) readonly buffer Normals { uint normals[]; };
 layout(set = 0, binding = OIT_SHADE_INDIRECT) uniform sampler2D indirectIrradiance;  // GI (frame.giValid != 0)
+layout(set = 0, binding = OIT_SHADE_SKY_IRRADIANCE) uniform sampler2D skyIrradiance;  // 1x1 black without a sky
 layout(set = 0, binding = OIT_SHADE_SHADOW_PARAMS) uniform Params { GpuShadowParams params; };
 layout(set = 0, binding = OIT_SHADE_SHADOW_LAYERS, std430) readonly buffer ShadowLayers { GpuShadowLayer shadowLayers[]; };
 // 8-11: the deep shadow maps (dsm/dsm_lookup.glsl)
@@ -87,6 +88,9 @@ void main() {
     vec3 p = pixelWorldPosition(frame, pixel, uintBitsToFloat(data.x));
     vec3 l = vec3(0.0);
     if (aov != AOV_INDIRECT) l += directRadiance(p, n, data.z, albedo, kernelAngle(pixel));
+    // The sky's light as the pixel's opaque surface (or, over the background, an open upward one) sees it.
+    if (aov != AOV_INDIRECT)
+        l += albedo / PI * texelFetch(skyIrradiance, min(pixel, textureSize(skyIrradiance, 0) - 1), 0).rgb;
     if (aov != AOV_DIRECT && frame.giValid != 0u) l += albedo / PI * texelFetch(indirectIrradiance, pixel, 0).rgb;
     nodes[entry.x] = uvec4(floatBitsToUint(l.r), floatBitsToUint(l.g), floatBitsToUint(l.b), data.w);
 }

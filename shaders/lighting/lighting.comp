@@ -18,6 +18,7 @@ layout(set = 0, binding = LIGHTING_GBUFFER_DEPTH) uniform sampler2D gDepth;
 layout(set = 0, binding = LIGHTING_SHADOW_MASK) uniform sampler2DArray shadowMask;  // shadow.filter: visibility per shadowed light
 layout(set = 0, binding = LIGHTING_HDR, rgba32f) uniform writeonly image2D outImage;
 layout(set = 0, binding = LIGHTING_INDIRECT) uniform sampler2D indirectIrradiance;  // GI (frame.giValid != 0)
+layout(set = 0, binding = LIGHTING_SKY_IRRADIANCE) uniform sampler2D skyIrradiance;  // 1x1 black without a sky
 layout(set = 0, binding = LIGHTING_PROBE, std430) writeonly buffer Probe { PixelProbe probe; };  // pixel FrameUniforms.probeX, probeY
 // The sky's radiance, equirectangular in world directions (core/sky.h): black without a sky.
 layout(set = 0, binding = LIGHTING_SKY_BACKGROUND) uniform sampler2D skyBackground;
@@ -74,6 +75,8 @@ Shading shade(ivec2 pixel) {
         else radiance += e * ndotl * v;
     }
     s.direct = radiance * s.albedo / PI + hairRadiance;
+    // The sky's light is direct light: the visible sky's irradiance on a diffuse receiver.
+    s.direct += s.albedo / PI * texelFetch(skyIrradiance, min(pixel, textureSize(skyIrradiance, 0) - 1), 0).rgb;
     // Indirect light of a diffuse receiver: albedo / pi times the gathered irradiance.
     if (frame.giValid != 0u) s.irradiance = texelFetch(indirectIrradiance, pixel, 0).rgb;
     s.indirect = s.albedo / PI * s.irradiance;

@@ -23,6 +23,8 @@
 #define LIGHTING_MOTION_FIRST 13
 // The sky behind the geometry (src/lighting/sky_background.h), after motion.glsl's three.
 #define LIGHTING_SKY_BACKGROUND 16
+// The visible sky's irradiance (names::kSkyIrradiance; a black 1x1 image without a sky).
+#define LIGHTING_SKY_IRRADIANCE 17
 
 // lighting/tonemap.comp.
 #define TONEMAP_HDR 0

@@ -28,6 +28,14 @@
 #define LPV_CAMERA_GBUFFER_DEPTH 2
 #define LPV_CAMERA_GEOMETRY_SUMS 3
 
+// inject_sky.comp
+#define LPV_SKY_FRAME 0
+#define LPV_SKY_GBUFFER_ALBEDO 1
+#define LPV_SKY_GBUFFER_NORMAL 2
+#define LPV_SKY_GBUFFER_DEPTH 3
+#define LPV_SKY_IRRADIANCE 4
+#define LPV_SKY_VPLS 5
+
 // lpv/resolve.comp.
 #define LPV_RESOLVE_LIGHT_SUMS 0
 #define LPV_RESOLVE_GEOMETRY_SUMS 1

@@ -26,29 +26,17 @@ layout(push_constant) uniform Push { LpvPush pc; };
 #include "lpv/subgroup_cells.glsl"
 #include "lpv/fixed_point_add.glsl"
 
+#include "lpv/camera_surfel.glsl"
+
 void main() {
-    int step = int(pc.cameraGeometryStep);
-    ivec2 pixel = ivec2(gl_GlobalInvocationID.xy) * step + step / 2;
-    if (any(greaterThanEqual(pixel, ivec2(frame.width, frame.height)))) return;
-    float depth = texelFetch(gDepth, pixel, 0).r;
-    if (depth >= 1.0) return;
-    vec3 x = pixelWorldPosition(frame, pixel, depth);
-    vec3 toEye = frame.eye - x;
-    float dist = length(toEye);
-    vec4 g = texelFetch(gNormal, pixel, 0);
-    // Hair (SHADING_HAIR, --translucency off) is no surface: a strand blocks in proportion to its
-    // coverage of a cell, not with a facing side, and its normal target holds a tangent.
-    if (g.w > 1.5) return;
-    vec3 n = normalize(g.xyz);
-    if (dot(n, toEye) < 0.0) n = -n;
-    float side = dist * frame.pixelSpread * float(step);
-    float area = side * side / max(dot(n, toEye / dist), 0.2);
-    vec4 lobe = cosineLobe(n) / LOBE_PEAK;
+    const CameraSurfel s = cameraSurfel(gl_GlobalInvocationID.xy, int(pc.cameraGeometryStep));
+    if (!s.valid) return;
+    vec4 lobe = cosineLobe(s.n) / LOBE_PEAK;
     for (uint k = 0; k < pc.cascadeCount; ++k) {
         float cell = pc.cascades[k].origin.w;
-        ivec3 g = ivec3(floor(gridCoord(k, x) + 0.5));
+        ivec3 g = ivec3(floor(gridCoord(k, s.x) + 0.5));
         if (!insideGrid(g)) continue;
-        const i64vec4 q = toFixed(lobe * min(area / (cell * cell), 1.0), LPV_GEOMETRY_FRACTION_BITS);
+        const i64vec4 q = toFixed(lobe * min(s.area / (cell * cell), 1.0), LPV_GEOMETRY_FRACTION_BITS);
         uint base = geometryIndex(k, g) * 4u;
         ADD_FIXED(geometrySums, base, q)
     }

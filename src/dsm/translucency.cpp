@@ -96,7 +96,7 @@ CameraTranslucency::CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, co
         {OIT_SHADE_HAIR_POINTS, storage}};
     std::vector<vk::Binding> shade = shadows;
     shade.insert(shade.end(), {{OIT_SHADE_LAYERS, storage}, {OIT_SHADE_NODES, storage}, {OIT_SHADE_NORMALS, storage},
-                               {OIT_SHADE_INDIRECT, sampled}});
+                               {OIT_SHADE_INDIRECT, sampled}, {OIT_SHADE_SKY_IRRADIANCE, sampled}});
     shade_ = vk::ComputeKernel(ctx, "dsm/oit_shade.comp", shade, 0);
     if (hair_) {  // and the points' order
         std::vector<vk::Binding> hairShadow = shadows;
@@ -251,6 +251,7 @@ void CameraTranslucency::addCompositeTo(FrameGraph& graph) {
         .storageBuffer(OIT_SHADE_NODES, nodes, Use::StorageWrite)
         .storageBuffer(OIT_SHADE_NORMALS, normals, Use::StorageRead)
         .sampled(OIT_SHADE_INDIRECT, graph.image("gi.irradiance"), nearest_.handle())
+        .sampled(OIT_SHADE_SKY_IRRADIANCE, graph.image("sky.irradiance"), nearest_.handle())
         .storageBuffer(OIT_SHADE_HAIR_SHADOW, graph.import(hairShadow_))
         .storageBuffer(OIT_SHADE_HAIR_POINTS, hair_ ? graph.import(hair_->points()) : heads);  // no hair: never read
     declareShadows(shade).record([args](PassContext& c) { vkCmdDispatchIndirect(c.cmd, c.buffer(args).handle(), 0); });

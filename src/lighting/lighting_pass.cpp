@@ -17,7 +17,8 @@ LightingPass::LightingPass(vk::Allocator& alloc, uint32_t width, uint32_t height
               {LIGHTING_HDR, img},            {LIGHTING_INDIRECT, tex},        {LIGHTING_DSM_LIGHTS, ssbo},
               {LIGHTING_DSM_HEADS, ssbo},     {LIGHTING_DSM_NODES, ssbo},      {LIGHTING_DSM_SIDE, ssbo},
               {LIGHTING_PROBE, ssbo},         {LIGHTING_MOTION_FIRST, tex},    {LIGHTING_MOTION_FIRST + 1, ssbo},
-              {LIGHTING_MOTION_FIRST + 2, ssbo}, {LIGHTING_SKY_BACKGROUND, tex}});
+              {LIGHTING_MOTION_FIRST + 2, ssbo}, {LIGHTING_SKY_BACKGROUND, tex},
+              {LIGHTING_SKY_IRRADIANCE, tex}});
     pipeline_ = vk::Pipeline::compute(ctx, "lighting/lighting.comp", {layout_.handle()}, 0);
     pointSampler_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
 }
@@ -37,6 +38,7 @@ void LightingPass::addTo(FrameGraph& graph, ImageHandle sky) {
         .sampled(LIGHTING_SHADOW_MASK, graph.image("shadow.mask"), point)
         .storageImage(LIGHTING_HDR, out)
         .sampled(LIGHTING_INDIRECT, graph.image("gi.irradiance"), point)
+        .sampled(LIGHTING_SKY_IRRADIANCE, graph.image("sky.irradiance"), point)
         .storageBuffer(LIGHTING_DSM_LIGHTS, graph.buffer("dsm.lights"))
         .storageBuffer(LIGHTING_DSM_HEADS, graph.buffer("dsm.heads"))
         .storageBuffer(LIGHTING_DSM_NODES, graph.buffer("dsm.nodes"))

@@ -16,7 +16,8 @@ public:
     // FrameUniforms.giValid = 0), and the deep shadow maps' lookup buffers "dsm.lights",
     // "dsm.heads", "dsm.nodes", "dsm.side" (bindings 8-11), and for the velocity AOV "gbuffer.ids"
     // (a 1x1 placeholder on the classic path, FrameUniforms.visibilityIds = 0), "drawn-triangles" and
-    // "instances"; writes "probe" (the pixel probe, FrameUniforms.probeX, probeY). `sky` is the
+    // "instances", and "sky.irradiance" (the visible sky's, added to the direct light; a 1x1 black
+    // image without a sky); writes "probe" (the pixel probe, FrameUniforms.probeX, probeY). `sky` is the
     // background's radiance (lighting/sky_background.h). Publishes "hdr".
     void addTo(FrameGraph& graph, ImageHandle sky);
 

@@ -32,8 +32,11 @@ LightingTechnique::LightingTechnique(const TechniqueBuild& b, const LightingSett
       warnings_(b.warnings), background_(b.alloc), exposure_(b.alloc, b.core.width, b.core.height) {
     noIndirect_ = vk::Image(b.alloc, {VK_FORMAT_R16G16B16A16_SFLOAT, 1, 1, 1,
                                       VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, "no-indirect"});
+    noSky_ = vk::Image(b.alloc, {VK_FORMAT_R16G16B16A16_SFLOAT, 1, 1, 1,
+                                 VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, "no-sky"});
     const uint64_t zero = 0;
     b.cmd.uploadImage(noIndirect_, &zero, sizeof(zero));
+    b.cmd.uploadImage(noSky_, &zero, sizeof(zero));
     b.board.put(names::kHdrImage, &lighting_.hdr, this);
     b.board.put(names::kLdrImage, &tonemap_.ldr, this);
     b.board.put(names::kSkyLight, &skyLight_, this);
@@ -114,6 +117,7 @@ void LightingTechnique::refreshSky(const std::vector<Light>& lights) {
 void LightingTechnique::addPasses(const FrameContext& f) {
     const ImageHandle indirect = irradiance_.addTo(f.graph);
     f.graph.publish(names::kIrradiance, indirect ? indirect : f.graph.import(noIndirect_));
+    if (!f.graph.has(names::kSkyIrradiance)) f.graph.publish(names::kSkyIrradiance, f.graph.import(noSky_));
     lighting_.addTo(f.graph, background_.addTo(f.graph));
 }
 

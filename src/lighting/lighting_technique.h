@@ -66,6 +66,7 @@ private:
     DebugViewPass debugView_;
     TonemapPass tonemap_;
     vk::Image noIndirect_;  // bound in place of the indirect irradiance when GI is off
+    vk::Image noSky_;       // and of the sky's irradiance without a sky
     LightingSettings settings_;
     std::vector<std::string>& warnings_;
     Sky sky_;

@@ -82,6 +82,10 @@ LightPropagationVolume::LightPropagationVolume(vk::Allocator& alloc, uint32_t wi
                                       {{LPV_CAMERA_FRAME, kUbo}, {LPV_CAMERA_GBUFFER_NORMAL, kTex},
                                        {LPV_CAMERA_GBUFFER_DEPTH, kTex}, {LPV_CAMERA_GEOMETRY_SUMS, kSsbo}},
                                       push);
+    injectSky_ = vk::ComputeKernel(ctx, "lpv/inject_sky.comp",
+                                   {{LPV_SKY_FRAME, kUbo}, {LPV_SKY_GBUFFER_ALBEDO, kTex}, {LPV_SKY_GBUFFER_NORMAL, kTex},
+                                    {LPV_SKY_GBUFFER_DEPTH, kTex}, {LPV_SKY_IRRADIANCE, kTex}, {LPV_SKY_VPLS, kSsbo}},
+                                   push);
     resolve_ = vk::ComputeKernel(ctx, "lpv/resolve.comp",
                                  {{LPV_RESOLVE_LIGHT_SUMS, kSsbo}, {LPV_RESOLVE_GEOMETRY_SUMS, kSsbo},
                                   {LPV_RESOLVE_RANGES, kSsbo}, {LPV_RESOLVE_LIGHT, kSsbo},
@@ -142,15 +146,21 @@ void LightPropagationVolume::setSettings(const LpvSettings& settings) {
 }
 
 void LightPropagationVolume::addTo(FrameGraph& graph, uint32_t rsmLayers, uint64_t occupancyGeneration) {
-    if (layers_ != rsmLayers) {
+    // The sky's bounce: the camera's sky-lit surfels join the RSM's VPLs (while a sky is on).
+    const uint32_t step = settings_.cameraGeometryStep;
+    const uint32_t skySurfels =
+        graph.hasImage("sky.irradiance") ? vk::divUp(width_, step) * vk::divUp(height_, step) : 0;
+    if (layers_ != rsmLayers || skySurfels != skySurfels_) {
         layers_ = rsmLayers;
+        skySurfels_ = skySurfels;
         const uint32_t n = settings_.vplResolution;
-        vpls_ = vk::Buffer(alloc_, lpvVplBytes(n, layers_),
+        vpls_ = vk::Buffer(alloc_, lpvVplBytes(n, layers_) + uint64_t(skySurfels) * sizeof(gpu::GpuVpl),
                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, false, "lpv-vpls");
-        push_.vplCount = layers_ * n * n;
+        push_.vplCount = layers_ * n * n + skySurfels;
         push_.layerCount = layers_;
     }
     if (layers_ > 0) addDownsample(graph);
+    if (layers_ > 0 && skySurfels_ > 0) addSkySurfels(graph);
     addInjection(graph);
     addCameraGeometry(graph);
     addResolve(graph);
@@ -236,6 +246,21 @@ void LightPropagationVolume::addResolve(FrameGraph& graph) {
         .record([this, push = push_, r](PassContext& c) {
             run(c, resolve_, push, {vk::divUp(r, 4), vk::divUp(r, 4), vk::divUp(r * cascadeCount_, 4)});
         });
+}
+
+void LightPropagationVolume::addSkySurfels(FrameGraph& graph) {
+    const VkSampler point = pointSampler_.handle();
+    const uint32_t step = settings_.cameraGeometryStep;
+    const glm::uvec3 groups{vk::divUp(vk::divUp(width_, step), 8), vk::divUp(vk::divUp(height_, step), 8), 1};
+    graph.pass("lpv.inject-sky")
+        .pipeline(injectSky_.pipeline)
+        .uniform(LPV_SKY_FRAME, graph.buffer("frame"))
+        .sampled(LPV_SKY_GBUFFER_ALBEDO, graph.image("gbuffer.albedo"), point)
+        .sampled(LPV_SKY_GBUFFER_NORMAL, graph.image("gbuffer.normal"), point)
+        .sampled(LPV_SKY_GBUFFER_DEPTH, graph.image("gbuffer.depth"), point)
+        .sampled(LPV_SKY_IRRADIANCE, graph.image("sky.irradiance"), point)
+        .storageBuffer(LPV_SKY_VPLS, graph.import(vpls_), Use::StorageWrite)
+        .record([this, push = push_, groups](PassContext& c) { run(c, injectSky_, push, groups); });
 }
 
 void LightPropagationVolume::addCameraGeometry(FrameGraph& graph) {

@@ -1,5 +1,6 @@
 // Light propagation volumes (Kaplanyan 2009, Kaplanyan & Dachsbacher 2010), fed by the RSM:
 //   lpv.downsample        RSM (2048^2) -> VPLs (512^2): brightest texel + 26-neighbourhood merge
+//   lpv.inject-sky        (a sky on) sky-lit camera surfels -> VPLs after the RSM's: the sky's bounce
 //   lpv.clear             zero the injection's fixed-point sums
 //   lpv.inject-range      per cell and colour the largest coefficient a VPL adds: the scale of its sum
 //   lpv.inject            VPLs -> light (L1 SH per colour, a trilinear splat half a cell along the
@@ -56,8 +57,9 @@ public:
                            const Bounds& sceneBounds);
     // Places the cascades around the camera for this frame.
     void update(const glm::vec3& eye);
-    // Reads "frame", "lights", the G-buffer and the RSM ("rsm.*", `rsmLayers` layers); publishes
-    // "gi.irradiance".
+    // Reads "frame", "lights", the G-buffer, the RSM ("rsm.*", `rsmLayers` layers) and, when
+    // published, the sky's irradiance ("sky.irradiance", bounced from the camera's surfels);
+    // publishes "gi.irradiance".
     // `occupancyGeneration` (OccupancyVolume::generation, --lpv-geometry voxels): the faces are made
     // again only when it or the cascades changed.
     void addTo(FrameGraph& graph, uint32_t rsmLayers, uint64_t occupancyGeneration = 0);
@@ -87,6 +89,7 @@ private:
     void addInjection(FrameGraph& graph);
     void addResolve(FrameGraph& graph);
     void addCameraGeometry(FrameGraph& graph);
+    void addSkySurfels(FrameGraph& graph);
     void addPropagation(FrameGraph& graph, uint64_t occupancyGeneration = 0);
     void addGather(FrameGraph& graph);
     static void run(PassContext& c, const vk::ComputeKernel& kernel, const gpu::LpvPush& push, glm::uvec3 groups);
@@ -95,10 +98,11 @@ private:
     LpvSettings settings_;
     Bounds bounds_;
     uint32_t width_, height_, cascadeCount_, layers_ = 0;
+    uint32_t skySurfels_ = 0;  // sky-lit camera surfels after the RSM's VPLs (lpv/inject_sky.comp)
     gpu::LpvPush push_{};
     bool voxels() const { return settings_.geometry == LpvGeometry::Voxels; }
 
-    vk::ComputeKernel downsample_, injectRange_, inject_, injectCamera_, resolve_, propagate_, gather_, faceKernel_;
+    vk::ComputeKernel downsample_, injectRange_, inject_, injectCamera_, injectSky_, resolve_, propagate_, gather_, faceKernel_;
     vk::Sampler pointSampler_;
     vk::Buffer vpls_, volumeA_, volumeB_, accum_, geometry_;
     vk::Buffer faces_;  // --lpv-geometry voxels: per cell the open share of its -x, -y, -z faces

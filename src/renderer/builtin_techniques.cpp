@@ -12,6 +12,7 @@
 #include "rsm/rsm_options.h"
 #include "rsm/rsm_technique.h"
 #include "shadow/shadow_technique.h"
+#include "sky_light/sky_light_technique.h"
 #include "temporal_gi/temporal_gi_technique.h"
 #include "voxel/occupancy_technique.h"
 
@@ -32,9 +33,14 @@ HairCasterSettings hairCasters(const RenderSettings& s) {
     return {s.shadow.depthBiasConstant, s.shadow.depthBiasSlope, s.shadow.pointMode == PointShadowMode::Paraboloid};
 }
 
-// The occupancy volume: the RSM gather's visibility, or what blocks LPV's propagation.
+// Whether the frames are lit by a sky (the lighting module publishes it as names::kSkyLight).
+bool skyOn(const RenderSettings& s) { return s.lighting.sky.kind != SkyKind::None; }
+
+// The occupancy volume: the RSM gather's visibility, what blocks LPV's propagation, or what hides
+// the sky.
 bool occupancyUsed(const RenderSettings& s) {
-    return (s.gi == GiMode::Rsm && s.rsm.visibility == RsmVisibility::Voxels) ||
+    return (skyOn(s) && s.skyLight.visibility == SkyVisibility::Voxels) ||
+           (s.gi == GiMode::Rsm && s.rsm.visibility == RsmVisibility::Voxels) ||
            (s.gi == GiMode::Lpv && s.lpv.geometry == LpvGeometry::Voxels);
 }
 
@@ -123,6 +129,12 @@ void addBuiltinTechniques(TechniqueRegistry& r) {
     };
     temporal.apply = [](Technique& t, S s) { as<TemporalGiTechnique>(t).setSettings(s.temporalGi, giEstimator(s)); };
     r.add(std::move(temporal));
+
+    TechniqueEntry sky{"sky-light", 55, {}, kPartCamera};  // before LPV, which bounces its light
+    sky.enabled = skyOn;
+    sky.create = [](B b, S s) { return std::make_unique<SkyLightTechnique>(b, s.skyLight); };
+    sky.apply = [](Technique& t, S s) { as<SkyLightTechnique>(t).setSettings(s.skyLight); };
+    r.add(std::move(sky));
 
     TechniqueEntry lighting{"lighting", 80, {}, kPartCamera};
     lighting.create = [](B b, S s) { return std::make_unique<LightingTechnique>(b, s.lighting); };

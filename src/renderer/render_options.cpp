@@ -15,6 +15,7 @@
 #include "renderer/technique_registry.h"
 #include "rsm/rsm_options.h"
 #include "shadow/shadow_options.h"
+#include "sky_light/sky_light_options.h"
 #include "temporal_gi/temporal_gi_options.h"
 
 namespace penumbra {
@@ -173,6 +174,7 @@ std::deque<BoundOptionTable>& tables() {
         bind(rsmOptions(), &S::rsm),
         bind(lpvOptions(), &S::lpv),
         bind(temporalGiOptions(), &S::temporalGi),
+        bind(skyLightOptions(), &S::skyLight),
         bind(lightingOptions(), &S::lighting),
     };
     // Techniques registered from outside src/ bring their tables (a deque: earlier entries stay put).
@@ -207,6 +209,7 @@ void validateSettings(const RenderSettings& s) {
     if (s.gi != GiMode::None) validate(s.rsm);
     if (s.gi == GiMode::Lpv) validate(s.lpv);
     if (s.giTemporal) validate(s.temporalGi);
+    validate(s.skyLight);
     const OptionTable& frame = frameOptionTable();
     const std::string& aov = frame.flagOf<S>([](S& x) -> auto& { return x.aov; });
     const std::string& gi = frame.flagOf<S>([](S& x) -> auto& { return x.gi; });

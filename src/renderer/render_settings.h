@@ -16,6 +16,7 @@
 #include "lpv/lpv_settings.h"
 #include "rsm/rsm_settings.h"
 #include "shadow/shadow_settings.h"
+#include "sky_light/sky_light_settings.h"
 #include "temporal_gi/temporal_gi_settings.h"
 #include "shared/types.h"
 
@@ -44,6 +45,8 @@ struct RenderSettings {
     LpvSettings lpv;
     DsmSettings dsm;
     LightingSettings lighting;  // the sky
+    // How the sky's visibility is found per pixel (src/sky_light), while the sky is on.
+    SkyLightSettings skyLight;
     // `--translucency`: hair and alphaMode BLEND surfaces composited over the opaque image in depth
     // order (src/dsm/translucency.h); off: both are drawn opaque into the G-buffer.
     bool translucency = true;

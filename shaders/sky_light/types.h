@@ -1,0 +1,43 @@
+// The sky-light passes' binding numbers and push constants (sky_light/trace.comp, filter.comp),
+// included by the GLSL and by src/sky_light: each number is written here only.
+#ifndef PENUMBRA_SKY_LIGHT_TYPES_H
+#define PENUMBRA_SKY_LIGHT_TYPES_H
+
+#include "shared/types.h"
+
+#ifdef __cplusplus
+namespace penumbra::gpu {
+#endif
+
+// trace.comp
+#define SKY_TRACE_FRAME 0
+#define SKY_TRACE_GBUFFER_NORMAL 1
+#define SKY_TRACE_GBUFFER_DEPTH 2
+#define SKY_TRACE_OCCUPANCY 3
+#define SKY_TRACE_OUT 4  // rgb: the share of the sky's radiance a pixel sees, per channel
+
+// filter.comp
+#define SKY_FILTER_FRAME 0
+#define SKY_FILTER_GBUFFER_NORMAL 1
+#define SKY_FILTER_GBUFFER_DEPTH 2
+#define SKY_FILTER_VISIBILITY 3
+#define SKY_FILTER_OUT 4  // rgb: the visible sky's irradiance (names::kSkyIrradiance)
+
+// Rays of one pixel share a rotation with the pixels SKY_TILE apart: a SKY_TILE^2 block holds every
+// rotation, which the filter averages back together.
+#define SKY_TILE 4
+
+// Both passes' push constants: the sky's order-2 SH radiance (nine RGB coefficients, flattened, the
+// basis of core/sky.h's shBasis) and the walk's parameters.
+struct SkyLightPush {
+    float sh[27];
+    uint rays;          // trace: rays per pixel (0: every pixel sees the whole sky)
+    float startOffset;  // trace: voxels off the surface, along its normal, where the rays start
+    uint filterRadius;  // filter: pixels either side
+};
+
+#ifdef __cplusplus
+static_assert(sizeof(SkyLightPush) == 120);
+}  // namespace penumbra::gpu
+#endif
+#endif

@@ -1,0 +1,26 @@
+// Settings of the sky-light module (src/sky_light): how the sky's visibility at each pixel is found.
+#pragma once
+#include <cstdint>
+
+namespace penumbra {
+
+enum class SkyVisibility {
+    Voxels,  // rays through the occupancy volume (its resolution: --rsm-voxel-res)
+    None,    // no occlusion: every surface sees its whole hemisphere of sky
+};
+
+struct SkyLightSettings {
+    SkyVisibility visibility = SkyVisibility::Voxels;
+    // Rays per pixel; neighbouring pixels turn their set by different angles, and the filter averages
+    // a 4x4 block's 16 sets back together.
+    uint32_t rays = 8;
+    // Pixels either side that the filter averages over (on the receiver's own surface); 2 covers a
+    // 4x4 block of ray sets from every pixel.
+    uint32_t filterRadius = 2;
+    // Where the rays start: this many voxels off the surface along its normal, out of the voxels
+    // the surface itself occupies (half a voxel leaves many rays inside them; further off misses
+    // the occluders near the receiver).
+    float startOffset = 1.0f;
+};
+
+}  // namespace penumbra

@@ -1,0 +1,107 @@
+#include "sky_light/sky_light_technique.h"
+
+
+namespace penumbra {
+namespace {
+
+constexpr VkFormat kVisibilityFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+constexpr VkFormat kIrradianceFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+
+std::vector<vk::Binding> passBindings(uint32_t input, uint32_t out, VkDescriptorType inputType) {
+    constexpr VkDescriptorType tex = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    return {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}, {1, tex}, {2, tex}, {input, inputType},
+            {out, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}};
+}
+
+}  // namespace
+
+static_assert(SKY_TRACE_FRAME == 0 && SKY_FILTER_FRAME == 0 && SKY_TRACE_GBUFFER_NORMAL == 1 &&
+              SKY_FILTER_GBUFFER_NORMAL == 1 && SKY_TRACE_GBUFFER_DEPTH == 2 && SKY_FILTER_GBUFFER_DEPTH == 2);
+
+SkyLightTechnique::SkyLightTechnique(const TechniqueBuild& b, const SkyLightSettings& s) : settings_(s) {
+    vk::Context& ctx = b.alloc.context();
+    trace_ = vk::ComputeKernel(ctx, "sky_light/trace.comp",
+                               passBindings(SKY_TRACE_OCCUPANCY, SKY_TRACE_OUT, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
+                               sizeof(gpu::SkyLightPush));
+    filter_ = vk::ComputeKernel(
+        ctx, "sky_light/filter.comp",
+        passBindings(SKY_FILTER_VISIBILITY, SKY_FILTER_OUT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER),
+        sizeof(gpu::SkyLightPush));
+    point_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
+    const VkImageUsageFlags usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
+    visibility_ = vk::Image(b.alloc, {kVisibilityFormat, b.core.width, b.core.height, 1, usage, "sky-visibility"});
+    irradiance_ = vk::Image(b.alloc, {kIrradianceFormat, b.core.width, b.core.height, 1,
+                                      usage | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, "sky-irradiance"});
+    noVoxels_ = vk::Buffer(b.alloc, sizeof(gpu::GpuOccupancyGrid),
+                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT, false, "sky-no-voxels");
+    b.cmd.submitAndWait([&](VkCommandBuffer c) {
+        vkCmdFillBuffer(c, noVoxels_.handle(), 0, VK_WHOLE_SIZE, 0);
+        vk::memoryBarrier(c, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                          VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT, VK_ACCESS_2_SHADER_STORAGE_READ_BIT);
+    });
+}
+
+uint64_t SkyLightTechnique::bytes(uint64_t width, uint64_t height) { return width * height * (8 + 16); }
+
+void SkyLightTechnique::setSettings(const SkyLightSettings& s) {
+    settings_ = s;
+    cached_ = false;
+}
+
+gpu::SkyLightPush SkyLightTechnique::constants(const SkyLight& sky) const {
+    gpu::SkyLightPush p{};
+    for (size_t i = 0; i < sky.radianceSh.size(); ++i)
+        for (int c = 0; c < 3; ++c) p.sh[3 * i + c] = sky.radianceSh[i][c];
+    p.rays = settings_.visibility == SkyVisibility::None ? 0u : settings_.rays;
+    p.startOffset = settings_.startOffset;
+    p.filterRadius = settings_.filterRadius;
+    return p;
+}
+
+void SkyLightTechnique::addPasses(const FrameContext& f) {
+    const SkyLight* sky = f.board.get(names::kSkyLight);
+    if (!sky || !sky->enabled) return;
+    const ImageHandle out = f.graph.import(irradiance_);
+    f.graph.publish(names::kSkyIrradiance, out);
+    const OccupancyState* voxels = f.board.get(names::kOccupancyState);
+    const CacheKey key{f.uniforms.viewProj, voxels ? voxels->generation : 0, sky->generation};
+    if (cached_ && key == key_) return;
+    const gpu::SkyLightPush push = constants(*sky);
+    const ImageHandle visibility = f.graph.import(visibility_);
+    addTrace(f.graph, visibility, push);
+    addFilter(f.graph, visibility, out, push);
+    key_ = key;
+    cached_ = true;
+}
+
+void SkyLightTechnique::addTrace(FrameGraph& graph, ImageHandle visibility, const gpu::SkyLightPush& push) {
+    const bool voxels = push.rays > 0 && graph.has(names::kOccupancy);
+    graph.pass("sky.trace")
+        .pipeline(trace_.pipeline)
+        .uniform(SKY_TRACE_FRAME, graph.buffer(names::kFrame))
+        .sampled(SKY_TRACE_GBUFFER_NORMAL, graph.image(names::kGbufferNormal), point_.handle())
+        .sampled(SKY_TRACE_GBUFFER_DEPTH, graph.image(names::kGbufferDepth), point_.handle())
+        .storageBuffer(SKY_TRACE_OCCUPANCY, voxels ? graph.buffer(names::kOccupancy) : graph.import(noVoxels_))
+        .storageImage(SKY_TRACE_OUT, visibility)
+        .record([this, push](PassContext& c) {
+            trace_.pipeline.push(c.cmd, push);
+            vkCmdDispatch(c.cmd, vk::divUp(visibility_.width(), 8), vk::divUp(visibility_.height(), 8), 1);
+        });
+}
+
+void SkyLightTechnique::addFilter(FrameGraph& graph, ImageHandle visibility, ImageHandle out,
+                                  const gpu::SkyLightPush& push) {
+    graph.pass("sky.filter")
+        .pipeline(filter_.pipeline)
+        .uniform(SKY_FILTER_FRAME, graph.buffer(names::kFrame))
+        .sampled(SKY_FILTER_GBUFFER_NORMAL, graph.image(names::kGbufferNormal), point_.handle())
+        .sampled(SKY_FILTER_GBUFFER_DEPTH, graph.image(names::kGbufferDepth), point_.handle())
+        .sampled(SKY_FILTER_VISIBILITY, visibility, point_.handle())
+        .storageImage(SKY_FILTER_OUT, out)
+        .record([this, push](PassContext& c) {
+            filter_.pipeline.push(c.cmd, push);
+            vkCmdDispatch(c.cmd, vk::divUp(irradiance_.width(), 8), vk::divUp(irradiance_.height(), 8), 1);
+        });
+}
+
+}  // namespace penumbra
