@@ -37,7 +37,7 @@ for name, r in runs.items():
     print(f"- {name}: `{r['command']}`")
 PY
 fi
-if [ $# -lt 4 ]; then sed -n "2,18p" "$0"; exit 2; fi
+if [ $# -lt 4 ]; then sed -n "2,15p" "$0"; exit 2; fi
 suite=$1 assets=$2 out=$3 bins=("$4" "${5:-}")
 here=$(cd "$(dirname "$0")" && pwd)
 case $suite in
