@@ -182,7 +182,7 @@ if args:
             out += [flag, value]
     if "hair" in args and "--strands" not in given:  # the built-in hair scene's 25000 strands
         out += ["--strands", str(small["--strands"])]
-    if args[0] in sized and args[0] != "view":  # maps of 2048^2 are most of a small frame's time
+    if args[0] in ("render", "bench", "stability"):  # maps of 2048^2 are most of a small frame's time
         if "--shadow-res" not in given:
             out += ["--shadow-res", str(small["--shadow-res"])]
         if "lpv" in args and "--lpv-rsm-res" not in given:
@@ -210,11 +210,11 @@ def scratch_tree(tmp, penumbra):
 
 
 def without_assets(script):
-    """The script without its commands on ../shared/assets (a line continued with a backslash is one)."""
+    """The script without its commands on ../shared/assets (lines continued by a backslash, && or | are one)."""
     kept, command = [], []
     for line in script.splitlines():
         command.append(line)
-        if line.endswith("\\"):
+        if line.rstrip().endswith(("\\", "&&", "||", "|")):
             continue
         if "../shared/assets" in "\n".join(command):
             print("  skip (no ../shared/assets): " + command[0][:90])
