@@ -14,8 +14,9 @@ set -euo pipefail
 old=$1 new=$2 assets=$3 out=$4 repeats=${5:-5} parts=${6:-"cost flicker response noise"}
 part() { [[ " $parts " == *" $1 "* ]]; }
 mkdir -p "$out"
-sponza="$assets/sponza/glTF/Sponza.gltf --camera -9,1.7,0.3,6,4.5,0,0,1,0,70 --light directional,0.1,-1,0.2,20"
-vc="$assets/VC/glTF/VC.gltf --camera 14,9,16,0,1.5,0,0,1,0,50 --light directional,0.3,-1,0.4,6"
+# shellcheck source=bench/views.sh
+. "$(dirname "$0")/views.sh"
+vc=$vc_lit
 hd="--width 1920 --height 1080 --frames 60 --warmup 10"
 declare -A cases=(
   [sponza-default]="$sponza $hd"
@@ -56,12 +57,11 @@ for name, by in sorted(runs.items()):
 PY
 
 stab="stability --frames 8 --warmup 32 --no-reference --width 128 --height 96"
-sponzaCamera="--camera-keys 0,-9,1.7,0.3,6,4.5,0;0.26667,-8.2,1.7,0.5,6.8,4.5,0.2"
 declare -A motions=(
   [cornell]="cornell"
-  [vc-sun]="$vc --sun-path 53.1,63.4,65.1,57.4,0.26667"
-  [sponza-sun]="$sponza --sun-path 63.4,77.4,75.4,71.4,0.26667"
-  [sponza-camera]="$sponza $sponzaCamera"
+  [vc-sun]="$vc $vc_sun_path"
+  [sponza-sun]="$sponza $sponza_sun_path"
+  [sponza-camera]="$sponza $sponza_camera_path"
 )
 part flicker && for name in "${!motions[@]}"; do
   for gi in rsm lpv; do

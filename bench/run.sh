@@ -7,6 +7,10 @@
 #   gi        RSM and LPV on cornell, VC and Sponza (PCF shadows)
 #   matrix    every shadow filter on cornell, VC and hair, every GI mode on cornell and VC (SIZE for 2160p)
 #   scale     LPV grid size, RSM samples, hair strands and shadow map size on one view each
+#   gallery   every image of the README's gallery, by its caption's command, at full size, into OUT
+# and the suites with runners of their own (the same arguments; they print their own usage):
+#   flicker (bench/stability.sh), gi-variants (bench/gi_variants.sh), raster-sweep (bench/raster_sweep.sh),
+#   dynamic-gi (bench/dynamic_gi.sh: OLD and NEW binaries)
 # Usage: bench/run.sh SUITE ASSETS OUT PENUMBRA [OTHER_PENUMBRA]
 #        bench/run.sh --table OUT   (the Markdown table of every JSON in OUT: frame and passes, with the commands)
 # REPEATS (default 1; 5 for an A/B), SIZE and FRAMES (bench/views.sh) come from the environment.
@@ -33,8 +37,26 @@ for name, r in runs.items():
     print(f"- {name}: `{r['command']}`")
 PY
 fi
-if [ $# -lt 4 ]; then sed -n "2,14p" "$0"; exit 2; fi
+if [ $# -lt 4 ]; then sed -n "2,15p" "$0"; exit 2; fi
 suite=$1 assets=$2 out=$3 bins=("$4" "${5:-}")
+here=$(cd "$(dirname "$0")" && pwd)
+case $suite in
+  flicker) exec "$here/stability.sh" "$4" "$assets" "$out" ;;
+  gi-variants) exec "$here/gi_variants.sh" "$4" "$assets" "$out" ;;
+  raster-sweep) exec "$here/raster_sweep.sh" "$4" "$assets" "$out" ;;
+  dynamic-gi) exec "$here/dynamic_gi.sh" "$4" "${5:?dynamic-gi takes OLD and NEW binaries}" "$assets" "$out" "${REPEATS:-5}" ;;
+  gallery)
+    # The captions' commands (scripts/check-docs.py --gallery), with this binary and ASSETS, run in OUT.
+    mkdir -p "$out"
+    bin=$(realpath "$4") assets=$(realpath "$assets")
+    python3 "$here/../scripts/check-docs.py" --gallery | while IFS= read -r cmd; do
+      cmd=${cmd//..\/shared\/assets/$assets}
+      cmd=${cmd/.\/build\/penumbra/$bin}
+      echo "+ $cmd"
+      (cd "$out" && bash -c "$cmd") || echo "failed: $cmd"
+    done
+    exit 0 ;;
+esac
 # shellcheck source=bench/views.sh
 . "$(dirname "$0")/views.sh"
 mkdir -p "$out"
@@ -64,7 +86,7 @@ case $suite in
     for n in 25 100 400 1600; do cases+=("rsm-samples-$n $vc --gi rsm --rsm-mode full --rsm-samples $n"); done
     for n in 10000 50000 100000 200000; do cases+=("hair-strands-$n hair --strands $n --shadow dsm --dsm-res 2048"); done
     for n in 1024 2048 4096 8192; do cases+=("shadow-res-$n $vc --shadow pcf --shadow-res $n"); done ;;
-  *) echo "bench/run.sh: unknown suite '$suite' (headline, hair, gi, matrix, scale)" >&2; exit 2 ;;
+  *) echo "bench/run.sh: unknown suite '$suite' (headline, hair, gi, matrix, scale, gallery, flicker, gi-variants, raster-sweep, dynamic-gi)" >&2; exit 2 ;;
 esac
 for ((r = 0; r < ${REPEATS:-1}; r++)); do
   for c in "${cases[@]}"; do

@@ -2,9 +2,9 @@
 # holding sponza/ and VC/: the glTF sample models and Crytek Sponza, ../shared/assets in a checkout
 # of this repository).
 # shellcheck shell=bash disable=SC2034
-sponza_view="$assets/sponza/glTF/Sponza.gltf --camera -9,1.7,0.3,6,4.5,0,0,1,0,70"  # the nave
-sponza="$sponza_view --light directional,0.1,-1,0.2,20"
-vc="$assets/VC/glTF/VC.gltf --camera 14,9,16,0,1.5,0,0,1,0,50"
+# Sponza's nave and VC's overview are penumbra's named views (`--view`; the nave's carries its sun).
+sponza="$assets/sponza/glTF/Sponza.gltf --view nave"
+vc="$assets/VC/glTF/VC.gltf --view overview"
 # The moving lights and camera of the flicker measurements (bench/stability.sh).
 vc_lit="$vc --light directional,0.3,-1,0.4,6"
 sponza_sun_path="--sun-path 63.4,77.4,75.4,71.4,0.26667"

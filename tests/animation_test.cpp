@@ -205,9 +205,9 @@ TEST_F(AnimatedShadowTest, ShadowLandsWhereTheAnimationPutsTheOccluder) {
                 const Ray ray = cameraRay(camera, s.width, s.height, x, y);
                 const auto top = hitHorizontalPlane(ray, 1.0);
                 if (top && occluder.contains(ray.origin + *top * ray.dir)) continue;
-                const auto ground = hitHorizontalPlane(ray, 0.0);
-                if (!ground) continue;
-                const dvec3 p = ray.origin + *ground * ray.dir;
+                const auto floorHit = hitHorizontalPlane(ray, 0.0);
+                if (!floorHit) continue;
+                const dvec3 p = ray.origin + *floorHit * ray.dir;
                 if (std::abs(p.x) > 1.9 || std::abs(p.z) > 1.9 || shadow.boundaryDistance(p) < 2.0 * texel) continue;
                 const bool dark = img[(size_t(y) * s.width + x) * 4] < 0.5f;
                 ++checked;

@@ -246,10 +246,10 @@ TEST(SettingsTable, CoversEveryRenderOption) {
     std::set<std::string> table;
     for (const SettingsOption& o : settingsOptionTable()) table.insert(o.flag);
     // Frame inputs (camera, lights, what moves and when), not settings.
-    const std::set<std::string> inputs{"--help",      "--camera",      "--camera-index", "--light",
-                                       "--light-shadow", "--strands",  "--time",         "--animation",
-                                       "--clamp",     "--sun-path",    "--light-path",   "--camera-keys",
-                                       "--no-motion"};
+    const std::set<std::string> inputs{"--help",      "--camera",      "--camera-index", "--view",
+                                       "--light",     "--light-shadow", "--strands",     "--time",
+                                       "--animation", "--clamp",       "--sun-path",     "--light-path",
+                                       "--camera-keys", "--no-motion"};
     for (const CLI::Option* o : app.get_options()) {
         if (o->get_lnames().empty()) continue;  // the positional scene
         const std::string name = "--" + o->get_lnames().front();

@@ -160,9 +160,9 @@ TEST_F(MotionGiTest, VelocityIsWhereEachPointWasInThePreviousFrame) {
                         then = objectMoves ? q - dvec3(dt, 0.0, 0.0) : q;
                         ++onSquare;
                     } else {
-                        const auto ground = hitHorizontalPlane(ray, 0.0);
-                        if (!ground) continue;
-                        q = ray.origin + *ground * ray.dir;
+                        const auto floorHit = hitHorizontalPlane(ray, 0.0);
+                        if (!floorHit) continue;
+                        q = ray.origin + *floorHit * ray.dir;
                         if (std::abs(q.x) > 1.9 || std::abs(q.z) > 1.9) continue;
                         if (top && square.boundaryDistance(ray.origin + *top * ray.dir) < 0.03) continue;
                         then = q;

@@ -249,9 +249,9 @@ TEST_F(ShadowGpuTest, CascadesDoNotShimmerWhenTheCameraMoves) {
             size_t compared = 0, changed = 0;
             for (uint32_t y = 0; y < H; ++y)
                 for (uint32_t x = 0; x + 1 < W; ++x) {
-                    const double ground = *hitHorizontalPlane(cameraRay(b, W, H, x, y), 0.0);
-                    if (std::abs(db.at(x, y) - ground) > 1e-3 * ground ||
-                        std::abs(da.at(x + 1, y) - ground) > 1e-3 * ground)
+                    const double floorDistance = *hitHorizontalPlane(cameraRay(b, W, H, x, y), 0.0);
+                    if (std::abs(db.at(x, y) - floorDistance) > 1e-3 * floorDistance ||
+                        std::abs(da.at(x + 1, y) - floorDistance) > 1e-3 * floorDistance)
                         continue;  // an occluder in front in either image
                     ++compared;
                     changed += std::abs(fb.image.at(x, y) - fa.image.at(x + 1, y)) > 1.0f / 255.0f;

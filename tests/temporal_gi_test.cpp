@@ -183,9 +183,9 @@ TEST_F(TemporalGiTest, DisocclusionRestartsExactlyTheDisoccludedPixels) {
     for (uint32_t y = 0; y < s.height; ++y)
         for (uint32_t x = 0; x < s.width; ++x) {
             const Ray ray = cameraRay(camera, s.width, s.height, x, y);
-            const auto top = hitHorizontalPlane(ray, 1.0), ground = hitHorizontalPlane(ray, 0.0);
-            if (!top || !ground) continue;
-            const dvec3 q = ray.origin + *top * ray.dir, g = ray.origin + *ground * ray.dir;
+            const auto top = hitHorizontalPlane(ray, 1.0), floorHit = hitHorizontalPlane(ray, 0.0);
+            if (!top || !floorHit) continue;
+            const dvec3 q = ray.origin + *top * ray.dir, g = ray.origin + *floorHit * ray.dir;
             if (before.boundaryDistance(q) < 0.03 || after.boundaryDistance(q) < 0.03) continue;
             if (std::abs(g.x) > 1.9 || std::abs(g.z) > 1.9) continue;
             const bool disoccludedNow = !after.contains(q) && before.contains(q);

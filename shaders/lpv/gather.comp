@@ -2,7 +2,7 @@
 // LPV final gather: the accumulated intensity I (SH per cell) read trilinearly at the receiver moved
 // one cell along its normal (against leaking through thin walls, and away from the cell its own VPLs
 // were injected into, half a cell out, whose outgoing L1 lobe cancels the light coming in: with half
-// a cell the GI suite's room is 28% too dark; the price, a brighter near field: README "LPV"), irradiance
+// a cell the GI suite's room is 28% too dark; the price, a brighter near field: docs/techniques/lpv.md), irradiance
 // E = max(0, dot(I, CosineLobe(-n))) / cell^2 (intensity per cell cross-section is radiance; the
 // clamped-cosine integral against it is irradiance), summed over the cascades (lpvIrradiance).
 // Debug modes show a volume slice.

@@ -8,8 +8,8 @@
 // fixed point (lpv/fixed_point.glsl: the same sum in any order), the light at the scale
 // lpv/inject_range.comp found; lpv/resolve.comp turns the sums into the float volumes. In the coarser
 // cascades most VPLs of a subgroup (neighbouring RSM texels) land in the same cell: they are summed
-// in the subgroup first, one atomic per coefficient instead of one per VPL (on the H100 the room's
-// injection into 3 cascades took 5 ms with per-VPL atomics).
+// in the subgroup first, one atomic per coefficient instead of one per VPL (per-VPL atomics on one
+// coarse cell serialise).
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_shader_explicit_arithmetic_types_int64 : require
 #extension GL_EXT_shader_atomic_int64 : require

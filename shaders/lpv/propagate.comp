@@ -12,7 +12,7 @@
 // neighbour's centre to the face) and is re-emitted as the L1 projection of that direction, not as a
 // cosine lobe towards the face: the paper's re-emission turns light that moves up through a side face
 // into light that moves sideways, which makes propagation diffusive (32^3 x 8 steps: a VPL's light
-// reaches about 4 cells; README "LPV: where the light goes").
+// reaches about 4 cells; docs/techniques/lpv.md, "Where the light goes").
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
 #include "lpv/bindings.h"
@@ -65,7 +65,7 @@ void faceOf(int a, int face, out vec3 dir, out float solid) {
 // more flux than the intensity holds (+14% for a cosine lobe). Each cell's light is scaled so that
 // what it sends through its 30 faces never exceeds its flux (the integral of I, 4 pi Y0 I.x):
 // propagation then never creates light. Scaling as the 6 readers read (constant face directions,
-// unrolled) measured 2x faster on the H100 than scaling once as the cell is written.
+// unrolled) is faster than scaling once as the cell is written: no second pass over the volume.
 float outflowScale(vec4 intensity) {
     float sent = 0.0;
     for (int a = 0; a < 6; ++a)

@@ -2,8 +2,8 @@
 // round takes the cell (`key`) of the first pending invocation, the invocations with that cell
 // combine their values in the subgroup (GROUPED, which may name the round's cell `cell_`) and one of
 // them does the atomics. A subgroup of neighbouring RSM texels covers a few coarse cells, so a few
-// rounds take them all (with only the all-in-one-cell case combined, cornell's injection cost 3x its
-// one-grid cost on the H100). Rounds stop when a cell has a single invocation (fine cells: each does
+// rounds take them all (combining only the all-in-one-cell case left most atomics
+// uncombined). Rounds stop when a cell has a single invocation (fine cells: each does
 // its own, ALONE, all in parallel) or after LPV_SUBGROUP_ROUNDS. Needs GL_KHR_shader_subgroup_basic,
 // _ballot and _arithmetic. Macros: GLSL functions cannot take a buffer's array.
 #define LPV_SUBGROUP_ROUNDS 8u

@@ -302,7 +302,7 @@ vec3 gather(vec3 x, vec3 n, bool hair, uint lane, uint lanes) {
         // Voxel visibility: every stride-th sample walks the occupancy volume; the visible share of
         // those samples' light scales the layer's light. The same samples for every receiver: the
         // lanes of a subgroup walk together (a per-receiver choice made each walk wait for up to
-        // `stride` others': 4x the cost on the H100). The pattern's rotation and shift still differ.
+        // `stride` others', several times the cost). The pattern's rotation and shift still differ.
         const uint stride = max(pc.sampleCount / max(pc.visibilityRays, 1u), 1u) | 1u;  // odd: both discs' samples
         vec3 layerLight = vec3(0.0);
         vec2 tested = vec2(0.0);  // luminance of the tested samples' light: all of it, the visible part
@@ -358,8 +358,8 @@ vec3 gather(vec3 x, vec3 n, bool hair, uint lane, uint lanes) {
 
 // Receivers share out their samples: `lanes` (push sampling.w: 1, 2, 4 or 8) invocations of a
 // workgroup per receiver, each summing a run of consecutive samples, their sums added in shared memory. The
-// fallback list is a few percent of the pixels: one invocation each left most of the H100's SMs
-// waiting on memory (its per-pixel cost was 4x the low-res pass's). The voxel pipeline keeps one lane:
+// fallback list is a few percent of the pixels: one invocation each leaves most of a large GPU's
+// multiprocessors waiting on memory. The voxel pipeline keeps one lane:
 // its visible share is a ratio per receiver and layer.
 shared vec3 laneSums[64];
 

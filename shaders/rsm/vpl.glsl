@@ -15,11 +15,10 @@ vec3 vplPosition(ivec2 t, uint layer, float depth) {
 // path-traced bounce. d^2 is clamped to the VPL's own footprint so that near VPLs stay finite.
 // A hair receiver (`hair`: n is its tangent) takes sin(t, w) in place of the receiver's cosine: the
 // Kajiya-Kay diffuse term (dsm/kajiya_kay.glsl) of the light arriving from w.
-// Written out in one function: a Vpl struct filled by a fetch function and read by a second cost the
-// gather 0.17 ms at 1080p on the H100 (cornell; 0.46 -> 0.63 ms low-res).
-// One fetch of the packed texel (rsm/resolve.comp, or a flux draw's copy of it): the gather is bound by the L2's random reads, and
-// three fetches (depth, normal, flux) made the H100's low-res gather 0.43 ms at 1080p on cornell
-// against 0.37 (hair 0.40 against 0.29, VC 0.48 against 0.43).
+// Written out in one function: a Vpl struct filled by a fetch function and read by a second kept
+// the struct in memory and slowed the gather measurably.
+// One fetch of the packed texel (rsm/resolve.comp, or a flux draw's copy of it): the gather is bound by
+// the L2's random reads, so three fetches (depth, normal, flux) cost it more than the unpacking saves.
 vec3 vplIrradianceOf(uvec4 vpl, ivec2 t, uint layer, vec3 x, vec3 n, bool hair) {
     float depth = uintBitsToFloat(vpl.x);
     if (depth >= 1.0) return vec3(0.0);  // no surface in this texel

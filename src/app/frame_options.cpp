@@ -1,5 +1,6 @@
 #include "app/frame_options.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -11,6 +12,7 @@
 #include "app/shadow_cli.h"
 #include "core/texture_upload.h"
 #include "rsm/rsm_options.h"
+#include "scene/named_views.h"
 
 namespace penumbra {
 namespace {
@@ -33,6 +35,18 @@ OptionTable makeInputTable() {
     t.alsoWrites([](F& f) -> auto& { return f.parsedCamera; });
     t.integer("--camera-index", "camera_index", [](F& f) -> auto& { return f.cameraIndex; }, 0, 1 << 20, kInput,
               "Which of the scene's (perspective) cameras to use");
+    static const std::string viewHelp =
+        "A named view of the scene: its camera, and its sun unless {inputs.lights} is given (" + namedViewList() + ")";
+    t.text("--view", "view", [](F& f) -> auto& { return f.view; },
+           [](const F& f) { return f.view.empty() ? std::vector<std::string>{} : std::vector<std::string>{f.view}; },
+           [](F& f, const std::string& v) {
+               const auto& views = namedViews();
+               if (std::none_of(views.begin(), views.end(), [&](const NamedView& n) { return n.name == v; }))
+                   throw std::invalid_argument("no scene has this view (" + namedViewList() + ")");
+               f.view = v;
+           },
+           kInput, viewHelp.c_str())
+        .placeholder = "NAME";
     OptionRow& light = t.text(
         "--light", "lights", [](F& f) -> auto& { return f.lights; }, [](const F& f) { return f.lights; },
         [](F& f, const std::string& v) {
@@ -181,8 +195,29 @@ FrameInputs frameInputs(const SceneMotion& motion, double t) {
     return {std::move(pose.camera), std::move(pose.lights), std::move(pose.instances)};
 }
 
+namespace {
+
+const std::string& viewFlag() {
+    return frameInputOptions().flagOf<FrameOptions>([](FrameOptions& f) -> auto& { return f.view; });
+}
+
+// The named view of --view, or null; throws naming the flag when the scene has no such view.
+const NamedView* frameView(const FrameOptions& o) {
+    if (o.view.empty()) return nullptr;
+    try {
+        return &findNamedView(o.scene, o.view);
+    } catch (const std::invalid_argument& e) {
+        throw std::invalid_argument(fmt::format("{} {}: {}", viewFlag(), o.view, e.what()));
+    }
+}
+
+}  // namespace
+
 void checkFrameSettings(const FrameOptions& o, RenderSettings& settings) {
-    (void)o;
+    if (frameView(o) && o.parsedCamera)
+        fmt::print(stderr, "penumbra: warning: {} replaces the camera of {} {}\n",
+                   frameInputOptions().flagOf<FrameOptions>([](FrameOptions& f) -> auto& { return f.camera; }),
+                   viewFlag(), o.view);
     if (!settings.dsm.lights.empty()) settings.dsm.enabled = true;  // `--dsm-lights` alone turns them on
     validateSettings(settings);
     if (settings.aov == Aov::Velocity && settings.cameraPath == CameraPath::Gbuffer)
@@ -202,6 +237,8 @@ void checkFrameSettings(const FrameOptions& o, RenderSettings& settings) {
 
 std::vector<Light> frameLights(const FrameOptions& o, const Scene& loaded) {
     std::vector<Light> lights = o.parsedLights;
+    if (const NamedView* view = frameView(o); lights.empty() && view)
+        for (const std::string& l : view->lights) lights.push_back(parseLight(l));
     if (lights.empty()) lights = loaded.lights;  // loadScene added the default sun where there is none
     try {
         applyLightFilters(o.lightFilters, lights);
@@ -215,6 +252,7 @@ std::vector<Light> frameLights(const FrameOptions& o, const Scene& loaded) {
 
 Camera frameCamera(const FrameOptions& o, const Scene& scene) {
     if (o.parsedCamera) return *o.parsedCamera;
+    if (const NamedView* view = frameView(o)) return parseCamera(view->camera);
     if (o.cameraIndex < 0 || o.cameraIndex >= int(scene.cameras.size()))
         throw std::invalid_argument(fmt::format("{} {}: the scene has {}",
                                                 frameInputOptions().flagOf<FrameOptions>([](FrameOptions& f) -> auto& { return f.cameraIndex; }),

@@ -20,6 +20,7 @@ struct FrameOptions {
     std::string camera;                 // --camera as given, and parsed when it was given
     std::optional<Camera> parsedCamera;
     int cameraIndex = 0;
+    std::string view;                   // --view: a named view of the scene (scene/named_views.h)
     std::vector<std::string> lights;    // --light as given, and parsed
     std::vector<Light> parsedLights;
     std::vector<std::string> lightFilters;  // --light-shadow N=MODE
@@ -49,7 +50,7 @@ PreparedFrame prepareFrame(const FrameOptions& o, RenderSettings& settings);
 void checkFrameSettings(const FrameOptions& o, RenderSettings& settings);
 // the lights of `loaded` (a scene as loadScene returned it) after --light and --light-shadow;
 std::vector<Light> frameLights(const FrameOptions& o, const Scene& loaded);
-// the camera: --camera, else the scene's camera --camera-index.
+// the camera: --camera, else --view's, else the scene's camera --camera-index.
 Camera frameCamera(const FrameOptions& o, const Scene& scene);
 
 // What moves in the prepared frame (animation, paths, the built-in default motion); warns once when

@@ -30,7 +30,7 @@ bool roomSized(const Bounds& scene) { return glm::length(scene.max - scene.min) 
 
 uint32_t automaticCascadeCount(const Bounds&) {
     // Light goes about one cell per step: 8 steps in one grid leave most of a room dark. Each coarser
-    // cascade carries it twice as far (README "LPV"), for every scene size.
+    // cascade carries it twice as far (docs/techniques/lpv.md), for every scene size.
     return 3u;
 }
 
@@ -39,7 +39,7 @@ std::vector<gpu::GpuLpvCascade> placeCascades(const Bounds& scene, const glm::ve
     std::vector<gpu::GpuLpvCascade> out;
     const float extent = maxExtent(scene) * 1.02f;
     if (count == 1 || roomSized(scene)) {
-        // The finest grid fit to the scene (a margin of half a cell all round), each next one twice as
+        // The finest grid fit to the scene (a margin of half a cell on every side), each next one twice as
         // coarse around the same centre: they stay put whatever the camera does.
         for (uint32_t k = 0; k < count; ++k) {
             const float cell = extent / float(resolution - 1) * float(1u << k);

@@ -10,7 +10,7 @@ namespace penumbra {
 enum class LpvGeometry { Surfels, Voxels };
 
 struct LpvSettings {
-    uint32_t resolution = 16;       // cells per side of each cascade (README "LPV": 16 beat 24 and 32)
+    uint32_t resolution = 16;       // cells per side of each cascade (docs/techniques/lpv.md: 16 beat 24 and 32 on the GI suite)
     uint32_t iterations = 8;        // propagation steps
     uint32_t cascades = 0;          // 1..4; 0 = automatic (3)
     uint32_t rsmResolution = 2048;  // RSM rendered for injection, per light

@@ -21,10 +21,8 @@ constexpr float kWholeMapRadius = 1.41421356f;
 
 // Invocations per receiver (rsm/gather.glsl main). The low-resolution grid (130k receivers at 1080p)
 // and the fallback list (a few percent of the pixels) are too few threads, one per receiver, to hide
-// the samples' memory latency on a large GPU. H100, 1080p, 4 lanes against 1 (bench/hair_v11.sh):
-// low-res 0.60 -> 0.43 ms (cornell), 0.53 -> 0.46 (Sponza), 0.50 -> 0.48 (VC); fallback 0.35 -> 0.19,
-// 0.90 -> 0.83, 0.70 -> 0.63. 8 lanes: no better (VC, Sponza) or little (cornell). The full-resolution
-// gather has receivers enough.
+// the samples' memory latency on a large GPU: 4 lanes per receiver hide it, 8 add nothing
+// (docs/techniques/rsm.md). The full-resolution gather has receivers enough.
 uint32_t lanesPerReceiver(uint32_t mode) {
     return mode == RSM_GATHER_LIST || mode == RSM_GATHER_LOWRES ? 4u : 1u;
 }

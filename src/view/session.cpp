@@ -19,7 +19,7 @@ std::string nameOf(const CLI::Option& opt) {
 }
 
 bool sameCamera(const FrameOptions& a, const FrameOptions& b) {
-    return a.camera == b.camera && a.cameraIndex == b.cameraIndex;
+    return a.camera == b.camera && a.cameraIndex == b.cameraIndex && a.view == b.view;
 }
 
 }  // namespace
@@ -74,7 +74,7 @@ void ViewSession::adopt(std::vector<CliArg> args, Parsed p) {
     if (newScene) uploaded = std::make_unique<GpuScene>(ctx_, penumbra::loadScene(p.options.scene, p.options.builtin));
     const Scene& s = newScene ? uploaded->scene() : gpuScene_->scene();
     std::vector<Light> lights = lights_;
-    if (newScene || p.options.lights != options_.lights) {
+    if (newScene || p.options.lights != options_.lights || p.options.view != options_.view) {
         lights = frameLights(p.options, s);
     } else if (p.options.lightFilters != options_.lightFilters) {
         for (Light& l : lights) l.shadowFilter = ShadowFilter::Default;
