@@ -43,7 +43,7 @@ cmake --build "$tmp/embed/build" -j2 >/dev/null
 
 for scene in cornell "$tmp/embed/three_quads.gltf"; do
     under_test "$tmp/embed/build/embed" "$scene" "$tmp/embed.png" 96 64
-    under_test "$prefix/bin/penumbra" render "$scene" --width 96 --height 64 --shadow pcf --gi rsm --exposure 1 -q -o "$tmp/cli.png"
+    under_test "$prefix/bin/penumbra" render "$scene" --width 96 --height 64 --shadow pcf --gi rsm --exposure 1 --sky none -q -o "$tmp/cli.png"
     cmp "$tmp/embed.png" "$tmp/cli.png" || fail "$scene: the example's image differs from penumbra render's"
     echo "$scene: equal images ($(stat -c %s "$tmp/cli.png") bytes)"
 done

@@ -247,7 +247,7 @@ TEST(BuiltinScenes, Plane) {
     ASSERT_EQ(s.cameras.size(), 1u);
     EXPECT_GT(s.cameras[0].eye.y, 0.0f);
     EXPECT_LT(glm::normalize(s.cameras[0].target - s.cameras[0].eye).y, -0.99f);
-    EXPECT_EQ(builtinSceneNames(), (std::vector<std::string>{"cornell", "plane", "hair", "street", "room", "terrain"}));
+    EXPECT_EQ(builtinSceneNames(), (std::vector<std::string>{"cornell", "cornell-moving", "plane", "hair", "street", "room", "terrain"}));
 }
 
 // The GI suite's scenes (docs/evaluation.md): consistent, faces wound as their normals say.

@@ -36,9 +36,12 @@ glm::dvec3 xyzToRgb(const glm::dvec3& xyz) {
             0.0556434 * xyz.x - 0.2040259 * xyz.y + 1.0572252 * xyz.z};
 }
 
-// The sun's zenith angle the model takes: at most the horizon (the fits end there).
+// The sun's zenith angle the model takes: at most 85 degrees. Nearer the horizon the sun's own light
+// falls towards 0 through the air mass while the fitted sky does not, so the sky scaled to the sun's
+// irradiance would grow without bound; a lower sun keeps the sky of a sun 5 degrees high.
 double modelSunZenith(const glm::vec3& toSun) {
-    return std::acos(std::clamp(double(toSun.y), 0.0, 1.0));
+    constexpr double kLowestElevation = 5.0 * kPi / 180.0;
+    return std::acos(std::clamp(double(toSun.y), std::sin(kLowestElevation), 1.0));
 }
 
 }  // namespace

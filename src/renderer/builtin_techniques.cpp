@@ -33,8 +33,9 @@ HairCasterSettings hairCasters(const RenderSettings& s) {
     return {s.shadow.depthBiasConstant, s.shadow.depthBiasSlope, s.shadow.pointMode == PointShadowMode::Paraboloid};
 }
 
-// Whether the frames are lit by a sky (the lighting module publishes it as names::kSkyLight).
-bool skyOn(const RenderSettings& s) { return s.lighting.sky.kind != SkyKind::None; }
+// Whether the frames are lit by a sky (the lighting module publishes it as names::kSkyLight). An
+// unresolved `auto` (a caller that never looked at the lights: tests, the library) is no sky.
+bool skyOn(const RenderSettings& s) { return s.lighting.sky.kind != SkyKind::None && s.lighting.sky.kind != SkyKind::Auto; }
 
 // The occupancy volume: the RSM gather's visibility, what blocks LPV's propagation, or what hides
 // the sky.
