@@ -315,6 +315,7 @@ std::vector<Configuration> configurations() {
              s.shadow.filter = ShadowFilter::Evsm;
              s.shadow.raster = RasterMode::Compute;
          }},
+        {"street", [](RenderSettings& s) { s.gi = GiMode::Lpv; s.lighting.sky.kind = SkyKind::Analytic; }},
         {"room", [](RenderSettings& s) { s.shadow.pointMode = PointShadowMode::Paraboloid; }},
         {"room", [](RenderSettings& s) { s.shadow.raster = RasterMode::Compute; s.aov = Aov::ShadowMap; }},
         {"hair", [](RenderSettings& s) { s.dsm.enabled = true; }},

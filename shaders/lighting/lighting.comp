@@ -21,7 +21,7 @@ layout(set = 0, binding = LIGHTING_INDIRECT) uniform sampler2D indirectIrradianc
 layout(set = 0, binding = LIGHTING_SKY_IRRADIANCE) uniform sampler2D skyIrradiance;  // 1x1 black without a sky
 layout(set = 0, binding = LIGHTING_PROBE, std430) writeonly buffer Probe { PixelProbe probe; };  // pixel FrameUniforms.probeX, probeY
 // The sky's radiance, equirectangular in world directions (core/sky.h): black without a sky.
-layout(set = 0, binding = LIGHTING_SKY_BACKGROUND) uniform sampler2D skyBackground;
+layout(set = 0, binding = LIGHTING_BACKGROUND_SKY) uniform sampler2D skyBackground;
 // Velocity: which instance a pixel shows (visibility IDs, frame.visibilityIds) and where it was.
 #define MOTION_FIRST_BINDING LIGHTING_MOTION_FIRST
 #include "core/motion.glsl"

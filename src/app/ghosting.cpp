@@ -7,17 +7,11 @@
 #include <memory>
 
 #include "app/frame_options.h"
+#include "app/response.h"
 #include "lighting/lighting_technique.h"
 
 namespace penumbra {
 namespace {
-
-std::vector<float> luminanceOf(const std::vector<float>& rgba) {
-    std::vector<float> out(rgba.size() / 4);
-    for (size_t i = 0; i < out.size(); ++i)
-        out[i] = 0.2126f * rgba[4 * i] + 0.7152f * rgba[4 * i + 1] + 0.0722f * rgba[4 * i + 2];
-    return out;
-}
 
 // The eye distance of every pixel of the frame `r` rendered last (+inf where no surface).
 std::vector<float> eyeDistances(Renderer& r) {

@@ -9,13 +9,6 @@
 namespace penumbra {
 namespace {
 
-std::vector<float> luminanceOf(const std::vector<float>& rgba) {
-    std::vector<float> out(rgba.size() / 4);
-    for (size_t i = 0; i < out.size(); ++i)
-        out[i] = 0.2126f * rgba[4 * i] + 0.7152f * rgba[4 * i + 1] + 0.0722f * rgba[4 * i + 2];
-    return out;
-}
-
 double quantile(std::vector<double> v, double q) {
     if (v.empty()) return std::nan("");
     const size_t k = std::min(v.size() - 1, size_t(q * double(v.size() - 1) + 0.5));
@@ -24,6 +17,13 @@ double quantile(std::vector<double> v, double q) {
 }
 
 }  // namespace
+
+std::vector<float> luminanceOf(const std::vector<float>& rgba) {
+    std::vector<float> out(rgba.size() / 4);
+    for (size_t i = 0; i < out.size(); ++i)
+        out[i] = 0.2126f * rgba[4 * i] + 0.7152f * rgba[4 * i + 1] + 0.0722f * rgba[4 * i + 2];
+    return out;
+}
 
 LightChange parseLightChange(const std::string& text) {
     if (text == "off") return {LightChange::Kind::Off, 0.0f};

@@ -21,6 +21,9 @@ LightChange parseLightChange(const std::string& text);
 // The lights before and after the change.
 std::pair<std::vector<Light>, std::vector<Light>> changedLights(const std::vector<Light>& lights, const LightChange& c);
 
+// The Rec. 709 luminance of every pixel of an RGBA image.
+std::vector<float> luminanceOf(const std::vector<float>& rgba);
+
 // The response figures of luminance images: per k, the median and the 5th percentile of r_k.
 nlohmann::json responseFigures(const std::vector<float>& before, const std::vector<float>& after,
                                const std::vector<std::vector<float>>& frames);

@@ -17,7 +17,7 @@ LightingPass::LightingPass(vk::Allocator& alloc, uint32_t width, uint32_t height
               {LIGHTING_HDR, img},            {LIGHTING_INDIRECT, tex},        {LIGHTING_DSM_LIGHTS, ssbo},
               {LIGHTING_DSM_HEADS, ssbo},     {LIGHTING_DSM_NODES, ssbo},      {LIGHTING_DSM_SIDE, ssbo},
               {LIGHTING_PROBE, ssbo},         {LIGHTING_MOTION_FIRST, tex},    {LIGHTING_MOTION_FIRST + 1, ssbo},
-              {LIGHTING_MOTION_FIRST + 2, ssbo}, {LIGHTING_SKY_BACKGROUND, tex},
+              {LIGHTING_MOTION_FIRST + 2, ssbo}, {LIGHTING_BACKGROUND_SKY, tex},
               {LIGHTING_SKY_IRRADIANCE, tex}});
     pipeline_ = vk::Pipeline::compute(ctx, "lighting/lighting.comp", {layout_.handle()}, 0);
     pointSampler_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
@@ -44,7 +44,7 @@ void LightingPass::addTo(FrameGraph& graph, ImageHandle sky) {
         .storageBuffer(LIGHTING_DSM_NODES, graph.buffer("dsm.nodes"))
         .storageBuffer(LIGHTING_DSM_SIDE, graph.buffer("dsm.side"))
         .storageBuffer(LIGHTING_PROBE, graph.buffer("probe"), Use::StorageWrite)
-        .sampled(LIGHTING_SKY_BACKGROUND, sky, point)
+        .sampled(LIGHTING_BACKGROUND_SKY, sky, point)
         .record([out](PassContext& c) {
             const vk::Image& image = c.image(out);
             vkCmdDispatch(c.cmd, vk::divUp(image.width(), 8), vk::divUp(image.height(), 8), 1);

@@ -240,8 +240,8 @@ void renderPixel(const Tracer& tracer, const PinholeCamera& cam, const Reference
         if (opaque) shadow += tracer.firstShadow(tracer.rays.surface(*opaque, dir), count);
         const uint32_t paths = primaries == s.spp ? 1 : s.spp;
         if (!hit) {  // the sky the camera sees
-            const glm::vec3 background = tracer.sky.radiance(dir);
-            for (uint32_t k = 0; k < paths; ++k) direct.add(background), indirect.add(glm::vec3(0.0f));
+            const glm::vec3 skySeen = tracer.sky.radiance(dir);
+            for (uint32_t k = 0; k < paths; ++k) direct.add(skySeen), indirect.add(glm::vec3(0.0f));
             continue;
         }
         out.covered[index] = 1;
