@@ -23,6 +23,7 @@
 #include "rsm/rsm_flux.h"
 #include "rsm/rsm_gather.h"
 #include "rsm/rsm_options.h"
+#include "sky_light/sky_light_technique.h"
 #include "temporal_gi/temporal_gi_technique.h"
 #include "shadow/shadow_options.h"
 #include "shadow/shadow_layout.h"
@@ -299,6 +300,9 @@ std::vector<Demand> frameDemands(const vk::DeviceLimits& lim, const RenderSettin
     if (s.gi == GiMode::Rsm && s.rsm.mode == RsmMode::Interpolated)
         d.push_back({Knob::Width, w, 1, fmt::format("the RSM gather's pixel list ({}x{})", w, h),
                      [=](uint64_t v) { return RsmGather::pixelListBytes(uint32_t(v), uint32_t(h)); }, true});
+    if (s.lighting.sky.kind != SkyKind::None)  // an unresolved auto counted as a sky: the estimate stays an upper bound
+        d.push_back({Knob::Width, w, 1, fmt::format("the sky light's {}x{} visibility and irradiance", w, h),
+                     [=](uint64_t v) { return SkyLightTechnique::bytes(v, h); }});
     if (s.giTemporal && s.gi != GiMode::None)
         d.push_back({Knob::Width, w, 1, fmt::format("the GI history and filter ({}x{})", w, h),
                      [=](uint64_t v) { return TemporalGiTechnique::bytes(v, h); }});
