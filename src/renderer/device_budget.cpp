@@ -272,6 +272,12 @@ void addLpvDemands(std::vector<Demand>& d, const RenderSettings& s, const Scene&
                  [=](uint64_t r) { return r * r * 16 * rsmLayers; }});
     d.push_back({Knob::LpvVplRes, s.lpv.vplResolution, 1, fmt::format("the VPL buffer ({} layer(s))", rsmLayers),
                  [=](uint64_t n) { return lpvVplBytes(n, rsmLayers); }, true});
+    if (s.lighting.sky.kind != SkyKind::None) {  // the sky's bounce: a VPL per camera surfel, after the RSM's
+        const uint64_t step = std::max(s.lpv.cameraGeometryStep, 1u), h = s.height;
+        d.push_back({Knob::Width, s.width, 1, "the LPV's sky VPLs (one per camera surfel)", [=](uint64_t w) {
+                         return ((w + step - 1) / step) * ((h + step - 1) / step) * sizeof(gpu::GpuVpl);
+                     }});
+    }
     const uint64_t cascades = s.lpv.cascades ? s.lpv.cascades : automaticCascadeCount(scene.bounds);
     const std::string of = fmt::format("({} cascade(s))", cascades);
     for (const char* which : {"the LPV's light volume A ", "the LPV's light volume B "})
