@@ -1,6 +1,7 @@
 // The sky's light with occlusion (src/sky_light) against analytic answers: a uniform sky of radiance
 // L over the upper hemisphere gives an open upward plane pi L, and nothing inside a closed room; and
 // on the street against the sky's occlusion traced by Embree.
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -158,3 +159,51 @@ TEST_F(SkyLightTest, StreetSkyIrradianceAgreesWithTracedVisibility) {
     EXPECT_LE(errVoxels / sum, 0.10);
 }
 
+
+TEST_F(SkyLightTest, AMovingSunReweighsTheRaysWithoutTracingThemAgain) {
+    // The street under its analytic sky; the sun turns between two frames of a still view. The
+    // second frame weighs the first frame's clear rays by the new sky and traces nothing, and its
+    // irradiance equals that of a renderer that saw the turned sun first.
+    Scene scene = makeBuiltinScene("street");
+    ASSERT_FALSE(scene.lights.empty());
+    ASSERT_EQ(scene.lights[0].type, LightType::Directional);
+    RenderSettings s;
+    s.lighting.sky.kind = SkyKind::Analytic;
+    s.width = 64, s.height = 48, s.giTemporal = false;
+    FrameInputs frame{scene.cameras.at(0), scene.lights, {}, {}, {}};
+    FrameInputs turned = frame;
+    const glm::vec3 d = turned.lights[0].direction;
+    turned.lights[0].direction = glm::normalize(glm::vec3(d.z, d.y, -d.x));  // 90 degrees about +Y
+    auto passNames = [](const TestRenderer& r) {
+        std::vector<std::string> names;
+        for (const PassDesc& p : r.passes()) names.push_back(p.name);
+        return names;
+    };
+    auto irradiance = [](TestRenderer& r) {
+        const std::vector<uint8_t> bytes = r.commands().readImage(r.find<SkyLightTechnique>()->irradiance(), 16);
+        std::vector<float> out(bytes.size() / 4);
+        for (size_t i = 0; i < out.size(); ++i) out[i] = f32(bytes, i);
+        return out;
+    };
+    TestRenderer moving(ctx(), scene, s);
+    moving.render(frame);
+    const std::vector<float> before = irradiance(moving);
+    moving.render(turned);
+    const std::vector<std::string> passes = passNames(moving);
+    EXPECT_EQ(std::count(passes.begin(), passes.end(), "sky.trace"), 0);
+    EXPECT_EQ(std::count(passes.begin(), passes.end(), "sky.weigh"), 1);
+    const std::vector<float> after = irradiance(moving);
+    TestRenderer fresh(ctx(), scene, s);
+    fresh.render(turned);
+    const std::vector<float> expected = irradiance(fresh);
+    ASSERT_EQ(after.size(), expected.size());
+    double changed = 0.0, differs = 0.0, sum = 0.0;
+    for (size_t i = 0; i < after.size(); ++i) {
+        changed += std::abs(after[i] - before[i]);
+        differs += std::abs(after[i] - expected[i]);
+        sum += std::abs(expected[i]);
+    }
+    ASSERT_GT(sum, 0.0);
+    EXPECT_GT(changed / sum, 0.01) << "the turned sun changes the sky's light";
+    EXPECT_LE(differs / sum, 1e-6);
+}

@@ -1,4 +1,5 @@
-// The sky-light passes' binding numbers and push constants (sky_light/trace.comp, filter.comp),
+// The sky-light passes' binding numbers and push constants (sky_light/trace.comp, weigh.comp,
+// filter.comp),
 // included by the GLSL and by src/sky_light: each number is written here only.
 #ifndef PENUMBRA_SKY_LIGHT_TYPES_H
 #define PENUMBRA_SKY_LIGHT_TYPES_H
@@ -14,30 +15,40 @@ namespace penumbra::gpu {
 #define SKY_TRACE_GBUFFER_NORMAL 1
 #define SKY_TRACE_GBUFFER_DEPTH 2
 #define SKY_TRACE_OCCUPANCY 3
-#define SKY_TRACE_OUT 4  // rgb: the share of the sky's radiance a pixel sees, per channel
+#define SKY_TRACE_OUT 4  // r32ui: bit k set where ray k is clear (all bits: no occlusion)
+
+// weigh.comp
+#define SKY_WEIGH_FRAME 0
+#define SKY_WEIGH_GBUFFER_NORMAL 1
+#define SKY_WEIGH_GBUFFER_DEPTH 2
+#define SKY_WEIGH_CLEAR_RAYS 3
+#define SKY_WEIGH_OUT 4  // rgb: the share of the sky's radiance a traced receiver sees, per channel
 
 // filter.comp
 #define SKY_FILTER_FRAME 0
 #define SKY_FILTER_GBUFFER_NORMAL 1
 #define SKY_FILTER_GBUFFER_DEPTH 2
-#define SKY_FILTER_VISIBILITY 3
+#define SKY_FILTER_SHARE 3
 #define SKY_FILTER_OUT 4  // rgb: the visible sky's irradiance (names::kSkyIrradiance)
 
-// Rays of one pixel share a rotation with the pixels SKY_TILE apart: a SKY_TILE^2 block holds every
-// rotation, which the filter averages back together.
+// Rays of one traced receiver share a rotation with those SKY_TILE apart: a SKY_TILE^2 block holds
+// every rotation, which the filter averages back together.
 #define SKY_TILE 4
+#define SKY_MAX_RAYS 32  // the bits of a clear-ray mask
 
 // Both passes' push constants: the sky's order-2 SH radiance (nine RGB coefficients, flattened, the
 // basis of core/sky.h's shBasis) and the walk's parameters.
 struct SkyLightPush {
     float sh[27];
-    uint rays;          // trace: rays per pixel (0: every pixel sees the whole sky)
+    uint rays;          // trace, weigh: rays per receiver (0: every pixel sees the whole sky)
     float startOffset;  // trace: voxels off the surface, along its normal, where the rays start
-    uint filterRadius;  // filter: pixels either side
+    uint filterRadius;  // filter: traced receivers either side
+    uint traceStep;     // camera pixels between traced receivers, per axis
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(SkyLightPush) == 120);
+static_assert(sizeof(SkyLightPush) == 124 && offsetof(SkyLightPush, rays) == 108 &&
+              offsetof(SkyLightPush, traceStep) == 120);
 }  // namespace penumbra::gpu
 #endif
 #endif

@@ -308,7 +308,7 @@ std::vector<Demand> frameDemands(const vk::DeviceLimits& lim, const RenderSettin
                      [=](uint64_t v) { return RsmGather::pixelListBytes(uint32_t(v), uint32_t(h)); }, true});
     if (s.lighting.sky.kind != SkyKind::None)  // an unresolved auto counted as a sky: the estimate stays an upper bound
         d.push_back({Knob::Width, w, 1, fmt::format("the sky light's {}x{} visibility and irradiance", w, h),
-                     [=](uint64_t v) { return SkyLightTechnique::bytes(v, h); }});
+                     [=](uint64_t v) { return SkyLightTechnique::bytes(v, h, s.skyLight.traceStep); }});
     if (s.giTemporal && s.gi != GiMode::None)
         d.push_back({Knob::Width, w, 1, fmt::format("the GI history and filter ({}x{})", w, h),
                      [=](uint64_t v) { return TemporalGiTechnique::bytes(v, h); }});

@@ -1,5 +1,7 @@
 #include "sky_light/sky_light_options.h"
 
+#include "sky_light/types.h"  // SKY_MAX_RAYS
+
 namespace penumbra {
 namespace {
 
@@ -15,10 +17,15 @@ OptionTable makeTable() {
              "What hides the sky from a surface: rays through the occupancy volume ({rsm.voxel_resolution}), or "
              "nothing (every surface sees its whole hemisphere)")
         .rebuild({"camera", "gi"});  // the occupancy volume comes and goes with it
-    t.integer("--sky-rays", "rays", [](S& s) -> auto& { return s.rays; }, 1, 64, kFrame,
-              "Sky visibility rays per pixel (a 4x4 block of pixels turns its sets apart; the filter joins them)");
+    t.integer("--sky-rays", "rays", [](S& s) -> auto& { return s.rays; }, 1, SKY_MAX_RAYS, kFrame,
+              "Sky visibility rays per traced receiver (a 4x4 block of receivers turns its sets apart; the filter "
+              "joins them)");
+    t.integer("--sky-trace-step", "trace_step", [](S& s) -> auto& { return s.traceStep; }, 1, 4, kSizes,
+              "Camera pixels between the receivers whose sky visibility is traced, per axis (1: every pixel)")
+        .rebuild({"camera"});
     t.integer("--sky-filter-radius", "filter_radius", [](S& s) -> auto& { return s.filterRadius; }, 0, 8, kFrame,
-              "Pixels either side over which the sky visibility is averaged on the receiver's surface (0: none)");
+              "Traced receivers either side over which the sky visibility is averaged on a pixel's surface (0: "
+              "the nearest only)");
     t.real("--sky-ray-offset", "ray_offset", [](S& s) -> auto& { return s.startOffset; }, 0.5, 8.0, kFrame,
            "Voxels off the surface, along its normal, where the sky visibility rays start");
     return t.build();

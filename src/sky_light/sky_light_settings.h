@@ -11,11 +11,14 @@ enum class SkyVisibility {
 
 struct SkyLightSettings {
     SkyVisibility visibility = SkyVisibility::Voxels;
-    // Rays per pixel; neighbouring pixels turn their set by different angles, and the filter averages
-    // a 4x4 block's 16 sets back together.
+    // Rays per traced receiver (at most 32, the bits of its clear-ray mask); neighbouring receivers
+    // turn their set by different angles, and the filter averages a 4x4 block's 16 sets back together.
     uint32_t rays = 8;
-    // Pixels either side that the filter averages over (on the receiver's own surface); 2 covers a
-    // 4x4 block of ray sets from every pixel.
+    // Camera pixels between traced receivers, per axis: the sky's visibility changes slowly across a
+    // surface, so one receiver of each 2x2 block serves them all at a quarter of the rays.
+    uint32_t traceStep = 2;
+    // Traced receivers either side that the filter averages over (on the pixel's own surface); 2
+    // covers a 4x4 block of ray sets from every pixel.
     uint32_t filterRadius = 2;
     // Where the rays start: this many voxels off the surface along its normal, out of the voxels
     // the surface itself occupies (half a voxel leaves many rays inside them; further off misses

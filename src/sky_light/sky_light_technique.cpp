@@ -4,9 +4,14 @@
 namespace penumbra {
 namespace {
 
-constexpr VkFormat kVisibilityFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+constexpr VkFormat kClearRaysFormat = VK_FORMAT_R32_UINT;
+constexpr VkFormat kShareFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
 constexpr VkFormat kIrradianceFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+constexpr uint64_t kClearRaysBytes = sizeof(uint32_t), kShareBytes = 4 * sizeof(uint16_t),
+                   kIrradianceBytes = 4 * sizeof(float);
 
+// Each pass reads the frame and the G-buffer's normal and depth (bindings 0 to 2) and one input,
+// and writes one image.
 std::vector<vk::Binding> passBindings(uint32_t input, uint32_t out, VkDescriptorType inputType) {
     constexpr VkDescriptorType tex = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     return {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}, {1, tex}, {2, tex}, {input, inputType},
@@ -15,21 +20,25 @@ std::vector<vk::Binding> passBindings(uint32_t input, uint32_t out, VkDescriptor
 
 }  // namespace
 
-static_assert(SKY_TRACE_FRAME == 0 && SKY_FILTER_FRAME == 0 && SKY_TRACE_GBUFFER_NORMAL == 1 &&
-              SKY_FILTER_GBUFFER_NORMAL == 1 && SKY_TRACE_GBUFFER_DEPTH == 2 && SKY_FILTER_GBUFFER_DEPTH == 2);
+static_assert(SKY_TRACE_FRAME == 0 && SKY_WEIGH_FRAME == 0 && SKY_FILTER_FRAME == 0 && SKY_TRACE_GBUFFER_NORMAL == 1 &&
+              SKY_WEIGH_GBUFFER_NORMAL == 1 && SKY_FILTER_GBUFFER_NORMAL == 1 && SKY_TRACE_GBUFFER_DEPTH == 2 &&
+              SKY_WEIGH_GBUFFER_DEPTH == 2 && SKY_FILTER_GBUFFER_DEPTH == 2);
 
 SkyLightTechnique::SkyLightTechnique(const TechniqueBuild& b, const SkyLightSettings& s) : settings_(s) {
     vk::Context& ctx = b.alloc.context();
+    const size_t push = sizeof(gpu::SkyLightPush);
     trace_ = vk::ComputeKernel(ctx, "sky_light/trace.comp",
-                               passBindings(SKY_TRACE_OCCUPANCY, SKY_TRACE_OUT, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER),
-                               sizeof(gpu::SkyLightPush));
-    filter_ = vk::ComputeKernel(
-        ctx, "sky_light/filter.comp",
-        passBindings(SKY_FILTER_VISIBILITY, SKY_FILTER_OUT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER),
-        sizeof(gpu::SkyLightPush));
+                               passBindings(SKY_TRACE_OCCUPANCY, SKY_TRACE_OUT, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER), push);
+    weigh_ = vk::ComputeKernel(ctx, "sky_light/weigh.comp",
+                               passBindings(SKY_WEIGH_CLEAR_RAYS, SKY_WEIGH_OUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE), push);
+    filter_ = vk::ComputeKernel(ctx, "sky_light/filter.comp",
+                                passBindings(SKY_FILTER_SHARE, SKY_FILTER_OUT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER),
+                                push);
     point_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
     const VkImageUsageFlags usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
-    visibility_ = vk::Image(b.alloc, {kVisibilityFormat, b.core.width, b.core.height, 1, usage, "sky-visibility"});
+    const uint32_t tracedW = vk::divUp(b.core.width, s.traceStep), tracedH = vk::divUp(b.core.height, s.traceStep);
+    clearRays_ = vk::Image(b.alloc, {kClearRaysFormat, tracedW, tracedH, 1, VK_IMAGE_USAGE_STORAGE_BIT, "sky-clear-rays"});
+    share_ = vk::Image(b.alloc, {kShareFormat, tracedW, tracedH, 1, usage, "sky-share"});
     irradiance_ = vk::Image(b.alloc, {kIrradianceFormat, b.core.width, b.core.height, 1,
                                       usage | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, "sky-irradiance"});
     noVoxels_ = vk::Buffer(b.alloc, sizeof(gpu::GpuOccupancyGrid),
@@ -41,7 +50,10 @@ SkyLightTechnique::SkyLightTechnique(const TechniqueBuild& b, const SkyLightSett
     });
 }
 
-uint64_t SkyLightTechnique::bytes(uint64_t width, uint64_t height) { return width * height * (8 + 16); }
+uint64_t SkyLightTechnique::bytes(uint64_t width, uint64_t height, uint32_t traceStep) {
+    const uint64_t traced = ((width + traceStep - 1) / traceStep) * ((height + traceStep - 1) / traceStep);
+    return traced * (kClearRaysBytes + kShareBytes) + width * height * kIrradianceBytes;
+}
 
 void SkyLightTechnique::setSettings(const SkyLightSettings& s) {
     settings_ = s;
@@ -55,6 +67,7 @@ gpu::SkyLightPush SkyLightTechnique::constants(const SkyLight& sky) const {
     p.rays = settings_.visibility == SkyVisibility::None ? 0u : settings_.rays;
     p.startOffset = settings_.startOffset;
     p.filterRadius = settings_.filterRadius;
+    p.traceStep = settings_.traceStep;
     return p;
 }
 
@@ -64,17 +77,20 @@ void SkyLightTechnique::addPasses(const FrameContext& f) {
     const ImageHandle out = f.graph.import(irradiance_);
     f.graph.publish(names::kSkyIrradiance, out);
     const OccupancyState* voxels = f.board.get(names::kOccupancyState);
-    const CacheKey key{f.uniforms.viewProj, voxels ? voxels->generation : 0, sky->generation};
-    if (cached_ && key == key_) return;
+    const TraceKey key{f.uniforms.viewProj, voxels ? voxels->generation : 0};
+    const bool trace = !cached_ || key != traced_;
+    if (!trace && sky->generation == weighedSky_) return;
     const gpu::SkyLightPush push = constants(*sky);
-    const ImageHandle visibility = f.graph.import(visibility_);
-    addTrace(f.graph, visibility, push);
-    addFilter(f.graph, visibility, out, push);
-    key_ = key;
+    const ImageHandle clearRays = f.graph.import(clearRays_), share = f.graph.import(share_);
+    if (trace) addTrace(f.graph, clearRays, push);
+    addWeigh(f.graph, clearRays, share, push);
+    addFilter(f.graph, share, out, push);
+    traced_ = key;
+    weighedSky_ = sky->generation;
     cached_ = true;
 }
 
-void SkyLightTechnique::addTrace(FrameGraph& graph, ImageHandle visibility, const gpu::SkyLightPush& push) {
+void SkyLightTechnique::addTrace(FrameGraph& graph, ImageHandle clearRays, const gpu::SkyLightPush& push) {
     const bool voxels = push.rays > 0 && graph.has(names::kOccupancy);
     graph.pass("sky.trace")
         .pipeline(trace_.pipeline)
@@ -82,21 +98,35 @@ void SkyLightTechnique::addTrace(FrameGraph& graph, ImageHandle visibility, cons
         .sampled(SKY_TRACE_GBUFFER_NORMAL, graph.image(names::kGbufferNormal), point_.handle())
         .sampled(SKY_TRACE_GBUFFER_DEPTH, graph.image(names::kGbufferDepth), point_.handle())
         .storageBuffer(SKY_TRACE_OCCUPANCY, voxels ? graph.buffer(names::kOccupancy) : graph.import(noVoxels_))
-        .storageImage(SKY_TRACE_OUT, visibility)
+        .storageImage(SKY_TRACE_OUT, clearRays)
         .record([this, push](PassContext& c) {
             trace_.pipeline.push(c.cmd, push);
-            vkCmdDispatch(c.cmd, vk::divUp(visibility_.width(), 8), vk::divUp(visibility_.height(), 8), 1);
+            vkCmdDispatch(c.cmd, vk::divUp(clearRays_.width(), 8), vk::divUp(clearRays_.height(), 8), 1);
         });
 }
 
-void SkyLightTechnique::addFilter(FrameGraph& graph, ImageHandle visibility, ImageHandle out,
-                                  const gpu::SkyLightPush& push) {
+void SkyLightTechnique::addWeigh(FrameGraph& graph, ImageHandle clearRays, ImageHandle share,
+                                 const gpu::SkyLightPush& push) {
+    graph.pass("sky.weigh")
+        .pipeline(weigh_.pipeline)
+        .uniform(SKY_WEIGH_FRAME, graph.buffer(names::kFrame))
+        .sampled(SKY_WEIGH_GBUFFER_NORMAL, graph.image(names::kGbufferNormal), point_.handle())
+        .sampled(SKY_WEIGH_GBUFFER_DEPTH, graph.image(names::kGbufferDepth), point_.handle())
+        .storageImage(SKY_WEIGH_CLEAR_RAYS, clearRays, Use::StorageRead)
+        .storageImage(SKY_WEIGH_OUT, share)
+        .record([this, push](PassContext& c) {
+            weigh_.pipeline.push(c.cmd, push);
+            vkCmdDispatch(c.cmd, vk::divUp(share_.width(), 8), vk::divUp(share_.height(), 8), 1);
+        });
+}
+
+void SkyLightTechnique::addFilter(FrameGraph& graph, ImageHandle share, ImageHandle out, const gpu::SkyLightPush& push) {
     graph.pass("sky.filter")
         .pipeline(filter_.pipeline)
         .uniform(SKY_FILTER_FRAME, graph.buffer(names::kFrame))
         .sampled(SKY_FILTER_GBUFFER_NORMAL, graph.image(names::kGbufferNormal), point_.handle())
         .sampled(SKY_FILTER_GBUFFER_DEPTH, graph.image(names::kGbufferDepth), point_.handle())
-        .sampled(SKY_FILTER_VISIBILITY, visibility, point_.handle())
+        .sampled(SKY_FILTER_SHARE, share, point_.handle())
         .storageImage(SKY_FILTER_OUT, out)
         .record([this, push](PassContext& c) {
             filter_.pipeline.push(c.cmd, push);

@@ -1,12 +1,13 @@
 // The sky-light module: the irradiance each camera pixel receives from the part of the sky it sees
 // (names::kSkyIrradiance), which the lighting adds to the direct light. It runs while the lighting
 // module publishes an enabled sky (names::kSkyLight).
-//   sky.trace   a few rays per pixel through the occupancy volume (names::kOccupancy): the share of
-//               the sky's radiance, per channel, that reaches the receiver (sky_light/trace.comp)
-//   sky.filter  that share averaged over the receiver's surface around it, times the irradiance the
-//               open sky gives its normal (sky_light/filter.comp)
-// Both are skipped, the last result kept, while the view, the voxels, the sky and the settings stay
-// as they were.
+//   sky.trace   a few rays from one pixel of each --sky-trace-step block through the occupancy volume
+//               (names::kOccupancy): which of them are clear, as a bit mask (sky_light/trace.comp)
+//   sky.weigh   the share of the sky's radiance, per channel, that the clear rays see (weigh.comp)
+//   sky.filter  that share averaged over the traced receivers of each pixel's surface around it,
+//               times the irradiance the open sky gives the pixel's normal (filter.comp)
+// The trace is skipped while the view, the voxels and the settings stay as they were; the weighing
+// and the filter while the sky does too (a moving sun re-weighs the rays, it does not trace them).
 #pragma once
 #include <array>
 #include <cstdint>
@@ -26,26 +27,28 @@ public:
     void addPasses(const FrameContext& f) override;
     void invalidateCaches() override { cached_ = false; }
     void setSettings(const SkyLightSettings& s);
-    static uint64_t bytes(uint64_t width, uint64_t height);
+    static uint64_t bytes(uint64_t width, uint64_t height, uint32_t traceStep);
     vk::Image& irradiance() { return irradiance_; }  // RGBA32F, for read-back
 
 private:
-    // What the last result was computed from: the same key, the same image.
-    struct CacheKey {
+    // What the last clear-ray masks were traced from: the same key, the same masks.
+    struct TraceKey {
         glm::mat4 viewProj{0.0f};
-        uint64_t occupancy = UINT64_MAX, sky = UINT64_MAX;
-        bool operator==(const CacheKey&) const = default;
+        uint64_t occupancy = UINT64_MAX;
+        bool operator==(const TraceKey&) const = default;
     };
-    void addTrace(FrameGraph& graph, ImageHandle visibility, const gpu::SkyLightPush& push);
-    void addFilter(FrameGraph& graph, ImageHandle visibility, ImageHandle out, const gpu::SkyLightPush& push);
+    void addTrace(FrameGraph& graph, ImageHandle clearRays, const gpu::SkyLightPush& push);
+    void addWeigh(FrameGraph& graph, ImageHandle clearRays, ImageHandle share, const gpu::SkyLightPush& push);
+    void addFilter(FrameGraph& graph, ImageHandle share, ImageHandle out, const gpu::SkyLightPush& push);
     gpu::SkyLightPush constants(const SkyLight& sky) const;
 
     SkyLightSettings settings_;
-    vk::ComputeKernel trace_, filter_;
+    vk::ComputeKernel trace_, weigh_, filter_;
     vk::Sampler point_;
-    vk::Image visibility_, irradiance_;
+    vk::Image clearRays_, share_, irradiance_;  // the first two at the traced receivers' size
     vk::Buffer noVoxels_;  // an empty occupancy grid, bound when the volume is not built
-    CacheKey key_;
+    TraceKey traced_;
+    uint64_t weighedSky_ = UINT64_MAX;
     bool cached_ = false;
 };
 
