@@ -29,4 +29,15 @@ SkyReceiver skyReceiver(ivec2 pixel) {
     r.n = dot(n, frame.eye - r.p) < 0.0 ? -n : n;
     return r;
 }
+
+// How much the sky share of receiver q counts at receiver r: by how near q lies to r's tangent plane
+// (per cent of the distance) and how alike their normals are. Smooth, not a cut: bumpy shading
+// normals and curved cloth would leave a cut with too few receivers and show the rays' pattern.
+float surfaceWeight(SkyReceiver r, SkyReceiver q) {
+    if (!q.surface) return 0.0;
+    const float plane = abs(dot(q.p - r.p, r.n)) / max(length(frame.eye - r.p), 1e-4) / 0.02;
+    const float facing = max(dot(q.n, r.n), 0.0);
+    const float facing2 = facing * facing, facing4 = facing2 * facing2;
+    return exp(-plane * plane) * facing4 * facing4;
+}
 #endif

@@ -15,7 +15,8 @@ namespace penumbra::gpu {
 #define SKY_TRACE_GBUFFER_NORMAL 1
 #define SKY_TRACE_GBUFFER_DEPTH 2
 #define SKY_TRACE_OCCUPANCY 3
-#define SKY_TRACE_OUT 4  // r32ui: bit k set where ray k is clear (all bits: no occlusion)
+#define SKY_TRACE_OUT 4  // rg32ui: bit k of r set where ray k is clear (all bits: no occlusion); g: the
+                         // receiver's depth bits
 
 // weigh.comp
 #define SKY_WEIGH_FRAME 0
@@ -29,14 +30,22 @@ namespace penumbra::gpu {
 #define SKY_FILTER_GBUFFER_NORMAL 1
 #define SKY_FILTER_GBUFFER_DEPTH 2
 #define SKY_FILTER_SHARE 3
-#define SKY_FILTER_OUT 4  // rgb: the visible sky's irradiance (names::kSkyIrradiance)
+#define SKY_FILTER_OUT 4  // rgb: the share averaged over the receiver's surface around it
+
+// upsample.comp
+#define SKY_UPSAMPLE_FRAME 0
+#define SKY_UPSAMPLE_GBUFFER_NORMAL 1
+#define SKY_UPSAMPLE_GBUFFER_DEPTH 2
+#define SKY_UPSAMPLE_SHARE 3
+#define SKY_UPSAMPLE_OUT 4  // rgb: the visible sky's irradiance at every pixel (names::kSkyIrradiance)
 
 // Rays of one traced receiver share a rotation with those SKY_TILE apart: a SKY_TILE^2 block holds
 // every rotation, which the filter averages back together.
 #define SKY_TILE 4
 #define SKY_MAX_RAYS 32  // the bits of a clear-ray mask
+#define SKY_TRACE_EVERY_TEXEL 0xFFFFFFFFu  // SkyLightPush.tracePhase: no subset
 
-// Both passes' push constants: the sky's order-2 SH radiance (nine RGB coefficients, flattened, the
+// Every pass's push constants: the sky's order-2 SH radiance (nine RGB coefficients, flattened, the
 // basis of core/sky.h's shBasis) and the walk's parameters.
 struct SkyLightPush {
     float sh[27];
@@ -44,10 +53,13 @@ struct SkyLightPush {
     float startOffset;  // trace: voxels off the surface, along its normal, where the rays start
     uint filterRadius;  // filter: traced receivers either side
     uint traceStep;     // camera pixels between traced receivers, per axis
+    // trace: SKY_TRACE_EVERY_TEXEL, or 0 to 3: texel (phase & 1, phase >> 1) of each 2x2 block and
+    // those whose receiver changed (geometry moving under a still view is traced over four frames)
+    uint tracePhase;
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(SkyLightPush) == 124 && offsetof(SkyLightPush, rays) == 108 &&
+static_assert(sizeof(SkyLightPush) == 128 && offsetof(SkyLightPush, tracePhase) == 124 && offsetof(SkyLightPush, rays) == 108 &&
               offsetof(SkyLightPush, traceStep) == 120);
 }  // namespace penumbra::gpu
 #endif

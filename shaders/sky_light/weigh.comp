@@ -11,7 +11,7 @@ layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = SKY_WEIGH_FRAME) uniform Frame { FrameUniforms frame; };
 layout(set = 0, binding = SKY_WEIGH_GBUFFER_NORMAL) uniform sampler2D gNormal;
 layout(set = 0, binding = SKY_WEIGH_GBUFFER_DEPTH) uniform sampler2D gDepth;
-layout(set = 0, binding = SKY_WEIGH_CLEAR_RAYS, r32ui) uniform readonly uimage2D clearRays;
+layout(set = 0, binding = SKY_WEIGH_CLEAR_RAYS, rg32ui) uniform readonly uimage2D clearRays;
 layout(set = 0, binding = SKY_WEIGH_OUT, rgba16f) uniform writeonly image2D outShare;
 layout(push_constant) uniform Push { SkyLightPush pc; };
 #include "sky_light/sky_sh.glsl"

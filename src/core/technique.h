@@ -20,6 +20,12 @@ class GpuScene;
 
 // What a technique is built from: the device, the long-lived scene, the frame's lights and the
 // blackboard, where techniques built before it published what it may need at build time.
+// Why a technique's frame-to-frame caches are dropped (Technique::invalidateCaches).
+enum class CacheDrop {
+    Moved,  // casters moved (instance transforms changed)
+    All,    // cold frames asked for: the next frame runs every pass
+};
+
 struct TechniqueBuild {
     vk::Allocator& alloc;
     vk::CommandContext& cmd;
@@ -61,8 +67,9 @@ public:
     virtual void applyPerFrame(const CoreSettings&) {}
     // Whether it contributes indirect irradiance (names::kIrradianceContribution) to the frames.
     virtual bool contributesIrradiance() const { return false; }
-    // Casters moved or the caller asked for cold frames: drop what frames keep for the next.
-    virtual void invalidateCaches() {}
+    // Casters moved (Moved) or the caller asked for cold frames (All): drop what frames keep for the
+    // next. A technique that can tell what moved may keep the rest on Moved.
+    virtual void invalidateCaches(CacheDrop) {}
 };
 
 }  // namespace penumbra

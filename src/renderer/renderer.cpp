@@ -274,7 +274,7 @@ void Renderer::recordFrame(FrameSlot& slot, const FrameInputs& in, const FrameHo
     const std::vector<glm::mat4>& transforms = frameInstances(in);
     scene_.meshes().setFrameInstances(transforms);
     // Casters moved since the last frame: cached shadow layers show them where they were.
-    if (!lastFrame_ || transforms != lastFrame_->instances) invalidateCaches();
+    if (!lastFrame_ || transforms != lastFrame_->instances) invalidateCaches(CacheDrop::Moved);
     zfar_ = sceneFar(in.camera, scene_.scene().bounds);
     graph_.clear();
     graph_.setOverlap(settings_.overlapPasses && !passScopes_);

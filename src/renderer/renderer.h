@@ -118,8 +118,8 @@ public:
     // Drops what frames keep for the next (cached shadow layers): the next frame runs every pass.
     // Frames whose instance transforms differ from the last frame's call it themselves; call it when
     // casters move otherwise (edited geometry) or to time cold frames.
-    void invalidateCaches() {
-        for (const Built& b : techniques_) b.technique->invalidateCaches();
+    void invalidateCaches(CacheDrop why = CacheDrop::All) {
+        for (const Built& b : techniques_) b.technique->invalidateCaches(why);
     }
     vk::CommandContext& commands() { return cmd_; }
     const gpu::FrameUniforms& frameUniforms() const { return frameConstants_; }

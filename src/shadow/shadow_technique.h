@@ -16,7 +16,7 @@ public:
     const char* name() const override { return "shadow"; }
     void update(const FrameContext& f) override;
     void addPasses(const FrameContext& f) override;
-    void invalidateCaches() override { pass_.invalidate(); }
+    void invalidateCaches(CacheDrop) override { pass_.invalidate(); }
     void setSettings(const ShadowSettings& s) { pass_.setSettings(s); }
     // The sun's cascades move in whole blocks of this many texels (GI reads such a block as one
     // texel; the assembly knows which GI runs).

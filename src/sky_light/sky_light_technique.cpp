@@ -4,11 +4,12 @@
 namespace penumbra {
 namespace {
 
-constexpr VkFormat kClearRaysFormat = VK_FORMAT_R32_UINT;
+constexpr VkFormat kClearRaysFormat = VK_FORMAT_R32G32_UINT;  // the mask, the receiver's depth
 constexpr VkFormat kShareFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
 constexpr VkFormat kIrradianceFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
-constexpr uint64_t kClearRaysBytes = sizeof(uint32_t), kShareBytes = 4 * sizeof(uint16_t),
+constexpr uint64_t kClearRaysBytes = 2 * sizeof(uint32_t), kShareBytes = 4 * sizeof(uint16_t),
                    kIrradianceBytes = 4 * sizeof(float);
+constexpr uint32_t kTracePhases = 4;  // a 2x2 block's texels, one a frame
 
 // Each pass reads the frame and the G-buffer's normal and depth (bindings 0 to 2) and one input,
 // and writes one image.
@@ -20,9 +21,11 @@ std::vector<vk::Binding> passBindings(uint32_t input, uint32_t out, VkDescriptor
 
 }  // namespace
 
-static_assert(SKY_TRACE_FRAME == 0 && SKY_WEIGH_FRAME == 0 && SKY_FILTER_FRAME == 0 && SKY_TRACE_GBUFFER_NORMAL == 1 &&
-              SKY_WEIGH_GBUFFER_NORMAL == 1 && SKY_FILTER_GBUFFER_NORMAL == 1 && SKY_TRACE_GBUFFER_DEPTH == 2 &&
-              SKY_WEIGH_GBUFFER_DEPTH == 2 && SKY_FILTER_GBUFFER_DEPTH == 2);
+static_assert(SKY_TRACE_FRAME == 0 && SKY_WEIGH_FRAME == 0 && SKY_FILTER_FRAME == 0 && SKY_UPSAMPLE_FRAME == 0);
+static_assert(SKY_TRACE_GBUFFER_NORMAL == 1 && SKY_WEIGH_GBUFFER_NORMAL == 1 && SKY_FILTER_GBUFFER_NORMAL == 1 &&
+              SKY_UPSAMPLE_GBUFFER_NORMAL == 1);
+static_assert(SKY_TRACE_GBUFFER_DEPTH == 2 && SKY_WEIGH_GBUFFER_DEPTH == 2 && SKY_FILTER_GBUFFER_DEPTH == 2 &&
+              SKY_UPSAMPLE_GBUFFER_DEPTH == 2);
 
 SkyLightTechnique::SkyLightTechnique(const TechniqueBuild& b, const SkyLightSettings& s) : settings_(s) {
     vk::Context& ctx = b.alloc.context();
@@ -31,14 +34,16 @@ SkyLightTechnique::SkyLightTechnique(const TechniqueBuild& b, const SkyLightSett
                                passBindings(SKY_TRACE_OCCUPANCY, SKY_TRACE_OUT, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER), push);
     weigh_ = vk::ComputeKernel(ctx, "sky_light/weigh.comp",
                                passBindings(SKY_WEIGH_CLEAR_RAYS, SKY_WEIGH_OUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE), push);
-    filter_ = vk::ComputeKernel(ctx, "sky_light/filter.comp",
-                                passBindings(SKY_FILTER_SHARE, SKY_FILTER_OUT, VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER),
-                                push);
+    constexpr VkDescriptorType tex = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+    filter_ = vk::ComputeKernel(ctx, "sky_light/filter.comp", passBindings(SKY_FILTER_SHARE, SKY_FILTER_OUT, tex), push);
+    upsample_ = vk::ComputeKernel(ctx, "sky_light/upsample.comp",
+                                  passBindings(SKY_UPSAMPLE_SHARE, SKY_UPSAMPLE_OUT, tex), push);
     point_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
     const VkImageUsageFlags usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
     const uint32_t tracedW = vk::divUp(b.core.width, s.traceStep), tracedH = vk::divUp(b.core.height, s.traceStep);
     clearRays_ = vk::Image(b.alloc, {kClearRaysFormat, tracedW, tracedH, 1, VK_IMAGE_USAGE_STORAGE_BIT, "sky-clear-rays"});
     share_ = vk::Image(b.alloc, {kShareFormat, tracedW, tracedH, 1, usage, "sky-share"});
+    filtered_ = vk::Image(b.alloc, {kShareFormat, tracedW, tracedH, 1, usage, "sky-share-filtered"});
     irradiance_ = vk::Image(b.alloc, {kIrradianceFormat, b.core.width, b.core.height, 1,
                                       usage | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, "sky-irradiance"});
     noVoxels_ = vk::Buffer(b.alloc, sizeof(gpu::GpuOccupancyGrid),
@@ -52,7 +57,7 @@ SkyLightTechnique::SkyLightTechnique(const TechniqueBuild& b, const SkyLightSett
 
 uint64_t SkyLightTechnique::bytes(uint64_t width, uint64_t height, uint32_t traceStep) {
     const uint64_t traced = ((width + traceStep - 1) / traceStep) * ((height + traceStep - 1) / traceStep);
-    return traced * (kClearRaysBytes + kShareBytes) + width * height * kIrradianceBytes;
+    return traced * (kClearRaysBytes + 2 * kShareBytes) + width * height * kIrradianceBytes;
 }
 
 void SkyLightTechnique::setSettings(const SkyLightSettings& s) {
@@ -78,14 +83,29 @@ void SkyLightTechnique::addPasses(const FrameContext& f) {
     f.graph.publish(names::kSkyIrradiance, out);
     const OccupancyState* voxels = f.board.get(names::kOccupancyState);
     const TraceKey key{f.uniforms.viewProj, voxels ? voxels->generation : 0};
-    const bool trace = !cached_ || key != traced_;
-    if (!trace && sky->generation == weighedSky_) return;
-    const gpu::SkyLightPush push = constants(*sky);
+    // A new view traces every receiver; geometry that moves under a still view, one texel of each
+    // 2x2 block a frame, so that its shadow on the sky catches up over four frames.
+    gpu::SkyLightPush push = constants(*sky);
+    push.tracePhase = SKY_TRACE_EVERY_TEXEL;
+    if (!cached_ || forgotten_ || key.viewProj != traced_.viewProj) {
+        stalePhases_ = 0;
+    } else {
+        if (key.occupancy != traced_.occupancy || geometryMoved_) stalePhases_ = kTracePhases;
+        if (stalePhases_ == 0 && sky->generation == weighedSky_) return;
+        if (stalePhases_ > 0) {
+            push.tracePhase = nextPhase_;
+            nextPhase_ = (nextPhase_ + 1) % kTracePhases;
+            --stalePhases_;
+        }
+    }
+    const bool trace = !cached_ || forgotten_ || key != traced_ || push.tracePhase != SKY_TRACE_EVERY_TEXEL;
     const ImageHandle clearRays = f.graph.import(clearRays_), share = f.graph.import(share_);
+    const ImageHandle filtered = f.graph.import(filtered_);
     if (trace) addTrace(f.graph, clearRays, push);
-    addWeigh(f.graph, clearRays, share, push);
-    addFilter(f.graph, share, out, push);
+    addShareFilters(f.graph, clearRays, share, filtered, push);
+    addUpsample(f.graph, filtered, out, push);
     traced_ = key;
+    geometryMoved_ = forgotten_ = false;
     weighedSky_ = sky->generation;
     cached_ = true;
 }
@@ -105,33 +125,36 @@ void SkyLightTechnique::addTrace(FrameGraph& graph, ImageHandle clearRays, const
         });
 }
 
-void SkyLightTechnique::addWeigh(FrameGraph& graph, ImageHandle clearRays, ImageHandle share,
-                                 const gpu::SkyLightPush& push) {
-    graph.pass("sky.weigh")
-        .pipeline(weigh_.pipeline)
-        .uniform(SKY_WEIGH_FRAME, graph.buffer(names::kFrame))
-        .sampled(SKY_WEIGH_GBUFFER_NORMAL, graph.image(names::kGbufferNormal), point_.handle())
-        .sampled(SKY_WEIGH_GBUFFER_DEPTH, graph.image(names::kGbufferDepth), point_.handle())
-        .storageImage(SKY_WEIGH_CLEAR_RAYS, clearRays, Use::StorageRead)
-        .storageImage(SKY_WEIGH_OUT, share)
-        .record([this, push](PassContext& c) {
-            weigh_.pipeline.push(c.cmd, push);
-            vkCmdDispatch(c.cmd, vk::divUp(share_.width(), 8), vk::divUp(share_.height(), 8), 1);
-        });
+// A pass of the sky-light kind: the frame, the G-buffer's normal and depth, one input, one output
+// image, one thread per texel of `size`.
+void SkyLightTechnique::addImagePass(FrameGraph& graph, const char* name, vk::ComputeKernel& kernel, uint32_t inputBinding,
+                                     ImageHandle input, bool inputSampled, uint32_t outBinding, ImageHandle out,
+                                     const vk::Image& size, const gpu::SkyLightPush& push) {
+    PassBuilder pass = graph.pass(name);
+    pass.pipeline(kernel.pipeline)
+        .uniform(0, graph.buffer(names::kFrame))
+        .sampled(1, graph.image(names::kGbufferNormal), point_.handle())
+        .sampled(2, graph.image(names::kGbufferDepth), point_.handle());
+    if (inputSampled)
+        pass.sampled(inputBinding, input, point_.handle());
+    else
+        pass.storageImage(inputBinding, input, Use::StorageRead);
+    pass.storageImage(outBinding, out).record([&kernel, &size, push](PassContext& c) {
+        kernel.pipeline.push(c.cmd, push);
+        vkCmdDispatch(c.cmd, vk::divUp(size.width(), 8), vk::divUp(size.height(), 8), 1);
+    });
 }
 
-void SkyLightTechnique::addFilter(FrameGraph& graph, ImageHandle share, ImageHandle out, const gpu::SkyLightPush& push) {
-    graph.pass("sky.filter")
-        .pipeline(filter_.pipeline)
-        .uniform(SKY_FILTER_FRAME, graph.buffer(names::kFrame))
-        .sampled(SKY_FILTER_GBUFFER_NORMAL, graph.image(names::kGbufferNormal), point_.handle())
-        .sampled(SKY_FILTER_GBUFFER_DEPTH, graph.image(names::kGbufferDepth), point_.handle())
-        .sampled(SKY_FILTER_SHARE, share, point_.handle())
-        .storageImage(SKY_FILTER_OUT, out)
-        .record([this, push](PassContext& c) {
-            filter_.pipeline.push(c.cmd, push);
-            vkCmdDispatch(c.cmd, vk::divUp(irradiance_.width(), 8), vk::divUp(irradiance_.height(), 8), 1);
-        });
+void SkyLightTechnique::addShareFilters(FrameGraph& graph, ImageHandle clearRays, ImageHandle share,
+                                        ImageHandle filtered, const gpu::SkyLightPush& push) {
+    addImagePass(graph, "sky.weigh", weigh_, SKY_WEIGH_CLEAR_RAYS, clearRays, false, SKY_WEIGH_OUT, share, share_, push);
+    addImagePass(graph, "sky.filter", filter_, SKY_FILTER_SHARE, share, true, SKY_FILTER_OUT, filtered, filtered_, push);
+}
+
+void SkyLightTechnique::addUpsample(FrameGraph& graph, ImageHandle filtered, ImageHandle out,
+                                    const gpu::SkyLightPush& push) {
+    addImagePass(graph, "sky.upsample", upsample_, SKY_UPSAMPLE_SHARE, filtered, true, SKY_UPSAMPLE_OUT, out,
+                 irradiance_, push);
 }
 
 }  // namespace penumbra

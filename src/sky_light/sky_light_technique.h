@@ -4,10 +4,12 @@
 //   sky.trace   a few rays from one pixel of each --sky-trace-step block through the occupancy volume
 //               (names::kOccupancy): which of them are clear, as a bit mask (sky_light/trace.comp)
 //   sky.weigh   the share of the sky's radiance, per channel, that the clear rays see (weigh.comp)
-//   sky.filter  that share averaged over the traced receivers of each pixel's surface around it,
-//               times the irradiance the open sky gives the pixel's normal (filter.comp)
-// The trace is skipped while the view, the voxels and the settings stay as they were; the weighing
-// and the filter while the sky does too (a moving sun re-weighs the rays, it does not trace them).
+//   sky.filter  that share averaged over the traced receivers of its surface around it (filter.comp)
+//   sky.upsample  at every pixel, the share of the traced receivers around it on its surface, times
+//               the irradiance the open sky gives the pixel's normal (upsample.comp)
+// The trace is skipped while the view, the voxels and the settings stay as they were (geometry that
+// moves under a still view is traced again a quarter a frame); the rest while the sky does too (a
+// moving sun re-weighs the rays, it does not trace them).
 #pragma once
 #include <array>
 #include <cstdint>
@@ -25,7 +27,8 @@ public:
     SkyLightTechnique(const TechniqueBuild& b, const SkyLightSettings& s);
     const char* name() const override { return "sky-light"; }
     void addPasses(const FrameContext& f) override;
-    void invalidateCaches() override { cached_ = false; }
+    // Moved geometry: traced again over four frames, at once where a receiver changed.
+    void invalidateCaches(CacheDrop why) override { (why == CacheDrop::Moved ? geometryMoved_ : forgotten_) = true; }
     void setSettings(const SkyLightSettings& s);
     static uint64_t bytes(uint64_t width, uint64_t height, uint32_t traceStep);
     vk::Image& irradiance() { return irradiance_; }  // RGBA32F, for read-back
@@ -38,17 +41,23 @@ private:
         bool operator==(const TraceKey&) const = default;
     };
     void addTrace(FrameGraph& graph, ImageHandle clearRays, const gpu::SkyLightPush& push);
-    void addWeigh(FrameGraph& graph, ImageHandle clearRays, ImageHandle share, const gpu::SkyLightPush& push);
-    void addFilter(FrameGraph& graph, ImageHandle share, ImageHandle out, const gpu::SkyLightPush& push);
+    void addShareFilters(FrameGraph& graph, ImageHandle clearRays, ImageHandle share, ImageHandle filtered,
+                         const gpu::SkyLightPush& push);
+    void addUpsample(FrameGraph& graph, ImageHandle filtered, ImageHandle out, const gpu::SkyLightPush& push);
+    void addImagePass(FrameGraph& graph, const char* name, vk::ComputeKernel& kernel, uint32_t inputBinding,
+                      ImageHandle input, bool inputSampled, uint32_t outBinding, ImageHandle out, const vk::Image& size,
+                      const gpu::SkyLightPush& push);
     gpu::SkyLightPush constants(const SkyLight& sky) const;
 
     SkyLightSettings settings_;
-    vk::ComputeKernel trace_, weigh_, filter_;
+    vk::ComputeKernel trace_, weigh_, filter_, upsample_;
     vk::Sampler point_;
-    vk::Image clearRays_, share_, irradiance_;  // the first two at the traced receivers' size
+    vk::Image clearRays_, share_, filtered_, irradiance_;  // the first three at the traced receivers' size
     vk::Buffer noVoxels_;  // an empty occupancy grid, bound when the volume is not built
     TraceKey traced_;
     uint64_t weighedSky_ = UINT64_MAX;
+    uint32_t stalePhases_ = 0, nextPhase_ = 0;  // texel phases still to trace after the geometry moved
+    bool geometryMoved_ = false, forgotten_ = false;
     bool cached_ = false;
 };
 

@@ -14,7 +14,7 @@ public:
     ~OccupancyTechnique() override;
     const char* name() const override { return "occupancy"; }
     void addPasses(const FrameContext& f) override;
-    void invalidateCaches() override { volume_.invalidate(); }
+    void invalidateCaches(CacheDrop) override { volume_.invalidate(); }
     OccupancyVolume& volume() { return volume_; }
 
 private:
