@@ -9,7 +9,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "app/ground_truth_cli.h"
+#include "app/eval_suite_cli.h"
 #include "app/bench.h"
 #include "app/option_checks.h"
 #include "app/option_cli.h"
@@ -28,7 +28,8 @@ namespace fs = std::filesystem;
 // The smallest image eval measures: the SSIM window (eval/compare.cpp) fits inside it.
 constexpr uint32_t kMinEvalSize = 16;
 
-// Everything the reference image depends on: a cache entry is reused only when all of it matches.
+// Everything the reference image depends on: a cache entry is reused only when all of it matches. The
+// sky is named only when there is one, so that the keys of sun-only references stay as they were.
 nlohmann::json referenceKey(const EvalCliOptions& o, const PreparedFrame& f) {
     const Camera& c = f.camera;
     const ReferenceSettings& s = o.reference.settings;
@@ -37,12 +38,15 @@ nlohmann::json referenceKey(const EvalCliOptions& o, const PreparedFrame& f) {
         lights.push_back({int(l.type), l.position.x, l.position.y, l.position.z, l.direction.x, l.direction.y,
                           l.direction.z, l.color.x, l.color.y, l.color.z, l.intensity, l.range, l.innerConeAngle,
                           l.outerConeAngle, l.castsShadow});
-    return {{"scene", o.reference.frame.scene}, {"triangles", f.scene.triangleCount()},
-            {"strands", f.scene.strands.size()}, {"strand_points", f.scene.strandPoints.size()},
-            {"camera", {c.eye.x, c.eye.y, c.eye.z, c.target.x, c.target.y, c.target.z, c.up.x, c.up.y, c.up.z,
-                        c.fovy, c.znear, c.zfar}},
-            {"lights", lights}, {"width", s.width}, {"height", s.height}, {"spp", s.spp}, {"bounces", s.bounces},
-            {"seed", s.seed}, {"antialias", s.antialias}};
+    nlohmann::json key{{"scene", o.reference.frame.scene}, {"triangles", f.scene.triangleCount()},
+                       {"strands", f.scene.strands.size()}, {"strand_points", f.scene.strandPoints.size()},
+                       {"camera", {c.eye.x, c.eye.y, c.eye.z, c.target.x, c.target.y, c.target.z, c.up.x, c.up.y,
+                                   c.up.z, c.fovy, c.znear, c.zfar}},
+                       {"lights", lights}, {"width", s.width}, {"height", s.height}, {"spp", s.spp},
+                       {"bounces", s.bounces}, {"seed", s.seed}, {"antialias", s.antialias}};
+    if (s.sky.kind != SkyKind::None && s.sky.kind != SkyKind::Auto)
+        key["sky"] = {skyText(s.sky), s.sky.scale, s.sky.rotationDegrees};
+    return key;
 }
 
 GroundTruth fromImages(ImageF direct, ImageF indirect, const ImageF& mask, ImageF shadow, ImageF hair,
@@ -57,20 +61,18 @@ GroundTruth fromImages(ImageF direct, ImageF indirect, const ImageF& mask, Image
 }
 
 template <class Access>
-const std::string& evalFlag(Access access) {
-    return evalCommandOptions().flagOf<EvalCliOptions>(access);
-}
-template <class Access>
 const std::string& sceneFlag(Access access) {
     return referenceSceneOptions().flagOf<ReferenceCliOptions>(access);
 }
-const std::string& suiteFlag() { return evalFlag([](EvalCliOptions& e) -> auto& { return e.suite; }); }
 const std::string& hairFlag() { return evalFlag([](EvalCliOptions& e) -> auto& { return e.hair; }); }
 const std::string& sppFlag() { return sceneFlag([](ReferenceCliOptions& r) -> auto& { return r.settings.spp; }); }
+
+}  // namespace
+
+const std::string& suiteFlag() { return evalFlag([](EvalCliOptions& e) -> auto& { return e.suite; }); }
 const std::string& cameraFlag() {
     return frameInputOptions().flagOf<FrameOptions>([](FrameOptions& f) -> auto& { return f.camera; });
 }
-
 
 // The reference from the cache directory when its key matches, else rendered (and stored there).
 // DIR/reference.json: {"key": what it depends on, "noise": its relative standard errors}.
@@ -115,8 +117,6 @@ GroundTruth groundTruth(const EvalCliOptions& o, const PreparedFrame& f) {
                       {w, h, img.rgba(ReferenceAov::Mask)}, {w, h, img.rgba(ReferenceAov::Shadow)},
                       {w, h, img.rgba(ReferenceAov::Hair)}, noise);
 }
-
-}  // namespace
 
 namespace {
 
@@ -172,6 +172,12 @@ OptionTable makeEvalCommandTable() {
     scenes.repeatable = true;
     scenes.placeholder = "NAME,...";
     scenes.clear = [](void* e) { static_cast<E*>(e)->suiteScenes.clear(); };
+    t.choice("--suite-cases", "suite_cases", [](E& e) -> auto& { return e.suiteCases; },
+             std::vector<std::pair<std::string, SuiteCases>>{
+                 {"all", SuiteCases::All}, {"sun", SuiteCases::Sun}, {"sky", SuiteCases::Sky}},
+             kCommand,
+             "{eval.suite}: sun (each scene with its lights, no sky), sky (street, Sponza and VC with the analytic "
+             "sky: the sky's direct light, its bounce and the final image, each against the path tracer) or all");
     t.boolean("--hair", "hair", [](E& e) -> auto& { return e.hair; }, kCommand,
               "The hair evaluation: every shadow filter and deep shadow maps against the path-traced strands "
               "(anti-aliased, direct light): image and floor transmittance")
@@ -202,99 +208,6 @@ CLI::App* addEvalCommand(CLI::App& app, EvalCliOptions& o) {
 }
 
 namespace {
-
-// Pixels whose surface faces down (normal y < -0.9): cornell's ceiling, from the renderer's normal AOV.
-std::vector<uint8_t> downFacingPixels(vk::Context& ctx, const PreparedFrame& f, RenderSettings s) {
-    GpuScene gpuScene(ctx, f.scene);
-    s.aov = Aov::Normal;
-    s.gi = GiMode::None;
-    Renderer r(ctx, gpuScene, s, 1);
-    r.render(f.camera);
-    const std::vector<float> normal = r.readHdr();
-    std::vector<uint8_t> out(size_t(s.width) * s.height);
-    for (size_t i = 0; i < out.size(); ++i) out[i] = normal[i * 4 + 1] < -0.9f;
-    return out;
-}
-
-// One suite scene: its references (two seeds, cached under o.referenceDir/<name>-seed<N>), RSM and
-// LPV at their defaults, the figure.
-SuiteResult runSuiteScene(const EvalCliOptions& suite, const SuiteScene& sc, vk::Context& ctx, bool progressLine) {
-    EvalCliOptions o = suite;
-    o.reference.frame.scene = sc.scene;
-    // Through the input rows, which parse what they are given (prepareFrame takes the parsed values).
-    const OptionTable& inputs = frameInputOptions();
-    const OptionRow* cameraRow = inputs.find(cameraFlag());
-    const OptionRow* lightRow = inputs.find(inputs.flagOf<FrameOptions>([](FrameOptions& i) -> auto& { return i.lights; }));
-    if (!sc.camera.empty()) cameraRow->set(&o.reference.frame, sc.camera);
-    if (!sc.lights.empty()) lightRow->clear(&o.reference.frame);
-    for (const std::string& light : sc.lights) lightRow->set(&o.reference.frame, light);
-    o.reference.settings.width = sc.width;
-    o.reference.settings.height = sc.height;
-    o.reference.settings.spp = sc.spp;
-    const PreparedFrame f = prepareReferenceFrame(o.reference);
-    auto cached = [&](uint64_t seed) {
-        EvalCliOptions so = o;
-        so.reference.settings.seed = seed;
-        if (!o.referenceDir.empty())
-            so.referenceDir = (fs::path(o.referenceDir) / fmt::format("{}-seed{}", sc.name, seed)).string();
-        return groundTruth(so, f);
-    };
-    const uint64_t seed = o.reference.settings.seed;
-    const GroundTruth truth = cached(seed), second = cached(seed + 1);
-    SuiteResult r{sc.name, sc.width, sc.height, sc.spp, 0.0, {}, -1.0, -1.0};
-    r.noiseL1 = compareImages(second.indirect, truth.indirect, truth.mask).relL1;
-    RenderSettings base;
-    base.width = sc.width;
-    base.height = sc.height;
-    r.rows = runEval(ctx, f.scene, f.camera, suiteVariants(base), truth, 1, [&](size_t i, size_t n, const std::string& t) {
-        if (progressLine) fmt::print(stderr, "\reval {}: {} {}/{} {:<40}", suiteFlag(), sc.name, i + 1, n, t), std::fflush(stderr);
-    });
-    if (sc.name == "cornell") {
-        const std::vector<uint8_t> ceiling = downFacingPixels(ctx, f, base);
-        r.ceilingRsm = regionRatio(r.rows[0].indirectImage, truth.indirect, ceiling);
-        r.ceilingLpv = regionRatio(r.rows[1].indirectImage, truth.indirect, ceiling);
-    }
-    if (!o.images.empty()) {
-        double heat = 0.0;
-        uint32_t w = 0, h = 0;
-        const std::vector<uint8_t> fig = evalFigure(r.rows, truth, autoExposure(truth.final, truth.mask),
-                                                    autoExposure(truth.indirect, truth.mask), o.figureCellWidth, heat,
-                                                    w, h);
-        writePng((fs::path(o.images) / (sc.name + ".png")).string(), w, h, fig);
-    }
-    return r;
-}
-
-int runSuite(const EvalCliOptions& o, const vk::ContextOptions& vkOptions, bool dryRun) {
-    const std::vector<SuiteScene> scenes = suiteScenes(o.assets, o.suiteScenes);
-    for (const SuiteScene& sc : scenes)  // every file is checked before any work
-        if (sc.scene.find('/') != std::string::npos && !fs::is_regular_file(sc.scene))
-            throw std::invalid_argument(fmt::format("{} {}: no {} (suite scene '{}')", evalFlag([](EvalCliOptions& e) -> auto& { return e.assets; }), o.assets, sc.scene, sc.name));
-    if (dryRun) return 0;
-    const bool progressLine = o.reference.settings.progress && isatty(STDERR_FILENO);
-    std::error_code ec;
-    if (!o.images.empty()) fs::create_directories(o.images, ec);
-    vk::Context ctx(vkOptions);
-    std::vector<SuiteResult> results;
-    for (const SuiteScene& sc : scenes) results.push_back(runSuiteScene(o, sc, ctx, progressLine));
-    if (progressLine) fmt::print(stderr, "\r{:80}\r", "");
-    fmt::print("penumbra eval {} on {}: indirect light against the one-bounce path tracer, over the pixels with "
-               "geometry; RSM and LPV at their defaults, hard shadows\n{}", suiteFlag(), ctx.info().name, formatSuiteTable(results));
-    for (const SuiteResult& r : results)
-        if (r.ceilingLpv >= 0.0)
-            fmt::print("{} ceiling, mean indirect / reference's: RSM {:.2f}, LPV {:.2f}\n", r.scene, r.ceilingRsm,
-                       r.ceilingLpv);
-    fmt::print("ref noise: indirect relative L1 between the references of two seeds. GPU cost: `penumbra bench` "
-               "(docs/benchmarks.md), not eval's timing.\n");
-    if (!o.images.empty()) fmt::print("figures {}/<scene>.png: columns reference, RSM, LPV; rows final, indirect, "
-                                      "indirect error (auto-exposed)\n", o.images);
-    if (!o.json.empty())
-        writeTextFile(o.json, nlohmann::json{{"command", o.command}, {"device", ctx.info().name},
-                                             {"scenes", suiteJson(results)}}.dump(2));
-    if (ctx.validationMessages() > 0)
-        throw std::runtime_error(fmt::format("{} validation message(s) reported", ctx.validationMessages()));
-    return 0;
-}
 
 // `eval --hair --images DIR`: DIR/hair-figure.png (eval/hair_eval.h).
 void writeHairFigure(const EvalCliOptions& o, const std::vector<HairEvalRow>& rows, const HairGroundTruth& h) {

@@ -58,6 +58,7 @@ struct EvalCliOptions {
     bool suite = false;             // --suite: the GI evaluation suite instead of one scene
     std::string assets = "../shared/assets";  // --suite: the folder holding sponza/ and VC/
     std::vector<std::string> suiteScenes;     // --scenes: a subset of the suite (empty = all)
+    SuiteCases suiteCases = SuiteCases::All;  // --suite-cases: sun-only, sky or both
     bool hair = false;              // --hair: the hair evaluation (eval/hair_eval.h) instead of GI modes
     bool bouncesGiven = false;      // --bounces was on the command line (--hair ignores it)
 };

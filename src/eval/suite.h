@@ -27,6 +27,10 @@ struct SuiteScene {
 // estimate, which is what a still view shows after about a second).
 inline constexpr int kSuiteFrames = 32;
 
+// Which cases `eval --suite` runs (--suite-cases): the sun-only cases of the five scenes, the sky
+// cases of the outdoor ones (eval/sky_suite.h), or both.
+enum class SuiteCases { All, Sun, Sky };
+
 std::vector<SuiteScene> suiteScenes(const std::string& assets, const std::vector<std::string>& only = {});
 
 // RSM (interpolated) and LPV at their default settings, hard shadows, both kept for the figure.
