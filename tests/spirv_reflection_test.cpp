@@ -125,6 +125,7 @@ const std::map<std::string, StructLayout>& sharedStructs() {
                MEMBER(ShadowDrawPush, pad2), MEMBER(ShadowDrawPush, paraboloidNear),
                MEMBER(ShadowDrawPush, paraboloidFar), MEMBER(ShadowDrawPush, paraboloidDiscScale),
                MEMBER(ShadowDrawPush, maxEdgeAngle)),
+        STRUCT(GpuStrand, MEMBER(GpuStrand, color), MEMBER(GpuStrand, opacity)),
         STRUCT(GpuHairPoint, MEMBER(GpuHairPoint, position), MEMBER(GpuHairPoint, width), MEMBER(GpuHairPoint, tangent),
                MEMBER(GpuHairPoint, strand)),
         STRUCT(RibbonDrawPush, MEMBER(RibbonDrawPush, viewRow), MEMBER(RibbonDrawPush, pad0),
