@@ -37,6 +37,7 @@ void loadBatch(uint first, uint n) {
     const uint r = gl_LocalInvocationIndex / kGroupsPerRecord;
     if (r >= n) return;
     const uint record = tileLists[first + r];
+    // Every field of the group, padding too: each thread moves four adjacent words.
     switch (gl_LocalInvocationIndex % kGroupsPerRecord) {  // one 16-byte group of the record per thread
         case 0u:
             batch[r].vertex0 = records[record].vertex0;
@@ -56,12 +57,23 @@ void loadBatch(uint first, uint n) {
             batch[r].depthPlane = records[record].depthPlane;
             batch[r].depthBias = records[record].depthBias;
             break;
-        case 4u: batch[r].uOverW = records[record].uOverW; break;
-        case 5u: batch[r].vOverW = records[record].vOverW; break;
-        case 6u: batch[r].invW = records[record].invW; break;
+        case 4u:
+            batch[r].uOverW = records[record].uOverW;
+            batch[r].pad0 = records[record].pad0;
+            break;
+        case 5u:
+            batch[r].vOverW = records[record].vOverW;
+            batch[r].pad1 = records[record].pad1;
+            break;
+        case 6u:
+            batch[r].invW = records[record].invW;
+            batch[r].pad2 = records[record].pad2;
+            break;
         default:
             batch[r].visibilityId = records[record].visibilityId;
             batch[r].idLayerPlusOne = records[record].idLayerPlusOne;
+            batch[r].pad3 = records[record].pad3;
+            batch[r].pad4 = records[record].pad4;
             break;
     }
 }
