@@ -330,8 +330,8 @@ TEST_F(FrameLayerTest, PixelProbeEqualsEveryAovImageAtItsPixel) {
         ASSERT_TRUE(live.probe().has_value());
         const gpu::PixelProbe& p = *live.probe();
         const bool surface = image[Aov::Depth].w == 1.0f;
-        EXPECT_EQ(p.finalRadiance.w, surface ? 1.0f : 0.0f) << pixel.x << "," << pixel.y;
-        EXPECT_EQ(p.position.w, image[Aov::Depth].x);
+        EXPECT_EQ(p.surface, surface ? 1u : 0u) << pixel.x << "," << pixel.y;
+        EXPECT_EQ(p.eyeDistance, image[Aov::Depth].x);
         backgrounds += !surface;
         if (!surface) continue;
         EXPECT_EQ(glm::vec3(p.finalRadiance), glm::vec3(image[Aov::Final]));
@@ -339,7 +339,7 @@ TEST_F(FrameLayerTest, PixelProbeEqualsEveryAovImageAtItsPixel) {
         EXPECT_EQ(glm::vec3(p.indirect), glm::vec3(image[Aov::Indirect]));
         EXPECT_EQ(glm::vec3(p.albedo), glm::vec3(image[Aov::Albedo]));
         EXPECT_EQ(glm::vec3(p.normal), glm::vec3(image[Aov::Normal]));
-        EXPECT_EQ(p.shadow.x, image[Aov::Shadow].x);
+        EXPECT_EQ(p.shadowVisibility, image[Aov::Shadow].x);
         EXPECT_EQ(glm::vec2(p.velocity), glm::vec2(image[Aov::Velocity]));
         EXPECT_GT(glm::length(glm::vec2(p.velocity)), 0.1f) << "the camera moved";
         EXPECT_GT(glm::length(glm::vec3(p.irradiance)), 0.0f) << "RSM gives cornell's walls indirect light";

@@ -179,7 +179,7 @@ TEST_F(GpuTest, LpvCameraMoveInsideACellKeepsTheVolumeBits) {
     const Camera a = scene.cameras[0];
     const auto grids = placeCascades(scene.bounds, a.eye, 3, s.lpv.resolution);
     // Towards the centre of the finest cell holding the eye, by 0.3 cell along each axis at most.
-    const float cell = grids[0].origin.w;
+    const float cell = grids[0].cellSize;
     const glm::vec3 inCell = (a.eye - glm::vec3(grids[0].origin)) / cell;
     const glm::vec3 move = glm::clamp(glm::floor(inCell) + 0.5f - inCell, -0.3f, 0.3f) * cell;
     Camera b = a;

@@ -74,7 +74,7 @@ double gatherIrradiance(const VolumeRun& r, const dvec3& x, const dvec3& n, int 
     const int res = int(pc.resolution);
     const size_t cells = size_t(res) * res * res, half = 3 * pc.cascadeCount * cells;
     auto at = [&](uint32_t k, size_t offset, const dvec3& p) {
-        const dvec3 g = (p - dvec3(pc.cascades[k].origin)) / double(pc.cascades[k].origin.w) - 0.5;
+        const dvec3 g = (p - dvec3(pc.cascades[k].origin)) / double(pc.cascades[k].cellSize) - 0.5;
         const glm::ivec3 base = glm::ivec3(glm::floor(g));
         const dvec3 f = g - dvec3(base);
         const glm::dvec4 lobe = cosineLobe(-n);
@@ -86,15 +86,15 @@ double gatherIrradiance(const VolumeRun& r, const dvec3& x, const dvec3& n, int 
             const size_t index = offset + (k * 3 + channel) * cells + (size_t(c.z) * res + c.y) * res + c.x;
             e += w3.x * w3.y * w3.z * glm::dot(glm::dvec4(r.accum[index]), lobe);
         }
-        const double cell = pc.cascades[k].origin.w;
+        const double cell = pc.cascades[k].cellSize;
         return std::max(e, 0.0) / (cell * cell);
     };
     double e = 0.0, finer = 0.0;
     for (uint32_t k = 0; k < pc.cascadeCount; ++k) {
-        const dvec3 g = (x - dvec3(pc.cascades[k].origin)) / double(pc.cascades[k].origin.w);
+        const dvec3 g = (x - dvec3(pc.cascades[k].origin)) / double(pc.cascades[k].cellSize);
         const double inside = std::min({g.x, g.y, g.z, res - g.x, res - g.y, res - g.z});
         const double weight = k + 1 == pc.cascadeCount ? 1.0 : std::clamp((inside - 1.0) / pc.blendCells, 0.0, 1.0);
-        const dvec3 p = x + double(pc.cascades[k].origin.w) * n;
+        const dvec3 p = x + double(pc.cascades[k].cellSize) * n;
         if (weight > 0.0) e += weight * ((k > 0 ? at(k, half, p) : 0.0) + (1.0 - finer) * at(k, 0, p));
         finer = weight;
     }
@@ -150,9 +150,9 @@ TEST(LpvCascades, NestedSnappedAndCoveringTheScene) {
     auto c = placeCascades(b, eye, 3, 32);
     ASSERT_EQ(c.size(), 3u);
     for (size_t k = 0; k < c.size(); ++k) {
-        const float cell = c[k].origin.w;
+        const float cell = c[k].cellSize;
         if (k > 0) {
-            EXPECT_NEAR(cell, 2.0f * c[k - 1].origin.w, 1e-4f);
+            EXPECT_NEAR(cell, 2.0f * c[k - 1].cellSize, 1e-4f);
         }
         for (int a = 0; a < 3; ++a) {
             EXPECT_NEAR(std::remainder(c[k].origin[a], cell), 0.0f, 1e-3f * cell) << "snapped to whole cells";
@@ -160,9 +160,9 @@ TEST(LpvCascades, NestedSnappedAndCoveringTheScene) {
             EXPECT_GE(c[k].origin[a] + 32 * cell, eye[a]);
         }
     }
-    EXPECT_GE(32 * c[2].origin.w, 160.0f);  // the outermost reaches across the scene
+    EXPECT_GE(32 * c[2].cellSize, 160.0f);  // the outermost reaches across the scene
     // A sub-cell camera move keeps the grids where they are.
-    auto d = placeCascades(b, eye + glm::vec3(0.1f * c[0].origin.w, 0, 0), 3, 32);
+    auto d = placeCascades(b, eye + glm::vec3(0.1f * c[0].cellSize, 0, 0), 3, 32);
     EXPECT_EQ(glm::vec3(d[0].origin), glm::vec3(c[0].origin));
 }
 
@@ -175,14 +175,14 @@ TEST(LpvCascades, RoomSizedScenesGetGridsFitToTheSceneThatIgnoreTheCamera) {
     ASSERT_EQ(c.size(), 3u);
     EXPECT_EQ(placeCascades(b, glm::vec3(-5.0f, 7.0f, 2.0f), 3, 16)[2].origin, c[2].origin) << "camera-independent";
     for (size_t k = 0; k < c.size(); ++k) {
-        const glm::vec3 centre = glm::vec3(c[k].origin) + 8.0f * c[k].origin.w;
+        const glm::vec3 centre = glm::vec3(c[k].origin) + 8.0f * c[k].cellSize;
         EXPECT_LT(glm::length(centre - b.center()), 1e-5f) << "cascade " << k << " shares the scene's centre";
         if (k > 0) {
-            EXPECT_NEAR(c[k].origin.w, 2.0f * c[k - 1].origin.w, 1e-6f);
+            EXPECT_NEAR(c[k].cellSize, 2.0f * c[k - 1].cellSize, 1e-6f);
         }
         for (int a = 0; a < 3; ++a) {  // the finest covers the scene with a margin of half a cell
-            EXPECT_LE(c[0].origin[a], b.min[a] - 0.49f * c[0].origin.w);
-            EXPECT_GE(c[0].origin[a] + 16 * c[0].origin.w, b.max[a] + 0.49f * c[0].origin.w);
+            EXPECT_LE(c[0].origin[a], b.min[a] - 0.49f * c[0].cellSize);
+            EXPECT_GE(c[0].origin[a] + 16 * c[0].cellSize, b.max[a] + 0.49f * c[0].cellSize);
         }
     }
 }
@@ -232,8 +232,7 @@ TEST_F(LpvVolumeTest, SingleVplPropagatesSymmetricallyWithoutGainingFlux) {
 TEST_F(LpvVolumeTest, PointVplIrradianceAgainstTheExactAnswer) {
     const LpvSettings defaults;
     const dvec3 vpl(0.013, -0.021, 0.007);
-    const std::vector<gpu::GpuVpl> one{gpu::GpuVpl{glm::vec4(glm::vec3(vpl), 1.0f), glm::vec4(0, 1, 0, 0),
-                                                   glm::vec4(1.0f, 1.0f, 1.0f, 0.0f)}};
+    const std::vector<gpu::GpuVpl> one{gpu::GpuVpl{glm::vec3(vpl), 1u, glm::vec3(0, 1, 0), 0.0f, glm::vec3(1.0f), 0u}};
     const VolumeRun single = run(one, defaults.iterations, false, defaults.resolution, 1);
     const VolumeRun cascaded = run(one, defaults.iterations, false, defaults.resolution, 3);
     const double cell = cascaded.cell;
@@ -400,7 +399,7 @@ TEST_F(GpuTest, LpvVoxelFacesAreTheShareOfOpenColumns) {
     const int res = int(pc.resolution), n = LPV_FACE_COLUMNS;
     size_t compared = 0, differing = 0, ambiguous = 0, blocked = 0, open = 0;
     for (uint32_t k = 0; k < pc.cascadeCount; ++k) {
-        const double size = pc.cascades[k].origin.w;
+        const double size = pc.cascades[k].cellSize;
         for (int z = 0; z < res; ++z)
             for (int y = 0; y < res; ++y)
                 for (int x = 0; x < res; ++x) {

@@ -27,7 +27,7 @@ inline std::vector<glm::vec4> asVec4(const std::vector<uint8_t>& bytes) {
 }
 
 inline gpu::GpuVpl vpl(const glm::vec3& p, const glm::vec3& n, const glm::vec3& flux, float area = 0.0f) {
-    return {glm::vec4(p, 1.0f), glm::vec4(glm::normalize(n), area), glm::vec4(flux, 0.0f)};
+    return {p, 1u, glm::normalize(n), area, flux, 0u};
 }
 
 // A single 32^3 grid over [-1, 1]^3 (cell 2.04 / 31), no camera.
@@ -69,7 +69,7 @@ protected:
         r.last = asVec4(cmd.readBuffer(lpv.lastStep(), lpv.lastStep().size()));
         r.geometry = asVec4(cmd.readBuffer(lpv.geometry(), lpv.geometry().size()));
         r.injected = asVec4(cmd.readBuffer(lpv.injected(), lpv.injected().size()));
-        r.cell = lpv.constants().cascades[0].origin.w;
+        r.cell = lpv.constants().cascades[0].cellSize;
         r.push = lpv.constants();
         return r;
     }

@@ -67,10 +67,11 @@ TEST_F(MotionGiTest, CameraOnlyMotionLeavesLpvLightAtFixedWorldCells) {
             size_t compared = 0, differ = 0, shifted = 0;
             double worst = 0.0;
             for (uint32_t k = 0; k < s.lpv.cascades; ++k) {
-                const glm::vec4 a = frames[0].cascades[k].origin, b = frames[1].cascades[k].origin;
-                ASSERT_EQ(a.w, b.w);
-                const glm::ivec3 shift = glm::ivec3(glm::round((glm::vec3(b) - glm::vec3(a)) / a.w));
-                ASSERT_LT(glm::length(glm::vec3(b) - glm::vec3(a) - glm::vec3(shift) * a.w), 1e-3f * a.w);
+                const glm::vec3 a = frames[0].cascades[k].origin, b = frames[1].cascades[k].origin;
+                const float cell = frames[0].cascades[k].cellSize;
+                ASSERT_EQ(cell, frames[1].cascades[k].cellSize);
+                const glm::ivec3 shift = glm::ivec3(glm::round((b - a) / cell));
+                ASSERT_LT(glm::length(b - a - glm::vec3(shift) * cell), 1e-3f * cell);
                 shifted += shift != glm::ivec3(0);
                 for (int z = margin; z < res - margin; ++z)
                     for (int y = margin; y < res - margin; ++y)

@@ -26,7 +26,7 @@ void main() {
     vec3 world = p + s.side * (((gl_VertexIndex & 1) != 0 ? 0.5 : -0.5) * s.drawn);
     gl_Position = views.viewProj[draw.viewRow] * vec4(world, 1.0);
     outTangent = point.tangent;
-    outColor = strands[point.strand].rgb;
+    outColor = strands[point.strand].color;
     outAlpha = s.alpha;
     outDepth = dsmDepth(draw.view.viewer, draw.view.viewerIsPoint, p);
     outWorld = world;

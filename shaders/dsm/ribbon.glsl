@@ -7,7 +7,7 @@
 #include "dsm/bindings.h"
 layout(set = 0, binding = HAIR_VIEWS, std430) readonly buffer Views { mat4 viewProj[]; } views;
 layout(set = 0, binding = HAIR_POINTS, std430) readonly buffer Points { GpuHairPoint points[]; };
-layout(set = 0, binding = HAIR_STRANDS, std430) readonly buffer Strands { vec4 strands[]; };  // rgb colour, a opacity
+layout(set = 0, binding = HAIR_STRANDS, std430) readonly buffer Strands { GpuStrand strands[]; };
 
 struct RibbonSection {
     vec3 side;    // unit, across the strand, facing the viewer
@@ -27,6 +27,6 @@ RibbonSection ribbonSection(GpuHairPoint point) {
     float pixel = draw.view.pixelSize * (draw.view.perspective != 0u ? dist : 1.0);
     float width = point.width;
     s.drawn = width > 0.0 ? max(width, pixel * draw.view.minWidth) : 0.0;
-    s.alpha = s.drawn > 0.0 ? strands[point.strand].a * width / s.drawn : 0.0;
+    s.alpha = s.drawn > 0.0 ? strands[point.strand].opacity * width / s.drawn : 0.0;
     return s;
 }

@@ -68,7 +68,7 @@ void rasterRibbonSegment(uint i, vec2 size) {
     float invWa = 1.0 / a.clip.w, invWb = 1.0 / b.clip.w, len2 = max(dot(ab, ab), 1e-12);
     float depthA = dsmDepth(draw.view.viewer, draw.view.viewerIsPoint, a.point.position);
     float depthB = dsmDepth(draw.view.viewer, draw.view.viewerIsPoint, b.point.position);
-    vec3 colour = strands[a.point.strand].rgb;
+    vec3 colour = strands[a.point.strand].color;
 
     int first = max(int(ceil(lo[u] - 0.5)), 0), last = min(int(floor(hi[u] - 0.5)), int(size[u]) - 1);
     for (int column = first; column <= last; ++column) {

@@ -55,6 +55,12 @@ struct GpuHairPoint {
     uint strand;    // strand index (the strands buffer's row)
 };
 
+// One hair strand's shading (the strands buffer's row).
+struct GpuStrand {
+    vec3 color;     // linear albedo
+    float opacity;  // the light it stops where it covers a whole texel (ribbon.glsl scales it by the width drawn)
+};
+
 // Who a hair ribbon faces and how large a pixel or texel is there (dsm/ribbon.glsl).
 struct GpuRibbonView {
     vec3 viewer;          // the eye or light position, or the unit direction towards a directional light
@@ -197,6 +203,7 @@ struct OitPush {
 static_assert(offsetof(GpuDsmLight, texelSize) == 80 && offsetof(GpuDsmLight, filterWidth) == 96 &&
               offsetof(GpuDsmLight, opacityMaps) == 112 && offsetof(GpuDsmLight, binarySearch) == 124);
 static_assert(sizeof(GpuHairPoint) == 32 && sizeof(GpuDsmLight) == 128);
+static_assert(sizeof(GpuStrand) == 16 && offsetof(GpuStrand, color) == 0 && offsetof(GpuStrand, opacity) == 12);
 static_assert(sizeof(GpuRibbonView) == 32 && sizeof(GpuDepthBuckets) == 16 && offsetof(GpuRibbonView, pixelSize) == 16);
 static_assert(sizeof(RibbonDrawPush) == 48 && offsetof(RibbonDrawPush, view) == 16);
 static_assert(sizeof(DsmBuildPush) == 64 && offsetof(DsmBuildPush, material) == 4 && offsetof(DsmBuildPush, view) == 16 &&

@@ -130,17 +130,22 @@ vec4 aovValue(Shading s, uint aov, ivec2 pixel) {
 }
 
 void writeProbe(Shading s, ivec2 pixel) {
-    float on = s.surface ? 1.0 : 0.0;
-    probe.finalRadiance = vec4(s.direct + s.indirect, on);
-    probe.direct = vec4(s.direct, 0.0);
-    probe.indirect = vec4(s.indirect, 0.0);
-    probe.irradiance = vec4(s.irradiance, 0.0);
-    probe.albedo = vec4(s.albedo, 0.0);
-    probe.normal = vec4(s.n, s.shadingModel);
-    probe.position = vec4(s.p, s.eyeDistance);
-    float transmittance = s.surface ? firstDeepShadowTransmittance(s.p, s.n, s.hair) : 1.0;
-    probe.shadow = vec4(s.firstShadow, s.surface ? firstShadowLayer(pixel) : -1.0, transmittance, 0.0);
-    probe.velocity = vec4(s.surface ? pixelVelocity(pixel, s.p) : vec2(0.0), 0.0, 0.0);
+    probe.finalRadiance = s.direct + s.indirect;
+    probe.surface = s.surface ? 1u : 0u;
+    probe.direct = s.direct;
+    probe.eyeDistance = s.eyeDistance;
+    probe.indirect = s.indirect;
+    probe.shadowVisibility = s.firstShadow;
+    probe.irradiance = s.irradiance;
+    probe.shadowLayer = s.surface ? firstShadowLayer(pixel) : -1.0;
+    probe.albedo = s.albedo;
+    probe.transmittance = s.surface ? firstDeepShadowTransmittance(s.p, s.n, s.hair) : 1.0;
+    probe.normal = s.n;
+    probe.shadingModel = s.shadingModel;
+    probe.position = s.p;
+    probe.pad0 = 0u;
+    probe.velocity = s.surface ? pixelVelocity(pixel, s.p) : vec2(0.0);
+    probe.pad1 = probe.pad2 = 0u;
 }
 
 void main() {

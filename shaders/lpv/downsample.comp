@@ -70,9 +70,12 @@ void main() {
         if (t.valid && t.brightness > best) best = t.brightness, brightest = i;
     }
     GpuVpl v;
-    v.position = vec4(0.0);
-    v.normal = vec4(0.0, 1.0, 0.0, 0.0);
-    v.flux = vec4(0.0);
+    v.position = vec3(0.0);
+    v.exists = 0u;
+    v.normal = vec3(0.0, 1.0, 0.0);
+    v.area = 0.0;
+    v.flux = vec3(0.0);
+    v.pad0 = 0u;
     if (brightest >= 0) {
         Texel b = readTexel(base + ivec2(brightest % block, brightest / block), id.z);
         uint cascade;
@@ -90,9 +93,11 @@ void main() {
             area += t.area;
             count += 1.0;
         }
-        v.position = vec4(position / count, 1.0);
-        v.normal = vec4(length(normal) > 1e-6 ? normalize(normal) : b.normal, area);
-        v.flux = vec4(flux, 0.0);
+        v.position = position / count;
+        v.exists = 1u;
+        v.normal = length(normal) > 1e-6 ? normalize(normal) : b.normal;
+        v.area = area;
+        v.flux = flux;
     }
     vpls[(id.z * ds + id.y) * ds + id.x] = v;
 }

@@ -34,8 +34,8 @@ void main() {
     ivec3 cell = ivec3(gl_GlobalInvocationID.x, gl_GlobalInvocationID.y, gl_GlobalInvocationID.z % pc.resolution);
     uint cascade = gl_GlobalInvocationID.z / pc.resolution;
     if (any(greaterThanEqual(cell, ivec3(pc.resolution))) || cascade >= pc.cascadeCount) return;
-    const float size = pc.cascades[cascade].origin.w;
-    const vec3 centre = pc.cascades[cascade].origin.xyz + (vec3(cell) + 0.5) * size;
+    const float size = pc.cascades[cascade].cellSize;
+    const vec3 centre = pc.cascades[cascade].origin + (vec3(cell) + 0.5) * size;
     vec4 open = vec4(1.0);
     for (int axis = 0; axis < 3; ++axis) {
         ivec3 e = ivec3(0);

@@ -38,7 +38,7 @@ vec3 irradianceIn(uint k, uint half_, vec3 x, vec3 n, bool hair) {
         float w = w3.x * w3.y * w3.z;
         for (uint ch = 0; ch < 3u; ++ch) e[ch] += w * dot(accum[offset + lightIndex(k, ch, c)], lobe);
     }
-    float cell = pc.cascades[k].origin.w;
+    float cell = pc.cascades[k].cellSize;
     return max(e, vec3(0.0)) / (cell * cell);
 }
 
@@ -58,7 +58,7 @@ vec3 lpvIrradiance(vec3 x, vec3 n, bool hair) {
     float finer = 0.0;  // how much the next finer cascade holds x
     for (uint k = 0; k < pc.cascadeCount; ++k) {
         float inside = k + 1u == pc.cascadeCount ? 1.0 : insideWeight(k, x);
-        vec3 p = hair ? x : x + pc.cascades[k].origin.w * n;
+        vec3 p = hair ? x : x + pc.cascades[k].cellSize * n;
         if (k > 0u && inside > 0.0) e += inside * irradianceIn(k, 1u, p, n, hair);
         if (finer < 1.0 && inside > 0.0) e += inside * (1.0 - finer) * irradianceIn(k, 0u, p, n, hair);
         finer = inside;

@@ -37,10 +37,10 @@ void main() {
     uint i = gl_GlobalInvocationID.x;
     if (i >= pc.vplCount) return;
     GpuVpl v = vpls[i];
-    if (v.position.w < 0.5) return;
+    if (v.exists == 0u) return;
     const int fractionBits = lightFractionBits(pc.vplCount);
     for (uint k = 0; k < pc.cascadeCount; ++k) {
-        float cell = pc.cascades[k].origin.w;
+        float cell = pc.cascades[k].cellSize;
         const Splat splat = vplSplat(v, k);
         for (uint corner = 0; corner < 8u; ++corner) {
             const ivec3 c = splatCell(splat, corner);
@@ -53,9 +53,9 @@ void main() {
                 ADD_FIXED(lightSums, base, q)
             }
         }
-        ivec3 g = ivec3(floor(gridCoord(k, v.position.xyz) + 0.5));  // nearest cell corner
+        ivec3 g = ivec3(floor(gridCoord(k, v.position) + 0.5));  // nearest cell corner
         if (insideGrid(g) && pc.voxelFaces == 0u) {  // the occupancy volume's faces block instead (--lpv-geometry voxels)
-            vec4 blocking = cosineLobe(v.normal.xyz) * (min(v.normal.w / (cell * cell), 1.0) / LOBE_PEAK);
+            vec4 blocking = cosineLobe(v.normal) * (min(v.area / (cell * cell), 1.0) / LOBE_PEAK);
             const i64vec4 q = toFixed(blocking, LPV_GEOMETRY_FRACTION_BITS);
             uint base = geometryIndex(k, g) * 4u;
             ADD_FIXED(geometrySums, base, q)

@@ -33,7 +33,7 @@ void main() {
     if (!s.valid) return;
     vec4 lobe = cosineLobe(s.n) / LOBE_PEAK;
     for (uint k = 0; k < pc.cascadeCount; ++k) {
-        float cell = pc.cascades[k].origin.w;
+        float cell = pc.cascades[k].cellSize;
         ivec3 g = ivec3(floor(gridCoord(k, s.x) + 0.5));
         if (!insideGrid(g)) continue;
         const i64vec4 q = toFixed(lobe * min(s.area / (cell * cell), 1.0), LPV_GEOMETRY_FRACTION_BITS);

@@ -23,7 +23,7 @@ void main() {
     uint i = gl_GlobalInvocationID.x;
     if (i >= pc.vplCount) return;
     GpuVpl v = vpls[i];
-    if (v.position.w < 0.5) return;
+    if (v.exists == 0u) return;
     vec3 largest;
     for (uint ch = 0; ch < 3u; ++ch) largest[ch] = largestMagnitude(vplLight(v, ch));
     const uint colourStride = cellsPerVolume();

@@ -27,10 +27,13 @@ void main() {
     const uint index = first + gl_GlobalInvocationID.y * blocks.x + gl_GlobalInvocationID.x;
     const CameraSurfel s = cameraSurfel(gl_GlobalInvocationID.xy, step);
     GpuVpl v;
-    v.position = vec4(s.x, s.valid ? 1.0 : 0.0);
-    v.normal = vec4(s.n, 0.0);
-    v.flux = vec4(0.0);
+    v.position = s.x;
+    v.exists = s.valid ? 1u : 0u;
+    v.normal = s.n;
+    v.area = 0.0;
+    v.flux = vec3(0.0);
+    v.pad0 = 0u;
     if (s.valid)
-        v.flux.rgb = texelFetch(gAlbedo, s.pixel, 0).rgb * texelFetch(skyIrradiance, s.pixel, 0).rgb * s.area;
+        v.flux = texelFetch(gAlbedo, s.pixel, 0).rgb * texelFetch(skyIrradiance, s.pixel, 0).rgb * s.area;
     vpls[index] = v;
 }

@@ -17,10 +17,10 @@ struct Splat {
 // the same weight bits in the same world cells. A grid's origin within 1e-3 cell of that lattice
 // (a snapped one, but for rounding) counts as on it.
 Splat vplSplat(GpuVpl v, uint k) {
-    const float cell = pc.cascades[k].origin.w;
-    const vec3 origin = pc.cascades[k].origin.xyz / cell, whole = round(origin);
+    const float cell = pc.cascades[k].cellSize;
+    const vec3 origin = pc.cascades[k].origin / cell, whole = round(origin);
     const vec3 phase = mix(origin - whole, vec3(0.0), lessThan(abs(origin - whole), vec3(1e-3)));
-    const vec3 g = (v.position.xyz + 0.5 * cell * v.normal.xyz) / cell - 0.5 - phase;
+    const vec3 g = (v.position + 0.5 * cell * v.normal) / cell - 0.5 - phase;
     Splat s;
     s.f = g - floor(g);
     s.base = ivec3(floor(g)) - ivec3(whole);
@@ -34,6 +34,6 @@ float splatWeight(Splat s, uint i) {
     return w.x * w.y * w.z;
 }
 
-vec4 vplLight(GpuVpl v, uint channel) { return cosineLobe(v.normal.xyz) * (v.flux[channel] / VPL_PI); }
+vec4 vplLight(GpuVpl v, uint channel) { return cosineLobe(v.normal) * (v.flux[channel] / VPL_PI); }
 
 float largestMagnitude(vec4 v) { return max(max(abs(v.x), abs(v.y)), max(abs(v.z), abs(v.w))); }

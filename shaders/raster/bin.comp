@@ -17,8 +17,8 @@ void main() {
     const uint count = min(counters.records, push.recordCapacity);
     for (uint r = gl_WorkGroupID.x; r < count; r += gl_NumWorkGroups.x) {
         const RasterTriangle t = records[r];
-        if (t.origin.w < 0.0) continue;  // no entries: the overflow pass rasterizes it
-        const uint first = t.ids.z;
+        if (t.firstEntry == RASTER_NO_ENTRY) continue;  // the overflow pass rasterizes it
+        const uint first = t.firstEntry;
         const Edges e = edgesOf(t, bits, size);
         const ivec4 tiles = ivec4(e.bbox.xy / RASTER_TILE_SIZE, e.bbox.zw / RASTER_TILE_SIZE);
         const int w = tiles.z - tiles.x + 1;
@@ -27,7 +27,7 @@ void main() {
             const ivec2 tile = tiles.xy + ivec2(int(i) % w, int(i) / w);
             const bool may = tileMayCover(e, tileRect(tile, e.bbox), bits);
             tileEntries[first + i] = uvec2(may ? r : RASTER_NO_RECORD, uint(tile.x) | (uint(tile.y) << 16));
-            if (may) atomicAdd(tileBins[tileIndex(t.xy2.z, tile, size)].x, 1u);
+            if (may) atomicAdd(tileBins[tileIndex(t.layer, tile, size)].x, 1u);
         }
     }
 }

@@ -27,7 +27,7 @@ void takeTriangle(RasterTriangle t, Edges e, int bits, ivec2 size) {
         const ivec2 tile = tiles.xy + ivec2(int(i) % across, int(i) / across);
         const ivec4 rect = tileRect(tile, e.bbox);
         if (!tileMayCover(e, rect, bits)) continue;
-        if (gl_LocalInvocationIndex == 0u) atomicOr(tileBins[tileIndex(t.xy2.z, tile, size)].w, RASTER_TILE_TOUCHED);
+        if (gl_LocalInvocationIndex == 0u) atomicOr(tileBins[tileIndex(t.layer, tile, size)].w, RASTER_TILE_TOUCHED);
         const int width = rect.z - rect.x + 1, pixels = width * (rect.w - rect.y + 1);
         for (int k = int(gl_LocalInvocationIndex); k < pixels; k += RASTER_OVERFLOW_GROUP, ++tested) {
             const ivec2 p = rect.xy + ivec2(k % width, k / width);

@@ -86,8 +86,7 @@ bool covers(Edges e, ivec2 p, int subpixelBits) {
 }
 
 Edges edgesOf(RasterTriangle t, int subpixelBits, ivec2 size) {
-    const ivec4 xy01 = ivec4(t.xy01);
-    return makeEdges(xy01.xy, xy01.zw, ivec2(t.xy2.xy), subpixelBits, size);
+    return makeEdges(t.vertex0, t.vertex1, t.vertex2, subpixelBits, size);
 }
 
 // Tiles: all tiles of the triangle's box that no edge excludes (an edge excludes a tile when it is
@@ -110,12 +109,12 @@ ivec4 tileRect(ivec2 tile, ivec4 bbox) {
     return ivec4(max(lo, bbox.xy), min(lo + RASTER_TILE_SIZE - 1, bbox.zw));
 }
 
-float planeAt(vec4 plane, vec2 offset) { return plane.x + plane.y * offset.x + plane.z * offset.y; }
+float planeAt(vec3 plane, vec2 offset) { return plane.x + plane.y * offset.x + plane.z * offset.y; }
 
 // Alpha test of a masked caster at window position w (perspective-correct uv; the LOD from the
 // analytic uv gradients, which a 2x2 quad's differences equal on orthographic views).
 bool alphaDiscarded(RasterTriangle t, vec2 offset) {
-    const GpuMaterial m = materials[t.xy2.w];
+    const GpuMaterial m = materials[t.material];
     const float iw = planeAt(t.invW, offset);
     const vec2 uvw = vec2(planeAt(t.uOverW, offset), planeAt(t.vOverW, offset));
     const vec2 uv = uvw / iw;
@@ -133,23 +132,24 @@ bool alphaDiscarded(RasterTriangle t, vec2 offset) {
 // depthPlane): the plane's value at the pixel's integer coordinates, two fused multiply-adds, then the bias.
 uint sampleDepthBits(RasterTriangle t, ivec2 p) {
     const vec2 xy = vec2(p);
-    precise const float z = clamp(fma(t.depth.z, xy.y, fma(t.depth.y, xy.x, t.depth.x)) + t.depth.w, 0.0, 1.0);
+    precise const float z =
+        clamp(fma(t.depthPlane.z, xy.y, fma(t.depthPlane.y, xy.x, t.depthPlane.x)) + t.depthBias, 0.0, 1.0);
     return floatBitsToUint(z) & 0x7FFFFFFFu;  // -0 -> +0
 }
 
 void shadeSample(RasterTriangle t, ivec2 p, ivec2 size) {
     const vec2 xy = vec2(p);
     const uint bits = sampleDepthBits(t, p);
-    if (t.ids.y != 0u) {
-        const uint index = ((t.ids.y - 1u) * uint(size.y) + uint(p.y)) * uint(size.x) + uint(p.x);
+    if (t.idLayerPlusOne != 0u) {
+        const uint index = ((t.idLayerPlusOne - 1u) * uint(size.y) + uint(p.y)) * uint(size.x) + uint(p.x);
         if (bits >= uint(depthIds[index] >> 32)) return;  // cleared above 1.0: the far plane writes too
-        if (t.origin.z != 0.0 && alphaDiscarded(t, xy + 0.5 - t.origin.xy)) return;
-        atomicMin(depthIds[index], uint64_t(bits) << 32 | uint64_t(t.ids.x));
+        if (t.alphaTested != 0u && alphaDiscarded(t, xy + 0.5 - t.origin)) return;
+        atomicMin(depthIds[index], uint64_t(bits) << 32 | uint64_t(t.visibilityId));
         return;
     }
-    const uint index = (t.xy2.z * uint(size.y) + uint(p.y)) * uint(size.x) + uint(p.x);
+    const uint index = (t.layer * uint(size.y) + uint(p.y)) * uint(size.x) + uint(p.x);
     if (bits >= depthBits[index]) return;  // cheap early reject before the atomic and the texture
-    if (t.origin.z != 0.0 && alphaDiscarded(t, xy + 0.5 - t.origin.xy)) return;
+    if (t.alphaTested != 0u && alphaDiscarded(t, xy + 0.5 - t.origin)) return;
     atomicMin(depthBits[index], bits);
 }
 

@@ -19,7 +19,7 @@ void main() {
     for (uint k = gl_GlobalInvocationID.x; k < entries; k += gl_NumWorkGroups.x * RASTER_SCATTER_GROUP) {
         const uvec2 entry = tileEntries[k];
         if (entry.x >= recordCount) continue;  // RASTER_NO_RECORD, or stale
-        const uint bin = tileIndex(records[entry.x].xy2.z, ivec2(entry.y & 0xFFFFu, entry.y >> 16), size);
+        const uint bin = tileIndex(records[entry.x].layer, ivec2(entry.y & 0xFFFFu, entry.y >> 16), size);
         const uint slot = atomicAdd(tileBins[bin].z, 1u);
         if (slot < tileBins[bin].x) tileLists[tileBins[bin].y + slot] = entry.x;
     }

@@ -21,8 +21,7 @@ bool inlineLarge = false;     // the overflow queue is full too: rasterize large
 
 // Stores a large triangle and reserves one tile entry per tile of its box (the bin pass fills them
 // in parallel: binning a layer-sized triangle here took one thread through 4096 tiles); false when
-// a list is full (the caller queues its pair for the overflow pass). The record's ids.z holds its
-// first entry, origin.w -1 where it has none.
+// a list is full (the caller queues its pair for the overflow pass).
 bool bin(RasterTriangle t, Edges e) {
     const uint record = atomicAdd(counters.records, 1u);
     if (record >= push.recordCapacity) return false;
@@ -32,8 +31,7 @@ bool bin(RasterTriangle t, Edges e) {
     // fit again (only the threads between this read and their add overshoot).
     const uint first = counters.tileEntries > push.entryCapacity ? push.entryCapacity + 1u : atomicAdd(counters.tileEntries, n);
     const bool fits = first <= push.entryCapacity && n <= push.entryCapacity - first;
-    t.origin.w = fits ? float(first) : -1.0;  // -1: no entries (the first one, rounded above 2^24)
-    t.ids.z = first;                          // the first entry, exact
+    t.firstEntry = fits ? first : RASTER_NO_ENTRY;
     records[record] = t;
     return fits;
 }
@@ -57,7 +55,7 @@ void takeTriangle(RasterTriangle t, Edges e, int bits, ivec2 size) {
         return;
     }
     if (!small) atomicAdd(counters.inlined, 1u);
-    markTiles(t.xy2.z, e.bbox, size);
+    markTiles(t.layer, e.bbox, size);
     mostPixels = max(mostPixels, uint(e.bbox.z - e.bbox.x + 1) * uint(e.bbox.w - e.bbox.y + 1));
     if (small && bits <= 8 && smallEnough(e))
         rasterizeSmall(t, e, bits, size);

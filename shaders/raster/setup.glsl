@@ -79,10 +79,10 @@ vec4 toWindow(ClipVertex v, vec2 halfSize) {
 }
 
 // Plane (value at v0, d/dx, d/dy) of a value given at three window positions.
-vec4 plane(vec3 a, vec2 p0, vec2 p1, vec2 p2, float invDet) {
+vec3 plane(vec3 a, vec2 p0, vec2 p1, vec2 p2, float invDet) {
     const vec2 e1 = p1 - p0, e2 = p2 - p0;
     const float d1 = a.y - a.x, d2 = a.z - a.x;
-    return vec4(a.x, (d1 * e2.y - d2 * e1.y) * invDet, (e1.x * d2 - e2.x * d1) * invDet, 0.0);
+    return vec3(a.x, (d1 * e2.y - d2 * e1.y) * invDet, (e1.x * d2 - e2.x * d1) * invDet);
 }
 
 // Vulkan's depth bias of a D32_SFLOAT buffer, r * constant + m * slope, with lavapipe's choices
@@ -163,15 +163,23 @@ void emitTriangle(ClipVertex c0, ClipVertex c1, ClipVertex c2, Caster caster) {
     if (det == 0.0) return;
     const float invDet = 1.0 / det;
     RasterTriangle t;
-    t.xy01 = uvec4(ivec4(s0, s1));
-    t.xy2 = uvec4(uvec2(ivec2(s2)), caster.layer, caster.material);
-    t.origin = vec4(w0.xy, caster.alphaTested ? 1.0 : 0.0, 0.0);
-    t.depth = depth;
+    t.vertex0 = s0;
+    t.vertex1 = s1;
+    t.vertex2 = s2;
+    t.layer = caster.layer;
+    t.material = caster.material;
+    t.origin = w0.xy;
+    t.alphaTested = caster.alphaTested ? 1u : 0u;
+    t.firstEntry = RASTER_NO_ENTRY;
+    t.depthPlane = depth.xyz;
+    t.depthBias = depth.w;
     const vec3 iw = vec3(w0.w, w1.w, w2.w);
     t.invW = plane(iw, w0.xy, w1.xy, w2.xy, invDet);
     t.uOverW = plane(vec3(c0.uv.x, c1.uv.x, c2.uv.x) * iw, w0.xy, w1.xy, w2.xy, invDet);
     t.vOverW = plane(vec3(c0.uv.y, c1.uv.y, c2.uv.y) * iw, w0.xy, w1.xy, w2.xy, invDet);
-    t.ids = uvec4(caster.ids, 0u, 0u);
+    t.pad0 = t.pad1 = t.pad2 = t.pad3 = t.pad4 = 0u;
+    t.visibilityId = caster.ids.x;
+    t.idLayerPlusOne = caster.ids.y;
     takeTriangle(t, e, bits, size);
 }
 

@@ -28,24 +28,53 @@ layout(push_constant) uniform Push { RasterPush push; };
 const int kRowsPerPass = RASTER_TILE_GROUP / RASTER_TILE_SIZE;
 const int kPixels = RASTER_TILE_SIZE / kRowsPerPass;  // per thread
 // The list is walked in batches: the workgroup loads a batch's records into shared memory together
-// (one vec4 per thread), so a triangle costs no dependent global load in the walk.
-const uint kVec4sPerRecord = 8u;  // sizeof(RasterTriangle) / 16
-const uint kBatch = RASTER_TILE_GROUP / kVec4sPerRecord;
+// (one 16-byte group per thread), so a triangle costs no dependent global load in the walk.
+const uint kGroupsPerRecord = 8u;  // sizeof(RasterTriangle) / 16
+const uint kBatch = RASTER_TILE_GROUP / kGroupsPerRecord;
 shared RasterTriangle batch[kBatch];
 
 void loadBatch(uint first, uint n) {
-    const uint r = gl_LocalInvocationIndex / kVec4sPerRecord;
+    const uint r = gl_LocalInvocationIndex / kGroupsPerRecord;
     if (r >= n) return;
     const uint record = tileLists[first + r];
-    switch (gl_LocalInvocationIndex % kVec4sPerRecord) {  // one vec4 of the record per thread
-        case 0u: batch[r].xy01 = records[record].xy01; break;
-        case 1u: batch[r].xy2 = records[record].xy2; break;
-        case 2u: batch[r].origin = records[record].origin; break;
-        case 3u: batch[r].depth = records[record].depth; break;
-        case 4u: batch[r].uOverW = records[record].uOverW; break;
-        case 5u: batch[r].vOverW = records[record].vOverW; break;
-        case 6u: batch[r].invW = records[record].invW; break;
-        default: batch[r].ids = records[record].ids; break;
+    // Every field of the group, padding too: each thread moves four adjacent words.
+    switch (gl_LocalInvocationIndex % kGroupsPerRecord) {  // one 16-byte group of the record per thread
+        case 0u:
+            batch[r].vertex0 = records[record].vertex0;
+            batch[r].vertex1 = records[record].vertex1;
+            break;
+        case 1u:
+            batch[r].vertex2 = records[record].vertex2;
+            batch[r].layer = records[record].layer;
+            batch[r].material = records[record].material;
+            break;
+        case 2u:
+            batch[r].origin = records[record].origin;
+            batch[r].alphaTested = records[record].alphaTested;
+            batch[r].firstEntry = records[record].firstEntry;
+            break;
+        case 3u:
+            batch[r].depthPlane = records[record].depthPlane;
+            batch[r].depthBias = records[record].depthBias;
+            break;
+        case 4u:
+            batch[r].uOverW = records[record].uOverW;
+            batch[r].pad0 = records[record].pad0;
+            break;
+        case 5u:
+            batch[r].vOverW = records[record].vOverW;
+            batch[r].pad1 = records[record].pad1;
+            break;
+        case 6u:
+            batch[r].invW = records[record].invW;
+            batch[r].pad2 = records[record].pad2;
+            break;
+        default:
+            batch[r].visibilityId = records[record].visibilityId;
+            batch[r].idLayerPlusOne = records[record].idLayerPlusOne;
+            batch[r].pad3 = records[record].pad3;
+            batch[r].pad4 = records[record].pad4;
+            break;
     }
 }
 
@@ -117,8 +146,9 @@ void main() {
             for (int k = 0; k < kPixels; ++k, edge += step) {
                 const ivec2 p = origin + ivec2(0, k * kRowsPerPass);
                 if (any(lessThan(edge, i64vec3(0l)))) continue;
-                const uint64_t v = uint64_t(sampleDepthBits(t, p)) << 32 | uint64_t(idLayer != 0u ? t.ids.x : 0u);
-                if (v < nearest[k] && !(t.origin.z != 0.0 && alphaDiscarded(t, vec2(p) + 0.5 - t.origin.xy)))
+                const uint64_t v =
+                    uint64_t(sampleDepthBits(t, p)) << 32 | uint64_t(idLayer != 0u ? t.visibilityId : 0u);
+                if (v < nearest[k] && !(t.alphaTested != 0u && alphaDiscarded(t, vec2(p) + 0.5 - t.origin)))
                     nearest[k] = v;
             }
         }

@@ -27,19 +27,32 @@ namespace penumbra::gpu {
 #define RASTER_NO_RECORD 0xFFFFFFFFu   // a tile entry whose triangle went the inline path (lists full)
 
 // One triangle after setup (clipped, snapped, front-facing or double-sided, non-empty), in window
-// coordinates of its layer: what coverage, depth and the alpha test need.
+// coordinates of its layer: what coverage, depth and the alpha test need. Eight 16-byte groups, each
+// read whole where the passes read it together (raster/tiles.glsl loads a batch one group a thread);
+// a plane is (value at its reference point, d/dx, d/dy).
 struct RasterTriangle {
-    uvec4 xy01;      // snapped vertices 0 and 1 (int bits, subpixel units): x0, y0, x1, y1
-    uvec4 xy2;       // x2, y2 (int bits), z = target layer, w = material
-    vec4 origin;     // xy = float window position of vertex 0 (origin of the uv planes), z = 1: alpha-tested,
-                     // w = its first tile entry (-1: the lists were full)
-    vec4 depth;      // plane of z: value at pixel (0, 0) (integer pixel coordinates, as lavapipe), d/dx, d/dy;
-                     // w = depth bias of the triangle
-    vec4 uOverW;     // planes of u/w, v/w and 1/w (perspective-correct uv): value at origin, d/dx, d/dy
-    vec4 vOverW;
-    vec4 invW;
-    uvec4 ids;       // x = visibility ID (drawn triangle + 1), y = ID layer + 1 (0: a depth-only layer), zw unused
+    ivec2 vertex0;        // snapped vertices (subpixel units)
+    ivec2 vertex1;
+    ivec2 vertex2;
+    uint layer;           // the target layer
+    uint material;
+    vec2 origin;          // float window position of vertex 0: the reference point of the uv planes
+    uint alphaTested;     // 1: the material's alpha test applies
+    uint firstEntry;      // the triangle's first tile entry (RASTER_NO_ENTRY: the lists were full)
+    vec3 depthPlane;      // z at integer pixel coordinates, as lavapipe interpolates it
+    float depthBias;      // the triangle's depth bias, added to the plane's value
+    vec3 uOverW;          // planes of u/w, v/w and 1/w (perspective-correct uv), at origin
+    uint pad0;
+    vec3 vOverW;
+    uint pad1;
+    vec3 invW;
+    uint pad2;
+    uint visibilityId;    // drawn triangle + 1
+    uint idLayerPlusOne;  // ID layer + 1 (0: a depth-only layer)
+    uint pad3;
+    uint pad4;
 };
+#define RASTER_NO_ENTRY 0xFFFFFFFFu  // RasterTriangle.firstEntry of a triangle that got no tile entries
 
 // One layer the compute rasterizer draws (a host-written table: every layer of every light it
 // draws is one row of the setup dispatch).
@@ -75,8 +88,19 @@ struct RasterCounters {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(RasterTriangle) == 128 && sizeof(RasterLayer) == 16 && sizeof(RasterPush) == 48 &&
-              offsetof(RasterPush, biasConstant) == 32 && sizeof(RasterCounters) == 16);
+static_assert(sizeof(RasterTriangle) == 128 && offsetof(RasterTriangle, vertex0) == 0 &&
+              offsetof(RasterTriangle, vertex1) == 8 && offsetof(RasterTriangle, vertex2) == 16 &&
+              offsetof(RasterTriangle, layer) == 24 && offsetof(RasterTriangle, material) == 28 &&
+              offsetof(RasterTriangle, origin) == 32 && offsetof(RasterTriangle, alphaTested) == 40 &&
+              offsetof(RasterTriangle, firstEntry) == 44 && offsetof(RasterTriangle, depthPlane) == 48 &&
+              offsetof(RasterTriangle, depthBias) == 60 && offsetof(RasterTriangle, uOverW) == 64 &&
+              offsetof(RasterTriangle, pad0) == 76 && offsetof(RasterTriangle, vOverW) == 80 &&
+              offsetof(RasterTriangle, pad1) == 92 && offsetof(RasterTriangle, invW) == 96 &&
+              offsetof(RasterTriangle, pad2) == 108 && offsetof(RasterTriangle, visibilityId) == 112 &&
+              offsetof(RasterTriangle, idLayerPlusOne) == 116 && offsetof(RasterTriangle, pad3) == 120 &&
+              offsetof(RasterTriangle, pad4) == 124);
+static_assert(sizeof(RasterLayer) == 16 && sizeof(RasterPush) == 48 && offsetof(RasterPush, biasConstant) == 32 &&
+              sizeof(RasterCounters) == 16);
 }  // namespace penumbra::gpu
 #endif
 #endif

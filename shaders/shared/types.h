@@ -1,5 +1,6 @@
 // Struct layouts shared by C++ and GLSL (std430 / std140-safe: mat4, vec4, a vec3 always followed
-// by a 4-byte scalar, and scalars in groups of four). Included by C++ (namespace penumbra::gpu) and by GLSL (#include "shared/types.h").
+// by a 4-byte scalar, a vec2 by a vec2 or two scalars, and scalars in groups of four). Included by
+// C++ (namespace penumbra::gpu) and by GLSL (#include "shared/types.h").
 #ifndef PENUMBRA_SHARED_TYPES_H
 #define PENUMBRA_SHARED_TYPES_H
 
@@ -8,6 +9,8 @@
 #include <cstdint>
 #include <glm/glm.hpp>
 namespace penumbra::gpu {
+using ivec2 = glm::ivec2;
+using vec2 = glm::vec2;
 using vec3 = glm::vec3;
 using vec4 = glm::vec4;
 using uvec3 = glm::uvec3;
@@ -83,15 +86,23 @@ struct FrameUniforms {
 // Every AOV at one pixel (the viewer's pixel probe), written by lighting/lighting.comp for the pixel
 // FrameUniforms.probeX, probeY name, as the AOV images would hold them.
 struct PixelProbe {
-    vec4 finalRadiance;  // rgb = direct + indirect, w = 1 on a surface, 0 on the background
-    vec4 direct;         // rgb = direct radiance
-    vec4 indirect;       // rgb = indirect radiance (albedo / pi * irradiance), w unused
-    vec4 irradiance;     // rgb = gathered indirect irradiance (0 with --gi none)
-    vec4 albedo;         // rgb = albedo
-    vec4 normal;         // xyz = shading normal (hair: tangent), w = shading model (G-buffer .w)
-    vec4 position;       // xyz = world position, w = distance to the eye (the depth AOV)
-    vec4 shadow;         // x = first shadowed light's visibility, y = its layer code (-1: none), z = DSM transmittance
-    vec4 velocity;       // xy = the velocity AOV (pixels), zw unused
+    vec3 finalRadiance;         // direct + indirect
+    uint surface;               // 1 on a surface, 0 on the background
+    vec3 direct;                // direct radiance
+    float eyeDistance;          // distance to the eye (the depth AOV)
+    vec3 indirect;              // indirect radiance (albedo / pi * irradiance)
+    float shadowVisibility;     // the first shadowed light's visibility (the shadow AOV)
+    vec3 irradiance;            // gathered indirect irradiance (0 with --gi none)
+    float shadowLayer;          // the first shadowed light's layer code there (-1: none)
+    vec3 albedo;
+    float transmittance;        // the first deep shadow map's transmittance (1: nothing translucent)
+    vec3 normal;                // shading normal (hair: tangent)
+    float shadingModel;         // SHADING_* (the G-buffer normal's w)
+    vec3 position;              // world position
+    uint pad0;
+    vec2 velocity;              // the velocity AOV (pixels)
+    uint pad1;
+    uint pad2;
 };
 
 // One light as the lighting pass sees it. Units as in scene.h: directional radiance.rgb is
@@ -295,14 +306,18 @@ struct VisibilityResolvePush {
 #define LPV_FACE_COLUMNS 4  // lpv/face_transmittance.comp: segments per side of a cell face
 
 struct GpuLpvCascade {
-    vec4 origin;  // xyz = world position of the grid's min corner, w = cell size
+    vec3 origin;     // world position of the grid's min corner
+    float cellSize;  // world
 };
 
 // A virtual point light after RSM down-sampling.
 struct GpuVpl {
-    vec4 position;  // xyz, w = 1 when the VPL exists
-    vec4 normal;    // xyz unit normal, w = surfel area (world, on the surface)
-    vec4 flux;      // rgb reflected flux, w unused
+    vec3 position;
+    uint exists;  // 1: a VPL (0: its RSM cell held no surface)
+    vec3 normal;  // unit
+    float area;   // surfel area (world, on the surface)
+    vec3 flux;    // reflected flux
+    uint pad0;
 };
 
 struct LpvPush {
@@ -349,6 +364,19 @@ static_assert(offsetof(GpuLight, type) == 12 && offsetof(GpuLight, direction) ==
               offsetof(GpuLight, radiance) == 32 && offsetof(GpuLight, shadowIndex) == 44 &&
               offsetof(GpuLight, cosInner) == 48 && offsetof(GpuLight, shadowTexelSize) == 64 &&
               offsetof(GpuLight, shadowViewProj) == 80);
+static_assert(sizeof(PixelProbe) == 128 && offsetof(PixelProbe, finalRadiance) == 0 &&
+              offsetof(PixelProbe, surface) == 12 && offsetof(PixelProbe, direct) == 16 &&
+              offsetof(PixelProbe, eyeDistance) == 28 && offsetof(PixelProbe, indirect) == 32 &&
+              offsetof(PixelProbe, shadowVisibility) == 44 && offsetof(PixelProbe, irradiance) == 48 &&
+              offsetof(PixelProbe, shadowLayer) == 60 && offsetof(PixelProbe, albedo) == 64 &&
+              offsetof(PixelProbe, transmittance) == 76 && offsetof(PixelProbe, normal) == 80 &&
+              offsetof(PixelProbe, shadingModel) == 92 && offsetof(PixelProbe, position) == 96 &&
+              offsetof(PixelProbe, pad0) == 108 && offsetof(PixelProbe, velocity) == 112 &&
+              offsetof(PixelProbe, pad1) == 120 && offsetof(PixelProbe, pad2) == 124);
+static_assert(offsetof(GpuVpl, position) == 0 && offsetof(GpuVpl, exists) == 12 && offsetof(GpuVpl, normal) == 16 &&
+              offsetof(GpuVpl, area) == 28 && offsetof(GpuVpl, flux) == 32 && offsetof(GpuVpl, pad0) == 44);
+static_assert(sizeof(GpuLpvCascade) == 16 && offsetof(GpuLpvCascade, origin) == 0 &&
+              offsetof(GpuLpvCascade, cellSize) == 12);
 static_assert(sizeof(GpuVpl) == 48 && sizeof(GpuLight) == 144 && sizeof(FrameUniforms) == 320 &&
               sizeof(GpuInstance) == 208 && sizeof(DrawPush) == 16);
 static_assert(sizeof(GpuMaterial) == 48 && offsetof(GpuMaterial, texture) == 16 && offsetof(GpuMaterial, alphaCutoff) == 32);

@@ -6,6 +6,8 @@
 
 #include <fmt/format.h>
 
+#include "vk/format_bytes.h"
+
 namespace penumbra {
 namespace {
 
@@ -57,7 +59,7 @@ uint32_t mipLevelCount(uint32_t width, uint32_t height) {
 uint64_t mipChainBytes(uint32_t width, uint32_t height) {
     uint64_t bytes = 0;
     for (uint32_t l = 0; l < mipLevelCount(width, height); ++l)
-        bytes += uint64_t(levelSize(width, l)) * uint64_t(levelSize(height, l)) * 4;
+        bytes += uint64_t(levelSize(width, l)) * uint64_t(levelSize(height, l)) * vk::texelBytes(kFormat);
     return bytes;
 }
 

@@ -103,8 +103,8 @@ HairGpu::HairGpu(vk::CommandContext& cmd, const Scene& scene) : strandCount_(uin
     for (const Strand& s : scene.strands) roots.push_back(scene.strandPoints[s.firstPoint]);
     const std::vector<uint32_t> order = mortonOrder(roots);
     const std::vector<gpu::GpuHairPoint> points = ribbonPoints(scene, order);
-    std::vector<glm::vec4> strands;
-    for (uint32_t s : order) strands.push_back(glm::vec4(scene.strands[s].color, scene.strands[s].opacity));
+    std::vector<gpu::GpuStrand> strands;
+    for (uint32_t s : order) strands.push_back({scene.strands[s].color, scene.strands[s].opacity});
     // The drawn points (not the zero-width copies) in the order of a Morton curve (spatialPoints()).
     std::vector<glm::vec3> drawn;
     std::vector<uint32_t> drawnIndex;
@@ -114,7 +114,7 @@ HairGpu::HairGpu(vk::CommandContext& cmd, const Scene& scene) : strandCount_(uin
     for (uint32_t& i : spatial) i = drawnIndex[i];
     points_ = cmd.createDeviceBuffer(points.data(), points.size() * sizeof(gpu::GpuHairPoint),
                                      VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, "hair-points");
-    strands_ = cmd.createDeviceBuffer(strands.data(), strands.size() * sizeof(glm::vec4),
+    strands_ = cmd.createDeviceBuffer(strands.data(), strands.size() * sizeof(gpu::GpuStrand),
                                       VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "hair-strands");
     spatialPoints_ = cmd.createDeviceBuffer(spatial.data(), spatial.size() * sizeof(uint32_t),
                                             VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, "hair-spatial-points");

@@ -2,6 +2,7 @@
 
 #include "core/raster.h"
 #include "lighting/gbuffer_bindings.h"
+#include "vk/format_bytes.h"
 
 namespace penumbra {
 
@@ -129,7 +130,8 @@ void GBufferPass::addResolve(FrameGraph& graph, ImageHandle a, ImageHandle n, Im
         .sampled(VISIBILITY_RESOLVE_IDS, id, nearest_.handle())
         .storageImage(VISIBILITY_RESOLVE_ALBEDO, a)
         .storageImage(VISIBILITY_RESOLVE_NORMAL, n)
-        .bytes(VkDeviceSize(w) * h * (4 + 8 + 8))
+        .bytes(VkDeviceSize(w) * h *
+               (vk::texelBytes(ids.format()) + vk::texelBytes(albedo.format()) + vk::texelBytes(normal.format())))
         .record([this, w, h](PassContext& c) {
             resolve_.push(c.cmd, gpu::VisibilityResolvePush{w, h, 0, 0});
             vkCmdDispatch(c.cmd, vk::divUp(w, 8), vk::divUp(h, 8), 1);

@@ -7,7 +7,7 @@ namespace penumbra {
 
 LightingPass::LightingPass(vk::Allocator& alloc, uint32_t width, uint32_t height) {
     vk::Context& ctx = alloc.context();
-    hdr = vk::Image(alloc, {VK_FORMAT_R32G32B32A32_SFLOAT, width, height, 1,
+    hdr = vk::Image(alloc, {kHdrFormat, width, height, 1,
                             VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT, "hdr"});
     const VkDescriptorType ubo = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, ssbo = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER,
                            tex = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, img = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;

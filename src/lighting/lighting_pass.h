@@ -10,6 +10,7 @@ namespace penumbra {
 
 class LightingPass {
 public:
+    static constexpr VkFormat kHdrFormat = VK_FORMAT_R32G32B32A32_SFLOAT;  // linear radiance: the EXR output
     LightingPass(vk::Allocator& alloc, uint32_t width, uint32_t height);
     // Reads by name: "frame", "lights", the G-buffer, "shadow.mask" (filtered visibility per shadowed
     // light), "gi.irradiance" (indirect irradiance per pixel, or a 1x1 placeholder when

@@ -43,7 +43,7 @@ std::vector<gpu::GpuLpvCascade> placeCascades(const Bounds& scene, const glm::ve
         // coarse around the same centre: they stay put whatever the camera does.
         for (uint32_t k = 0; k < count; ++k) {
             const float cell = extent / float(resolution - 1) * float(1u << k);
-            out.push_back({glm::vec4(scene.center() - 0.5f * cell * float(resolution), cell)});
+            out.push_back({scene.center() - 0.5f * cell * float(resolution), cell});
         }
         return out;
     }
@@ -52,7 +52,7 @@ std::vector<gpu::GpuLpvCascade> placeCascades(const Bounds& scene, const glm::ve
     for (uint32_t k = 0; k < count; ++k) {
         const float cell = 2.0f * extent / float(resolution) / float(1u << (count - 1 - k));
         const glm::vec3 origin = glm::floor(eye / cell - 0.5f * float(resolution)) * cell;
-        out.push_back({glm::vec4(origin, cell)});
+        out.push_back({origin, cell});
     }
     return out;
 }

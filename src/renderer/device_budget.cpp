@@ -17,6 +17,7 @@
 #include "core/scene_gpu.h"
 #include "core/texture_upload.h"
 #include "dsm/dsm_options.h"
+#include "lighting/lighting_pass.h"
 #include "lpv/lpv_options.h"
 #include "raster/compute_raster.h"
 #include "renderer/render_options.h"
@@ -28,13 +29,14 @@
 #include "shadow/shadow_options.h"
 #include "shadow/shadow_layout.h"
 #include "shared/types.h"
+#include "vk/format_bytes.h"
 
 namespace penumbra {
 namespace {
 
 constexpr double kMiB = 1024.0 * 1024.0;
 constexpr uint64_t kHairPointBytes = sizeof(gpu::GpuHairPoint);
-constexpr uint64_t kStrandRecordBytes = 16;
+constexpr uint64_t kStrandRecordBytes = sizeof(gpu::GpuStrand);
 
 std::string plural(size_t count, const std::string& noun) {
     return fmt::format("{} {}{}", count, noun, count == 1 ? "" : "s");
@@ -300,7 +302,7 @@ std::vector<Demand> frameDemands(const vk::DeviceLimits& lim, const RenderSettin
     // shadow mask 4 per shadowed light.
     const uint64_t perPixel = 48 + 4 * uint64_t(layers.shadowedLights) + (s.cameraPath == CameraPath::Visibility ? 8 : 0);
     d.push_back({Knob::Width, w, 1, fmt::format("the {}x{} HDR image (RGBA32F)", w, h),
-                 [=](uint64_t v) { return v * h * 16; }});
+                 [=](uint64_t v) { return v * h * vk::texelBytes(LightingPass::kHdrFormat); }});
     d.push_back({Knob::Width, w, 1, fmt::format("the {}x{} frame's other images ({} bytes per pixel)", w, h, perPixel),
                  [=](uint64_t v) { return v * h * perPixel; }});
     if (s.gi == GiMode::Rsm && s.rsm.mode == RsmMode::Interpolated)
@@ -316,15 +318,17 @@ std::vector<Demand> frameDemands(const vk::DeviceLimits& lim, const RenderSettin
     const uint64_t rsmLayers = std::max(layers.rsm, 1u);
     d.push_back({Knob::ShadowRes, s.shadow.resolution, 16,
                  fmt::format("the shadow-map array ({} layer(s) of D32)", shadowLayers),
-                 [=](uint64_t r) { return r * r * 4 * shadowLayers; }});
+                 [=](uint64_t r) { return r * r * vk::texelBytes(VK_FORMAT_D32_SFLOAT) * shadowLayers; }});
     if (s.gi != GiMode::None)  // the RSM's layers of the shadow pass carry visibility IDs (R32_UINT)
         d.push_back({Knob::ShadowRes, s.shadow.resolution, 16,
                      fmt::format("the shadow pass's visibility IDs ({} layer(s) of R32_UINT)", rsmLayers),
-                     [=](uint64_t r) { return r * r * 4 * rsmLayers; }});
+                     [=](uint64_t r) { return r * r * vk::texelBytes(VK_FORMAT_R32_UINT) * rsmLayers; }});
     if (momentLayers)
         d.push_back({Knob::ShadowRes, s.shadow.resolution, 16,
                      fmt::format("the moment maps ({} layer(s) of RGBA32F)", momentLayers + 1),
-                     [=](uint64_t r) { return r * r * 16 * (momentLayers + 1); }});
+                     [=](uint64_t r) {
+                         return r * r * vk::texelBytes(VK_FORMAT_R32G32B32A32_SFLOAT) * (momentLayers + 1);
+                     }});
     if (computeRaster) {
         d.push_back({Knob::ShadowRes, s.shadow.resolution, 16,
                      fmt::format("the compute rasterizer's depth buffer ({} layer(s))", shadowLayers),
@@ -346,7 +350,8 @@ std::vector<Demand> frameDemands(const vk::DeviceLimits& lim, const RenderSettin
     if (strands)
         d.push_back({Knob::None, 0, 0, fmt::format("the scene's {} hair strands", strands),
                      [=](uint64_t) { return points * kHairPointBytes; }, true});
-    const uint64_t vertices = scene.vertices.size() * sizeof(Vertex), indices = scene.indices.size() * 4;
+    const uint64_t vertices = scene.vertices.size() * sizeof(Vertex);
+    const uint64_t indices = scene.indices.size() * sizeof(scene.indices.front());
     d.push_back({Knob::None, 0, 0, "the scene's vertices", [=](uint64_t) { return vertices; }, true});
     d.push_back({Knob::None, 0, 0, "the scene's indices", [=](uint64_t) { return indices; }, true});
     for (const TextureSlot& slot : planTextureTable(scene.textures).slots) {  // an array per size

@@ -3,6 +3,7 @@
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include "rsm/bindings.h"
+#include "vk/format_bytes.h"
 
 namespace penumbra {
 
@@ -82,7 +83,11 @@ void RsmPass::addTo(FrameGraph& graph) {
         .storageImage(RSM_RESOLVE_FLUX, flux)
         .storageImage(RSM_RESOLVE_VPLS, vpls);
     const uint32_t r = settings_.resolution;
-    pass.bytes(VkDeviceSize(r) * r * sources_.size() * (4 + 4 + 4 + 8 + 16));
+    // Per texel: the shadow pass's visibility ID read, the four RSM images written.
+    const VkDeviceSize texelBytes = vk::texelBytes(VK_FORMAT_R32_UINT) + vk::texelBytes(depth_.format()) +
+                                    vk::texelBytes(normal_.format()) + vk::texelBytes(flux_.format()) +
+                                    vk::texelBytes(vpls_.format());
+    pass.bytes(VkDeviceSize(r) * r * sources_.size() * texelBytes);
     pass.record([this, r](PassContext& c) {
         pipeline_.push(c.cmd, gpu::RsmResolvePush{r, idResolution_, 0, 0});
         vkCmdDispatch(c.cmd, vk::divUp(r, 8), vk::divUp(r, 8), uint32_t(sources_.size()));

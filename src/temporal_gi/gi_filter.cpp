@@ -5,8 +5,14 @@
 #include "core/names.h"
 #include "shared/types.h"
 #include "temporal_gi/bindings.h"
+#include "vk/format_bytes.h"
 
 namespace penumbra {
+namespace {
+
+constexpr VkFormat kFilteredFormat = VK_FORMAT_R16G16B16A16_SFLOAT;
+
+}  // namespace
 
 GiFilter::GiFilter(vk::Allocator& alloc, uint32_t width, uint32_t height)
     : alloc_(alloc), width_(width), height_(height) {
@@ -22,14 +28,16 @@ GiFilter::GiFilter(vk::Allocator& alloc, uint32_t width, uint32_t height)
     nearest_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
 }
 
-uint64_t GiFilter::bytes(uint64_t width, uint64_t height) { return 2 * width * height * 8; }
+uint64_t GiFilter::bytes(uint64_t width, uint64_t height) {
+    return 2 * width * height * vk::texelBytes(kFilteredFormat);
+}
 
 ImageHandle GiFilter::addTo(FrameGraph& graph, const GiHistoryImages& history, uint32_t iterations,
                             float luminanceSigma) {
     if (!images_[0].handle()) {
         const VkImageUsageFlags usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
         for (vk::Image& image : images_)
-            image = vk::Image(alloc_, {VK_FORMAT_R16G16B16A16_SFLOAT, width_, height_, 1, usage, "gi-filtered"});
+            image = vk::Image(alloc_, {kFilteredFormat, width_, height_, 1, usage, "gi-filtered"});
     }
     const VkSampler nearest = nearest_.handle();
     ImageHandle input = history.color;

@@ -4,6 +4,7 @@
 #include "core/previous_frame.h"
 #include "shared/types.h"
 #include "temporal_gi/bindings.h"
+#include "vk/format_bytes.h"
 
 namespace penumbra {
 namespace {
@@ -53,7 +54,10 @@ void GiHistory::release() {
     valid_ = false;
 }
 
-uint64_t GiHistory::bytes(uint64_t width, uint64_t height) { return 2 * width * height * (16 + 8 + 8); }
+uint64_t GiHistory::bytes(uint64_t width, uint64_t height) {
+    return 2 * width * height *
+           (vk::texelBytes(kColorFormat) + vk::texelBytes(kMomentsFormat) + vk::texelBytes(kGeometryFormat));
+}
 
 GiHistoryImages GiHistory::addTo(FrameGraph& graph, ImageHandle current, float minWeight, float changeWeight) {
     if (!color_[0].handle()) allocate();

@@ -63,7 +63,7 @@ void lpvBoxes(Renderer& renderer, const Projector& p) {
     const gpu::LpvPush& c = lpv->constants();
     for (uint32_t k = 0; k < lpv->cascadeCount(); ++k) {
         const glm::vec3 origin(c.cascades[k].origin);
-        const float side = c.cascades[k].origin.w * float(c.resolution);
+        const float side = c.cascades[k].cellSize * float(c.resolution);
         std::array<glm::vec3, 8> corners;
         for (int i = 0; i < 8; ++i)
             corners[i] = origin + side * glm::vec3(i & 1 ? 1.0f : 0.0f, i & 2 ? 1.0f : 0.0f, i & 4 ? 1.0f : 0.0f);

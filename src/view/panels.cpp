@@ -398,7 +398,7 @@ void Panels::probeWindow(ViewSession& session) {
     ImGui::Text("pixel %u, %u%s", pixel.x, pixel.y, source == &session.renderer() ? "" : " (B)");
     const std::optional<gpu::PixelProbe>& p = source->probe();
     if (!p || !session.frameMatchesSettings()) ImGui::TextDisabled("(waiting for the frame)");
-    else if (p->finalRadiance.w == 0.0f) ImGui::Text("background (depth %.3f: the far plane)", p->position.w);
+    else if (p->surface == 0) ImGui::Text("background (depth %.3f: the far plane)", p->eyeDistance);
     else {
         const auto row = [this](const char* name, glm::vec3 v) {
             ImGui::Text("%-10s %8.4f %8.4f %8.4f", name, v.x, v.y, v.z);
@@ -411,9 +411,9 @@ void Panels::probeWindow(ViewSession& session) {
         row("albedo", p->albedo);
         row("normal", p->normal);
         row("position", p->position);
-        ImGui::Text("%-10s %9.4f", "depth", p->position.w);
-        ImGui::Text("%-10s %9.4f (layer %.2f)", "shadow", p->shadow.x, p->shadow.y);
-        ImGui::Text("%-10s %9.4f", "dsm", p->shadow.z);
+        ImGui::Text("%-10s %9.4f", "depth", p->eyeDistance);
+        ImGui::Text("%-10s %9.4f (layer %.2f)", "shadow", p->shadowVisibility, p->shadowLayer);
+        ImGui::Text("%-10s %9.4f", "dsm", p->transmittance);
         ImGui::Text("%-10s %9.3f %9.3f px", "velocity", p->velocity.x, p->velocity.y);
     }
     ImGui::End();
