@@ -38,7 +38,7 @@ void addExposureRow(OptionTableBuilder<LightingSettings>& t) {
                                             formatOptionNumber(s.exposureHighPercentile)};
         },
         parseExposurePercentiles, kFrame,
-        "What --exposure auto meters: the mean log luminance of the geometry pixels ranked between these "
+        "What {frame.exposure} auto meters: the mean log luminance of the geometry pixels ranked between these "
         "percentiles (0 to 100) maps to middle grey; the darkest (hard shadows) and the brightest (highlights) "
         "do not move the exposure. 0,100: the log-average of all of them");
     row.placeholder = "LOW,HIGH";
@@ -80,7 +80,9 @@ void validate(const LightingSettings& s) {
     checkRanges(lightingOptions(), &s);
     if (!(s.exposureLowPercentile >= 0.0f && s.exposureLowPercentile < s.exposureHighPercentile &&
           s.exposureHighPercentile <= 100.0f))
-        throw std::invalid_argument("--exposure-percentiles: expected 0 <= LOW < HIGH <= 100");
+        throw std::invalid_argument(
+            lightingOptions().flagOf<LightingSettings>([](auto& t) -> auto& { return t.exposureLowPercentile; }) +
+            ": expected 0 <= LOW < HIGH <= 100");
 }
 
 }  // namespace penumbra
