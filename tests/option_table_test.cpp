@@ -48,7 +48,7 @@ const std::map<std::string, std::string> kTextExamples{
     {"--shadow", "pcss,dsm"}, {"--dsm-lights", "0,2"}, {"--camera", "0,1,3,0,1,0,0,1,0,50"},
     {"--light", "point,0,1,0,5"}, {"--light-shadow", "0=vsm"}, {"--sun-path", "0,30,90,60,4"},
     {"--light-path", "0:0,0,1,0;1,0,2,0"}, {"--camera-keys", "0,0,1,3,0,1,0;1,0,1,4,0,1,0"}, {"--no-motion", "on"},
-    {"--sky", "uniform,1,2,3"}, {"--exposure", "2"},
+    {"--sky", "uniform,1,2,3"}, {"--exposure", "2"}, {"--exposure-percentiles", "10,90"},
 };
 
 std::string exampleFor(const OptionRow& row, const void* settings) {

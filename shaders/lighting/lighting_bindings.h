@@ -33,8 +33,20 @@
 
 // lighting/exposure_reduce.comp and exposure_resolve.comp.
 #define EXPOSURE_HDR 0
-#define EXPOSURE_PARTIALS 1
+#define EXPOSURE_HISTOGRAM 1
 #define EXPOSURE_STATE 2
+// The luminance histogram: log2(1e-6 + luminance) in EXPOSURE_BINS equal bins over [EXPOSURE_MIN_EV,
+// EXPOSURE_MAX_EV] (0.3125 EV each). The floor's 1e-6 (black) lies at -19.93 EV, inside the first bin,
+// and 2^20 above middle grey's luminance outlasts photometric sunlight; what lies above is clamped
+// into the last bin. Each bin keeps its count and the sum of its pixels' positions inside it in
+// 1/EXPOSURE_BIN_STEPS of a bin (64 bits as two words), so a whole bin's mean is exact to 2.4e-6 EV.
+#define EXPOSURE_BINS 128
+#define EXPOSURE_MIN_EV (-20.0)
+#define EXPOSURE_MAX_EV 20.0
+#define EXPOSURE_BIN_STEPS 65536.0
+// A reduce workgroup (16x16 invocations) meters a 32x32 tile, 2x2 pixels an invocation: fewer tiles
+// add fewer partial histograms into the shared one.
+#define EXPOSURE_TILE 32
 
 // lighting/debug_view.comp.
 #define DEBUG_VIEW_SOURCE 0

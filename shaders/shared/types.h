@@ -187,15 +187,15 @@ struct TonemapPush {
 struct AutoExposureState {
     float adaptedLog;  // log of the adapted exposure
     float exposure;    // exp(adaptedLog): what the tone mapper multiplies by
-    float logAverage;  // this frame's log-average luminance of the geometry pixels
+    float logAverage;  // this frame's mean log luminance of the metered geometry pixels
     uint valid;        // 0 until a frame had geometry
 };
 
 struct AutoExposurePush {
-    uint partialCount;  // workgroups of the reduction
-    float rate;         // the adaptation's step, 1 - exp(-dt / tau); 1: snap
-    uint pad0;
-    uint pad1;
+    float rate;          // the adaptation's step, 1 - exp(-dt / tau); 1: snap
+    float lowFraction;   // the metered window of the geometry pixels ranked by luminance, in [0, 1]
+    float highFraction;  // (`--exposure-percentiles` / 100)
+    uint pad;
 };
 
 // Reflective shadow maps (src/rsm): one RSM layer per shadow layer that has one.

@@ -1,9 +1,49 @@
 #include "lighting/lighting_options.h"
 
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
 namespace penumbra {
 namespace {
 
 using namespace change;
+
+// `--exposure-percentiles LOW,HIGH`: two numbers in [0, 100], LOW below HIGH.
+void parseExposurePercentiles(LightingSettings& s, const std::string& text) {
+    const size_t comma = text.find(',');
+    double v[2] = {0.0, 0.0};
+    for (int k = 0; k < 2; ++k) {
+        const std::string part = k == 0 ? text.substr(0, comma) : text.substr(comma + 1);
+        size_t used = 0;
+        try {
+            v[k] = std::stod(part, &used);
+        } catch (const std::exception&) {
+            used = 0;
+        }
+        if (comma == std::string::npos || used == 0 || used != part.size() || !std::isfinite(v[k]))
+            throw std::invalid_argument("expected LOW,HIGH, two numbers in [0, 100]");
+    }
+    if (v[0] < 0.0 || v[1] > 100.0 || v[0] >= v[1])
+        throw std::invalid_argument("expected 0 <= LOW < HIGH <= 100");
+    s.exposureLowPercentile = float(v[0]), s.exposureHighPercentile = float(v[1]);
+}
+
+void addExposureRow(OptionTableBuilder<LightingSettings>& t) {
+    using S = LightingSettings;
+    OptionRow& row = t.text(
+        "--exposure-percentiles", "exposure_percentiles", [](S& s) -> auto& { return s.exposureLowPercentile; },
+        [](const S& s) {
+            return std::vector<std::string>{formatOptionNumber(s.exposureLowPercentile) + "," +
+                                            formatOptionNumber(s.exposureHighPercentile)};
+        },
+        parseExposurePercentiles, kFrame,
+        "What {frame.exposure} auto meters: the mean log luminance of the geometry pixels ranked between these "
+        "percentiles (0 to 100) maps to middle grey; the darkest (hard shadows) and the brightest (highlights) "
+        "do not move the exposure. 0,100: the log-average of all of them");
+    row.placeholder = "LOW,HIGH";
+    t.alsoWrites([](S& s) -> auto& { return s.exposureHighPercentile; });
+}
 
 OptionTable makeTable() {
     using S = LightingSettings;
@@ -25,6 +65,7 @@ OptionTable makeTable() {
            "Multiplies the sky's radiance");
     t.real("--sky-rotation", "sky_rotation", [](S& s) -> auto& { return s.sky.rotationDegrees; }, -360.0, 360.0,
            kFrame, "Degrees a sky map turns about +Y, counter-clockwise seen from above");
+    addExposureRow(t);
     return t.build();
 }
 
@@ -35,6 +76,13 @@ const OptionTable& lightingOptions() {
     return table;
 }
 
-void validate(const LightingSettings& s) { checkRanges(lightingOptions(), &s); }
+void validate(const LightingSettings& s) {
+    checkRanges(lightingOptions(), &s);
+    if (!(s.exposureLowPercentile >= 0.0f && s.exposureLowPercentile < s.exposureHighPercentile &&
+          s.exposureHighPercentile <= 100.0f))
+        throw std::invalid_argument(
+            lightingOptions().flagOf<LightingSettings>([](auto& t) -> auto& { return t.exposureLowPercentile; }) +
+            ": expected 0 <= LOW < HIGH <= 100");
+}
 
 }  // namespace penumbra

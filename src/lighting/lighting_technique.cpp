@@ -127,7 +127,9 @@ void LightingTechnique::addOutputPasses(const FrameContext& f) {
     const bool autoExposure = params.autoExposure != 0;
     if (autoExposure && !wasAuto_) exposure_.restart();
     wasAuto_ = autoExposure;
-    tonemap_.addTo(f.graph, params, exposure_.addTo(f.graph, autoExposure));
+    tonemap_.addTo(f.graph, params,
+                   exposure_.addTo(f.graph, autoExposure, settings_.exposureLowPercentile,
+                                   settings_.exposureHighPercentile));
 }
 
 }  // namespace penumbra
