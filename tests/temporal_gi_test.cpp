@@ -143,6 +143,22 @@ TEST_F(TemporalGiTest, ALightsJumpRestartsTheHistoryWithTheSingleFrameEstimate) 
     EXPECT_GT(largestRelativeDifference(before, single), 0.2) << "the light's change shows";
 }
 
+TEST_F(TemporalGiTest, AnotherGiModeRestartsTheHistory) {
+    // Four RSM frames, then LPV through Renderer::apply (as the viewer and eval switch modes): the
+    // LPV frame is LPV's single-frame estimate, with nothing of the RSM's history in it.
+    const Scene scene = makeBuiltinScene("cornell");
+    RenderSettings s = exactRsm();
+    TestRenderer r(ctx(), scene, s);
+    for (int n = 0; n < 4; ++n) r.render(FrameInputs{scene.cameras[0], scene.lights});
+    const std::vector<float> rsm = r.readHdr();
+    s.gi = GiMode::Lpv;
+    r.apply(s);
+    r.render(FrameInputs{scene.cameras[0], scene.lights});
+    const std::vector<float> single = singleFrame(scene, s, FrameInputs{scene.cameras[0], scene.lights});
+    EXPECT_LE(largestRelativeDifference(r.readHdr(), single), 1e-6);
+    EXPECT_GT(largestRelativeDifference(rsm, single), 0.05) << "the two modes differ";
+}
+
 // The square at y = 1 slides along x at 1 m/s over the ground under a still camera, the frames 0.2 s
 // apart (so that it uncovers a band of a few pixels); a constant
 // ambient irradiance goes from 1 to 3 between the two frames. In the second frame a pixel whose

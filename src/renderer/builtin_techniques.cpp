@@ -48,7 +48,7 @@ bool occupancyUsed(const RenderSettings& s) {
 // The GI techniques' settings in one string (their option rows' values): the temporal history
 // restarts when they change, since it holds another estimator's frames.
 std::string giEstimator(const RenderSettings& s) {
-    std::string key;
+    std::string key = std::to_string(int(s.gi)) + ';';  // another GI mode is another estimator
     for (const OptionRow& row : rsmOptions().rows) key += row.value(&s.rsm) + ';';
     for (const OptionRow& row : lpvOptions().rows) key += row.value(&s.lpv) + ';';
     return key;
