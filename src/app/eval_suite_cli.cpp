@@ -83,7 +83,9 @@ SuiteResult runSunCase(const EvalCliOptions& o, const SuiteScene& sc, const Prep
     RenderSettings base;
     base.width = sc.width;
     base.height = sc.height;
-    r.rows = runEval(ctx, f.scene, f.camera, suiteVariants(base), truth, 1, progressPrinter(progressLine, sc.name));
+    // --frames still frames (32): the figure of what the GI history converges to, as the docs state it.
+    r.rows = runEval(ctx, f.scene, f.camera, suiteVariants(base), truth, o.frames,
+                     progressPrinter(progressLine, sc.name));
     if (sc.name == "cornell") {
         const std::vector<uint8_t> ceiling = downFacingPixels(ctx, f, base);
         r.ceilingRsm = regionRatio(r.rows[0].indirectImage, truth.indirect, ceiling);
@@ -127,7 +129,8 @@ bool runsSky(const EvalCliOptions& o, const SuiteScene& sc) {
 
 void printSunTable(const std::vector<SuiteResult>& results, const EvalCliOptions& o, const vk::Context& ctx) {
     fmt::print("penumbra eval {} on {}: indirect light against the one-bounce path tracer, over the pixels with "
-               "geometry; RSM and LPV at their defaults, hard shadows\n{}", suiteFlag(), ctx.info().name, formatSuiteTable(results));
+               "geometry after {} still frames; RSM and LPV at their defaults, hard shadows\n{}",
+               suiteFlag(), ctx.info().name, o.frames, formatSuiteTable(results));
     for (const SuiteResult& r : results)
         if (r.ceilingLpv >= 0.0)
             fmt::print("{} ceiling, mean indirect / reference's: RSM {:.2f}, LPV {:.2f}\n", r.scene, r.ceilingRsm,
