@@ -24,6 +24,7 @@
 #include "rsm/rsm_flux.h"
 #include "rsm/rsm_gather.h"
 #include "rsm/rsm_options.h"
+#include "rsm/rsm_pass.h"
 #include "sky_light/sky_light_technique.h"
 #include "temporal_gi/temporal_gi_technique.h"
 #include "shadow/shadow_options.h"
@@ -300,7 +301,9 @@ std::vector<Demand> frameDemands(const vk::DeviceLimits& lim, const RenderSettin
     // The HDR image (RGBA32F) is the largest single image; the rest: G-buffer (albedo 4, normal 8, depth
     // 4; the visibility path: albedo 8 and IDs 4), LDR 4, the HDR read-back 16, GI irradiance 16 (+ lists),
     // shadow mask 4 per shadowed light.
-    const uint64_t perPixel = 48 + 4 * uint64_t(layers.shadowedLights) + (s.cameraPath == CameraPath::Visibility ? 8 : 0);
+    const uint64_t gbuffer = 4 + 8 + 4, ldr = 4, hdrReadBack = 16, irradiance = 16;
+    const uint64_t perPixel = gbuffer + ldr + hdrReadBack + irradiance + 4 * uint64_t(layers.shadowedLights) +
+                              (s.cameraPath == CameraPath::Visibility ? 8 : 0);
     d.push_back({Knob::Width, w, 1, fmt::format("the {}x{} HDR image (RGBA32F)", w, h),
                  [=](uint64_t v) { return v * h * vk::texelBytes(LightingPass::kHdrFormat); }});
     d.push_back({Knob::Width, w, 1, fmt::format("the {}x{} frame's other images ({} bytes per pixel)", w, h, perPixel),
@@ -339,8 +342,9 @@ std::vector<Demand> frameDemands(const vk::DeviceLimits& lim, const RenderSettin
                          [=](uint64_t r) { return ComputeRaster::depthIdBytes(r * r, uint32_t(rsmLayers)); }, true});
     }
     if (s.gi == GiMode::Rsm)
-        d.push_back({Knob::RsmRes, s.rsm.resolution, 8, fmt::format("the RSM ({} layer(s), 16 bytes per texel)", rsmLayers),
-                     [=](uint64_t r) { return r * r * 16 * rsmLayers; }});
+        d.push_back({Knob::RsmRes, s.rsm.resolution, 8,
+                     fmt::format("the RSM ({} layer(s), {} bytes per texel)", rsmLayers, RsmPass::texelBytes()),
+                     [=](uint64_t r) { return r * r * RsmPass::texelBytes() * rsmLayers; }});
     if (s.gi == GiMode::Rsm && s.rsm.far == RsmFar::Flux)
         d.push_back({Knob::RsmRes, s.rsm.resolution, 8, fmt::format("the RSM's flux CDF ({} layer(s))", rsmLayers),
                      [=](uint64_t r) { return RsmFluxSampler::cdfBytes(uint32_t(r), uint32_t(rsmLayers)); }, true});

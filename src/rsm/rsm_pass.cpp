@@ -22,6 +22,11 @@ RsmPass::RsmPass(vk::Allocator& alloc, SceneGpu& scene, const RsmSettings& setti
     setLayers({}, 0);
 }
 
+uint64_t RsmPass::texelBytes() {
+    return vk::texelBytes(kDepthFormat) + vk::texelBytes(kNormalFormat) + vk::texelBytes(kFluxFormat) +
+           vk::texelBytes(kVplFormat);
+}
+
 void RsmPass::setLayers(const std::vector<RsmLayerSource>& layers, uint32_t slot) {
     sources_ = layers;
     const uint32_t n = std::max<uint32_t>(1, uint32_t(layers.size()));
@@ -29,10 +34,10 @@ void RsmPass::setLayers(const std::vector<RsmLayerSource>& layers, uint32_t slot
     const VkImageUsageFlags target =
         VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT | VK_IMAGE_USAGE_STORAGE_BIT;
     if (!depth_ || depth_.layers() != n) {
-        depth_ = vk::Image(alloc_, {VK_FORMAT_R32_SFLOAT, r, r, n, target, "rsm-depth", 1, true});
-        normal_ = vk::Image(alloc_, {VK_FORMAT_R16G16_SNORM, r, r, n, target, "rsm-normal", 1, true});
-        flux_ = vk::Image(alloc_, {VK_FORMAT_R16G16B16A16_SFLOAT, r, r, n, target, "rsm-flux", 1, true});
-        vpls_ = vk::Image(alloc_, {VK_FORMAT_R32G32B32A32_UINT, r, r, n, target, "rsm-vpls", 1, true});
+        depth_ = vk::Image(alloc_, {kDepthFormat, r, r, n, target, "rsm-depth", 1, true});
+        normal_ = vk::Image(alloc_, {kNormalFormat, r, r, n, target, "rsm-normal", 1, true});
+        flux_ = vk::Image(alloc_, {kFluxFormat, r, r, n, target, "rsm-flux", 1, true});
+        vpls_ = vk::Image(alloc_, {kVplFormat, r, r, n, target, "rsm-vpls", 1, true});
         layerTable_ = vk::BufferRing(alloc_, sizeof(gpu::GpuRsmLayer) * n, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT,
                                      "rsm-layers");
     }

@@ -28,6 +28,10 @@ struct RsmLayerSource {
 
 class RsmPass {
 public:
+    static constexpr VkFormat kDepthFormat = VK_FORMAT_R32_SFLOAT, kNormalFormat = VK_FORMAT_R16G16_SNORM,
+                              kFluxFormat = VK_FORMAT_R16G16B16A16_SFLOAT, kVplFormat = VK_FORMAT_R32G32B32A32_UINT;
+    // What one texel of one layer holds across the four images (the device budget's figure).
+    static uint64_t texelBytes();
     // `idResolution`: the shadow map's, which the ID layers have.
     RsmPass(vk::Allocator& alloc, SceneGpu& scene, const RsmSettings& settings, uint32_t idResolution);
 
