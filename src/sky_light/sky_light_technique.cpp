@@ -85,27 +85,23 @@ void SkyLightTechnique::addPasses(const FrameContext& f) {
     const TraceKey key{f.uniforms.viewProj, voxels ? voxels->generation : 0};
     // A new view traces every receiver; geometry that moves under a still view, one texel of each
     // 2x2 block a frame, so that its shadow on the sky catches up over four frames.
+    const bool fullTrace = !cached_ || key.viewProj != traced_.viewProj;
+    if (fullTrace) stalePhases_ = 0;
+    else if (key.occupancy != traced_.occupancy) stalePhases_ = kTracePhases;
+    if (!fullTrace && stalePhases_ == 0 && sky->generation == weighedSky_) return;
     gpu::SkyLightPush push = constants(*sky);
     push.tracePhase = SKY_TRACE_EVERY_TEXEL;
-    if (!cached_ || forgotten_ || key.viewProj != traced_.viewProj) {
-        stalePhases_ = 0;
-    } else {
-        if (key.occupancy != traced_.occupancy || geometryMoved_) stalePhases_ = kTracePhases;
-        if (stalePhases_ == 0 && sky->generation == weighedSky_) return;
-        if (stalePhases_ > 0) {
-            push.tracePhase = nextPhase_;
-            nextPhase_ = (nextPhase_ + 1) % kTracePhases;
-            --stalePhases_;
-        }
+    if (stalePhases_ > 0) {
+        push.tracePhase = nextPhase_;
+        nextPhase_ = (nextPhase_ + 1) % kTracePhases;
+        --stalePhases_;
     }
-    const bool trace = !cached_ || forgotten_ || key != traced_ || push.tracePhase != SKY_TRACE_EVERY_TEXEL;
     const ImageHandle clearRays = f.graph.import(clearRays_), share = f.graph.import(share_);
     const ImageHandle filtered = f.graph.import(filtered_);
-    if (trace) addTrace(f.graph, clearRays, push);
+    if (fullTrace || push.tracePhase != SKY_TRACE_EVERY_TEXEL) addTrace(f.graph, clearRays, push);
     addShareFilters(f.graph, clearRays, share, filtered, push);
     addUpsample(f.graph, filtered, out, push);
     traced_ = key;
-    geometryMoved_ = forgotten_ = false;
     weighedSky_ = sky->generation;
     cached_ = true;
 }

@@ -27,8 +27,11 @@ public:
     SkyLightTechnique(const TechniqueBuild& b, const SkyLightSettings& s);
     const char* name() const override { return "sky-light"; }
     void addPasses(const FrameContext& f) override;
-    // Moved geometry: traced again over four frames, at once where a receiver changed.
-    void invalidateCaches(CacheDrop why) override { (why == CacheDrop::Moved ? geometryMoved_ : forgotten_) = true; }
+    // Moved geometry rebuilds the voxels (a new generation): traced again over four frames, at once
+    // where a receiver changed. Cold frames trace everything.
+    void invalidateCaches(CacheDrop why) override {
+        if (why == CacheDrop::All) cached_ = false;
+    }
     void setSettings(const SkyLightSettings& s);
     static uint64_t bytes(uint64_t width, uint64_t height, uint32_t traceStep);
     vk::Image& irradiance() { return irradiance_; }  // RGBA32F, for read-back
@@ -38,7 +41,6 @@ private:
     struct TraceKey {
         glm::mat4 viewProj{0.0f};
         uint64_t occupancy = UINT64_MAX;
-        bool operator==(const TraceKey&) const = default;
     };
     void addTrace(FrameGraph& graph, ImageHandle clearRays, const gpu::SkyLightPush& push);
     void addShareFilters(FrameGraph& graph, ImageHandle clearRays, ImageHandle share, ImageHandle filtered,
@@ -57,7 +59,6 @@ private:
     TraceKey traced_;
     uint64_t weighedSky_ = UINT64_MAX;
     uint32_t stalePhases_ = 0, nextPhase_ = 0;  // texel phases still to trace after the geometry moved
-    bool geometryMoved_ = false, forgotten_ = false;
     bool cached_ = false;
 };
 
