@@ -2,6 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+#include <mutex>
+#include <tuple>
 #include <numeric>
 #include <stdexcept>
 
@@ -49,6 +52,33 @@ void forEachTexelPoint(const SkyTable& t, F&& f) {
                     f(r * t.width + c, layoutDirection(cosTheta, phi), dCos * dPhi);
                 }
     }
+}
+
+// A map direction turned `rotation` radians about +Y into the world.
+glm::vec3 turnToWorld(const glm::vec3& map, float rotation) {
+    const float c = std::cos(rotation), s = std::sin(rotation);
+    return {c * map.x + s * map.z, map.y, -s * map.x + c * map.z};
+}
+
+// The integral of each SH basis function (world axes) over each texel of a table layout turned by
+// `rotation`, at forEachTexelPoint's points: a table's projection is then one weighted sum per
+// texel. The last layout's weights are kept, since a moving sun makes a new sky every frame.
+using ShTexelWeights = std::vector<std::array<double, 9>>;
+std::shared_ptr<const ShTexelWeights> shTexelWeights(const SkyTable& layout, float rotation) {
+    static std::mutex mutex;
+    static std::shared_ptr<const ShTexelWeights> kept;
+    static std::tuple<uint32_t, uint32_t, float> keptLayout;
+    const std::lock_guard<std::mutex> lock(mutex);
+    const auto key = std::make_tuple(layout.width, layout.height, rotation);
+    if (kept && keptLayout == key) return kept;
+    auto weights = std::make_shared<ShTexelWeights>(size_t(layout.width) * layout.height);
+    forEachTexelPoint(layout, [&](uint32_t texel, const glm::dvec3& d, double solidAngle) {
+        const std::array<double, 9> y = skyShBasis(glm::dvec3(turnToWorld(glm::vec3(d), rotation)));
+        for (int k = 0; k < 9; ++k) (*weights)[texel][k] += y[k] * solidAngle;
+    });
+    kept = std::move(weights);
+    keptLayout = key;
+    return kept;
 }
 
 }  // namespace
@@ -121,10 +151,7 @@ glm::vec3 Sky::toMap(const glm::vec3& world) const {
     return {c * world.x - s * world.z, world.y, s * world.x + c * world.z};
 }
 
-glm::vec3 Sky::toWorld(const glm::vec3& map) const {
-    const float c = std::cos(rotation_), s = std::sin(rotation_);
-    return {c * map.x + s * map.z, map.y, -s * map.x + c * map.z};
-}
+glm::vec3 Sky::toWorld(const glm::vec3& map) const { return turnToWorld(map, rotation_); }
 
 uint32_t Sky::texelOf(const glm::vec3& d) const {
     const double theta = std::acos(std::clamp(double(d.y), -1.0, 1.0));
@@ -154,12 +181,11 @@ void Sky::scale(float factor) {
 std::array<glm::dvec3, 9> Sky::sh() const {
     std::array<glm::dvec3, 9> out{};
     if (!enabled()) return out;
-    forEachTexelPoint(table_, [&](uint32_t texel, const glm::dvec3& d, double solidAngle) {
-        const glm::dvec3 world(toWorld(glm::vec3(d)));
-        const std::array<double, 9> y = skyShBasis(world);
-        const glm::dvec3 l = glm::dvec3(table_.texels[texel]) * solidAngle;
-        for (int k = 0; k < 9; ++k) out[k] += l * y[k];
-    });
+    const std::shared_ptr<const ShTexelWeights> weights = shTexelWeights(table_, rotation_);
+    for (size_t texel = 0; texel < table_.texels.size(); ++texel) {
+        const glm::dvec3 l(table_.texels[texel]);
+        for (int k = 0; k < 9; ++k) out[k] += l * (*weights)[texel][k];
+    }
     return out;
 }
 
