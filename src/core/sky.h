@@ -107,9 +107,8 @@ private:
     glm::vec3 uniform_{0.0f};
     struct Perez { double a, b, c, d, e; };
     std::array<Perez, 3> perez_{};   // Y, x, y
-    glm::dvec3 zenith_{0.0};         // Yz (cd/m^2), xz, yz
+    glm::dvec3 zenith_{0.0};         // Yz (cd/m^2), xz, yz, each over its Perez value at the zenith
     glm::vec3 toSun_{0, 1, 0};
-    double sunZenith_ = 0.0;
     double analyticScale_ = 1.0;     // cd/m^2 -> renderer radiance
     float scale_ = 1.0f;
     float rotation_ = 0.0f;

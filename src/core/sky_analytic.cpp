@@ -68,7 +68,6 @@ Sky Sky::analytic(float turbidity, const glm::vec3& toSun, float sunIlluminance)
     s.toSun_ = glm::normalize(toSun);
     const double t = turbidity;
     const double theta = modelSunZenith(s.toSun_);
-    s.sunZenith_ = theta;
     s.perez_[0] = {0.1787 * t - 1.4630, -0.3554 * t + 0.4275, -0.0227 * t + 5.3251, 0.1206 * t - 2.5771,
                    -0.0670 * t + 0.3703};
     s.perez_[1] = {-0.0193 * t - 0.2592, -0.0665 * t + 0.0008, -0.0004 * t + 0.2125, -0.0641 * t - 0.8989,
@@ -85,6 +84,10 @@ Sky Sky::analytic(float turbidity, const glm::vec3& toSun, float sunIlluminance)
                       t * (-0.04214 * th3 + 0.08970 * th2 - 0.04153 * theta + 0.00516) +
                       (0.15346 * th3 - 0.26756 * th2 + 0.06670 * theta + 0.26688);
     s.zenith_ = {zenithLuminance, xz, yz};
+    for (int k = 0; k < 3; ++k) {  // the Perez value at the zenith, once, not at every direction
+        const Perez& p = s.perez_[k];
+        s.zenith_[k] /= perez(p.a, p.b, p.c, p.d, p.e, 1.0, theta);
+    }
     s.analyticScale_ = double(sunIlluminance) / preethamSunIlluminance(t, theta);
     s.buildTable(256, 128);
     return s;
@@ -101,8 +104,7 @@ glm::vec3 Sky::analyticRadiance(const glm::vec3& direction) const {
     glm::dvec3 yxy;
     for (int k = 0; k < 3; ++k) {
         const Perez& p = perez_[k];
-        yxy[k] = zenith_[k] * perez(p.a, p.b, p.c, p.d, p.e, cosTheta, gamma) /
-                 perez(p.a, p.b, p.c, p.d, p.e, 1.0, sunZenith_);
+        yxy[k] = zenith_[k] * perez(p.a, p.b, p.c, p.d, p.e, cosTheta, gamma);
     }
     const double luminance = yxy[0], x = yxy[1], y = yxy[2];
     const glm::dvec3 xyz{x * luminance / y, luminance, (1.0 - x - y) * luminance / y};
