@@ -11,6 +11,7 @@
 #include "core/lights.glsl"
 #include "core/reconstruct.glsl"
 #include "shared/hash.glsl"
+#include "shared/luminance.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -26,6 +27,7 @@ layout(set = 0, binding = RSM_GATHER_IRRADIANCE, rgba32f) uniform writeonly imag
 layout(set = 0, binding = RSM_GATHER_PIXEL_LIST, std430) readonly buffer PixelList { uvec4 header; uvec2 pixels[]; } list;
 layout(set = 0, binding = RSM_GATHER_VPLS) uniform usampler2DArray rsmVpls;  // depth, normal and flux in one texel
 layout(set = 0, binding = RSM_GATHER_FLUX_DRAWS, std430) readonly buffer FluxDrawBuffer { uvec4 blocks[]; } drawn;  // shared/types.h
+layout(set = 0, binding = RSM_GATHER_GRADIENT_SAMPLES, std430) buffer GradientSamples { GpuGradientSample gradientSamples[]; };
 layout(push_constant) uniform Push { RsmPush pc; };
 
 #include "rsm/vpl.glsl"
@@ -345,7 +347,7 @@ vec3 gather(vec3 x, vec3 n, bool hair, uint lane, uint lanes) {
             c *= weight;
 #ifdef RSM_VOXEL_VISIBILITY
             if (i % stride == 0u) {
-                const float lum = dot(c, vec3(0.2126, 0.7152, 0.0722));
+                const float lum = luminance(c);
                 tested += vec2(lum, lum * voxelVisibility(layer, t, x, n, hair));
             }
 #endif
@@ -354,6 +356,49 @@ vec3 gather(vec3 x, vec3 n, bool hair, uint lane, uint lanes) {
         e += tested.x > 0.0 ? layerLight * (tested.y / tested.x) : layerLight;
     }
     return e;
+}
+
+// A receiver: a surface point, its normal (facing the eye) or a strand's tangent.
+struct Receiver {
+    vec3 x;
+    vec3 n;
+    bool hair;
+    bool exists;
+};
+
+Receiver pixelReceiver(ivec2 pixel) {
+    Receiver r = Receiver(vec3(0.0), vec3(0.0), false, false);
+    const float depth = texelFetch(gDepth, pixel, 0).r;
+    if (depth >= 1.0) return r;
+    r.x = pixelWorldPosition(frame, pixel, depth);
+    const vec4 g = texelFetch(gNormal, pixel, 0);
+    r.n = normalize(g.xyz);
+    r.hair = g.w > 1.5;  // SHADING_HAIR (--translucency off): n is the strand's tangent
+    if (!r.hair && dot(r.n, frame.eye - r.x) < 0.0) r.n = -r.n;
+    r.exists = true;
+    return r;
+}
+
+// RSM_GATHER_LOWRES: the cell pc.gradientPhase - 1 of each 2x2 block keeps its receiver and its
+// light for the next frame's gradient (the block's last cell where the grid ends inside it).
+void keepGradientSample(ivec2 cell, Receiver r, vec3 e) {
+    if (pc.gradientPhase == 0u) return;
+    const ivec2 block = cell / 2, offset = ivec2((pc.gradientPhase - 1u) & 1u, (pc.gradientPhase - 1u) >> 1u);
+    if (cell != min(block * 2 + offset, ivec2(pc.width, pc.height) - 1)) return;
+    const uint index = uint(block.y) * ((pc.width + 1u) / 2u) + uint(block.x);
+    gradientSamples[index] = GpuGradientSample(r.x, r.exists ? luminance(e) : -1.0, r.n, r.hair ? 1u : 0u);
+}
+
+// RSM_GATHER_GRADIENT: the change of a kept sample's luminance, written where its point is seen now
+// (forward projection: the samples' image was cleared).
+void storeGradient(Receiver r, float before, vec3 e) {
+    const vec4 c = frame.viewProj * vec4(r.x, 1.0);
+    if (c.w <= 0.0) return;
+    const vec2 uv = c.xy / c.w * 0.5 + 0.5;
+    if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) return;
+    const ivec2 texel = ivec2(uv * vec2(frame.width, frame.height)) / int(pc.lowResFactor * pc.gradientPhase);
+    const float now = luminance(e);
+    imageStore(outIrradiance, texel, vec4(now - before, max(now, before), 1.0, 0.0));
 }
 
 // Receivers share out their samples: `lanes` (push sampling.w: 1, 2, 4 or 8) invocations of a
@@ -377,19 +422,19 @@ void main() {
         out_ = ivec2(gl_WorkGroupID.xy) * ivec2(8, perGroup / 8u) + ivec2(receiver % 8u, receiver / 8u);
         valid = all(lessThan(out_, ivec2(pc.width, pc.height)));
     }
-    ivec2 pixel = out_;
-    if (pc.mode == RSM_GATHER_LOWRES)  // the cell's representative (centre) full-res pixel
-        pixel = min(out_ * int(pc.lowResFactor) + int(pc.lowResFactor) / 2, ivec2(frame.width, frame.height) - 1);
-    vec3 e = vec3(0.0);
-    float depth = valid ? texelFetch(gDepth, pixel, 0).r : 1.0;
-    if (depth < 1.0) {
-        vec3 x = pixelWorldPosition(frame, pixel, depth);
-        vec4 g = texelFetch(gNormal, pixel, 0);
-        vec3 n = normalize(g.xyz);
-        bool hair = g.w > 1.5;  // SHADING_HAIR (--translucency off): n is the strand's tangent
-        if (!hair && dot(n, frame.eye - x) < 0.0) n = -n;
-        e = gather(x, n, hair, lane, lanes);
+    Receiver r = Receiver(vec3(0.0), vec3(0.0), false, false);
+    float before = -1.0;  // RSM_GATHER_GRADIENT: the kept sample's luminance last frame
+    if (valid && pc.mode == RSM_GATHER_GRADIENT) {
+        const GpuGradientSample s = gradientSamples[uint(out_.y) * pc.width + uint(out_.x)];
+        before = s.luminance;
+        r = Receiver(s.position, s.normal, s.hair != 0u, s.luminance >= 0.0);
+    } else if (valid) {
+        ivec2 pixel = out_;
+        if (pc.mode == RSM_GATHER_LOWRES)  // the cell's representative (centre) full-res pixel
+            pixel = min(out_ * int(pc.lowResFactor) + int(pc.lowResFactor) / 2, ivec2(frame.width, frame.height) - 1);
+        r = pixelReceiver(pixel);
     }
+    vec3 e = r.exists ? gather(r.x, r.n, r.hair, lane, lanes) : vec3(0.0);
     if (lanes > 1u) {
         laneSums[local] = e;
         barrier();
@@ -399,5 +444,11 @@ void main() {
         }
         e = laneSums[local];
     }
-    if (valid && lane == 0u) imageStore(outIrradiance, out_, vec4(e, 1.0));
+    if (!valid || lane != 0u) return;
+    if (pc.mode == RSM_GATHER_GRADIENT) {
+        if (r.exists) storeGradient(r, before, e);
+        return;
+    }
+    imageStore(outIrradiance, out_, vec4(e, 1.0));
+    if (pc.mode == RSM_GATHER_LOWRES) keepGradientSample(out_, r, e);
 }

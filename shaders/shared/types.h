@@ -217,6 +217,7 @@ struct GpuRsmLayer {
 #define RSM_GATHER_LOWRES 1   // one pixel per low-resolution cell, sampled pattern
 #define RSM_GATHER_LIST 2     // the pixels listed by the interpolation pass, sampled pattern
 #define RSM_GATHER_ALL_TEXELS 3  // every full-resolution pixel, every RSM texel (exact reference)
+#define RSM_GATHER_GRADIENT 4  // last frame's gradient samples again, with their pattern and this frame's RSM
 
 // How the gather tests whether a VPL sees its receiver (--rsm-visibility).
 #define RSM_VISIBILITY_NONE 0    // every VPL lights every receiver it faces
@@ -244,7 +245,20 @@ struct RsmPush {
     uint farByFlux;           // 1: the far half of the samples drawn by flux (rsm/flux_draw.comp)
     uint shiftedRadii;        // 1: radii shifted per receiver (pipelines with RSM_SHIFTED_RADII)
     uint visibilityPoints;    // points a segment is tested at (RSM_VISIBILITY_VIEWS)
-    uint pad1;
+    // RSM_GATHER_LOWRES: 1 + which cell of each 2x2 block keeps its receiver as a gradient sample
+    // (0: none kept); RSM_GATHER_GRADIENT: the gradient image's texel in low-resolution cells (2).
+    uint gradientPhase;
+};
+
+// A receiver of the low-resolution RSM gather kept for the next frame's temporal gradient (Schied et
+// al. 2018): the next frame gathers at it again with this frame's pattern and its own RSM, so the
+// difference of the two luminances is the change of the light alone, free of the pattern's noise.
+// One per 2x2 block of low-resolution cells.
+struct GpuGradientSample {
+    vec3 position;    // world space
+    float luminance;  // of its irradiance this frame; < 0: no receiver
+    vec3 normal;      // as gathered (facing the eye), or a strand's tangent
+    uint hair;        // 1: a hair strand
 };
 
 // The flux-drawn VPLs of --rsm-far flux (rsm/flux_draw.comp), per layer a block of RSM_FLUX_BLOCK
@@ -272,7 +286,11 @@ struct GiAccumulatePush {
     float minWeight;     // the least weight of a new frame: a history spans at most 1 / minWeight frames
     float changeWeight;  // the least weight of this frame, from how much the lights changed since the last
     uint historyValid;   // 1: the history holds the previous frame
+    uint changePixels;   // pixels per texel of the detected change (names::kGiChange); 0: none this frame
+    float lagTolerance;  // a detected change of c per frame weighs the new frame c / lagTolerance
     uint pad0;
+    uint pad1;
+    uint pad2;
 };
 
 // temporal_gi/filter.comp: one iteration of the edge-aware a-trous filter.
@@ -348,14 +366,17 @@ static_assert(sizeof(GpuRsmLayer) == 160 && offsetof(GpuRsmLayer, texelSize) == 
               offsetof(GpuRsmLayer, cascade) == 140 && offsetof(GpuRsmLayer, radiusScale) == 148);
 static_assert(sizeof(RsmPush) == 80 && offsetof(RsmPush, width) == 16 && offsetof(RsmPush, normalThreshold) == 32 &&
               offsetof(RsmPush, visibility) == 48 && offsetof(RsmPush, farByFlux) == 64 &&
-              offsetof(RsmPush, visibilityPoints) == 72);
+              offsetof(RsmPush, visibilityPoints) == 72 && offsetof(RsmPush, gradientPhase) == 76);
+static_assert(sizeof(GpuGradientSample) == 32 && offsetof(GpuGradientSample, luminance) == 12 &&
+              offsetof(GpuGradientSample, normal) == 16 && offsetof(GpuGradientSample, hair) == 28);
 static_assert(sizeof(RsmFluxPush) == 32 && offsetof(RsmFluxPush, seed) == 16);
 static_assert(sizeof(RsmResolvePush) == 16 && offsetof(RsmResolvePush, idResolution) == 4);
 static_assert(sizeof(LpvPush) == 128 && offsetof(LpvPush, vplCount) == 16 && offsetof(LpvPush, occlusion) == 32 &&
               offsetof(LpvPush, sliceAxis) == 48 && offsetof(LpvPush, cascades) == 64);
 static_assert(sizeof(TonemapPush) == 16 && offsetof(TonemapPush, mode) == 8);
 static_assert(sizeof(AutoExposureState) == 16 && sizeof(AutoExposurePush) == 16);
-static_assert(sizeof(GiAccumulatePush) == 16 && offsetof(GiAccumulatePush, historyValid) == 8);
+static_assert(sizeof(GiAccumulatePush) == 32 && offsetof(GiAccumulatePush, historyValid) == 8 &&
+              offsetof(GiAccumulatePush, lagTolerance) == 16);
 static_assert(sizeof(GiFilterPush) == 16 && offsetof(GiFilterPush, luminanceSigma) == 8);
 static_assert(offsetof(FrameUniforms, eye) == 256 && offsetof(FrameUniforms, farPlane) == 268 &&
               offsetof(FrameUniforms, width) == 272 && offsetof(FrameUniforms, giValid) == 288 &&

@@ -16,6 +16,7 @@
 #define GI_ACCUMULATE_OUT_GEOMETRY 9
 // motion.glsl's three (visibility IDs, drawn triangles, instances) from here on.
 #define GI_ACCUMULATE_MOTION_FIRST 10
+#define GI_ACCUMULATE_CHANGE 13  // names::kGiChange's image (a 1x1 zero when none is published)
 
 // filter.comp
 #define GI_FILTER_FRAME 0

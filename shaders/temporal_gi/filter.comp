@@ -12,6 +12,7 @@
 // pixel coordinates, so no tap is unprojected.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
+#include "shared/luminance.glsl"
 #include "shared/octahedral.glsl"
 #include "temporal_gi/bindings.h"
 #include "core/reconstruct.glsl"
@@ -27,7 +28,6 @@ layout(push_constant) uniform Push { GiFilterPush pc; };
 const float kFramesForVariance = 4.0;
 const float kNormalPower = 64.0;
 
-float luminance(vec3 c) { return dot(c, vec3(0.2126, 0.7152, 0.0722)); }
 
 // rgb and the standard deviation of the luminance (< 0: unknown) at pixel q.
 vec4 inputAt(ivec2 q) {

@@ -69,6 +69,14 @@ struct GiAccumulation {
     uint32_t frameSeed = 0;  // nonzero, different each frame, while accumulating
 };
 
+// How much a GI technique's light changed since the last frame, where the technique can measure it
+// (the RSM's temporal gradients): published with the image "gi.change", whose texel covers
+// `pixels` x `pixels` pixels and holds (r) the change of a sample's luminance, (g) the larger of its
+// two luminances and (b) 1 where a sample was measured. The temporal-GI module weighs its history by it.
+struct GiChange {
+    uint32_t pixels = 0;
+};
+
 // The sky, published by the lighting module's update for every technique that lights with it or
 // bounces its light: its radiance as order-2 spherical harmonics (world space, +Y up, the user's
 // scale applied). `generation` changes whenever the sky does, so cached sky visibility restarts.
@@ -106,6 +114,8 @@ inline constexpr HostName<DeepShadowLights> kDeepShadowLights{"dsm.lights"};
 inline constexpr ImageName kIrradianceContribution{"gi.contribution"};
 inline constexpr ImageName kIrradiance{"gi.irradiance"};
 inline constexpr HostName<GiAccumulation> kGiAccumulation{"gi.accumulation"};
+inline constexpr ImageName kGiChangeImage{"gi.change"};
+inline constexpr HostName<GiChange> kGiChange{"gi.change"};
 
 // The reflective shadow map that GI techniques inject or gather from ("rsm.depth", "rsm.normal",
 // "rsm.flux", "rsm.vpls", "rsm.layers") and its layer count this frame.

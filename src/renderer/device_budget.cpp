@@ -311,6 +311,10 @@ std::vector<Demand> frameDemands(const vk::DeviceLimits& lim, const RenderSettin
     if (s.gi == GiMode::Rsm && s.rsm.mode == RsmMode::Interpolated)
         d.push_back({Knob::Width, w, 1, fmt::format("the RSM gather's pixel list ({}x{})", w, h),
                      [=](uint64_t v) { return RsmGather::pixelListBytes(uint32_t(v), uint32_t(h)); }, true});
+    if (s.gi == GiMode::Rsm && s.rsm.mode == RsmMode::Interpolated && s.giTemporal)
+        d.push_back({Knob::Width, w, 1, fmt::format("the RSM's temporal gradients ({}x{})", w, h), [=](uint64_t v) {
+                         return RsmGather::gradientBytes(uint32_t(v), uint32_t(h), s.rsm.lowResFactor);
+                     }});
     if (s.lighting.sky.kind != SkyKind::None)  // an unresolved auto counted as a sky: the estimate stays an upper bound
         d.push_back({Knob::Width, w, 1, fmt::format("the sky light's {}x{} visibility and irradiance", w, h),
                      [=](uint64_t v) { return SkyLightTechnique::bytes(v, h, s.skyLight.traceStep); }});

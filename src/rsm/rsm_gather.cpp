@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "rsm/bindings.h"
+#include "vk/format_bytes.h"
 
 namespace penumbra {
 namespace {
@@ -23,8 +24,10 @@ constexpr float kWholeMapRadius = 1.41421356f;
 // and the fallback list (a few percent of the pixels) are too few threads, one per receiver, to hide
 // the samples' memory latency on a large GPU: 4 lanes per receiver hide it, 8 add nothing
 // (docs/techniques/rsm.md). The full-resolution gather has receivers enough.
+// The gradient gathers as the low-resolution gather did, so that a still light gives the same sum bit
+// for bit.
 uint32_t lanesPerReceiver(uint32_t mode) {
-    return mode == RSM_GATHER_LIST || mode == RSM_GATHER_LOWRES ? 4u : 1u;
+    return mode == RSM_GATHER_LIST || mode == RSM_GATHER_LOWRES || mode == RSM_GATHER_GRADIENT ? 4u : 1u;
 }
 
 }  // namespace
@@ -73,7 +76,7 @@ RsmGather::RsmGather(vk::Allocator& alloc, vk::CommandContext& cmd, uint32_t wid
         {RSM_GATHER_RSM_DEPTH, tex},      {RSM_GATHER_RSM_NORMAL, tex},     {RSM_GATHER_RSM_FLUX, tex},
         {RSM_GATHER_LAYERS, ssbo},        {RSM_GATHER_SAMPLES, ssbo},       {RSM_GATHER_IRRADIANCE, img},
         {RSM_GATHER_PIXEL_LIST, ssbo},    {RSM_GATHER_OCCUPANCY, ssbo},     {RSM_GATHER_VPLS, tex},
-        {RSM_GATHER_FLUX_DRAWS, ssbo}};
+        {RSM_GATHER_FLUX_DRAWS, ssbo},    {RSM_GATHER_GRADIENT_SAMPLES, ssbo}};
     gather_ = vk::ComputeKernel(ctx, gather, bindings, sizeof(gpu::RsmPush));
     if (settings.far == RsmFar::Flux && shifted && !voxels)
         gatherFlux_ = vk::ComputeKernel(ctx, "rsm/gather_flux.comp", bindings, sizeof(gpu::RsmPush));
@@ -100,6 +103,14 @@ RsmGather::RsmGather(vk::Allocator& alloc, vk::CommandContext& cmd, uint32_t wid
                                 false, "rsm-fallback-pixels");
         dispatchArgs_ = vk::Buffer(alloc, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT,
                                    false, "rsm-fallback-args");
+        blocksWidth_ = vk::divUp(lowWidth_, 2u);
+        blocksHeight_ = vk::divUp(lowHeight_, 2u);
+        for (vk::Buffer& b : gradientSamples_)
+            b = vk::Buffer(alloc, sizeof(gpu::GpuGradientSample) * blocksWidth_ * blocksHeight_,
+                           VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false, "rsm-gradient-samples");
+        change_ = vk::Image(alloc, {kIrradianceFormat, blocksWidth_, blocksHeight_, 1,
+                                    use | VK_IMAGE_USAGE_TRANSFER_DST_BIT, "rsm-change"});
+        changeTexel_.pixels = 2 * f;
     } else {
         pixelList_ = vk::Buffer(alloc, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false, "rsm-unused-list");
     }
@@ -129,18 +140,27 @@ void RsmGather::setSettings(const RsmSettings& s) {
     framePattern_ = rsmSamplePattern(perFrame);
 }
 
+uint64_t RsmGather::gradientBytes(uint32_t width, uint32_t height, uint32_t lowResFactor) {
+    const uint64_t cells = 2 * std::max(1u, lowResFactor);
+    const uint64_t blocks = (width + cells - 1) / cells * ((height + cells - 1) / cells);
+    return blocks * (2 * sizeof(gpu::GpuGradientSample) + vk::texelBytes(kIrradianceFormat));
+}
+
 // Push constants shared by the gather and interpolation passes; sizes are the low-resolution grid's
-// for RSM_GATHER_LOWRES (which the interpolation reads), the full image's otherwise.
+// for RSM_GATHER_LOWRES (which the interpolation reads), the blocks' for RSM_GATHER_GRADIENT, the
+// full image's otherwise.
 gpu::RsmPush RsmGather::constants(uint32_t mode, uint32_t layers) const {
-    const bool low = mode == RSM_GATHER_LOWRES;
+    const bool low = mode == RSM_GATHER_LOWRES, gradient = mode == RSM_GATHER_GRADIENT;
     gpu::RsmPush pc{};
     pc.mode = mode;
     pc.sampleCount = accumulating_ ? std::min(settings_.frameSamples, settings_.samples) : settings_.samples;
     pc.frameSeed = frameSeed_;
     pc.layerCount = layers;
     pc.lowResFactor = std::max(1u, settings_.lowResFactor);
-    pc.width = low ? lowWidth_ : width_;
-    pc.height = low ? lowHeight_ : height_;
+    pc.width = gradient ? blocksWidth_ : low ? lowWidth_ : width_;
+    pc.height = gradient ? blocksHeight_ : low ? lowHeight_ : height_;
+    if (gradient) pc.sampleCount = kept_.samples, pc.frameSeed = kept_.seed, pc.gradientPhase = 2;
+    if (low && accumulating_) pc.gradientPhase = 1 + uint32_t(framesKept_ % 4);
     pc.rsmResolution = settings_.resolution;
     pc.bilinearVpls = settings_.bilinearVpls ? 1u : 0u;
     pc.normalThreshold = settings_.normalThreshold;
@@ -198,6 +218,12 @@ void RsmGather::addGather(FrameGraph& graph, const char* name, uint32_t mode, Im
                        graph.hasBuffer("occupancy") ? graph.buffer("occupancy") : graph.import(emptyBuffer_))
         .sampled(RSM_GATHER_VPLS, graph.image("rsm.vpls"), point)
         .storageBuffer(RSM_GATHER_FLUX_DRAWS, fluxDraws_ ? graph.buffer("rsm.flux-draws") : graph.import(emptyBuffer_));
+    if (mode == RSM_GATHER_LOWRES && accumulating_)  // keeps this frame's gradient samples
+        pass.storageBuffer(RSM_GATHER_GRADIENT_SAMPLES, graph.import(gradientSamples_[keep_]), Use::StorageWrite);
+    else if (mode == RSM_GATHER_GRADIENT)  // gathers last frame's again
+        pass.storageBuffer(RSM_GATHER_GRADIENT_SAMPLES, graph.import(gradientSamples_[1 - keep_]));
+    else
+        pass.storageBuffer(RSM_GATHER_GRADIENT_SAMPLES, graph.import(emptyBuffer_));
     const BufferHandle args = mode == RSM_GATHER_LIST ? graph.import(dispatchArgs_) : BufferHandle{};
     if (args) pass.use(args, Use::IndirectArgs);
     const gpu::RsmPush pc = constants(mode, layers);
@@ -224,7 +250,11 @@ void RsmGather::addTo(FrameGraph& graph, uint32_t layers, uint32_t slot, const G
     }
     const ImageHandle low = graph.import(low_);
     const BufferHandle list = graph.import(pixelList_), args = graph.import(dispatchArgs_);
+    const uint32_t samples = constants(RSM_GATHER_LOWRES, layers).sampleCount;
+    if (accumulating_ && kept_.valid && kept_.samples == samples) addGradient(graph, layers);
     addGather(graph, "rsm.gather-lowres", RSM_GATHER_LOWRES, low, layers);
+    kept_ = {accumulating_, frameSeed_, samples};
+    if (accumulating_) keep_ = 1 - keep_, ++framesKept_;
 
     graph.pass("rsm.clear-list", PassKind::Transfer).use(list, Use::TransferDst).record([list](PassContext& c) {
         vkCmdFillBuffer(c.cmd, c.buffer(list).handle(), 0, 16, 0);
@@ -255,6 +285,21 @@ void RsmGather::addTo(FrameGraph& graph, uint32_t layers, uint32_t slot, const G
             vkCmdDispatch(c.cmd, 1, 1, 1);
         });
     addGather(graph, "rsm.gather-fallback", RSM_GATHER_LIST, irradiance, layers);
+}
+
+// Temporal gradients: last frame's kept receivers gathered again with their pattern (its seed) and this
+// frame's RSM, into the cleared change image (Schied et al. 2018, "Gradient Estimation for Real-Time
+// Adaptive Temporal Filtering"). The same pattern on the same point gives the same sum while the light
+// stands still, so the difference is the light's change and not the pattern's noise.
+void RsmGather::addGradient(FrameGraph& graph, uint32_t layers) {
+    const ImageHandle change = graph.import(change_);
+    graph.pass("rsm.clear-change", PassKind::Transfer).use(change, Use::TransferDst).record([change](PassContext& c) {
+        const VkClearColorValue zero{};
+        const VkImageSubresourceRange all{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+        vkCmdClearColorImage(c.cmd, c.image(change).handle(), VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, &zero, 1, &all);
+    });
+    addGather(graph, "rsm.gradient", RSM_GATHER_GRADIENT, change, layers);
+    graph.publish(names::kGiChangeImage, change);
 }
 
 double RsmGather::fallbackFraction() {

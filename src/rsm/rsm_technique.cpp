@@ -38,6 +38,7 @@ RsmTechnique::RsmTechnique(const TechniqueBuild& b, const RsmSettings& s, bool g
     : board_(b.board), widestCascadeOnly_(!gather || !s.perCascade),
       pass_(b.alloc, b.scene.meshes(), s, shadowResolution) {
     if (gather) gather_ = std::make_unique<RsmGather>(b.alloc, b.cmd, b.core.width, b.core.height, s);
+    if (gather) b.board.put(names::kGiChange, &gather_->changeTexel(), this);
     if (gather && s.far == RsmFar::Flux) flux_ = std::make_unique<RsmFluxSampler>(b.alloc, s.resolution, s.seed);
     b.board.put(names::kRsmLayerCount, &layerCount_, this);
 }

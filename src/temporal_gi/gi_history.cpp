@@ -34,7 +34,8 @@ GiHistory::GiHistory(vk::Allocator& alloc, uint32_t width, uint32_t height)
                                  {GI_ACCUMULATE_OUT_GEOMETRY, kImg},
                                  {GI_ACCUMULATE_MOTION_FIRST, kTex},
                                  {GI_ACCUMULATE_MOTION_FIRST + 1, kBuf},
-                                 {GI_ACCUMULATE_MOTION_FIRST + 2, kBuf}},
+                                 {GI_ACCUMULATE_MOTION_FIRST + 2, kBuf},
+                                 {GI_ACCUMULATE_CHANGE, kTex}},
                                 sizeof(gpu::GiAccumulatePush));
     nearest_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
 }
@@ -59,13 +60,18 @@ uint64_t GiHistory::bytes(uint64_t width, uint64_t height) {
            (vk::texelBytes(kColorFormat) + vk::texelBytes(kMomentsFormat) + vk::texelBytes(kGeometryFormat));
 }
 
-GiHistoryImages GiHistory::addTo(FrameGraph& graph, ImageHandle current, float minWeight, float changeWeight) {
+GiHistoryImages GiHistory::addTo(FrameGraph& graph, ImageHandle current, const GiBlend& blend) {
     if (!color_[0].handle()) allocate();
     const uint32_t write = next_, read = 1 - next_;
     const GiHistoryImages out{graph.import(color_[write]), graph.import(moments_[write]),
                               graph.import(geometry_[write])};
     const ImageHandle outGeometry = out.geometry;
-    const gpu::GiAccumulatePush push{minWeight, changeWeight, valid_ ? 1u : 0u, 0};
+    gpu::GiAccumulatePush push{};
+    push.minWeight = blend.minWeight;
+    push.changeWeight = blend.changeWeight;
+    push.historyValid = valid_ ? 1u : 0u;
+    push.changePixels = blend.change ? blend.changePixels : 0u;
+    push.lagTolerance = blend.lagTolerance;
     const VkSampler nearest = nearest_.handle();
     PassBuilder pass = graph.pass("gi.accumulate");
     declarePreviousFrameInputs(pass, GI_ACCUMULATE_MOTION_FIRST, nearest);
@@ -77,6 +83,7 @@ GiHistoryImages GiHistory::addTo(FrameGraph& graph, ImageHandle current, float m
         .sampled(GI_ACCUMULATE_HISTORY_COLOR, graph.import(color_[read]), nearest)
         .sampled(GI_ACCUMULATE_HISTORY_MOMENTS, graph.import(moments_[read]), nearest)
         .sampled(GI_ACCUMULATE_HISTORY_GEOMETRY, graph.import(geometry_[read]), nearest)
+        .sampled(GI_ACCUMULATE_CHANGE, blend.change ? blend.change : current, nearest)  // `current`: never read
         .storageImage(GI_ACCUMULATE_OUT_COLOR, out.color)
         .storageImage(GI_ACCUMULATE_OUT_MOMENTS, out.moments)
         .storageImage(GI_ACCUMULATE_OUT_GEOMETRY, outGeometry)

@@ -14,14 +14,24 @@ struct GiHistoryImages {
     ImageHandle geometry;        // this frame's view depth and normal (the spatial filter's guide)
 };
 
+// This frame's weights: GiAccumulatePush's minWeight and changeWeight, and the GI technique's measured
+// change of its light (names::kGiChange) where one was published.
+struct GiBlend {
+    float minWeight = 0.05f;
+    float changeWeight = 0.0f;
+    ImageHandle change;       // none: nothing measured this frame
+    uint32_t changePixels = 0;
+    float lagTolerance = 0.1f;
+};
+
 class GiHistory {
 public:
     GiHistory(vk::Allocator& alloc, uint32_t width, uint32_t height);
     // Device bytes of the history at a width x height image.
     static uint64_t bytes(uint64_t width, uint64_t height);
-    // Reads "frame", `current`, the G-buffer's depth, normal and the previous-frame inputs.
-    // `minWeight`, `changeWeight`: GiAccumulatePush's.
-    GiHistoryImages addTo(FrameGraph& graph, ImageHandle current, float minWeight, float changeWeight);
+    // Reads "frame", `current`, the G-buffer's depth, normal, the previous-frame inputs and the blend's
+    // change image.
+    GiHistoryImages addTo(FrameGraph& graph, ImageHandle current, const GiBlend& blend);
     // The next frame starts a new history.
     void reset() { valid_ = false; }
     // Frees the images (a frame without GI); the next addTo makes them anew.

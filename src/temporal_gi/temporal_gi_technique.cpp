@@ -92,7 +92,14 @@ void TemporalGiTechnique::addPasses(const FrameContext& f) {
         filter_.release();
         return;
     }
-    const GiHistoryImages history = history_.addTo(f.graph, now, settings_.minWeight, changeWeight_);
+    GiBlend blend{settings_.minWeight, changeWeight_};
+    const GiChange* change = f.board.get(names::kGiChange);
+    if (change && f.graph.has(names::kGiChangeImage)) {
+        blend.change = f.graph.image(names::kGiChangeImage);
+        blend.changePixels = change->pixels;
+        blend.lagTolerance = settings_.lagTolerance;
+    }
+    const GiHistoryImages history = history_.addTo(f.graph, now, blend);
     const ImageHandle out = settings_.filterIterations == 0
                                 ? history.color
                                 : filter_.addTo(f.graph, history, settings_.filterIterations, settings_.luminanceSigma);

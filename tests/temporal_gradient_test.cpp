@@ -1,0 +1,138 @@
+// The RSM's temporal gradients (names::kGiChange) and the history weight that follows them: last
+// frame's kept receivers gathered again with their own pattern measure exactly zero under a still
+// light and exactly the light's ratio under a brighter one; under a light that keeps growing, the
+// history lags as its model says (temporal_gi/accumulate.comp).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+
+#include <gtest/gtest.h>
+
+#include "gpu_fixture.h"
+#include "test_renderer.h"
+
+namespace penumbra::test {
+namespace {
+
+// Cornell at 64x48, the default RSM gather (low resolution, interpolated), unfiltered indirect light.
+RenderSettings cornellRsm() {
+    RenderSettings s;
+    s.width = 64;
+    s.height = 48;
+    s.gi = GiMode::Rsm;
+    s.rsm.resolution = 128;
+    s.aov = Aov::Indirect;
+    s.temporalGi.filterIterations = 0;
+    return s;
+}
+
+struct Gradient {
+    float change, larger, measured;
+};
+
+std::vector<Gradient> readChange(TestRenderer& r) {
+    vk::Image& image = r.rsmGather()->change();
+    const std::vector<uint8_t> bytes = r.commands().readImage(image, 16);
+    std::vector<Gradient> out(size_t(image.width()) * image.height());
+    for (size_t i = 0; i < out.size(); ++i) std::memcpy(&out[i], bytes.data() + 16 * i, sizeof(Gradient));
+    return out;
+}
+
+std::vector<Light> scaled(std::vector<Light> lights, float factor) {
+    for (Light& l : lights) l.intensity *= factor;
+    return lights;
+}
+
+TEST_F(GpuTest, RsmGradientOfAStillLightIsZero) {
+    const Scene scene = makeBuiltinScene("cornell");
+    TestRenderer r(ctx(), scene, cornellRsm());
+    for (int n = 0; n < 3; ++n) r.render(FrameInputs{scene.cameras[0], scene.lights});
+    const std::vector<Gradient> g = readChange(r);
+    int measured = 0, nonzero = 0;
+    for (const Gradient& t : g) {
+        if (t.measured != 1.0f) continue;
+        ++measured;
+        nonzero += t.change != 0.0f || t.larger <= 0.0f;
+    }
+    std::printf("[ rsm gradient ] still light: %d of %zu blocks measured, %d not exactly 0\n", measured, g.size(),
+                nonzero);
+    EXPECT_GT(measured, int(g.size()) / 2);
+    EXPECT_EQ(nonzero, 0);
+}
+
+// A light 5% brighter: the gather is linear in the RSM's flux, so every kept sample's luminance grows
+// by 1.05, and change / larger = 1 - 1 / 1.05 = 0.0476. Up to rounding: the RSM holds its flux in half
+// floats (2^-11 relative), and a texel drawn by flux near a step of the CDF may change; so the median
+// within 1e-4 and every sample within 5e-3 (a tenth of the change).
+TEST_F(GpuTest, RsmGradientOfABrighterLightIsItsRatio) {
+    const Scene scene = makeBuiltinScene("cornell");
+    TestRenderer r(ctx(), scene, cornellRsm());
+    for (int n = 0; n < 2; ++n) r.render(FrameInputs{scene.cameras[0], scene.lights});
+    r.render(FrameInputs{scene.cameras[0], scaled(scene.lights, 1.05f)});
+    const double expected = 1.0 - 1.0 / 1.05;
+    std::vector<double> ratios;
+    for (const Gradient& t : readChange(r))
+        if (t.measured == 1.0f && t.larger > 0.0f) ratios.push_back(t.change / t.larger);
+    ASSERT_GT(ratios.size(), 20u);
+    std::sort(ratios.begin(), ratios.end());
+    const double median = ratios[ratios.size() / 2];
+    std::printf("[ rsm gradient ] 5%% brighter: %zu samples, median change %.6f (expected %.6f), range %.6f .. "
+                "%.6f\n", ratios.size(), median, expected, ratios.front(), ratios.back());
+    EXPECT_NEAR(median, expected, 1e-4);
+    EXPECT_NEAR(ratios.front(), expected, 5e-3);
+    EXPECT_NEAR(ratios.back(), expected, 5e-3);
+}
+
+// The mean indirect light of an image.
+double meanGreen(const std::vector<float>& img) {
+    double sum = 0.0;
+    for (size_t i = 1; i < img.size(); i += 4) sum += img[i];
+    return sum / double(img.size() / 4);
+}
+
+// The history's share of its light under a light that grows by g per frame, frame n blending at
+// alpha_n = max(1 / frames, minWeight, (host's change weight), detected / lagTolerance), frames the
+// history's span (accumulate.comp): h_n / I_n after `frames` frames.
+double modelShare(int frames, double g, double minWeight, double detected, double lagTolerance) {
+    const double change = 1.0 - 1.0 / g, host = std::pow(change / 0.5, 2.0);  // temporal_gi_technique.cpp
+    double share = 1.0, span = 1.0;  // the first frame starts the history
+    for (int n = 2; n <= frames; ++n) {
+        const double alpha = std::max({1.0 / (span + 1.0), minWeight, host, std::min(detected / lagTolerance, 1.0)});
+        share = alpha + (1.0 - alpha) * share / g;
+        span = 1.0 / alpha;
+    }
+    return share;
+}
+
+// A light that grows by 5% a frame for 16 frames: with the gradients the history keeps up to within
+// about lagTolerance / 2 (the model's 0.95 at 0.1), without them (a tolerance of 1000) it holds about
+// half of the light. The image's mean against the single-frame estimate at the last intensity, and
+// against the model with the exact change 1 - 1 / 1.05.
+TEST_F(GpuTest, HistoryFollowsAGrowingLightAsItsModelSays) {
+    const Scene scene = makeBuiltinScene("cornell");
+    const int frames = 16;
+    const double g = 1.05;
+    auto run = [&](float lagTolerance, bool temporal) {
+        RenderSettings s = cornellRsm();
+        s.giTemporal = temporal;
+        s.temporalGi.lagTolerance = lagTolerance;
+        TestRenderer r(ctx(), scene, s);
+        for (int n = temporal ? 1 : frames; n <= frames; ++n)
+            r.render(FrameInputs{scene.cameras[0], scaled(scene.lights, float(std::pow(g, n - 1)))});
+        return meanGreen(r.readHdr());
+    };
+    const double truth = run(0.1f, false), detected = 1.0 - 1.0 / g;
+    const double withGradients = run(0.1f, true) / truth, without = run(1000.0f, true) / truth;
+    const double modelWith = modelShare(frames, g, 0.05, detected, 0.1);
+    const double modelWithout = modelShare(frames, g, 0.05, detected, 1000.0);
+    std::printf("[ rsm gradient ] light growing 5%% a frame, history / truth after %d frames: %.4f (model %.4f) "
+                "with the gradients, %.4f (model %.4f) without\n", frames, withGradients, modelWith, without,
+                modelWithout);
+    EXPECT_NEAR(withGradients, modelWith, 0.01);
+    EXPECT_NEAR(without, modelWithout, 0.01);
+    EXPECT_GT(modelWith, 0.93);
+}
+
+}  // namespace
+}  // namespace penumbra::test
