@@ -28,7 +28,7 @@ RenderSettings cornellRsm() {
 }
 
 struct Gradient {
-    float change, larger, measured;
+    float change, larger, squared, measured;
 };
 
 std::vector<Gradient> readChange(TestRenderer& r) {

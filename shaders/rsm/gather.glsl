@@ -398,7 +398,8 @@ void storeGradient(Receiver r, float before, vec3 e) {
     if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) return;
     const ivec2 texel = ivec2(uv * vec2(frame.width, frame.height)) / int(pc.lowResFactor * pc.gradientPhase);
     const float now = luminance(e);
-    imageStore(outIrradiance, texel, vec4(now - before, max(now, before), 1.0, 0.0));
+    const float change = now - before, larger = max(now, before);
+    imageStore(outIrradiance, texel, vec4(change, larger, larger > 0.0 ? change * change / larger : 0.0, 1.0));
 }
 
 // Receivers share out their samples: `lanes` (push sampling.w: 1, 2, 4 or 8) invocations of a

@@ -26,7 +26,7 @@ layout(set = 0, binding = GI_ACCUMULATE_HISTORY_GEOMETRY) uniform sampler2D hist
 layout(set = 0, binding = GI_ACCUMULATE_OUT_COLOR, rgba32f) uniform writeonly image2D outColor;
 layout(set = 0, binding = GI_ACCUMULATE_OUT_MOMENTS, rg32f) uniform writeonly image2D outMoments;
 layout(set = 0, binding = GI_ACCUMULATE_OUT_GEOMETRY, rgba16f) uniform writeonly image2D outGeometry;
-layout(set = 0, binding = GI_ACCUMULATE_CHANGE) uniform sampler2D change;  // core/names.h GiChange
+layout(set = 0, binding = GI_ACCUMULATE_CHANGE) uniform sampler2D changeWeight;  // temporal_gi/change_weight.comp
 layout(push_constant) uniform Push { GiAccumulatePush pc; };
 #define MOTION_FIRST_BINDING GI_ACCUMULATE_MOTION_FIRST
 #include "core/motion.glsl"
@@ -72,20 +72,6 @@ History reprojectedHistory(vec4 clip, vec3 n) {
     return h;
 }
 
-// The relative change of the light around this pixel since the last frame, from the GI technique's
-// temporal gradients: their sum over the 3x3 change texels around the pixel's, over the sum of the
-// larger luminances. Signed, so that noise cancels and a real change adds up; 0 where none was measured.
-float detectedChange(ivec2 pixel) {
-    if (pc.changePixels == 0u) return 0.0;
-    const ivec2 size = textureSize(change, 0), centre = pixel / int(pc.changePixels);
-    vec2 sum = vec2(0.0);
-    for (int k = 0; k < 9; ++k) {
-        const ivec2 t = centre + ivec2(k % 3, k / 3) - 1;
-        if (all(greaterThanEqual(t, ivec2(0))) && all(lessThan(t, size))) sum += texelFetch(change, t, 0).rg;
-    }
-    return sum.y > 0.0 ? abs(sum.x) / sum.y : 0.0;
-}
-
 void main() {
     const ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(pixel, ivec2(frame.width, frame.height)))) return;
@@ -104,7 +90,7 @@ void main() {
     const vec3 n = normalize(gn.xyz);
     const History h = reprojectedHistory(previousClip(pixel, depth, p), n);
     const float frames = h.found ? h.color.a + 1.0 : 1.0;
-    const float detected = min(detectedChange(pixel) / pc.lagTolerance, 1.0);
+    const float detected = pc.changePixels == 0u ? 0.0 : texelFetch(changeWeight, pixel / int(pc.changePixels), 0).r;
     const float alpha = max(max(1.0 / frames, pc.minWeight), max(pc.changeWeight, detected));
     const vec3 color = h.found ? mix(h.color.rgb, e, alpha) : e;
     const vec2 moments = h.found ? mix(h.moments, vec2(l, l * l), max(alpha, kMomentsMinWeight)) : vec2(l, l * l);

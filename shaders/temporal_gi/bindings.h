@@ -16,7 +16,11 @@
 #define GI_ACCUMULATE_OUT_GEOMETRY 9
 // motion.glsl's three (visibility IDs, drawn triangles, instances) from here on.
 #define GI_ACCUMULATE_MOTION_FIRST 10
-#define GI_ACCUMULATE_CHANGE 13  // names::kGiChange's image (a 1x1 zero when none is published)
+#define GI_ACCUMULATE_CHANGE 13  // change_weight.comp's weights (unread when none is published)
+
+// change_weight.comp
+#define GI_CHANGE_WEIGHT_CHANGE 0  // names::kGiChange's image
+#define GI_CHANGE_WEIGHT_OUTPUT 1  // r: the least weight of this frame per change texel
 
 // filter.comp
 #define GI_FILTER_FRAME 0

@@ -72,7 +72,8 @@ struct GiAccumulation {
 // How much a GI technique's light changed since the last frame, where the technique can measure it
 // (the RSM's temporal gradients): published with the image "gi.change", whose texel covers
 // `pixels` x `pixels` pixels and holds (r) the change of a sample's luminance, (g) the larger of its
-// two luminances and (b) 1 where a sample was measured. The temporal-GI module weighs its history by it.
+// two luminances, (b) change^2 / larger and (a) 1 where a sample was measured. The temporal-GI
+// module weighs its history by it.
 struct GiChange {
     uint32_t pixels = 0;
 };

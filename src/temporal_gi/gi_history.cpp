@@ -37,6 +37,9 @@ GiHistory::GiHistory(vk::Allocator& alloc, uint32_t width, uint32_t height)
                                  {GI_ACCUMULATE_MOTION_FIRST + 2, kBuf},
                                  {GI_ACCUMULATE_CHANGE, kTex}},
                                 sizeof(gpu::GiAccumulatePush));
+    changeWeight_ = vk::ComputeKernel(ctx, "temporal_gi/change_weight.comp",
+                                      {{GI_CHANGE_WEIGHT_CHANGE, kTex}, {GI_CHANGE_WEIGHT_OUTPUT, kImg}},
+                                      sizeof(gpu::GiAccumulatePush));
     nearest_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
 }
 
@@ -52,12 +55,34 @@ void GiHistory::allocate() {
 
 void GiHistory::release() {
     for (int i = 0; i < 2; ++i) color_[i] = {}, moments_[i] = {}, geometry_[i] = {};
+    weights_ = {};
     valid_ = false;
 }
 
 uint64_t GiHistory::bytes(uint64_t width, uint64_t height) {
     return 2 * width * height *
            (vk::texelBytes(kColorFormat) + vk::texelBytes(kMomentsFormat) + vk::texelBytes(kGeometryFormat));
+}
+
+// The least weight per change texel that the measured change asks for (change_weight.comp).
+ImageHandle GiHistory::addChangeWeight(FrameGraph& graph, const GiBlend& blend) {
+    const vk::Image& change = graph.imageOf(blend.change);
+    if (weights_.width() != change.width() || weights_.height() != change.height())
+        weights_ = vk::Image(alloc_, {VK_FORMAT_R32_SFLOAT, change.width(), change.height(), 1,
+                                      VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT, "gi-change-weights"});
+    const ImageHandle weights = graph.import(weights_);
+    gpu::GiAccumulatePush push{};
+    push.lagTolerance = blend.lagTolerance;
+    graph.pass("gi.change-weight")
+        .pipeline(changeWeight_.pipeline)
+        .sampled(GI_CHANGE_WEIGHT_CHANGE, blend.change, nearest_.handle())
+        .storageImage(GI_CHANGE_WEIGHT_OUTPUT, weights)
+        .record([this, weights, push](PassContext& c) {
+            changeWeight_.pipeline.push(c.cmd, push);
+            const vk::Image& image = c.image(weights);
+            vkCmdDispatch(c.cmd, vk::divUp(image.width(), 8), vk::divUp(image.height(), 8), 1);
+        });
+    return weights;
 }
 
 GiHistoryImages GiHistory::addTo(FrameGraph& graph, ImageHandle current, const GiBlend& blend) {
@@ -73,6 +98,7 @@ GiHistoryImages GiHistory::addTo(FrameGraph& graph, ImageHandle current, const G
     push.changePixels = blend.change ? blend.changePixels : 0u;
     push.lagTolerance = blend.lagTolerance;
     const VkSampler nearest = nearest_.handle();
+    const ImageHandle weights = blend.change ? addChangeWeight(graph, blend) : current;  // `current`: never read
     PassBuilder pass = graph.pass("gi.accumulate");
     declarePreviousFrameInputs(pass, GI_ACCUMULATE_MOTION_FIRST, nearest);
     pass.pipeline(kernel_.pipeline)
@@ -83,7 +109,7 @@ GiHistoryImages GiHistory::addTo(FrameGraph& graph, ImageHandle current, const G
         .sampled(GI_ACCUMULATE_HISTORY_COLOR, graph.import(color_[read]), nearest)
         .sampled(GI_ACCUMULATE_HISTORY_MOMENTS, graph.import(moments_[read]), nearest)
         .sampled(GI_ACCUMULATE_HISTORY_GEOMETRY, graph.import(geometry_[read]), nearest)
-        .sampled(GI_ACCUMULATE_CHANGE, blend.change ? blend.change : current, nearest)  // `current`: never read
+        .sampled(GI_ACCUMULATE_CHANGE, weights, nearest)
         .storageImage(GI_ACCUMULATE_OUT_COLOR, out.color)
         .storageImage(GI_ACCUMULATE_OUT_MOMENTS, out.moments)
         .storageImage(GI_ACCUMULATE_OUT_GEOMETRY, outGeometry)

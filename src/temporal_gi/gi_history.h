@@ -21,7 +21,7 @@ struct GiBlend {
     float changeWeight = 0.0f;
     ImageHandle change;       // none: nothing measured this frame
     uint32_t changePixels = 0;
-    float lagTolerance = 0.1f;
+    float lagTolerance = 3.0f;
 };
 
 class GiHistory {
@@ -41,9 +41,11 @@ private:
     void allocate();
     vk::Allocator& alloc_;
     uint32_t width_, height_;
-    vk::ComputeKernel kernel_;
+    ImageHandle addChangeWeight(FrameGraph& graph, const GiBlend& blend);
+    vk::ComputeKernel kernel_, changeWeight_;
     vk::Sampler nearest_;
     vk::Image color_[2], moments_[2], geometry_[2];  // made by the first addTo
+    vk::Image weights_;  // change_weight.comp's, sized as the last change image
     uint32_t next_ = 0;   // the set this frame writes
     bool valid_ = false;  // the other holds the previous frame
 };
