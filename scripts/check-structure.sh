@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The module structure of src/ (docs/architecture.md): the core, the Vulkan layer, scene and io include no
 # technique, service or assembly header; no technique includes another technique's or a shared
-# service's header; shared services include no technique. Prints each offending include and exits 1; run by CTest.
+# service's header; shared services include no technique; above them, the renderer includes no frame
+# preparation or front end, the frame preparation no front end, and the viewer not the command line
+# (it builds on the library). Prints each offending include and exits 1; run by CTest.
 set -euo pipefail
 root="${1:-$(cd "$(dirname "$0")/.." && pwd)}"
 cd "$root/src"
@@ -11,8 +13,9 @@ techniques=(shadow dsm rsm lpv lighting temporal_gi)
 # Shared service modules: techniques reach them through core interfaces (core/depth_raster.h) and
 # published names (core/names.h), never through their headers; they use only the layers below.
 services=(raster voxel)
-# The assembly above the techniques, and the front ends above it.
-above=(renderer app view eval reference)
+# The assembly above the techniques, the frame preparation above it (both in the library), and the
+# front ends above them.
+above=(renderer frame app view eval reference)
 
 status=0
 # $1: folder, $2...: folders it must not include from.
@@ -38,5 +41,8 @@ for t in "${techniques[@]}"; do
     for o in "${techniques[@]}"; do [ "$o" != "$t" ] && others+=("$o"); done
     forbid "$t" "${others[@]}" "${services[@]}" "${above[@]}"
 done
-[ "$status" -eq 0 ] && echo "check-structure: ok (core, vk, scene, io, ${services[*]}, ${techniques[*]})"
+forbid renderer frame app view eval reference
+forbid frame app view eval reference
+forbid view app
+[ "$status" -eq 0 ] && echo "check-structure: ok (core, vk, scene, io, ${services[*]}, ${techniques[*]}, renderer, frame, view)"
 exit "$status"

@@ -9,10 +9,10 @@
 
 #include "app/bench.h"
 #include "app/cli_app.h"
-#include "app/frame_options.h"
 #include "app/ground_truth_cli.h"
 #include "app/option_cli.h"
 #include "app/stability.h"
+#include "frame/frame_options.h"
 
 namespace penumbra::test {
 namespace {

@@ -6,7 +6,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
-#include "app/shadow_cli.h"
+#include "frame/light_filters.h"
 #include "shadow/cascades.h"
 #include "shadow/shadow_layout.h"
 

@@ -10,7 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "app/frame_options.h"
+#include "app/frame_cli.h"
 #include "gpu_fixture.h"
 #include "renderer/settings_change.h"
 

@@ -3,8 +3,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "app/cli_parse.h"
 #include "core/light_space.h"
+#include "frame/input_parse.h"
 
 using namespace penumbra;
 

@@ -4,10 +4,10 @@
 
 #include <gtest/gtest.h>
 
-#include "app/cli_parse.h"
-#include "app/frame_options.h"
 #include "cli_run.h"
 #include "eval/suite.h"
+#include "frame/frame_options.h"
+#include "frame/input_parse.h"
 #include "scene/named_views.h"
 
 namespace penumbra {

@@ -9,8 +9,8 @@
 
 #include <gtest/gtest.h>
 
-#include "app/frame_options.h"
 #include "dsm/dsm_options.h"
+#include "frame/frame_options.h"
 #include "lpv/lpv_options.h"
 #include "renderer/render_options.h"
 #include "renderer/settings_change.h"

@@ -8,7 +8,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "app/cli_parse.h"
+#include "frame/input_parse.h"
 #include "gpu_fixture.h"
 #include "core/scene_gpu.h"
 #include "raster/compute_raster.h"

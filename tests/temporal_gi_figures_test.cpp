@@ -3,10 +3,10 @@
 // out and coming on (src/app/response.h), for RSM and LPV, against the bounds the docs state.
 #include <cstdio>
 
-#include "app/frame_options.h"
 #include "app/response.h"
 #include "app/stability.h"
 #include "core/gpu_scene.h"
+#include "frame/frame_options.h"
 #include "gpu_fixture.h"
 #include "scene/motion.h"
 

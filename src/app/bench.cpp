@@ -13,9 +13,9 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
-#include "app/frame_setup.h"
 #include "core/sky.h"
 #include "app/option_cli.h"
+#include "frame/frame_setup.h"
 #include "renderer/render_options.h"
 #include "app/option_checks.h"
 #include "io/file_write.h"
@@ -209,7 +209,7 @@ static BenchSeries measureSeries(Renderer& renderer, const SceneMotion& motion, 
 int runBench(const BenchOptions& o, const vk::ContextOptions& vkOptions, RenderSettings settings, bool dryRun) {
     if (!o.json.empty()) checkWritable(o.json, benchCommandOptions().flagOf<BenchOptions>([](BenchOptions& b) -> auto& { return b.json; }));
     if (dryRun) return prepareFrame(o.frame, settings), 0;
-    CliDeviceFrame device(o.frame, settings, vkOptions);
+    OptionsDeviceFrame device(o.frame, settings, vkOptions);
     vk::Context& ctx = device.ctx;
     const PreparedFrame& f = device.frame;
     const double copyGbps = copyBandwidth(ctx);
@@ -217,7 +217,7 @@ int runBench(const BenchOptions& o, const vk::ContextOptions& vkOptions, RenderS
     resolveAutoSky(settings.lighting.sky, f.scene.lights);
     Renderer renderer(ctx, scene, settings, uint32_t(o.framesInFlight));
     for (const std::string& w : renderer.warnings()) printWarning(w);
-    const SceneMotion motion = frameMotion(o.frame, f);
+    const SceneMotion& motion = frameMotion(o.frame, device);
     std::vector<double> poseMs;
     const BenchSeries series = measureSeries(renderer, motion, o, poseMs);
     const BenchRun& run = series.whole;

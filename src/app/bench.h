@@ -3,7 +3,7 @@
 #pragma once
 #include <CLI/CLI.hpp>
 
-#include "app/frame_options.h"
+#include "app/frame_cli.h"
 #include "vk/context.h"
 
 namespace penumbra {

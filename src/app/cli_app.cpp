@@ -7,12 +7,12 @@
 
 #include <fmt/format.h>
 
-#include "app/frame_setup.h"
 #include "core/sky.h"
 #include "app/dsm_cli.h"
 #include "app/option_checks.h"
 #include "app/option_cli.h"
 #include "app/sequence.h"
+#include "frame/frame_setup.h"
 #include "io/image_io.h"
 #include "renderer/renderer.h"
 #include "rsm/rsm_technique.h"
@@ -198,9 +198,9 @@ void renderSequence(const RenderCliOptions& o, const RenderSettings& settings, R
 int runRender(const RenderCliOptions& o, const vk::ContextOptions& vkOptions, RenderSettings settings, bool dryRun) {
     RenderOutput out(o);
     if (dryRun) return prepareFrame(o.frame, settings), 0;
-    CliDeviceFrame device(o.frame, settings, vkOptions);
+    OptionsDeviceFrame device(o.frame, settings, vkOptions);
     const PreparedFrame& f = device.frame;
-    const SceneMotion motion = frameMotion(o.frame, f);
+    const SceneMotion& motion = frameMotion(o.frame, device);
     resolveAutoSky(settings.lighting.sky, f.scene.lights);
     Renderer renderer(device.ctx, f.scene, settings);
     renderer.setPassScopes(true);  // the summary's per-pass table

@@ -9,7 +9,7 @@
 
 #include "app/bench.h"
 #include "app/cli_reference.h"
-#include "app/frame_options.h"
+#include "app/frame_cli.h"
 #include "app/ground_truth_cli.h"
 #include "app/stability.h"
 #include "vk/context.h"

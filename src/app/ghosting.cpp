@@ -6,8 +6,8 @@
 #include <limits>
 #include <memory>
 
-#include "app/frame_options.h"
 #include "app/response.h"
+#include "frame/frame_options.h"
 #include "lighting/lighting_technique.h"
 
 namespace penumbra {

@@ -6,7 +6,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "app/frame_options.h"
+#include "app/frame_cli.h"
 #include "eval/suite.h"
 #include "lighting/lighting_settings.h"
 #include "reference/path_tracer.h"

@@ -9,7 +9,7 @@
 
 #include "app/cli_app.h"
 #include "app/option_cli.h"
-#include "view/view_command.h"
+#include "app/view_cli.h"
 
 int main(int argc, char** argv) {
     std::string commandLine;
@@ -19,8 +19,8 @@ int main(int argc, char** argv) {
         if (i > 0) args.push_back(argv[i]);
     }
     penumbra::Cli cli(commandLine);
-    penumbra::view::ViewCommand viewCommand;
-    CLI::App* viewer = penumbra::view::addViewCommand(cli.app, viewCommand);
+    penumbra::ViewCommand viewCommand;
+    CLI::App* viewer = penumbra::addViewCommand(cli.app, viewCommand);
     if (const std::string unknown = cli.unknownCommand(args); !unknown.empty()) {
         fmt::print(stderr, "penumbra: error: {} (see {})\n", unknown, cli.app.get_help_ptr()->get_name());
         return 2;
@@ -39,7 +39,7 @@ int main(int argc, char** argv) {
     }
     cli.vk.syncValidation = cli.vk.validate;  // validation checks synchronization too
     try {
-        if (*viewer) return penumbra::view::runViewCommand(viewCommand, cli.vk);
+        if (*viewer) return penumbra::runViewCommand(viewCommand, cli.vk);
         return cli.run();
     } catch (const std::exception& e) {
         fmt::print(stderr, "penumbra: error: {}\n", penumbra::withFlags(e.what()));

@@ -144,7 +144,8 @@ void addReferenceSceneOptions(CLI::App& cmd, ReferenceCliOptions& o) {
 
 PreparedFrame prepareReferenceFrame(const ReferenceCliOptions& o) {
     RenderSettings unused;
-    PreparedFrame f = prepareFrame(o.frame, unused);
+    checkFrameSettings(o.frame, unused);
+    PreparedFrame f = loadFrame(o.frame);
     // The scene at --time: the path tracer traces its world-space geometry at that time.
     const SceneMotion motion = frameMotion(o.frame, f);
     if (motion.moves()) {

@@ -10,11 +10,11 @@
 
 #include "app/bench.h"
 #include "app/cli_app.h"
-#include "app/frame_setup.h"
 #include "app/ghosting.h"
 #include "app/option_checks.h"
 #include "app/option_cli.h"
 #include "app/response.h"
+#include "frame/frame_setup.h"
 #include "io/file_write.h"
 #include "lighting/lighting_technique.h"
 #include "reference/path_tracer.h"
@@ -267,7 +267,7 @@ OptionTable makeStabilityCommandTable() {
 }
 
 // The response of each GI configuration to o.change, measured on the indirect light.
-int runResponse(const StabilityOptions& o, CliDeviceFrame& device, const SceneMotion& motion, GpuScene& scene,
+int runResponse(const StabilityOptions& o, OptionsDeviceFrame& device, const SceneMotion& motion, GpuScene& scene,
                 const RenderSettings& settings) {
     const LightChange change = parseLightChange(o.change);
     const FrameInputs in = frameInputs(motion, o.frame.time);
@@ -297,7 +297,7 @@ int runResponse(const StabilityOptions& o, CliDeviceFrame& device, const SceneMo
 }
 
 // The ghosting of each GI configuration behind the scene's moving geometry.
-int runGhosting(const StabilityOptions& o, CliDeviceFrame& device, const SceneMotion& motion, GpuScene& scene,
+int runGhosting(const StabilityOptions& o, OptionsDeviceFrame& device, const SceneMotion& motion, GpuScene& scene,
                 const RenderSettings& settings) {
     nlohmann::json results = nlohmann::json::array();
     fmt::print("{:<14} {:>8} {:>8} {:>12}\n", "technique", "pixels", "rel L1", "beyond 10%");
@@ -344,12 +344,12 @@ int runStability(const StabilityOptions& o, const vk::ContextOptions& vkOptions,
     if (!o.json.empty()) checkWritable(o.json, stabilityCommandOptions().flagOf<StabilityOptions>([](StabilityOptions& s) -> auto& { return s.json; }));
     if (o.ghosting && !o.change.empty()) throw std::invalid_argument("{stability.ghosting} and {stability.change} measure different things: give one");
     if (dryRun) return prepareFrame(o.frame, settings), 0;
-    CliDeviceFrame device(o.frame, settings, vkOptions);
+    OptionsDeviceFrame device(o.frame, settings, vkOptions);
     if (o.ghosting && device.frame.scene.animations.empty())
         throw std::invalid_argument(fmt::format("{{stability.ghosting}} needs moving geometry: '{}' has no animation (try cornell-moving)",
                                                 device.frame.scene.name));
     const PreparedFrame& f = device.frame;
-    const SceneMotion motion = frameMotion(o.frame, f);
+    const SceneMotion& motion = frameMotion(o.frame, device);
     if (!motion.moves() && o.change.empty())
         fmt::print(stderr, "penumbra: warning: nothing in '{}' moves: give {}, {} or {}\n", f.scene.name,
                    motionOptions().flagOf<FrameOptions>([](FrameOptions& m) -> auto& { return m.motion.sun; }),

@@ -1,9 +1,11 @@
 // Light propagation volumes as a technique: injects the RSM (names::kRsmLayerCount and the "rsm.*"
 // images), blocked by the occupancy volume when one is published (names::kOccupancyState), and
-// contributes the volume's irradiance under names::kIrradianceContribution.
+// contributes the volume's irradiance under names::kIrradianceContribution; publishes its cascades'
+// boxes (names::kLpvCascadeBoxes).
 #pragma once
 #include "core/technique.h"
 #include "lpv/lpv.h"
+#include "lpv/lpv_names.h"
 
 namespace penumbra {
 
@@ -18,6 +20,7 @@ public:
 
 private:
     LightPropagationVolume volume_;
+    LpvCascadeBoxes boxes_;
 };
 
 }  // namespace penumbra

@@ -20,6 +20,7 @@ DeviceFrame::DeviceFrame(const FrameSource& source, RenderSettings& settings, co
     : ctx(afterSettingsCheck(source, settings, vkOptions)) {
     source.checkScene(ctx.limits());
     frame = source.load(settings);
+    source.loaded(frame);
     checkDeviceBudget(ctx, settings, frame.scene);
 }
 

@@ -26,6 +26,9 @@ public:
     virtual void checkScene(const vk::DeviceLimits&) const {}
     // The scene (lights applied) and the camera.
     virtual PreparedFrame load(RenderSettings& settings) const = 0;
+    // The loaded frame in its final place (DeviceFrame::frame), before its resources are estimated:
+    // what refers to it (the scene's motion) is built here once, its checks before the budget's.
+    virtual void loaded(const PreparedFrame&) const {}
 };
 
 struct DeviceFrame {

@@ -6,7 +6,7 @@
 
 #include "core/light_space.h"
 #include "core/names.h"
-#include "lpv/lpv_technique.h"
+#include "lpv/lpv_names.h"
 
 namespace penumbra::view {
 namespace {
@@ -57,16 +57,13 @@ void shadowFrusta(Renderer& renderer, const Projector& p) {
 }
 
 void lpvBoxes(Renderer& renderer, const Projector& p) {
-    LpvTechnique* technique = renderer.find<LpvTechnique>();
-    if (!technique) return;
-    const LightPropagationVolume* lpv = &technique->volume();
-    const gpu::LpvPush& c = lpv->constants();
-    for (uint32_t k = 0; k < lpv->cascadeCount(); ++k) {
-        const glm::vec3 origin(c.cascades[k].origin);
-        const float side = c.cascades[k].cellSize * float(c.resolution);
+    const LpvCascadeBoxes* cascades = renderer.blackboard().get(names::kLpvCascadeBoxes);
+    if (!cascades) return;
+    for (size_t k = 0; k < cascades->boxes.size(); ++k) {
+        const LpvCascadeBoxes::Box& b = cascades->boxes[k];
         std::array<glm::vec3, 8> corners;
         for (int i = 0; i < 8; ++i)
-            corners[i] = origin + side * glm::vec3(i & 1 ? 1.0f : 0.0f, i & 2 ? 1.0f : 0.0f, i & 4 ? 1.0f : 0.0f);
+            corners[i] = b.origin + b.side * glm::vec3(i & 1 ? 1.0f : 0.0f, i & 2 ? 1.0f : 0.0f, i & 4 ? 1.0f : 0.0f);
         p.box(corners, kLayerColors[k % kLayerColors.size()]);
     }
 }

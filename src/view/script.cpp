@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "app/cli_parse.h"
+#include "frame/input_parse.h"
 #include "io/image_io.h"
 
 namespace penumbra::view {

@@ -1,6 +1,7 @@
-// What the viewer shows, without the window: the render options as CLI arguments (so that `set`
-// lines, the UI and `penumbra render` share one parser and one set of rules), the loaded scene,
-// the live camera and lights, and the renderer they drive. Usable headless (tests).
+// What the viewer shows, without the window: the render options as given (flag and values, applied by
+// their option rows: `set` lines, the UI and `penumbra render` share one parser and one set of
+// rules), the loaded scene, the live camera and lights, and the renderer they drive. Usable headless
+// (tests).
 #pragma once
 #include <memory>
 #include <optional>
@@ -8,20 +9,11 @@
 #include <utility>
 #include <vector>
 
-#include "app/frame_options.h"
+#include "frame/frame_args.h"
 #include "renderer/renderer.h"
 #include "scene/motion.h"
 
 namespace penumbra::view {
-
-// One render option as given on the command line: "--shadow" and its values ("" for a flag).
-struct CliArg {
-    std::string name;  // "--shadow", or "scene" for the positional scene
-    std::vector<std::string> values;
-};
-
-// The render options of a parsed command (e.g. `view`) that were given, for ViewSession.
-std::vector<CliArg> givenFrameArgs(const CLI::App& cmd);
 
 // The options of `render` as the UI lists them: CLI name, current value, help with the range.
 struct OptionInfo {
@@ -35,7 +27,9 @@ struct OptionInfo {
 
 class ViewSession {
 public:
-    ViewSession(vk::Context& ctx, std::vector<CliArg> args);
+    ViewSession(vk::Context& ctx, std::vector<FrameArg> args);
+    // `parsed`: what parseFrameArgs(args) gives, parsed already (the command line's `view`).
+    ViewSession(vk::Context& ctx, std::vector<FrameArg> args, ParsedFrame parsed);
 
     // `set OPTION VALUE`: as if `--OPTION VALUE` replaced that option's earlier value on the command
     // line; flags take on|off. Every cross-option rule is checked; on error (std::invalid_argument
@@ -67,8 +61,8 @@ public:
     bool showPanels = true;
 
     const Scene& scene() const { return gpuScene_->scene(); }
-    const RenderSettings& settings() const { return settings_; }
-    const FrameOptions& frameOptions() const { return options_; }
+    const RenderSettings& settings() const { return frame_.settings; }
+    const FrameOptions& frameOptions() const { return frame_.options; }
     std::vector<OptionInfo> options() const;
     // Replaces the scene (drag and drop): on a load error the old one stays and the error is thrown.
     void loadScene(const std::string& path);
@@ -97,20 +91,15 @@ public:
     void writeImage(const std::string& path);
 
 private:
-    struct Parsed {
-        FrameOptions options;
-        RenderSettings settings;
-    };
-    Parsed parse(const std::vector<CliArg>& args) const;
-    void adopt(std::vector<CliArg> args, Parsed parsed);
-    static std::vector<CliArg> withArg(std::vector<CliArg> args, const std::string& option, const std::string& value);
+    void adopt(std::vector<FrameArg> args, ParsedFrame parsed);
+    static std::vector<FrameArg> withArg(std::vector<FrameArg> args, const std::string& option,
+                                         const std::string& value);
     void updateSplit();
     void rebuildMotion();
 
     vk::Context& ctx_;
-    std::vector<CliArg> args_;
-    FrameOptions options_;
-    RenderSettings settings_;
+    std::vector<FrameArg> args_;
+    ParsedFrame frame_;
     std::unique_ptr<GpuScene> gpuScene_;  // the scene as loaded (its own lights and cameras), uploaded once
     Camera camera_;
     std::vector<Light> lights_;

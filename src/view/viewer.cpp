@@ -7,7 +7,6 @@
 #include <fmt/format.h>
 
 #include "io/image_io.h"
-#include "renderer/render_options.h"
 #include "vk/commands.h"
 
 namespace penumbra::view {
@@ -40,21 +39,14 @@ void swapchainBarrier(VkCommandBuffer cmd, VkImage image, VkImageLayout from, Vk
                      dstAccess);
 }
 
-uint32_t sizeArg(const std::vector<CliArg>& args, const std::string& name, uint32_t fallback) {
-    for (const CliArg& a : args)
-        if (a.name == name && !a.values.empty()) return uint32_t(std::stoul(a.values.back()));
-    return fallback;
-}
-
 }  // namespace
 
-Viewer::Viewer(const ViewOptions& options, std::vector<CliArg> args, VkExtent2D size)
-    : window_(sizeArg(args, frameFlag([](RenderSettings& s) -> auto& { return s.width; }), size.width),
-              sizeArg(args, frameFlag([](RenderSettings& s) -> auto& { return s.height; }), size.height), "penumbra view"),
+Viewer::Viewer(const ViewOptions& options, std::vector<FrameArg> args, ParsedFrame parsed)
+    : window_(parsed.settings.width, parsed.settings.height, "penumbra view"),
       ctx_(window_.presentationOptions(options.vulkan)),
       alloc_(ctx_, VkDeviceSize(16) << 20),
       swapchain_(ctx_, window_.createSurface(ctx_.instance()), presentMode(options.present)),
-      session_(ctx_, std::move(args)),
+      session_(ctx_, std::move(args), std::move(parsed)),
       ui_(alloc_, window_.handle(), (swapchain_.recreate(window_.drawableSize()), swapchain_)) {
     if (!options.script.empty()) {
         script_.emplace(options.script);

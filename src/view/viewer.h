@@ -27,7 +27,9 @@ struct ViewOptions {
 
 class Viewer {
 public:
-    Viewer(const ViewOptions& options, std::vector<CliArg> args, VkExtent2D size);
+    // `args`: the frame options as given, `parsed` what they parse to (ViewSession); the window takes
+    // the frame's size.
+    Viewer(const ViewOptions& options, std::vector<FrameArg> args, ParsedFrame parsed);
     ~Viewer();
     void run();  // until the window closes or the script quits; throws on errors
 

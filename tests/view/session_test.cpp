@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "app/cli_parse.h"
+#include "frame/input_parse.h"
 #include "view/session.h"
 
 namespace penumbra::view {

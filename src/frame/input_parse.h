@@ -1,5 +1,6 @@
-// Parsing of the CLI's compound option values. Each throws std::invalid_argument with what was
-// expected (the option row that calls it names the option).
+// Parsing of the frame inputs' compound values (a camera, a light, an AOV name), for the option rows
+// and the viewer's script. Each throws std::invalid_argument with what was expected (the option row
+// that calls it names the option).
 #pragma once
 #include <string>
 #include <vector>

@@ -1,16 +1,39 @@
-#include "view/view_command.h"
+#include "app/view_cli.h"
 
+#include <algorithm>
 #include <filesystem>
 
 #include <fmt/format.h>
 
 #include "app/option_cli.h"
 
-namespace penumbra::view {
+namespace penumbra {
 namespace {
 
+std::string nameOf(const CLI::Option& opt) {
+    return opt.get_lnames().empty() ? opt.get_name(true) : "--" + opt.get_lnames().front();  // the positional: "scene"
+}
+
+// The frame options given on `cmd` (a parsed command that registered them), as the viewer keeps them.
+std::vector<FrameArg> givenFrameArgs(const CLI::App& cmd) {
+    CLI::App probe;
+    FrameOptions o;
+    RenderSettings rs;
+    addFrameOptions(probe, o, rs);
+    const std::vector<CLI::Option*> frameOptions = probe.get_options();  // one vector: begin and end of the same
+    std::vector<FrameArg> out;
+    for (const CLI::Option* opt : cmd.get_options()) {
+        if (opt->count() == 0) continue;
+        const std::string name = nameOf(*opt);
+        const bool isFrameOption = std::any_of(frameOptions.begin(), frameOptions.end(),
+                                               [&](const CLI::Option* p) { return nameOf(*p) == name; });
+        if (isFrameOption) out.push_back({name, opt->results()});
+    }
+    return out;
+}
+
 OptionTable makeViewCommandTable() {
-    using V = ViewOptions;
+    using V = view::ViewOptions;
     using change::kCommand;
     OptionTableBuilder<V> t("view", "View");
     t.text("--script", "script", [](V& v) -> auto& { return v.script; },
@@ -48,9 +71,9 @@ int runViewCommand(ViewCommand& view, const vk::ContextOptions& vulkan) {
     checkFrameSettings(view.frame, view.settings);  // cross-option rules before a window opens
     view.options.vulkan = vulkan;
     view.options.vulkan.syncValidation = vulkan.validate;  // the viewer's validation checks synchronization too
-    Viewer viewer(view.options, givenFrameArgs(*view.cmd), {view.settings.width, view.settings.height});
+    view::Viewer viewer(view.options, givenFrameArgs(*view.cmd), {std::move(view.frame), view.settings});
     viewer.run();
     return 0;
 }
 
-}  // namespace penumbra::view
+}  // namespace penumbra

@@ -1,4 +1,4 @@
-#include "app/frame_options.h"
+#include "frame/frame_options.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,11 +6,11 @@
 
 #include <fmt/format.h>
 
-#include "app/cli_parse.h"
-#include "app/option_checks.h"
-#include "app/option_cli.h"
-#include "app/shadow_cli.h"
 #include "core/texture_upload.h"
+#include "frame/input_parse.h"
+#include "frame/light_filters.h"
+#include "frame/option_text.h"
+#include "renderer/render_options.h"
 #include "rsm/rsm_options.h"
 #include "scene/named_views.h"
 
@@ -145,23 +145,17 @@ const OptionTable& motionOptions() {
     return table;
 }
 
-void addFrameOptions(CLI::App& cmd, FrameOptions& o, RenderSettings& rs) {
-    // The defaults show what penumbra is for: one bounce of indirect light (RSM, interpolated) and
-    // soft shadows (PCF); docs/techniques/shadows.md and rsm.md give the reasons and the cost.
-    rs.gi = GiMode::Rsm;
-    rs.shadow.filter = ShadowFilter::Pcf;
-    cmd.add_option("scene", o.scene, "glTF file (.gltf/.glb) or built-in scene: " +
-                                              fmt::format("{}", fmt::join(builtinSceneNames(), ", ")));
-    addOptionRows(cmd, frameInputOptions(), &o);
-    addRenderOptionRows(cmd, rs);
-    addMotionOptions(cmd, o);
+std::string sceneArgumentHelp() {
+    return "glTF file (.gltf/.glb) or built-in scene: " + fmt::format("{}", fmt::join(builtinSceneNames(), ", "));
 }
 
-void addMotionOptions(CLI::App& cmd, FrameOptions& o) { addOptionRows(cmd, motionOptions(), &o); }
+void setFrameDefaults(RenderSettings& settings) {
+    // The defaults show what penumbra is for: one bounce of indirect light (RSM, interpolated) and
+    // soft shadows (PCF); docs/techniques/shadows.md and rsm.md give the reasons and the cost.
+    settings.gi = GiMode::Rsm;
+    settings.shadow.filter = ShadowFilter::Pcf;
+}
 
-namespace {
-
-// The frame's motion; a path or animation that does not fit the scene is refused naming its option.
 SceneMotion checkedMotion(const FrameOptions& o, const PreparedFrame& f) {
     try {
         return SceneMotion(f.scene, f.camera, f.scene.lights, o.parsedMotion, o.animation);
@@ -179,14 +173,16 @@ SceneMotion checkedMotion(const FrameOptions& o, const PreparedFrame& f) {
     }
 }
 
-}  // namespace
-
-SceneMotion frameMotion(const FrameOptions& o, const PreparedFrame& f) {
-    SceneMotion motion = checkedMotion(o, f);
+void warnIfStill(const FrameOptions& o, const SceneMotion& motion, const Scene& scene) {
     if (o.time != 0.0 && !motion.moves())
         fmt::print(stderr, "penumbra: warning: {} {}: nothing in '{}' moves (no animation or motion path)\n",
                    motionOptions().flagOf<FrameOptions>([](FrameOptions& m) -> auto& { return m.time; }), o.time,
-                   f.scene.name);
+                   scene.name);
+}
+
+SceneMotion frameMotion(const FrameOptions& o, const PreparedFrame& f) {
+    SceneMotion motion = checkedMotion(o, f);
+    warnIfStill(o, motion, f.scene);
     return motion;
 }
 
@@ -254,22 +250,27 @@ Camera frameCamera(const FrameOptions& o, const Scene& scene) {
     if (o.parsedCamera) return *o.parsedCamera;
     if (const NamedView* view = frameView(o)) return parseCamera(view->camera);
     if (o.cameraIndex < 0 || o.cameraIndex >= int(scene.cameras.size()))
-        throw std::invalid_argument(fmt::format("{} {}: the scene has {}",
+        throw std::invalid_argument(fmt::format("{} {}: the scene has {} camera{}",
                                                 frameInputOptions().flagOf<FrameOptions>([](FrameOptions& f) -> auto& { return f.cameraIndex; }),
-                                                o.cameraIndex,
-                                                plural(scene.cameras.size(), "camera")));
+                                                o.cameraIndex, scene.cameras.size(),
+                                                scene.cameras.size() == 1 ? "" : "s"));
     return scene.cameras[o.cameraIndex];
 }
 
-PreparedFrame prepareFrame(const FrameOptions& o, RenderSettings& settings) {
-    checkFrameSettings(o, settings);
+PreparedFrame loadFrame(const FrameOptions& o) {
     PreparedFrame f;
     f.scene = loadScene(o.scene, o.builtin);
-    for (const std::string& w : f.scene.warnings) printWarning(w);
+    for (const std::string& w : f.scene.warnings) printFrameWarning(w);
     if (const std::string w = planTextureTable(f.scene.textures).warning(); !w.empty())
         fmt::print(stderr, "penumbra: warning: {}\n", w);
     f.scene.lights = frameLights(o, f.scene);
     f.camera = frameCamera(o, f.scene);
+    return f;
+}
+
+PreparedFrame prepareFrame(const FrameOptions& o, RenderSettings& settings) {
+    checkFrameSettings(o, settings);
+    PreparedFrame f = loadFrame(o);
     checkedMotion(o, f);  // the animation exists, the paths fit the scene
     return f;
 }

@@ -1,4 +1,4 @@
-#include "app/shadow_cli.h"
+#include "frame/light_filters.h"
 
 #include <stdexcept>
 

@@ -1,4 +1,4 @@
-#include "app/cli_parse.h"
+#include "frame/input_parse.h"
 
 #include <algorithm>
 #include <cmath>
