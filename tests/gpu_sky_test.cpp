@@ -1,8 +1,8 @@
 // The sky on the GPU (lighting/gpu_sky.h) against the CPU's sky (core/sky.h), which evaluates
 // Preetham's model and integrates its SH in double precision: the analytic sky's table texel by
 // texel, its background at the background's texel centres and its SH against Sky::sh(), for suns
-// from near the horizon to overhead and the whole range of turbidity; and a map-like sky made on the
-// CPU, uploaded as it is.
+// from near the horizon to overhead and the whole range of turbidity; and a sky made on the CPU,
+// uploaded as it is.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -13,6 +13,8 @@
 #include "gpu_fixture.h"
 #include "lighting/gpu_sky.h"
 #include "readback.h"
+#include "renderer/renderer.h"
+#include "scene/scene.h"
 #include "vk/commands.h"
 #include "vk/memory.h"
 
@@ -177,6 +179,20 @@ TEST_F(GpuSkyTest, CpuSkyIsUploadedAndAnalyticSkyReplacesIt) {
     run();
     got = sh();
     for (size_t k = 0; k < 9; ++k) EXPECT_EQ(got[k], glm::vec3(expected[k])) << "coefficient " << k;
+}
+
+// --sky-sun-illuminance with a sky that does not follow the sun: one warning, the sky as given.
+TEST_F(GpuSkyTest, SunIlluminanceOfAnotherSkyIsIgnoredWithAWarning) {
+    const Scene plane = makeBuiltinScene("plane");
+    RenderSettings s;
+    s.width = 16, s.height = 16;
+    s.lighting.sky.kind = SkyKind::Uniform;
+    s.lighting.sky.sunIlluminance = 3.0f;
+    Renderer r(ctx(), plane, s);
+    r.render(plane.cameras.at(0));
+    size_t said = 0;
+    for (const std::string& w : r.warnings()) said += w == "--sky-sun-illuminance scales the analytic sky only: ignored";
+    EXPECT_EQ(said, 1u);
 }
 
 }  // namespace

@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "lighting/lighting_options.h"
+
 namespace penumbra {
 
 bool hasSkyCase(const std::string& suiteScene) {
@@ -89,8 +91,10 @@ std::string formatSkySuiteTable(const std::vector<SkySuiteResult>& results) {
 nlohmann::json skySuiteJson(const std::vector<SkySuiteResult>& results) {
     // How each term was measured, for whoever reads the JSON without the source.
     const nlohmann::json method{
-        {"sky_alone", "every light's intensity 0; the analytic sky keeps the first directional light's "
-                      "illuminance as its own sun's (--sky-sun-illuminance): the same sky"},
+        {"sky_alone", fmt::format("every light's intensity 0; the analytic sky keeps the first directional light's "
+                                  "illuminance as its own sun's ({}): the same sky",
+                                  lightingOptions().flagOf<LightingSettings>(
+                                      [](auto& s) -> auto& { return s.sky.sunIlluminance; }))},
         {"sky_direct", "renderer: final - indirect of two sky-alone renders in step (a difference of two renders); "
                        "reference: the sky-alone direct radiance"},
         {"sky_bounce", "renderer: the indirect image of the sky-alone render; reference: the sky-alone indirect "

@@ -2,6 +2,7 @@
 
 #include "core/gpu_scene.h"
 #include "core/names.h"
+#include "lighting/lighting_options.h"
 
 #include <algorithm>
 #include <cmath>
@@ -109,6 +110,9 @@ void LightingTechnique::refreshSky(const std::vector<Light>& lights) {
     const bool analytic = settings_.sky.kind == SkyKind::Analytic;
     analyticSky_ = analytic ? makeAnalyticSky(settings_.sky, lights, warnings) : std::nullopt;
     sky_ = analytic ? Sky() : makeSky(settings_.sky, lights, warnings);
+    if (!analytic && settings_.sky.sunIlluminance > 0.0f)
+        warnings.push_back(lightingOptions().flagOf<LightingSettings>([](auto& s) -> auto& { return s.sky.sunIlluminance; }) +
+                           " scales the analytic sky only: ignored");
     // A moving sun would repeat its warning every frame: each is said once.
     for (const std::string& w : warnings)
         if (std::find(warnings_.begin(), warnings_.end(), w) == warnings_.end()) warnings_.push_back(w);
