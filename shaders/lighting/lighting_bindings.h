@@ -21,7 +21,7 @@
 #define LIGHTING_PROBE 12
 // core/motion.glsl's three (visibility IDs, drawn triangles, instances) from here on.
 #define LIGHTING_MOTION_FIRST 13
-// The sky behind the geometry (src/lighting/sky_background.h), after motion.glsl's three.
+// The sky behind the geometry (src/lighting/gpu_sky.h), after motion.glsl's three.
 #define LIGHTING_BACKGROUND_SKY 16
 // The visible sky's irradiance (names::kSkyIrradiance; a black 1x1 image without a sky).
 #define LIGHTING_SKY_IRRADIANCE 17

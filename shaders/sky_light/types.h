@@ -24,6 +24,7 @@ namespace penumbra::gpu {
 #define SKY_WEIGH_GBUFFER_DEPTH 2
 #define SKY_WEIGH_CLEAR_RAYS 3
 #define SKY_WEIGH_OUT 4  // rgb: the share of the sky's radiance a traced receiver sees, per channel
+#define SKY_WEIGH_SKY_SH 5  // the sky's SH radiance (names::kSkySh)
 
 // filter.comp
 #define SKY_FILTER_FRAME 0
@@ -38,6 +39,7 @@ namespace penumbra::gpu {
 #define SKY_UPSAMPLE_GBUFFER_DEPTH 2
 #define SKY_UPSAMPLE_SHARE 3
 #define SKY_UPSAMPLE_OUT 4  // rgb: the visible sky's irradiance at every pixel (names::kSkyIrradiance)
+#define SKY_UPSAMPLE_SKY_SH 5  // the sky's SH radiance (names::kSkySh)
 
 // Rays of one traced receiver share a rotation with those SKY_TILE apart: a SKY_TILE^2 block holds
 // every rotation, which the filter averages back together.
@@ -45,10 +47,8 @@ namespace penumbra::gpu {
 #define SKY_MAX_RAYS 32  // the bits of a clear-ray mask
 #define SKY_TRACE_EVERY_TEXEL 0xFFFFFFFFu  // SkyLightPush.tracePhase: no subset
 
-// Every pass's push constants: the sky's order-2 SH radiance (nine RGB coefficients, flattened, the
-// basis of core/sky.h's shBasis) and the walk's parameters.
+// Every pass's push constants: the walk's parameters.
 struct SkyLightPush {
-    float sh[27];
     uint rays;          // trace, weigh: rays per receiver (0: every pixel sees the whole sky)
     float startOffset;  // trace: voxels off the surface, along its normal, where the rays start
     uint filterRadius;  // filter: traced receivers either side
@@ -59,8 +59,8 @@ struct SkyLightPush {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(SkyLightPush) == 128 && offsetof(SkyLightPush, tracePhase) == 124 && offsetof(SkyLightPush, rays) == 108 &&
-              offsetof(SkyLightPush, traceStep) == 120);
+static_assert(sizeof(SkyLightPush) == 20 && offsetof(SkyLightPush, tracePhase) == 16 && offsetof(SkyLightPush, rays) == 0 &&
+              offsetof(SkyLightPush, traceStep) == 12);
 }  // namespace penumbra::gpu
 #endif
 #endif

@@ -16,6 +16,7 @@ layout(set = 0, binding = SKY_UPSAMPLE_GBUFFER_DEPTH) uniform sampler2D gDepth;
 layout(set = 0, binding = SKY_UPSAMPLE_SHARE) uniform sampler2D share;
 layout(set = 0, binding = SKY_UPSAMPLE_OUT, rgba32f) uniform writeonly image2D outIrradiance;
 layout(push_constant) uniform Push { SkyLightPush pc; };
+#define SKY_SH_BINDING SKY_UPSAMPLE_SKY_SH
 #include "sky_light/sky_sh.glsl"
 #include "sky_light/surface.glsl"
 #include "sky_light/rays.glsl"
@@ -26,7 +27,7 @@ void main() {
     if (any(greaterThanEqual(pixel, size))) return;
     const SkyReceiver r = skyReceiver(pixel);
     if (!r.surface) {
-        imageStore(outIrradiance, pixel, vec4(skyIrradiance(pc, vec3(0.0, 1.0, 0.0)), 0.0));
+        imageStore(outIrradiance, pixel, vec4(skyIrradiance(vec3(0.0, 1.0, 0.0)), 0.0));
         return;
     }
     // Texel t stands at pixel t * step + step / 2: the pixel's place between the texels around it.
@@ -51,5 +52,5 @@ void main() {
         mixedWeight += bilinear;
     }
     const vec3 visible = weight > 1e-3 * mixedWeight ? onSurface / weight : mixed / max(mixedWeight, 1e-6);
-    imageStore(outIrradiance, pixel, vec4(skyIrradiance(pc, r.n) * visible, 1.0));
+    imageStore(outIrradiance, pixel, vec4(skyIrradiance(r.n) * visible, 1.0));
 }

@@ -101,9 +101,9 @@ SkySuiteResult runSkyCase(const EvalCliOptions& o, const SuiteScene& sc, const P
                           const GroundTruth& sun, const GroundTruth& sunSecond, vk::Context& ctx, bool progressLine) {
     const SkySettings sky = suiteSky();
     EvalCliOptions skyOptions = o;
-    skyOptions.reference.settings.sky = skyOnlySky(sky);
+    skyOptions.reference.settings.sky = skyOnlySky(sky, f.scene.lights);
     PreparedFrame skyFrame = f;
-    skyFrame.scene.lights = skyOnlyLights(f.scene.lights, sky);
+    skyFrame.scene.lights = skyOnlyLights(f.scene.lights);
     const uint64_t seed = o.reference.settings.seed;
     const SkyCaseTruths truths{sun, cachedTruth(skyOptions, skyFrame, sc.name + "-sky", seed), sunSecond,
                                cachedTruth(skyOptions, skyFrame, sc.name + "-sky", seed + 1)};

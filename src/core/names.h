@@ -79,11 +79,10 @@ struct GiChange {
 };
 
 // The sky, published by the lighting module's update for every technique that lights with it or
-// bounces its light: its radiance as order-2 spherical harmonics (world space, +Y up, the user's
-// scale applied). `generation` changes whenever the sky does, so cached sky visibility restarts.
+// bounces its light; its radiance is the GPU buffer names::kSkySh. `generation` changes whenever the
+// sky does, so cached sky visibility restarts.
 struct SkyLight {
     bool enabled = false;
-    std::array<glm::vec3, 9> radianceSh{};  // coefficients of Y00, Y1-1, Y10, Y11, Y2-2, Y2-1, Y20, Y21, Y22
     uint64_t generation = 0;
 };
 
@@ -126,6 +125,10 @@ inline constexpr HostName<uint32_t> kRsmLayerCount{"rsm.layer-count"};
 // The sky's radiance (names.h SkyLight) and the visible sky's irradiance per pixel, which the
 // lighting pass adds to the direct light when a technique writes it.
 inline constexpr HostName<SkyLight> kSkyLight{"sky.light"};
+// The sky's radiance as order-2 spherical harmonics (world space, +Y up, the user's scale applied):
+// vec4 coefficients[9] of Y00, Y1-1, Y10, Y11, Y2-2, Y2-1, Y20, Y21, Y22 (core/sky.h's basis), RGB
+// in .xyz; published by the lighting module's update, before any technique's passes.
+inline constexpr BufferName kSkySh{"sky.sh"};
 inline constexpr ImageName kSkyIrradiance{"sky.irradiance"};
 
 // Shared services.

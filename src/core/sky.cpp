@@ -31,26 +31,19 @@ glm::dvec3 layoutDirection(double cosTheta, double phi) {
     return {sinTheta * std::sin(phi), cosTheta, -sinTheta * std::cos(phi)};
 }
 
-// Sub-points per texel side of the double-precision integrals: two-point Gauss-Legendre in
-// cos(theta) and phi, where the solid angle is uniform (exact for the cubics of the SH basis' y).
-constexpr uint32_t kSubPoints = 2;
-constexpr double kGaussOffsets[kSubPoints] = {0.5 - 0.28867513459481287, 0.5 + 0.28867513459481287};
-
-// Calls f(texel index, direction, solid angle) at kSubPoints^2 points of every texel.
+// Calls f(texel index, direction, solid angle) at the Gauss-Legendre points of every texel (two in
+// cos(theta) by two in phi, where the solid angle is uniform: exact for the cubics of the SH
+// basis' y).
 template <class F>
 void forEachTexelPoint(const SkyTable& t, F&& f) {
-    const double texelPhi = 2.0 * kPi / t.width, dPhi = texelPhi / kSubPoints;
+    const double texelPhi = 2.0 * kPi / t.width;
     for (uint32_t r = 0; r < t.height; ++r) {
-        double cosTop, cosBottom;
-        rowCosines(r, t.height, cosTop, cosBottom);
-        const double texelCos = cosTop - cosBottom, dCos = texelCos / kSubPoints;
+        const SkyRowPoints row = skyRowPoints(r, t.height);
+        const double solidAngle = row.cosSpan / kSkyGaussOffsets.size() * texelPhi / kSkyGaussOffsets.size();
         for (uint32_t c = 0; c < t.width; ++c)
-            for (uint32_t i = 0; i < kSubPoints; ++i)
-                for (uint32_t j = 0; j < kSubPoints; ++j) {
-                    const double cosTheta = cosTop - kGaussOffsets[i] * texelCos;
-                    const double phi = texelPhi * (c + kGaussOffsets[j]) - kPi;
-                    f(r * t.width + c, layoutDirection(cosTheta, phi), dCos * dPhi);
-                }
+            for (const double cosTheta : row.cosGauss)
+                for (const double offset : kSkyGaussOffsets)
+                    f(r * t.width + c, layoutDirection(cosTheta, skyAzimuth(c + offset, t.width)), solidAngle);
     }
 }
 
@@ -82,6 +75,15 @@ std::shared_ptr<const ShTexelWeights> shTexelWeights(const SkyTable& layout, flo
 }
 
 }  // namespace
+
+SkyRowPoints skyRowPoints(uint32_t row, uint32_t height) {
+    double cosTop, cosBottom;
+    rowCosines(row, height, cosTop, cosBottom);
+    const double span = cosTop - cosBottom;
+    return {0.5 * (cosTop + cosBottom), {cosTop - kSkyGaussOffsets[0] * span, cosTop - kSkyGaussOffsets[1] * span}, span};
+}
+
+double skyAzimuth(double column, uint32_t width) { return 2.0 * kPi * column / width - kPi; }
 
 std::array<double, 9> skyShBasis(const glm::dvec3& d) {
     return {0.282095,
@@ -119,13 +121,9 @@ Sky Sky::map(SkyTable texels, float rotationDegrees) {
 void Sky::buildTable(uint32_t width, uint32_t height) {
     table_ = {width, height, std::vector<glm::vec3>(size_t(width) * height)};
     for (uint32_t r = 0; r < height; ++r) {
-        double cosTop, cosBottom;
-        rowCosines(r, height, cosTop, cosBottom);
-        const double cosMid = 0.5 * (cosTop + cosBottom);
-        for (uint32_t c = 0; c < width; ++c) {
-            const double phi = 2.0 * kPi * (c + 0.5) / width - kPi;
-            table_.texels[r * width + c] = radiance(toWorld(glm::vec3(layoutDirection(cosMid, phi))));
-        }
+        const double cosMid = skyRowPoints(r, height).cosCentre;
+        for (uint32_t c = 0; c < width; ++c)
+            table_.texels[r * width + c] = radiance(toWorld(glm::vec3(layoutDirection(cosMid, skyAzimuth(c + 0.5, width)))));
     }
     buildDistribution();
 }
@@ -164,7 +162,7 @@ uint32_t Sky::texelOf(const glm::vec3& d) const {
 glm::vec3 Sky::radiance(const glm::vec3& direction) const {
     switch (kind_) {
         case SkyKind::Uniform: return direction.y > 0.0f ? uniform_ : glm::vec3(0.0f);
-        case SkyKind::Analytic: return analyticRadiance(direction);
+        case SkyKind::Analytic: return analytic_.radiance(direction);
         case SkyKind::Map: return table_.texels[texelOf(toMap(direction))];
         default: return glm::vec3(0.0f);
     }
@@ -173,7 +171,7 @@ glm::vec3 Sky::radiance(const glm::vec3& direction) const {
 void Sky::scale(float factor) {
     scale_ *= factor;
     uniform_ *= factor;
-    analyticScale_ *= factor;
+    analytic_.scale *= factor;
     for (glm::vec3& t : table_.texels) t *= factor;
     buildDistribution();
 }

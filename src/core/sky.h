@@ -1,6 +1,7 @@
 // The sky: radiance from every direction of the world's upper hemisphere (+Y up), its order-2
-// spherical harmonics, importance sampling of it and the irradiance it gives. CPU only: the lighting
-// module uploads it, the path tracer samples it, the tests integrate it.
+// spherical harmonics, importance sampling of it and the irradiance it gives. The path tracer samples
+// it, the tests integrate it; the renderer uploads maps and uniform skies from it, and evaluates the
+// analytic sky on the GPU from its AnalyticSkyModel (src/lighting/gpu_sky.h).
 //
 // Kinds (`--sky`): none; uniform,r,g,b (radiance (r,g,b) over the upper hemisphere, black below the
 // horizon); analytic[,turbidity] (Preetham, Shirley and Smits 1999, driven by the first directional
@@ -16,6 +17,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,6 +40,9 @@ struct SkySettings {
     std::string mapPath;
     float scale = 1.0f;            // multiplies every kind's radiance
     float rotationDegrees = 0.0f;  // a map's turn about +Y
+    // analytic: the sun's illuminance the sky is scaled to (the renderer's units); 0: the first
+    // directional light's. The sky keeps its sun when the light's own intensity is 0 (the sky alone).
+    float sunIlluminance = 0.0f;
     bool operator==(const SkySettings&) const = default;
 };
 inline constexpr float kDefaultTurbidity = 3.0f;
@@ -53,10 +58,40 @@ std::string skyText(const SkySettings& settings);
 // 0.546274 (x^2 - y^2).
 std::array<double, 9> skyShBasis(const glm::dvec3& d);
 
+// The sample points of the equirectangular layout, for code that evaluates a sky on the GPU: row r's
+// polar cosine at its texels' centres (the row's mid cosine, where a table is evaluated) and at the
+// two Gauss-Legendre points in cos(theta) of the integrals (Sky::sh, Sky::irradiance), with the
+// row's span in cos(theta); and the azimuth at `column`, a column index plus the fraction across it.
+inline constexpr std::array<double, 2> kSkyGaussOffsets{0.5 - 0.28867513459481287, 0.5 + 0.28867513459481287};
+struct SkyRowPoints {
+    double cosCentre;
+    std::array<double, 2> cosGauss;
+    double cosSpan;
+};
+SkyRowPoints skyRowPoints(uint32_t row, uint32_t height);
+double skyAzimuth(double column, uint32_t width);
+
 struct SkySample {
     glm::vec3 direction{0.0f};
     float pdf = 0.0f;  // per unit solid angle
     glm::vec3 radiance{0.0f};
+};
+
+// Preetham's clear sky as the handful of numbers it is evaluated from, on the CPU or the GPU: the
+// Perez coefficients of luminance Y and chromaticity x, y, their zenith values, the sun and the
+// scale to the renderer's radiance.
+struct AnalyticSkyModel {
+    struct Perez {
+        double a, b, c, d, e;
+    };
+    std::array<Perez, 3> perez{};  // Y, x, y
+    glm::dvec3 zenith{0.0};        // Yz (cd/m^2), xz, yz, each over its Perez value at the zenith
+    glm::vec3 toSun{0, 1, 0};
+    double scale = 1.0;            // cd/m^2 -> renderer radiance
+    // `toSun`: unit direction toward the sun; `sunIlluminance`: the sun's luminous irradiance normal
+    // to it in the renderer's units (the directional light's intensity times its colour's luminance).
+    static AnalyticSkyModel make(float turbidity, const glm::vec3& toSun, float sunIlluminance);
+    glm::vec3 radiance(const glm::vec3& direction) const;
 };
 
 // A piecewise-constant table over the equirectangular layout.
@@ -72,6 +107,9 @@ public:
     // `toSun`: unit direction toward the sun; `sunIlluminance`: the sun's luminous irradiance normal
     // to it in the renderer's units (the directional light's intensity times its colour's luminance).
     static Sky analytic(float turbidity, const glm::vec3& toSun, float sunIlluminance);
+    static Sky analytic(const AnalyticSkyModel& model);
+    // The analytic sky's table size.
+    static constexpr uint32_t kAnalyticWidth = 256, kAnalyticHeight = 128;
     // A map (RGB texels, top row first, the layout above) turned by `rotationDegrees` about +Y.
     static Sky map(SkyTable texels, float rotationDegrees);
 
@@ -96,7 +134,6 @@ public:
     uint32_t clipSun();
 
 private:
-    glm::vec3 analyticRadiance(const glm::vec3& d) const;
     void buildTable(uint32_t width, uint32_t height);
     void buildDistribution();
     glm::vec3 toMap(const glm::vec3& world) const;
@@ -105,11 +142,7 @@ private:
 
     SkyKind kind_ = SkyKind::None;
     glm::vec3 uniform_{0.0f};
-    struct Perez { double a, b, c, d, e; };
-    std::array<Perez, 3> perez_{};   // Y, x, y
-    glm::dvec3 zenith_{0.0};         // Yz (cd/m^2), xz, yz, each over its Perez value at the zenith
-    glm::vec3 toSun_{0, 1, 0};
-    double analyticScale_ = 1.0;     // cd/m^2 -> renderer radiance
+    AnalyticSkyModel analytic_;
     float scale_ = 1.0f;
     float rotation_ = 0.0f;
     SkyTable table_;
@@ -123,6 +156,13 @@ private:
 // its sun clipped). Throws std::runtime_error when a map cannot be read. Things the user should know
 // (clipping, a sun below the horizon) are appended to `warnings`.
 Sky makeSky(const SkySettings& settings, const std::vector<Light>& lights, std::vector<std::string>& warnings);
+// The analytic sky of `settings` (kind Analytic) for the frame's lights, the user's scale applied: none
+// without a directional light. Its warnings as makeSky's.
+std::optional<AnalyticSkyModel> makeAnalyticSky(const SkySettings& settings, const std::vector<Light>& lights,
+                                                std::vector<std::string>& warnings);
+// The sun's illuminance the analytic sky of `settings` is scaled to: settings.sunIlluminance, or
+// without it the first directional light's intensity times its colour's luminance (0 without one).
+float skySunIlluminance(const SkySettings& settings, const std::vector<Light>& lights);
 // The kind Auto stands for with these lights (other kinds: themselves).
 SkyKind resolveSkyKind(const SkySettings& settings, const std::vector<Light>& lights);
 // Auto replaced by what it stands for (the commands' frame set-up).

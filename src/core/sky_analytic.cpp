@@ -16,7 +16,7 @@ constexpr double kPi = 3.14159265358979323846;
 // The sun's illuminance outside the atmosphere, normal to it (lux).
 constexpr double kExtraterrestrialIlluminance = 128000.0;
 
-double perez(double a, double b, double c, double d, double e, double cosTheta, double gamma) {
+double perezValue(double a, double b, double c, double d, double e, double cosTheta, double gamma) {
     return (1.0 + a * std::exp(b / cosTheta)) * (1.0 + c * std::exp(d * gamma) + e * std::cos(gamma) * std::cos(gamma));
 }
 
@@ -62,18 +62,17 @@ double preethamSunIlluminance(double turbidity, double sunZenith) {
     return kExtraterrestrialIlluminance * transmitted / outside;
 }
 
-Sky Sky::analytic(float turbidity, const glm::vec3& toSun, float sunIlluminance) {
-    Sky s;
-    s.kind_ = SkyKind::Analytic;
-    s.toSun_ = glm::normalize(toSun);
+AnalyticSkyModel AnalyticSkyModel::make(float turbidity, const glm::vec3& toSun, float sunIlluminance) {
+    AnalyticSkyModel m;
+    m.toSun = glm::normalize(toSun);
     const double t = turbidity;
-    const double theta = modelSunZenith(s.toSun_);
-    s.perez_[0] = {0.1787 * t - 1.4630, -0.3554 * t + 0.4275, -0.0227 * t + 5.3251, 0.1206 * t - 2.5771,
-                   -0.0670 * t + 0.3703};
-    s.perez_[1] = {-0.0193 * t - 0.2592, -0.0665 * t + 0.0008, -0.0004 * t + 0.2125, -0.0641 * t - 0.8989,
-                   -0.0033 * t + 0.0452};
-    s.perez_[2] = {-0.0167 * t - 0.2608, -0.0950 * t + 0.0092, -0.0079 * t + 0.2102, -0.0441 * t - 1.6537,
-                   -0.0109 * t + 0.0529};
+    const double theta = modelSunZenith(m.toSun);
+    m.perez[0] = {0.1787 * t - 1.4630, -0.3554 * t + 0.4275, -0.0227 * t + 5.3251, 0.1206 * t - 2.5771,
+                  -0.0670 * t + 0.3703};
+    m.perez[1] = {-0.0193 * t - 0.2592, -0.0665 * t + 0.0008, -0.0004 * t + 0.2125, -0.0641 * t - 0.8989,
+                  -0.0033 * t + 0.0452};
+    m.perez[2] = {-0.0167 * t - 0.2608, -0.0950 * t + 0.0092, -0.0079 * t + 0.2102, -0.0441 * t - 1.6537,
+                  -0.0109 * t + 0.0529};
     const double chi = (4.0 / 9.0 - t / 120.0) * (kPi - 2.0 * theta);
     const double zenithLuminance = ((4.0453 * t - 4.9710) * std::tan(chi) - 0.2155 * t + 2.4192) * 1000.0;
     const double th2 = theta * theta, th3 = th2 * theta;
@@ -83,32 +82,43 @@ Sky Sky::analytic(float turbidity, const glm::vec3& toSun, float sunIlluminance)
     const double yz = t * t * (0.00275 * th3 - 0.00610 * th2 + 0.00317 * theta) +
                       t * (-0.04214 * th3 + 0.08970 * th2 - 0.04153 * theta + 0.00516) +
                       (0.15346 * th3 - 0.26756 * th2 + 0.06670 * theta + 0.26688);
-    s.zenith_ = {zenithLuminance, xz, yz};
+    m.zenith = {zenithLuminance, xz, yz};
     for (int k = 0; k < 3; ++k) {  // the Perez value at the zenith, once, not at every direction
-        const Perez& p = s.perez_[k];
-        s.zenith_[k] /= perez(p.a, p.b, p.c, p.d, p.e, 1.0, theta);
+        const Perez& p = m.perez[k];
+        m.zenith[k] /= perezValue(p.a, p.b, p.c, p.d, p.e, 1.0, theta);
     }
-    s.analyticScale_ = double(sunIlluminance) / preethamSunIlluminance(t, theta);
-    s.buildTable(256, 128);
-    return s;
+    m.scale = double(sunIlluminance) / preethamSunIlluminance(t, theta);
+    return m;
 }
 
 // Y, x, y by the Perez distribution relative to the zenith, then XYZ, then linear sRGB in the
 // renderer's units. The view's cosine is kept above a small floor, where the fits' exponential
-// term meets the horizon.
-glm::vec3 Sky::analyticRadiance(const glm::vec3& direction) const {
+// term meets the horizon. (shaders/sky/analytic.comp evaluates the same in single precision.)
+glm::vec3 AnalyticSkyModel::radiance(const glm::vec3& direction) const {
     const glm::dvec3 d = glm::normalize(glm::dvec3(direction));
     if (d.y <= 0.0) return glm::vec3(0.0f);
     const double cosTheta = std::max(d.y, 1e-3);
-    const double gamma = std::acos(std::clamp(glm::dot(d, glm::dvec3(toSun_)), -1.0, 1.0));
+    const double gamma = std::acos(std::clamp(glm::dot(d, glm::dvec3(toSun)), -1.0, 1.0));
     glm::dvec3 yxy;
     for (int k = 0; k < 3; ++k) {
-        const Perez& p = perez_[k];
-        yxy[k] = zenith_[k] * perez(p.a, p.b, p.c, p.d, p.e, cosTheta, gamma);
+        const Perez& p = perez[k];
+        yxy[k] = zenith[k] * perezValue(p.a, p.b, p.c, p.d, p.e, cosTheta, gamma);
     }
     const double luminance = yxy[0], x = yxy[1], y = yxy[2];
     const glm::dvec3 xyz{x * luminance / y, luminance, (1.0 - x - y) * luminance / y};
-    return glm::vec3(glm::max(xyzToRgb(xyz), glm::dvec3(0.0)) * analyticScale_);
+    return glm::vec3(glm::max(xyzToRgb(xyz), glm::dvec3(0.0)) * scale);
+}
+
+Sky Sky::analytic(float turbidity, const glm::vec3& toSun, float sunIlluminance) {
+    return analytic(AnalyticSkyModel::make(turbidity, toSun, sunIlluminance));
+}
+
+Sky Sky::analytic(const AnalyticSkyModel& model) {
+    Sky s;
+    s.kind_ = SkyKind::Analytic;
+    s.analytic_ = model;
+    s.buildTable(kAnalyticWidth, kAnalyticHeight);
+    return s;
 }
 
 }  // namespace penumbra

@@ -107,19 +107,41 @@ std::string skyText(const SkySettings& s) {
     return "?";
 }
 
+float skySunIlluminance(const SkySettings& settings, const std::vector<Light>& lights) {
+    if (settings.sunIlluminance > 0.0f) return settings.sunIlluminance;
+    const Light* sun = firstDirectional(lights);
+    return sun ? sun->intensity * luminance(sun->color) : 0.0f;
+}
+
+// Without the user's scale: makeSky scales every kind's table alike.
+static std::optional<AnalyticSkyModel> unscaledAnalyticSky(const SkySettings& settings,
+                                                           const std::vector<Light>& lights,
+                                                           std::vector<std::string>& warnings) {
+    const Light* sun = firstDirectional(lights);
+    if (!sun) {
+        warnings.push_back("the analytic sky follows the first directional light and the scene has none: no sky");
+        return std::nullopt;
+    }
+    if (sun->direction.y > 0.0f) warnings.push_back("the sun is below the horizon: the analytic sky takes it at the horizon");
+    return AnalyticSkyModel::make(settings.turbidity, -sun->direction, skySunIlluminance(settings, lights));
+}
+
+std::optional<AnalyticSkyModel> makeAnalyticSky(const SkySettings& settings, const std::vector<Light>& lights,
+                                                std::vector<std::string>& warnings) {
+    std::optional<AnalyticSkyModel> model = unscaledAnalyticSky(settings, lights, warnings);
+    if (model) model->scale *= settings.scale;
+    return model;
+}
+
 Sky makeSky(const SkySettings& settings, const std::vector<Light>& lights, std::vector<std::string>& warnings) {
     const Light* sun = firstDirectional(lights);
     Sky sky;
     switch (settings.kind) {
         case SkyKind::Uniform: sky = Sky::uniform(settings.uniformRadiance); break;
         case SkyKind::Analytic: {
-            if (!sun) {
-                warnings.push_back("the analytic sky follows the first directional light and the scene has none: no sky");
-                return sky;
-            }
-            if (sun->direction.y > 0.0f)
-                warnings.push_back("the sun is below the horizon: the analytic sky takes it at the horizon");
-            sky = Sky::analytic(settings.turbidity, -sun->direction, sun->intensity * luminance(sun->color));
+            const std::optional<AnalyticSkyModel> model = unscaledAnalyticSky(settings, lights, warnings);
+            if (!model) return sky;
+            sky = Sky::analytic(*model);
             break;
         }
         case SkyKind::Map: {

@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "lighting/lighting_options.h"
+
 namespace penumbra {
 
 bool hasSkyCase(const std::string& suiteScene) {
@@ -17,20 +19,15 @@ SkySettings suiteSky() {
     return sky;
 }
 
-std::vector<Light> skyOnlyLights(const std::vector<Light>& lights, const SkySettings& sky) {
+std::vector<Light> skyOnlyLights(const std::vector<Light>& lights) {
     std::vector<Light> out = lights;
-    bool sunKept = sky.kind != SkyKind::Analytic;  // only the analytic sky follows a light
-    for (Light& l : out) {
-        const bool drivesSky = !sunKept && l.type == LightType::Directional;
-        l.intensity = drivesSky ? l.intensity * kSkyOnlySunFactor : 0.0f;
-        sunKept |= drivesSky;
-    }
+    for (Light& l : out) l.intensity = 0.0f;
     return out;
 }
 
-SkySettings skyOnlySky(const SkySettings& sky) {
+SkySettings skyOnlySky(const SkySettings& sky, const std::vector<Light>& lights) {
     SkySettings out = sky;
-    if (sky.kind == SkyKind::Analytic) out.scale = sky.scale / kSkyOnlySunFactor;
+    if (sky.kind == SkyKind::Analytic) out.sunIlluminance = skySunIlluminance(sky, lights);
     return out;
 }
 
@@ -55,9 +52,9 @@ SkySuiteResult runSkyCase(vk::Context& ctx, const Scene& scene, const Camera& ca
     r.noiseFinal = compareImages(sumOfTruths(truths.sunSecond, truths.skySecond).final, sum.final, sum.mask).relL1;
 
     Scene skyOnlyScene = scene;
-    skyOnlyScene.lights = skyOnlyLights(scene.lights, sky);
+    skyOnlyScene.lights = skyOnlyLights(scene.lights);
     RenderSettings skyOnlyBase = base, fullBase = base;
-    skyOnlyBase.lighting.sky = skyOnlySky(sky);
+    skyOnlyBase.lighting.sky = skyOnlySky(sky, scene.lights);
     fullBase.lighting.sky = sky;
     const std::vector<EvalVariant> skyOnlyVariants = suiteVariants(skyOnlyBase), fullVariants = suiteVariants(fullBase);
     const size_t n = skyOnlyVariants.size() + fullVariants.size();
@@ -94,9 +91,10 @@ std::string formatSkySuiteTable(const std::vector<SkySuiteResult>& results) {
 nlohmann::json skySuiteJson(const std::vector<SkySuiteResult>& results) {
     // How each term was measured, for whoever reads the JSON without the source.
     const nlohmann::json method{
-        {"sky_alone", fmt::format("every light off but the first directional one, which keeps {} of its intensity "
-                                  "while the analytic sky's scale is multiplied by {} (the same sky)",
-                                  kSkyOnlySunFactor, 1.0 / kSkyOnlySunFactor)},
+        {"sky_alone", fmt::format("every light's intensity 0; the analytic sky keeps the first directional light's "
+                                  "illuminance as its own sun's ({}): the same sky",
+                                  lightingOptions().flagOf<LightingSettings>(
+                                      [](auto& s) -> auto& { return s.sky.sunIlluminance; }))},
         {"sky_direct", "renderer: final - indirect of two sky-alone renders in step (a difference of two renders); "
                        "reference: the sky-alone direct radiance"},
         {"sky_bounce", "renderer: the indirect image of the sky-alone render; reference: the sky-alone indirect "

@@ -23,14 +23,11 @@ bool hasSkyCase(const std::string& suiteScene);
 // The sky of the sky cases: the analytic sky at its default turbidity, driven by the view's sun.
 SkySettings suiteSky();
 
-// The sky alone. Every light is switched off but the first directional one when the sky follows it
-// (analytic: its radiance is proportional to that light's intensity): that one keeps
-// kSkyOnlySunFactor of its intensity and the sky's scale is multiplied by the inverse, so the sky is
-// the same sky and the sun's own light falls below 2e-5 of what it was (a power of two: both
-// scalings are exact in floating point).
-inline constexpr float kSkyOnlySunFactor = 1.0f / 65536.0f;
-std::vector<Light> skyOnlyLights(const std::vector<Light>& lights, const SkySettings& sky);
-SkySettings skyOnlySky(const SkySettings& sky);
+// The sky alone: every light's intensity 0, and the sky the same sky. The analytic sky follows the
+// first directional light, whose brightness it keeps as its own sun's illuminance
+// (SkySettings::sunIlluminance) while the light itself lights nothing.
+std::vector<Light> skyOnlyLights(const std::vector<Light>& lights);
+SkySettings skyOnlySky(const SkySettings& sky, const std::vector<Light>& lights);
 
 // The reference of sun and sky together: the sum of the sun-only and sky-only references (their
 // direct and indirect radiance; the noise figures are left 0, the suite measures noise by seeds).

@@ -63,6 +63,11 @@ OptionTable makeTable() {
     t.alsoWrites([](S& s) -> auto& { return s.sky.mapPath; });
     t.real("--sky-scale", "sky_scale", [](S& s) -> auto& { return s.sky.scale; }, 0.0, 1e6, kFrame,
            "Multiplies the sky's radiance");
+    t.real("--sky-sun-illuminance", "sky_sun_illuminance", [](S& s) -> auto& { return s.sky.sunIlluminance; }, 0.0,
+           1e9, kFrame,
+           "The sun's illuminance the analytic sky is scaled to, in the units of a directional light's intensity "
+           "(its intensity times its colour's luminance); the sky still follows the first directional light's "
+           "direction. 0: that light's own. With the light's intensity 0, the sky alone");
     t.real("--sky-rotation", "sky_rotation", [](S& s) -> auto& { return s.sky.rotationDegrees; }, -360.0, 360.0,
            kFrame, "Degrees a sky map turns about +Y, counter-clockwise seen from above");
     addExposureRow(t);

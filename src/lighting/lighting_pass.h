@@ -19,7 +19,7 @@ public:
     // (a 1x1 placeholder on the classic path, FrameUniforms.visibilityIds = 0), "drawn-triangles" and
     // "instances", and "sky.irradiance" (the visible sky's, added to the direct light; a 1x1 black
     // image without a sky); writes "probe" (the pixel probe, FrameUniforms.probeX, probeY). `sky` is the
-    // background's radiance (lighting/sky_background.h). Publishes "hdr".
+    // background's radiance (lighting/gpu_sky.h). Publishes "hdr".
     void addTo(FrameGraph& graph, ImageHandle sky);
 
     vk::Image hdr;  // RGBA32F radiance (or AOV values)

@@ -2,6 +2,7 @@
 
 #include "core/gpu_scene.h"
 #include "core/names.h"
+#include "lighting/lighting_options.h"
 
 #include <algorithm>
 #include <cmath>
@@ -29,7 +30,7 @@ void CameraTechnique::addPasses(const FrameContext& f) {
 LightingTechnique::LightingTechnique(const TechniqueBuild& b, const LightingSettings& settings)
     : board_(b.board), irradiance_(b.alloc, b.core.width, b.core.height), lighting_(b.alloc, b.core.width, b.core.height),
       debugView_(b.alloc.context()), tonemap_(b.alloc, b.core.width, b.core.height), settings_(settings),
-      warnings_(b.warnings), background_(b.alloc), exposure_(b.alloc, b.core.width, b.core.height) {
+      warnings_(b.warnings), gpuSky_(b.alloc, b.cmd), exposure_(b.alloc, b.core.width, b.core.height) {
     noIndirect_ = vk::Image(b.alloc, {VK_FORMAT_R16G16B16A16_SFLOAT, 1, 1, 1,
                                       VK_IMAGE_USAGE_SAMPLED_BIT | VK_IMAGE_USAGE_TRANSFER_DST_BIT, "no-indirect"});
     noSky_ = vk::Image(b.alloc, {VK_FORMAT_R16G16B16A16_SFLOAT, 1, 1, 1,
@@ -90,35 +91,43 @@ LightingTechnique::SkyKey LightingTechnique::skyKey(const SkySettings& settings,
 }
 
 // The sky is made again only when what it is made from changes (a moving sun: every frame), and
-// each new sky gets a new generation, so that what others cache of it restarts.
+// each new sky gets a new generation, so that what others cache of it restarts. Its GPU passes are
+// added here, in the update, so that they come before the passes of every technique that reads it.
 void LightingTechnique::update(const FrameContext& f) {
     refreshSky(f.lights);
-    if (backgroundStale_) background_.fill(sky_, f.slot);
-    backgroundStale_ = false;
+    if (gpuSkyStale_) {
+        if (analyticSky_) gpuSky_.set(*analyticSky_);
+        else gpuSky_.set(sky_, f.slot);
+    }
+    gpuSkyStale_ = false;
+    background_ = gpuSky_.addTo(f.graph);
 }
 
 void LightingTechnique::refreshSky(const std::vector<Light>& lights) {
     SkyKey key = skyKey(settings_.sky, lights);
     if (skyMade_ && key == skyKey_) return;
     std::vector<std::string> warnings;
-    sky_ = makeSky(settings_.sky, lights, warnings);
+    const bool analytic = settings_.sky.kind == SkyKind::Analytic;
+    analyticSky_ = analytic ? makeAnalyticSky(settings_.sky, lights, warnings) : std::nullopt;
+    sky_ = analytic ? Sky() : makeSky(settings_.sky, lights, warnings);
+    if (!analytic && settings_.sky.sunIlluminance > 0.0f)
+        warnings.push_back(lightingOptions().flagOf<LightingSettings>([](auto& s) -> auto& { return s.sky.sunIlluminance; }) +
+                           " scales the analytic sky only: ignored");
     // A moving sun would repeat its warning every frame: each is said once.
     for (const std::string& w : warnings)
         if (std::find(warnings_.begin(), warnings_.end(), w) == warnings_.end()) warnings_.push_back(w);
     skyKey_ = std::move(key);
     skyMade_ = true;
-    skyLight_.enabled = sky_.enabled();
-    const std::array<glm::dvec3, 9> sh = sky_.sh();
-    for (size_t k = 0; k < sh.size(); ++k) skyLight_.radianceSh[k] = glm::vec3(sh[k]);
+    skyLight_.enabled = analyticSky_.has_value() || sky_.enabled();
     ++skyLight_.generation;
-    backgroundStale_ = true;
+    gpuSkyStale_ = true;
 }
 
 void LightingTechnique::addPasses(const FrameContext& f) {
     const ImageHandle indirect = irradiance_.addTo(f.graph);
     f.graph.publish(names::kIrradiance, indirect ? indirect : f.graph.import(noIndirect_));
     if (!f.graph.has(names::kSkyIrradiance)) f.graph.publish(names::kSkyIrradiance, f.graph.import(noSky_));
-    lighting_.addTo(f.graph, background_.addTo(f.graph));
+    lighting_.addTo(f.graph, background_);
 }
 
 void LightingTechnique::addOutputPasses(const FrameContext& f) {

@@ -2,6 +2,7 @@
 // lighting of the summed indirect-irradiance contributions, the debug views and the tone map.
 #pragma once
 #include <memory>
+#include <optional>
 
 #include "core/irradiance_sum.h"
 #include "lighting/auto_exposure.h"
@@ -9,9 +10,9 @@
 #include "core/sky.h"
 #include "core/technique.h"
 #include "lighting/gbuffer_pass.h"
+#include "lighting/gpu_sky.h"
 #include "lighting/lighting_pass.h"
 #include "lighting/lighting_settings.h"
-#include "lighting/sky_background.h"
 
 namespace penumbra {
 
@@ -33,7 +34,8 @@ private:
 
 // Deferred lighting (publishes "hdr") over the sum of the frame's irradiance contributions (a black
 // "gi.irradiance" when none), then the debug views and the tone mapper ("ldr"). Its update makes the
-// sky for the frame's lights and publishes it (names::kSkyLight) for every technique's passes.
+// sky for the frame's lights and publishes it (names::kSkyLight, and on the GPU names::kSkySh, whose
+// passes it adds ahead of every technique's) for every technique's passes.
 class LightingTechnique : public Technique {
 public:
     LightingTechnique(const TechniqueBuild& b, const LightingSettings& settings);
@@ -46,7 +48,7 @@ public:
     LightingPass& lighting() { return lighting_; }
     TonemapPass& tonemap() { return tonemap_; }
     AutoExposure& autoExposure() { return exposure_; }
-    const Sky& sky() const { return sky_; }
+    GpuSky& gpuSky() { return gpuSky_; }
 
 private:
     // What the sky was made from: the settings and the first directional light (the analytic sun).
@@ -69,14 +71,18 @@ private:
     vk::Image noSky_;       // and of the sky's irradiance without a sky
     LightingSettings settings_;
     std::vector<std::string>& warnings_;
+    // The sky of the frame's lights: an analytic one as its model (evaluated on the GPU), any
+    // other as the CPU's Sky.
     Sky sky_;
+    std::optional<AnalyticSkyModel> analyticSky_;
     SkyKey skyKey_;
     bool skyMade_ = false;
     SkyLight skyLight_;
-    SkyBackground background_;
+    GpuSky gpuSky_;
+    ImageHandle background_;  // this frame's, from the update
     AutoExposure exposure_;
     bool wasAuto_ = false;  // the last frame's exposure was auto (switching it on restarts the adaptation)
-    bool backgroundStale_ = true;  // the sky changed since the background was last filled
+    bool gpuSkyStale_ = true;  // the sky changed since it was last given to the GPU
 };
 
 }  // namespace penumbra

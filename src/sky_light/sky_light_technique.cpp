@@ -12,11 +12,13 @@ constexpr uint64_t kClearRaysBytes = 2 * sizeof(uint32_t), kShareBytes = 4 * siz
 constexpr uint32_t kTracePhases = 4;  // a 2x2 block's texels, one a frame
 
 // Each pass reads the frame and the G-buffer's normal and depth (bindings 0 to 2) and one input,
-// and writes one image.
-std::vector<vk::Binding> passBindings(uint32_t input, uint32_t out, VkDescriptorType inputType) {
+// and writes one image; the weigh and the upsample read the sky's SH too.
+std::vector<vk::Binding> passBindings(uint32_t input, uint32_t out, VkDescriptorType inputType, bool readsSky = false) {
     constexpr VkDescriptorType tex = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-    return {{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}, {1, tex}, {2, tex}, {input, inputType},
-            {out, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}};
+    std::vector<vk::Binding> bindings{{0, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER}, {1, tex}, {2, tex}, {input, inputType},
+                                      {out, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}};
+    if (readsSky) bindings.push_back({SKY_WEIGH_SKY_SH, VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER});
+    return bindings;
 }
 
 }  // namespace
@@ -24,6 +26,7 @@ std::vector<vk::Binding> passBindings(uint32_t input, uint32_t out, VkDescriptor
 static_assert(SKY_TRACE_FRAME == 0 && SKY_WEIGH_FRAME == 0 && SKY_FILTER_FRAME == 0 && SKY_UPSAMPLE_FRAME == 0);
 static_assert(SKY_TRACE_GBUFFER_NORMAL == 1 && SKY_WEIGH_GBUFFER_NORMAL == 1 && SKY_FILTER_GBUFFER_NORMAL == 1 &&
               SKY_UPSAMPLE_GBUFFER_NORMAL == 1);
+static_assert(SKY_WEIGH_SKY_SH == SKY_UPSAMPLE_SKY_SH);
 static_assert(SKY_TRACE_GBUFFER_DEPTH == 2 && SKY_WEIGH_GBUFFER_DEPTH == 2 && SKY_FILTER_GBUFFER_DEPTH == 2 &&
               SKY_UPSAMPLE_GBUFFER_DEPTH == 2);
 
@@ -33,11 +36,11 @@ SkyLightTechnique::SkyLightTechnique(const TechniqueBuild& b, const SkyLightSett
     trace_ = vk::ComputeKernel(ctx, "sky_light/trace.comp",
                                passBindings(SKY_TRACE_OCCUPANCY, SKY_TRACE_OUT, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER), push);
     weigh_ = vk::ComputeKernel(ctx, "sky_light/weigh.comp",
-                               passBindings(SKY_WEIGH_CLEAR_RAYS, SKY_WEIGH_OUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE), push);
+                               passBindings(SKY_WEIGH_CLEAR_RAYS, SKY_WEIGH_OUT, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, true), push);
     constexpr VkDescriptorType tex = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     filter_ = vk::ComputeKernel(ctx, "sky_light/filter.comp", passBindings(SKY_FILTER_SHARE, SKY_FILTER_OUT, tex), push);
     upsample_ = vk::ComputeKernel(ctx, "sky_light/upsample.comp",
-                                  passBindings(SKY_UPSAMPLE_SHARE, SKY_UPSAMPLE_OUT, tex), push);
+                                  passBindings(SKY_UPSAMPLE_SHARE, SKY_UPSAMPLE_OUT, tex, true), push);
     point_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
     const VkImageUsageFlags usage = VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT;
     const uint32_t tracedW = vk::divUp(b.core.width, s.traceStep), tracedH = vk::divUp(b.core.height, s.traceStep);
@@ -65,10 +68,8 @@ void SkyLightTechnique::setSettings(const SkyLightSettings& s) {
     cached_ = false;
 }
 
-gpu::SkyLightPush SkyLightTechnique::constants(const SkyLight& sky) const {
+gpu::SkyLightPush SkyLightTechnique::constants() const {
     gpu::SkyLightPush p{};
-    for (size_t i = 0; i < sky.radianceSh.size(); ++i)
-        for (int c = 0; c < 3; ++c) p.sh[3 * i + c] = sky.radianceSh[i][c];
     p.rays = settings_.visibility == SkyVisibility::None ? 0u : settings_.rays;
     p.startOffset = settings_.startOffset;
     p.filterRadius = settings_.filterRadius;
@@ -89,7 +90,7 @@ void SkyLightTechnique::addPasses(const FrameContext& f) {
     if (fullTrace) stalePhases_ = 0;
     else if (key.occupancy != traced_.occupancy) stalePhases_ = kTracePhases;
     if (!fullTrace && stalePhases_ == 0 && sky->generation == weighedSky_) return;
-    gpu::SkyLightPush push = constants(*sky);
+    gpu::SkyLightPush push = constants();
     push.tracePhase = SKY_TRACE_EVERY_TEXEL;
     if (stalePhases_ > 0) {
         push.tracePhase = nextPhase_;
@@ -122,7 +123,7 @@ void SkyLightTechnique::addTrace(FrameGraph& graph, ImageHandle clearRays, const
 }
 
 // A pass of the sky-light kind: the frame, the G-buffer's normal and depth, one input, one output
-// image, one thread per texel of `size`.
+// image (and the sky's SH where its kernel reads them), one thread per texel of `size`.
 void SkyLightTechnique::addImagePass(FrameGraph& graph, const char* name, vk::ComputeKernel& kernel, uint32_t inputBinding,
                                      ImageHandle input, bool inputSampled, uint32_t outBinding, ImageHandle out,
                                      const vk::Image& size, const gpu::SkyLightPush& push) {
@@ -135,6 +136,7 @@ void SkyLightTechnique::addImagePass(FrameGraph& graph, const char* name, vk::Co
         pass.sampled(inputBinding, input, point_.handle());
     else
         pass.storageImage(inputBinding, input, Use::StorageRead);
+    if (&kernel == &weigh_ || &kernel == &upsample_) pass.uniform(SKY_WEIGH_SKY_SH, graph.buffer(names::kSkySh));
     pass.storageImage(outBinding, out).record([&kernel, &size, push](PassContext& c) {
         kernel.pipeline.push(c.cmd, push);
         vkCmdDispatch(c.cmd, vk::divUp(size.width(), 8), vk::divUp(size.height(), 8), 1);

@@ -49,7 +49,7 @@ private:
     void addImagePass(FrameGraph& graph, const char* name, vk::ComputeKernel& kernel, uint32_t inputBinding,
                       ImageHandle input, bool inputSampled, uint32_t outBinding, ImageHandle out, const vk::Image& size,
                       const gpu::SkyLightPush& push);
-    gpu::SkyLightPush constants(const SkyLight& sky) const;
+    gpu::SkyLightPush constants() const;
 
     SkyLightSettings settings_;
     vk::ComputeKernel trace_, weigh_, filter_, upsample_;
