@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "lpv/bindings.h"
+#include "vk/format_bytes.h"
 
 namespace penumbra {
 namespace {
@@ -15,6 +16,20 @@ constexpr VkDescriptorType kTex = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kSs
                            kUbo = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kImg = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
 constexpr VkBufferUsageFlags kVolumeUsage =
     VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT;
+
+// What the passes' traffic estimates (PassBuilder::bytes) count: a cell of a light volume (RGB, four SH
+// coefficients each), of the geometry volume (four coefficients), the corners a VPL is splatted over,
+// an atomic maximum (a 4-byte read and write) and an atomic add to a fixed-point sum (8 bytes each way).
+constexpr uint64_t kLightCellBytes = 3 * sizeof(glm::vec4);
+constexpr uint64_t kGeometryCellBytes = sizeof(glm::vec4);
+constexpr uint64_t kSplatCorners = 8;
+constexpr uint64_t kAtomicMaxBytes = 2 * sizeof(uint32_t);
+constexpr uint64_t kAtomicAddBytes = 2 * sizeof(int64_t);
+
+// Bytes of a texel of the image published as `name`.
+uint64_t texelBytesOf(const FrameGraph& graph, const char* name) {
+    return vk::texelBytes(graph.imageOf(graph.image(name)).format());
+}
 
 float maxExtent(const Bounds& b) {
     const glm::vec3 e = b.max - b.min;
@@ -183,8 +198,10 @@ void LightPropagationVolume::addPropagationFromVpls(FrameGraph& graph) {
 
 void LightPropagationVolume::addDownsample(FrameGraph& graph) {
     const VkSampler point = pointSampler_.handle();
-    // Each RSM texel read once (depth 4 + normal 4 + flux 8 bytes), each VPL written once.
+    // Each RSM texel read once (depth, normal, flux), each VPL written once.
     const uint64_t texels = uint64_t(settings_.rsmResolution) * settings_.rsmResolution * layers_;
+    const uint64_t texelBytes = texelBytesOf(graph, "rsm.depth") + texelBytesOf(graph, "rsm.normal") +
+                                texelBytesOf(graph, "rsm.flux");
     const uint32_t n = vk::divUp(settings_.vplResolution, 8);
     graph.pass("lpv.downsample")
         .pipeline(downsample_.pipeline)
@@ -194,7 +211,7 @@ void LightPropagationVolume::addDownsample(FrameGraph& graph) {
         .storageBuffer(LPV_DOWNSAMPLE_LAYERS, graph.buffer("rsm.layers"))
         .storageBuffer(LPV_DOWNSAMPLE_LIGHTS, graph.buffer("lights"))
         .storageBuffer(LPV_DOWNSAMPLE_VPLS, graph.import(vpls_), Use::StorageWrite)
-        .bytes(texels * 16 + uint64_t(push_.vplCount) * sizeof(gpu::GpuVpl))
+        .bytes(texels * texelBytes + uint64_t(push_.vplCount) * sizeof(gpu::GpuVpl))
         .record([this, push = push_, n](PassContext& c) { run(c, downsample_, push, {n, n, layers_}); });
 }
 
@@ -212,22 +229,24 @@ void LightPropagationVolume::addInjection(FrameGraph& graph) {
     if (layers_ == 0) return;
     const BufferHandle vpls = graph.import(vpls_);
     const uint32_t groups = vk::divUp(push_.vplCount, 64);
-    // Each VPL read once; per cascade and splat corner (8) 3 atomic maxima of 4 bytes.
+    // Each VPL read once; per cascade and splat corner 3 atomic maxima.
     graph.pass("lpv.inject-range")
         .pipeline(injectRange_.pipeline)
         .storageBuffer(LPV_RANGE_VPLS, vpls)
         .storageBuffer(LPV_RANGE_RANGES, geometrySums, Use::StorageWrite)
-        .bytes(uint64_t(push_.vplCount) * (sizeof(gpu::GpuVpl) + cascadeCount_ * 8 * 3 * 8))
+        .bytes(uint64_t(push_.vplCount) * (sizeof(gpu::GpuVpl) + cascadeCount_ * kSplatCorners * 3 * kAtomicMaxBytes))
         .record([this, push = push_, groups](PassContext& c) { run(c, injectRange_, push, {groups, 1, 1}); });
-    // Each VPL read once; per cascade and splat corner 3 scales read and 12 atomic read-modify-writes
-    // of 8 bytes, and 4 for the geometry.
+    // Each VPL read once; per cascade and splat corner 3 scales read and 12 atomic adds (RGB SH), and
+    // 4 atomic adds for the geometry.
     graph.pass("lpv.inject")
         .pipeline(inject_.pipeline)
         .storageBuffer(LPV_INJECT_VPLS, vpls)
         .storageBuffer(LPV_INJECT_LIGHT_SUMS, lightSums, Use::StorageWrite)
         .storageBuffer(LPV_INJECT_GEOMETRY_SUMS, geometrySums, Use::StorageWrite)
         .storageBuffer(LPV_INJECT_RANGES, geometrySums)
-        .bytes(uint64_t(push_.vplCount) * (sizeof(gpu::GpuVpl) + cascadeCount_ * (8 * (3 * 4 + 12 * 16) + 4 * 16)))
+        .bytes(uint64_t(push_.vplCount) *
+               (sizeof(gpu::GpuVpl) +
+                cascadeCount_ * (kSplatCorners * (3 * sizeof(float) + 12 * kAtomicAddBytes) + 4 * kAtomicAddBytes)))
         .record([this, push = push_, groups](PassContext& c) { run(c, inject_, push, {groups, 1, 1}); });
 }
 
@@ -304,7 +323,7 @@ void LightPropagationVolume::addPropagation(FrameGraph& graph, uint64_t occupanc
         // A coarser cascade's far half starts where the finer one's steps end: after half its steps
         // (cells twice as large), light has gone as far as the finer cascade's last step took it.
         push.farFromIteration = std::max(1u, (settings_.iterations + 1) / 2);
-        // Per cell, once: source 48, geometry 16, destination 48, running sum read + written 96.
+        // Per cell, once: the source, the geometry, the destination, the running sum read and written.
         graph.pass(fmt::format("lpv.propagate[{}]", i))
             .pipeline(propagate_.pipeline)
             .storageBuffer(LPV_PROPAGATE_SOURCE, i % 2 ? b : a, Use::StorageRead)
@@ -312,7 +331,7 @@ void LightPropagationVolume::addPropagation(FrameGraph& graph, uint64_t occupanc
             .storageBuffer(LPV_PROPAGATE_SUM, sum, Use::StorageWrite)
             .storageBuffer(LPV_PROPAGATE_GEOMETRY, geometry, Use::StorageRead)
             .storageBuffer(LPV_PROPAGATE_FACES, faces, Use::StorageRead)
-            .bytes(uint64_t(r) * r * r * cascadeCount_ * (48 + 16 + 48 + 96))
+            .bytes(uint64_t(r) * r * r * cascadeCount_ * (4 * kLightCellBytes + kGeometryCellBytes))
             .record([this, push, r](PassContext& c) {
                 run(c, propagate_, push, {vk::divUp(r, 4), vk::divUp(r, 4), vk::divUp(r * cascadeCount_, 4)});
             });
@@ -326,7 +345,9 @@ void LightPropagationVolume::addGather(FrameGraph& graph) {
     gpu::LpvPush push = push_;
     push.sliceAxis = settings_.sliceAxis;
     push.sliceIndex = std::min(settings_.sliceIndex, settings_.resolution - 1);
-    // Per pixel: depth 4 + normal 8 read, irradiance 16 written; the summed volume read once.
+    // Per pixel: depth and normal read, irradiance written; the summed volume read once.
+    const uint64_t pixelBytes = texelBytesOf(graph, "gbuffer.depth") + texelBytesOf(graph, "gbuffer.normal") +
+                                vk::texelBytes(irradiance_.format());
     graph.pass("lpv.gather")
         .pipeline(gather_.pipeline)
         .uniform(LPV_GATHER_FRAME, graph.buffer("frame"))
@@ -335,7 +356,7 @@ void LightPropagationVolume::addGather(FrameGraph& graph) {
         .storageBuffer(LPV_GATHER_SUM, graph.import(accum_))
         .storageBuffer(LPV_GATHER_GEOMETRY, graph.import(geometry_))
         .storageImage(LPV_GATHER_IRRADIANCE, irradiance)
-        .bytes(uint64_t(width_) * height_ * 28 + accum_.size())
+        .bytes(uint64_t(width_) * height_ * pixelBytes + accum_.size())
         .record([this, push](PassContext& c) { run(c, gather_, push, {vk::divUp(width_, 8), vk::divUp(height_, 8), 1}); });
 }
 
