@@ -104,8 +104,4 @@ void checkWritable(const std::string& path, const std::string& option, bool dire
                                                 path, parent.string()));
 }
 
-std::string plural(size_t count, const std::string& noun) {
-    return fmt::format("{} {}{}", count, noun, count == 1 ? "" : "s");
-}
-
 }  // namespace penumbra

@@ -1,12 +1,14 @@
-// Checks attached to the CLI's options when they are registered, so that every way of setting an
-// option (the command line, the viewer's future `set OPTION VALUE`, which reuses the same CLI11
-// definitions) is held to the same rules, and the consistency checks over the settings structs.
+// Checks attached to the CLI's options when they are registered, so that the command line holds every
+// option to its row's rules (the viewer applies the same rows through src/frame/frame_args), and the
+// consistency checks over the settings structs.
 #pragma once
 #include <string>
 #include <utility>
 #include <vector>
 
 #include <CLI/CLI.hpp>
+
+#include "io/plural.h"
 
 namespace penumbra {
 
@@ -23,8 +25,5 @@ void requireFiniteNumbers(CLI::App& app);
 // (`directory` false) or used as a directory (true: an existing writable directory, or one that can
 // be created under the nearest existing ancestor). Nothing is created.
 void checkWritable(const std::string& path, const std::string& option, bool directory = false);
-
-// "1 light", "3 lights".
-std::string plural(size_t count, const std::string& noun);
 
 }  // namespace penumbra

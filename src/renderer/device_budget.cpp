@@ -16,6 +16,7 @@
 #include "core/raster_mode.h"
 #include "core/scene_gpu.h"
 #include "core/texture_upload.h"
+#include "io/plural.h"
 #include "dsm/dsm_options.h"
 #include "lighting/lighting_pass.h"
 #include "lpv/lpv_options.h"
@@ -38,10 +39,6 @@ namespace {
 constexpr double kMiB = 1024.0 * 1024.0;
 constexpr uint64_t kHairPointBytes = sizeof(gpu::GpuHairPoint);
 constexpr uint64_t kStrandRecordBytes = sizeof(gpu::GpuStrand);
-
-std::string plural(size_t count, const std::string& noun) {
-    return fmt::format("{} {}{}", count, noun, count == 1 ? "" : "s");
-}
 
 // The options a refusal names and can suggest a value of (None: the scene's own data).
 enum class Knob { None, Width, Height, ShadowRes, Cascades, RsmRes, LpvRsmRes, LpvVplRes, LpvRes, DsmRes, DsmNodes };
