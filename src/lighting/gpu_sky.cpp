@@ -125,28 +125,28 @@ ImageHandle GpuSky::addTo(FrameGraph& graph) {
     return background;
 }
 
-void GpuSky::addUpload(FrameGraph& graph, ImageHandle background, BufferHandle sh) {
+void GpuSky::addUpload(FrameGraph& graph, ImageHandle skyImage, BufferHandle sh) {
     const BufferHandle source = graph.import(staging_.at(pendingSlot_));
     graph.pass("sky.upload", PassKind::Transfer)
         .use(source, Use::TransferSrc)
-        .use(background, Use::TransferDst)
+        .use(skyImage, Use::TransferDst)
         .use(sh, Use::TransferDst)
-        .record([source, background, sh, coefficients = uploadSh_](PassContext& c) {
+        .record([source, skyImage, sh, coefficients = uploadSh_](PassContext& c) {
             VkBufferImageCopy region{};
             region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
             region.imageExtent = {kWidth, kHeight, 1};
-            vkCmdCopyBufferToImage(c.cmd, c.buffer(source).handle(), c.image(background).handle(),
+            vkCmdCopyBufferToImage(c.cmd, c.buffer(source).handle(), c.image(skyImage).handle(),
                                    VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region);
             vkCmdUpdateBuffer(c.cmd, c.buffer(sh).handle(), 0, sizeof(coefficients), coefficients.data());
         });
 }
 
-void GpuSky::addAnalytic(FrameGraph& graph, ImageHandle background, BufferHandle sh) {
+void GpuSky::addAnalytic(FrameGraph& graph, ImageHandle skyImage, BufferHandle sh) {
     const BufferHandle rows = graph.import(rowSh_);
     graph.pass("sky.analytic")
         .pipeline(analytic_.pipeline)
         .storageBuffer(SKY_ANALYTIC_LAYOUT, graph.import(layout_))
-        .storageImage(SKY_ANALYTIC_BACKGROUND, background)
+        .storageImage(SKY_ANALYTIC_BACKGROUND, skyImage)
         .storageImage(SKY_ANALYTIC_TABLE, graph.import(table_))
         .storageBuffer(SKY_ANALYTIC_ROW_SH, rows, Use::StorageWrite)
         .record([this, push = analyticPush_](PassContext& c) {

@@ -39,8 +39,8 @@ public:
 
 private:
     enum class Pending { None, Upload, Analytic };
-    void addUpload(FrameGraph& graph, ImageHandle background, BufferHandle sh);
-    void addAnalytic(FrameGraph& graph, ImageHandle background, BufferHandle sh);
+    void addUpload(FrameGraph& graph, ImageHandle skyImage, BufferHandle sh);
+    void addAnalytic(FrameGraph& graph, ImageHandle skyImage, BufferHandle sh);
 
     vk::ComputeKernel analytic_, shSum_;
     vk::Image background_, table_;

@@ -153,7 +153,7 @@ gpu::RsmPush RsmGather::constants(uint32_t mode, uint32_t layers) const {
     const bool low = mode == RSM_GATHER_LOWRES, gradient = mode == RSM_GATHER_GRADIENT;
     gpu::RsmPush pc{};
     pc.mode = mode;
-    pc.sampleCount = accumulating_ ? std::min(settings_.frameSamples, settings_.samples) : settings_.samples;
+    pc.sampleCount = sampleCount();
     pc.frameSeed = frameSeed_;
     pc.layerCount = layers;
     pc.lowResFactor = std::max(1u, settings_.lowResFactor);
@@ -174,6 +174,11 @@ gpu::RsmPush RsmGather::constants(uint32_t mode, uint32_t layers) const {
     pc.shiftedRadii = shiftedRadii(settings_) ? 1u : 0u;
     pc.visibilityPoints = settings_.visibilityPoints;
     return pc;
+}
+
+// Samples per receiver this frame: a share while the history accumulates, all of them when it starts.
+uint32_t RsmGather::sampleCount() const {
+    return accumulating_ ? std::min(settings_.frameSamples, settings_.samples) : settings_.samples;
 }
 
 // Radii shifted per receiver: asked for, or implied by voxel visibility (its pipeline always shifts).
@@ -250,7 +255,7 @@ void RsmGather::addTo(FrameGraph& graph, uint32_t layers, uint32_t slot, const G
     }
     const ImageHandle low = graph.import(low_);
     const BufferHandle list = graph.import(pixelList_), args = graph.import(dispatchArgs_);
-    const uint32_t samples = constants(RSM_GATHER_LOWRES, layers).sampleCount;
+    const uint32_t samples = sampleCount();
     if (accumulating_ && kept_.valid && kept_.samples == samples) addGradient(graph, layers);
     addGather(graph, "rsm.gather-lowres", RSM_GATHER_LOWRES, low, layers);
     kept_ = {accumulating_, frameSeed_, samples};

@@ -42,6 +42,7 @@ public:
 private:
     gpu::RsmPush constants(uint32_t mode, uint32_t layers) const;
     uint32_t visibilityMode() const;
+    uint32_t sampleCount() const;
     static bool shiftedRadii(const RsmSettings& s);
     bool drawsByFlux() const;
     uint32_t lanes(uint32_t mode) const;  // invocations per receiver of a gather mode
