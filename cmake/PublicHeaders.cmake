@@ -5,7 +5,9 @@
 set(PENUMBRA_TECHNIQUE_HEADERS
   ${CMAKE_SOURCE_DIR}/src/rsm/rsm_settings.h
   ${CMAKE_SOURCE_DIR}/src/lpv/lpv_settings.h
-  ${CMAKE_SOURCE_DIR}/src/dsm/dsm_settings.h)
+  ${CMAKE_SOURCE_DIR}/src/dsm/dsm_settings.h
+  ${CMAKE_SOURCE_DIR}/src/sky_light/sky_light_settings.h
+  ${CMAKE_SOURCE_DIR}/src/temporal_gi/temporal_gi_settings.h)
 set(PENUMBRA_FORWARD_INCLUDE ${CMAKE_BINARY_DIR}/forward_include)
 foreach(header ${PENUMBRA_TECHNIQUE_HEADERS})
   file(RELATIVE_PATH internal ${CMAKE_SOURCE_DIR}/src ${header})

@@ -12,9 +12,6 @@
 
 namespace penumbra::api {
 
-struct Vec3 {
-    float x = 0.0f, y = 0.0f, z = 0.0f;
-};
 using Mat4 = std::array<float, 16>;  // column-major, as glm and GLSL store it
 
 struct Vertex {

@@ -8,21 +8,18 @@
 #include "api/convert.h"
 #include "api/impl.h"
 #include "io/image_io.h"
+#include "renderer/render_options.h"
 #include "renderer/renderer.h"
 #include "vk/commands.h"
 
 namespace penumbra::api {
 namespace {
 
-// The checks an engine's settings get before anything is built (the command line holds its options
-// to the same ranges).
+// An engine's settings get the checks of the command line's options (the ranges of each module's
+// option table and the rules between modules) before anything is built.
 penumbra::RenderSettings checked(const Settings& s) {
-    if (s.width < 1 || s.width > 16384 || s.height < 1 || s.height > 16384)
-        throw std::invalid_argument(fmt::format("image size {}x{} is out of range (1..16384)", s.width, s.height));
-    if (!std::isfinite(s.exposure) || s.exposure <= 0.0f)
-        throw std::invalid_argument("exposure must be a positive finite number");
     penumbra::RenderSettings internal = toInternal(s);
-    validate(internal.shadow);
+    validateSettings(internal);
     return internal;
 }
 

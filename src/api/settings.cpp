@@ -38,13 +38,34 @@ void shadowFields(Pub& p, In& i, F f) {
     f(p.pointMode, i.pointMode), f(p.paraboloidMaxEdgeDegrees, i.paraboloidMaxEdgeDegrees), f(p.raster, i.raster);
 }
 
+// The sky's kind apart: the public kinds have no Auto (the library resolves none).
+template <class Pub, class In, class F>
+void skyFields(Pub& p, In& i, F f) {
+    f(p.uniformRadiance, i.uniformRadiance), f(p.turbidity, i.turbidity), f(p.mapPath, i.mapPath);
+    f(p.scale, i.scale), f(p.rotationDegrees, i.rotationDegrees), f(p.sunIlluminance, i.sunIlluminance);
+}
+
 template <class Pub, class In, class F>
 void settingsFields(Pub& p, In& i, F f) {
-    f(p.width, i.width), f(p.height, i.height), f(p.exposure, i.exposure), f(p.cameraPath, i.cameraPath);
+    f(p.width, i.width), f(p.height, i.height), f(p.exposure, i.exposure), f(p.autoExposure, i.autoExposure);
+    f(p.exposureCompensation, i.exposureCompensation);
+    f(p.exposureLowPercentile, i.lighting.exposureLowPercentile);
+    f(p.exposureHighPercentile, i.lighting.exposureHighPercentile);
+    f(p.cameraPath, i.cameraPath);
     shadowFields(p.shadow, i.shadow, f);
-    f(p.gi, i.gi), f(p.giTemporal, i.giTemporal), f(p.giTemporalAlpha, i.temporalGi.minWeight);
+    f(p.gi, i.gi), f(p.giTemporal, i.giTemporal), f(p.temporalGi, i.temporalGi);
     f(p.rsm, i.rsm), f(p.lpv, i.lpv), f(p.dsm, i.dsm), f(p.translucency, i.translucency);
+    skyFields(p.sky, i.lighting.sky, f);
+    f(p.skyLight, i.skyLight), f(p.overlapPasses, i.overlapPasses);
 }
+
+// The public kinds beside the internal ones (internal Auto reads as None).
+constexpr std::pair<SkyKind, penumbra::SkyKind> kSkyKinds[] = {
+    {SkyKind::None, penumbra::SkyKind::None},
+    {SkyKind::Uniform, penumbra::SkyKind::Uniform},
+    {SkyKind::Analytic, penumbra::SkyKind::Analytic},
+    {SkyKind::Map, penumbra::SkyKind::Map},
+};
 
 template <class Pub, class In, class F>
 void lightFields(Pub& p, In& i, F f) {
@@ -77,8 +98,16 @@ constexpr std::pair<Output, penumbra::Aov> kOutputs[] = {
     {Output::Shadow, penumbra::Aov::Shadow},
 };
 
+void fill(SkySettings& out, const penumbra::SkySettings& s) {
+    skyFields(out, s, Assign{});
+    out.kind = SkyKind::None;
+    for (const auto& [pub, kind] : kSkyKinds)
+        if (kind == s.kind) out.kind = pub;
+}
+
 void fill(Settings& out, const penumbra::RenderSettings& s) {
     settingsFields(out, s, Assign{});
+    fill(out.sky, s.lighting.sky);
     out.output = Output::Final;
     for (const auto& [pub, aov] : kOutputs)
         if (aov == s.aov) out.output = pub;
@@ -99,7 +128,14 @@ ShadowSettings::ShadowSettings() {
     shadowFields(*this, defaults, Assign{});
 }
 
-Settings::Settings() { fill(*this, penumbra::RenderSettings{}); }
+SkySettings::SkySettings() { fill(*this, penumbra::SkySettings{}); }
+
+// An engine owns its exposure and its sky; every other default is the renderer's.
+Settings::Settings() {
+    fill(*this, penumbra::RenderSettings{});
+    autoExposure = false;
+    sky.kind = SkyKind::None;
+}
 Light::Light() { fill(*this, penumbra::Light{}); }
 Camera::Camera() { fill(*this, penumbra::Camera{}); }
 
@@ -115,7 +151,8 @@ Material::Material() {
 penumbra::RenderSettings toInternal(const Settings& s) {
     penumbra::RenderSettings out;
     settingsFields(s, out, AssignBack{});
-    out.autoExposure = false;  // the API's exposure is a fixed multiplier
+    for (const auto& [pub, kind] : kSkyKinds)
+        if (pub == s.sky.kind) out.lighting.sky.kind = kind;
     for (const auto& [pub, aov] : kOutputs)
         if (pub == s.output) out.aov = aov;
     return out;
