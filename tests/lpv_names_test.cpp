@@ -39,7 +39,9 @@ TEST_F(LpvNamesTest, CascadeBoxesCoverTheRoomAndDoubleInSize) {
                 EXPECT_GT(b.origin[a] + b.side, bounds.max[a]) << "cascade " << k << " axis " << a;
                 EXPECT_NEAR(b.origin[a] + 0.5f * b.side, bounds.center()[a], 1e-4f * b.side);
             }
-            if (k > 0) EXPECT_NEAR(b.side, 2.0f * cascades->boxes[k - 1].side, 1e-5f * b.side);
+            if (k > 0) {
+                EXPECT_NEAR(b.side, 2.0f * cascades->boxes[k - 1].side, 1e-5f * b.side);
+            }
         }
     }
     s.gi = GiMode::None;

@@ -46,11 +46,19 @@ CameraTranslucency::CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, co
     hairShadow_ = vk::Buffer(alloc, hair_ ? VkDeviceSize(lights) * hair_->pointCount() * sizeof(float) : sizeof(float),
                              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, false, "oit-hair-shadow");
 
-    // Build set: the scene's draw set (set 1 its textures), the hair buffers, then nodes, normals,
-    // counters, the opaque depth, the depth buckets and the tails' sums (OIT_BUILD_*: both builds,
-    // raster and compute, write the runs there; oit.offsets writes the heads).
-    const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
-                           uniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    createBuildPipelines(ctx, computeHair);
+    createKernels(ctx);
+    // The shadow map's samplers as shadow.filter makes them (the border reads as lit).
+    nearest_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
+    border_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER, false, false});
+    moments_ = vk::Sampler(ctx, {VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
+}
+
+// Build set: the scene's draw set (set 1 its textures), the hair buffers, then nodes, normals,
+// counters, the opaque depth, the depth buckets and the tails' sums (OIT_BUILD_*: both builds,
+// raster and compute, write the runs there; oit.offsets writes the heads).
+void CameraTranslucency::createBuildPipelines(vk::Context& ctx, bool computeHair) {
+    const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     const std::vector<vk::Binding> lists{{OIT_BUILD_NODES, storage},        {OIT_BUILD_NORMALS, storage},
                                          {OIT_BUILD_STATS, storage},        {OIT_BUILD_OPAQUE_DEPTH, sampled},
                                          {OIT_BUILD_BUCKETS, storage},      {OIT_BUILD_TAILS, storage}};
@@ -73,7 +81,11 @@ CameraTranslucency::CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, co
         d.frontFace = SceneGpu::sceneFrontFace(true);
         meshPipeline_ = vk::Pipeline::graphics(ctx, d, SceneGpu::drawLayouts(ctx, buildLayout_.handle()), sizeof(gpu::OitBuildPush));
     }
+}
 
+void CameraTranslucency::createKernels(vk::Context& ctx) {
+    const VkDescriptorType storage = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, sampled = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER,
+                           uniform = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
     offsets_ = vk::ComputeKernel(ctx, "dsm/oit_offsets.comp",
                                  std::vector<vk::Binding>{{OIT_OFFSETS_BUCKETS, storage},
                                                           {OIT_OFFSETS_STATS, storage},
@@ -110,10 +122,6 @@ CameraTranslucency::CameraTranslucency(vk::Allocator& alloc, SceneGpu& scene, co
                                                         {OIT_BLEND_NODES, storage},
                                                         {OIT_BLEND_HDR, VK_DESCRIPTOR_TYPE_STORAGE_IMAGE}},
                                sizeof(gpu::OitPush));
-    // The shadow map's samplers as shadow.filter makes them (the border reads as lit).
-    nearest_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
-    border_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_BORDER, false, false});
-    moments_ = vk::Sampler(ctx, {VK_FILTER_LINEAR, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
 }
 
 // The depth buckets over the casters' window depths (their bounds' corners; 0 for a corner behind the

@@ -53,6 +53,8 @@ public:
     static constexpr uint32_t kBuckets = OIT_BUCKETS;  // depth buckets per pixel
 
 private:
+    void createBuildPipelines(vk::Context& ctx, bool computeHair);
+    void createKernels(vk::Context& ctx);
     void addBuildPasses(FrameGraph& graph, const gpu::OitBuildPush& push, const std::string& name);
     void addHairShadowTo(FrameGraph& graph);
     PassBuilder& declareShadows(PassBuilder& pass) const;
