@@ -2,14 +2,14 @@
 # The module structure of src/ (docs/architecture.md): the core, the Vulkan layer, scene and io include no
 # technique, service or assembly header; no technique includes another technique's or a shared
 # service's header; shared services include no technique; above them, the renderer includes no frame
-# preparation or front end, the frame preparation no front end, and the viewer not the command line
-# (it builds on the library). Prints each offending include and exits 1; run by CTest.
+# preparation or front end, the frame preparation and the public API no front end, and the viewer not
+# the command line (it builds on the library). Prints each offending include and exits 1; run by CTest.
 set -euo pipefail
 root="${1:-$(cd "$(dirname "$0")/.." && pwd)}"
 cd "$root/src"
 
 # Technique folders: each a module that reaches the others only through core/names.h.
-techniques=(shadow dsm rsm lpv lighting temporal_gi)
+techniques=(shadow dsm rsm lpv lighting sky_light temporal_gi)
 # Shared service modules: techniques reach them through core interfaces (core/depth_raster.h) and
 # published names (core/names.h), never through their headers; they use only the layers below.
 services=(raster voxel)
@@ -44,5 +44,6 @@ done
 forbid renderer frame app view eval reference
 forbid frame app view eval reference
 forbid view app
-[ "$status" -eq 0 ] && echo "check-structure: ok (core, vk, scene, io, ${services[*]}, ${techniques[*]}, renderer, frame, view)"
+forbid api app view eval reference
+[ "$status" -eq 0 ] && echo "check-structure: ok (core, vk, scene, io, ${services[*]}, ${techniques[*]}, renderer, frame, api, view)"
 exit "$status"
