@@ -2,7 +2,8 @@
 # Accuracy of GI variants on the GI suite's five views (cornell, street, room, Sponza, VC) against the
 # suite's path-traced references: first `eval --suite` (which renders the references into OUT/refs,
 # or reuses them, and scores the defaults), then for each variant `render --shadow hard --aov indirect`
-# and `compare` with the suite's mask, as the suite scores its defaults: relative L1 and bias per view.
+# of the suite's 32 still frames (the GI history settled) and `compare` of the last with the suite's
+# mask, as the suite scores its defaults: relative L1 and bias per view.
 #   VARIANTS  NAME:OPTIONS ... (options joined by commas; default: the defaults alone)
 #   GI        rsm or lpv (default lpv);  SCENES  which views (default all five)
 # Usage: bench/gi_variants.sh PENUMBRA ASSETS OUT
@@ -26,8 +27,10 @@ for v in ${VARIANTS:-default:}; do
   name=${v%%:*} opts=${v#*:} opts=${opts//,/ }
   for scene in $scenes; do
     # shellcheck disable=SC2086
-    timeout 300 "$bin" render ${view[$scene]} --shadow hard --gi "${GI:-lpv}" --aov indirect $opts \
-      -o "$out/$scene-$name.exr" > "$out/$scene-$name.log" 2>&1 || { echo "$scene $name FAILED"; continue; }
+    timeout 300 "$bin" render ${view[$scene]} --shadow hard --gi "${GI:-lpv}" --aov indirect --exposure 1 --sky none \
+      --sequence 32 --no-motion $opts -o "$out/$scene-$name-%04d.exr" > "$out/$scene-$name.log" 2>&1 ||
+      { echo "$scene $name FAILED"; continue; }
+    mv "$out/$scene-$name-0031.exr" "$out/$scene-$name.exr" && rm -f "$out/$scene-$name"-00*.exr
     "$bin" compare "$out/$scene-$name.exr" "$refs/$scene-seed1/indirect.exr" --mask "$refs/$scene-seed1/mask.exr" \
       --json -o "$out/error-$scene-$name.png" > "$out/accuracy-$scene-$name.json"
     python3 -c "import json,sys; j=json.load(open(sys.argv[1])); print(sys.argv[2], 'rel_l1 %.3f bias %+.1f%%' % (j['rel_l1'], 100*j['relative_bias']))" \

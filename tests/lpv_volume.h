@@ -40,7 +40,8 @@ inline Bounds unitCube() {
 
 class LpvVolumeTest : public GpuTest {
 protected:
-    // `occluders`: blocking from their occupancy volume (--lpv-geometry voxels), not the geometry volume.
+    // `occluders`: blocking from their occupancy volume (--lpv-geometry voxels); without them, from the
+    // geometry volume (surfels).
     VolumeRun run(const std::vector<gpu::GpuVpl>& vpls, uint32_t iterations, bool occlusion = true,
                   uint32_t resolution = 32, uint32_t cascades = 1, const Scene* occluders = nullptr) {
         vk::Allocator alloc(ctx());
@@ -50,7 +51,7 @@ protected:
         s.iterations = iterations;
         s.cascades = cascades;
         s.occlusion = occlusion;
-        if (occluders) s.geometry = LpvGeometry::Voxels;
+        s.geometry = occluders ? LpvGeometry::Voxels : LpvGeometry::Surfels;  // no occupancy volume: surfels
         LightPropagationVolume lpv(alloc, 8, 8, s, unitCube());
         lpv.update(glm::vec3(0.0f));
         lpv.setVpls(cmd, vpls);

@@ -16,7 +16,8 @@ struct LpvSettings {
     uint32_t rsmResolution = 2048;  // RSM rendered for injection, per light
     uint32_t vplResolution = 512;   // RSM down-sampled to this many VPLs per side
     bool occlusion = true;          // geometry volume blocks propagation (after the first step)
-    LpvGeometry geometry = LpvGeometry::Surfels;  // `--lpv-geometry`
+    // `--lpv-geometry`: voxels beat surfels on every GI-suite view (docs/techniques/lpv.md).
+    LpvGeometry geometry = LpvGeometry::Voxels;
     bool cameraGeometry = true;     // also inject occluders seen by the camera (G-buffer; surfels)
     uint32_t cameraGeometryStep = 4;  // one camera surfel per step x step pixels
     float blendCells = 2.0f;        // cascade border blend band, in cells
