@@ -1,0 +1,155 @@
+// The LPV's temporal gradients (lpv/gradient.comp, names::kGiChange): the irradiance of each block's
+// centre receiver from the kept volume of last frame and from this frame's. The LPV has no sampling
+// noise, so a still light measures exactly zero and a brighter one exactly its ratio; under a light
+// that keeps growing, the history then keeps up as its model says (temporal_gi/accumulate.comp).
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include <gtest/gtest.h>
+
+#include "gpu_fixture.h"
+#include "temporal_gradient.h"
+
+namespace penumbra::test {
+namespace {
+
+// Cornell at 64x48, LPV with a small RSM, unfiltered indirect light.
+RenderSettings cornellLpv() {
+    RenderSettings s;
+    s.width = 64;
+    s.height = 48;
+    s.gi = GiMode::Lpv;
+    s.lpv.rsmResolution = 256;
+    s.lpv.vplResolution = 64;
+    s.aov = Aov::Indirect;
+    s.temporalGi.filterIterations = 0;
+    return s;
+}
+
+std::vector<Gradient> lpvChange(TestRenderer& r) { return readChange(r, r.lpv()->change()); }
+
+// The luminance of the LPV's irradiance image at each change block's centre pixel (gradient.comp).
+std::vector<float> centreLuminance(TestRenderer& r) {
+    vk::Image& image = r.lpv()->irradiance();
+    const std::vector<uint8_t> bytes = r.commands().readImage(image, sizeof(glm::vec4));
+    const uint32_t block = LPV_CHANGE_BLOCK, w = (image.width() + block - 1) / block;
+    const uint32_t h = (image.height() + block - 1) / block;
+    std::vector<float> out;
+    for (uint32_t by = 0; by < h; ++by)
+        for (uint32_t bx = 0; bx < w; ++bx) {
+            const uint32_t x = std::min(bx * block + block / 2, image.width() - 1);
+            const uint32_t y = std::min(by * block + block / 2, image.height() - 1);
+            glm::vec4 e;
+            std::memcpy(&e, bytes.data() + (size_t(y) * image.width() + x) * sizeof(glm::vec4), sizeof(e));
+            out.push_back(0.2126f * e.r + 0.7152f * e.g + 0.0722f * e.b);
+        }
+    return out;
+}
+
+bool ranGradient(const TestRenderer& r) {
+    const std::vector<PassDesc>& passes = r.passes();
+    return std::any_of(passes.begin(), passes.end(), [](const PassDesc& p) { return p.name == "lpv.gradient"; });
+}
+
+// Each still frame measures exactly 0 (bit-identical volumes). The first frame and a frame that restarts
+// the history (a light three times as bright) measure nothing; the frame after a restart measures
+// against the restarting frame's volume.
+TEST_F(GpuTest, LpvGradientOfAStillLightIsZero) {
+    const Scene scene = makeBuiltinScene("cornell");
+    TestRenderer r(ctx(), scene, cornellLpv());
+    int measured = 0, nonzero = 0;
+    size_t blocks = 0;
+    auto count = [&] {
+        const std::vector<Gradient> g = lpvChange(r);
+        blocks += g.size();
+        for (const Gradient& t : g) {
+            if (t.measured != 1.0f) continue;
+            ++measured;
+            nonzero += t.change != 0.0f || t.squared != 0.0f || t.larger <= 0.0f;
+        }
+    };
+    r.render(FrameInputs{scene.cameras[0], scene.lights});
+    EXPECT_FALSE(ranGradient(r)) << "the first frame has no kept volume";
+    for (int n = 0; n < 2; ++n) {
+        r.render(FrameInputs{scene.cameras[0], scene.lights});
+        EXPECT_TRUE(ranGradient(r));
+        count();
+    }
+    const std::vector<Light> brighter = scaled(scene.lights, 3.0f);
+    r.render(FrameInputs{scene.cameras[0], brighter});
+    EXPECT_FALSE(ranGradient(r)) << "a frame that restarts the history";
+    r.render(FrameInputs{scene.cameras[0], brighter});
+    EXPECT_TRUE(ranGradient(r)) << "the frame after a restart";
+    count();
+    std::printf("[ lpv gradient ] still light, 3 frames: %d of %zu blocks measured, %d not exactly 0\n", measured,
+                blocks, nonzero);
+    EXPECT_GT(measured, int(blocks) / 2);
+    EXPECT_EQ(nonzero, 0);
+}
+
+// A light 5% brighter: the LPV is linear in the light's flux (injection, propagation and gather all
+// are), so every receiver's luminance grows by 1.05, and change / larger = 1 - 1 / 1.05 = 0.0476. Up
+// to rounding only: the injection's 64-bit fixed-point sums scale with the largest coefficient of
+// each cell (2^-31 of it), and the float steps round at 2^-24 per operation over some hundred
+// operations, so a receiver's ratio is off by 1e-5 at most: the median within 1e-4, every
+// receiver within 1e-3. The change's two luminances are the gather's images of the two frames at
+// the block's centre pixel (the same function of the same volumes).
+TEST_F(GpuTest, LpvGradientOfABrighterLightIsItsRatio) {
+    const Scene scene = makeBuiltinScene("cornell");
+    TestRenderer r(ctx(), scene, cornellLpv());
+    for (int n = 0; n < 2; ++n) r.render(FrameInputs{scene.cameras[0], scene.lights});
+    const std::vector<float> before = centreLuminance(r);
+    r.render(FrameInputs{scene.cameras[0], scaled(scene.lights, 1.05f)});
+    const std::vector<float> now = centreLuminance(r);
+    const std::vector<Gradient> g = lpvChange(r);
+    ASSERT_EQ(g.size(), now.size());
+    const double expected = 1.0 - 1.0 / 1.05;
+    std::vector<double> ratios;
+    double worstImage = 0.0;  // the largest relative difference from the gather's images
+    for (size_t i = 0; i < g.size(); ++i) {
+        const Gradient& t = g[i];
+        if (t.measured != 1.0f || t.larger <= 0.0f) continue;
+        ratios.push_back(t.change / t.larger);
+        worstImage = std::max({worstImage, std::abs(t.larger - now[i]) / double(now[i]),
+                               std::abs(t.larger - t.change - before[i]) / double(before[i])});
+    }
+    ASSERT_GT(ratios.size(), 20u);
+    std::sort(ratios.begin(), ratios.end());
+    const double median = ratios[ratios.size() / 2];
+    std::printf("[ lpv gradient ] 5%% brighter: %zu blocks, median change %.7f (expected %.7f), range %.7f .. "
+                "%.7f; against the gathered images %.2g\n", ratios.size(), median, expected, ratios.front(),
+                ratios.back(), worstImage);
+    EXPECT_NEAR(median, expected, 1e-4);
+    EXPECT_NEAR(ratios.front(), expected, 1e-3);
+    EXPECT_NEAR(ratios.back(), expected, 1e-3);
+    EXPECT_LT(worstImage, 1e-5);
+}
+
+// A light that grows by 5% a frame for 16 frames: with the gradients (each texel measures the exact
+// 1 - 1 / 1.05, with no spread to discount) the history keeps up as the model says with that change
+// detected (0.95 at a tolerance of 0.1); without them (a tolerance of 1000) it holds clearly less.
+TEST_F(GpuTest, LpvHistoryFollowsAGrowingLightAsItsModelSays) {
+    const Scene scene = makeBuiltinScene("cornell");
+    const int frames = 16;
+    const double g = 1.05;
+    auto run = [&](float lagTolerance, bool temporal) {
+        RenderSettings s = cornellLpv();
+        s.giTemporal = temporal;
+        s.temporalGi.lagTolerance = lagTolerance;
+        return meanUnderGrowingLight(ctx(), scene, s, frames, g);
+    };
+    const double truth = run(0.1f, false), detected = 1.0 - 1.0 / g;
+    const double withGradients = run(0.1f, true) / truth, without = run(1000.0f, true) / truth;
+    const double modelWith = modelShare(frames, g, 0.05, detected, 0.1);
+    const double modelWithout = modelShare(frames, g, 0.05, detected, 1000.0);
+    std::printf("[ lpv gradient ] light growing 5%% a frame, history / truth after %d frames: %.4f (model %.4f) "
+                "with the gradients, %.4f (model %.4f) without\n", frames, withGradients, modelWith, without,
+                modelWithout);
+    EXPECT_NEAR(withGradients, modelWith, 0.01);
+    EXPECT_NEAR(without, modelWithout, 0.01);
+    EXPECT_GT(withGradients - without, 0.15);
+}
+
+}  // namespace
+}  // namespace penumbra::test
