@@ -9,6 +9,8 @@
 #include <gtest/gtest.h>
 
 #include "gpu_fixture.h"
+#include "lpv_cpu_gather.h"
+#include "lpv_volume.h"
 #include "temporal_gradient.h"
 
 namespace penumbra::test {
@@ -90,11 +92,12 @@ TEST_F(GpuTest, LpvGradientOfAStillLightIsZero) {
 
 // A light 5% brighter: the LPV is linear in the light's flux (injection, propagation and gather all
 // are), so every receiver's luminance grows by 1.05, and change / larger = 1 - 1 / 1.05 = 0.0476. Up
-// to rounding only: the injection's 64-bit fixed-point sums scale with the largest coefficient of
-// each cell (2^-31 of it), and the float steps round at 2^-24 per operation over some hundred
-// operations, so a receiver's ratio is off by 1e-5 at most: the median within 1e-4, every
-// receiver within 1e-3. The change's two luminances are the gather's images of the two frames at
-// the block's centre pixel (the same function of the same volumes).
+// to rounding only: the injection's 64-bit fixed-point sums keep 2^-31 of each cell's largest
+// coefficient, and the float steps round at 2^-24 an operation over some hundred operations, both
+// relative to terms that partly cancel in the SH dot products, so a receiver's luminance can be off
+// by some 1e-5 of itself (3e-5 here at most); the ratio's error is about that: the median within 1e-4,
+// every receiver within 1e-3. The change's two luminances are the gather's images of the two frames
+// at the block's centre pixel (the same function of the same volumes).
 TEST_F(GpuTest, LpvGradientOfABrighterLightIsItsRatio) {
     const Scene scene = makeBuiltinScene("cornell");
     TestRenderer r(ctx(), scene, cornellLpv());
@@ -124,6 +127,57 @@ TEST_F(GpuTest, LpvGradientOfABrighterLightIsItsRatio) {
     EXPECT_NEAR(ratios.front(), expected, 1e-3);
     EXPECT_NEAR(ratios.back(), expected, 1e-3);
     EXPECT_LT(worstImage, 1e-5);
+}
+
+// The luminance of the CPU gather (lpv_cpu_gather.h) of a summed volume at `placement`, at a
+// receiver turned towards the eye as lpv/irradiance.glsl turns it.
+double cpuLuminance(const std::vector<glm::vec4>& accum, const gpu::LpvPush& placement, const glm::vec3& eye,
+                    const gpu::PixelProbe& at) {
+    const glm::dvec3 x(at.position);
+    glm::dvec3 n = glm::normalize(glm::dvec3(at.normal));
+    if (glm::dot(n, glm::dvec3(eye) - x) < 0.0) n = -n;
+    const double weights[3] = {0.2126, 0.7152, 0.0722};
+    double sum = 0.0;
+    for (int ch = 0; ch < 3; ++ch) sum += weights[ch] * lpv_cpu::gatherIrradiance(accum, placement, x, n, ch);
+    return sum;
+}
+
+// In a city the cascades follow the camera: after a move of 1.5 finest cells, last frame's light is
+// read at last frame's placement. A block's "before" luminance (now - change) is the CPU gather of the
+// volume read back after the first frame, at the first frame's placement, at the block's centre
+// receiver of the second frame (the probe's position and normal); read at the second frame's placement
+// the same volume is clearly off.
+TEST_F(GpuTest, LpvGradientReadsTheKeptVolumeAtItsOwnPlacement) {
+    const Scene scene = makeBuiltinScene("street");
+    RenderSettings s = cornellLpv();
+    const Camera first = scene.cameras[0];
+    const glm::uvec2 block(3, 3), pixel = block * uint32_t(LPV_CHANGE_BLOCK) + uint32_t(LPV_CHANGE_BLOCK / 2);
+    TestRenderer r(ctx(), scene, s);
+    r.render(FrameInputs{first, scene.lights});
+    const gpu::LpvPush before = r.lpv()->constants();
+    const vk::Buffer& sum = r.lpv()->accumulated();
+    const std::vector<glm::vec4> kept = asVec4(r.commands().readBuffer(sum, sum.size()));
+    Camera second = first;
+    const glm::vec3 move(1.5f * before.cascades[0].cellSize, 0.0f, 0.0f);
+    second.eye += move;
+    second.target += move;
+    FrameInputs in{second, scene.lights};
+    in.probePixel = pixel;
+    r.render(in);
+    ASSERT_TRUE(ranGradient(r));
+    const gpu::LpvPush now = r.lpv()->constants();
+    ASSERT_NE(now.cascades[0].origin.x, before.cascades[0].origin.x) << "the finest cascade moved";
+    ASSERT_TRUE(r.probe() && r.probe()->surface == 1u);
+    const std::vector<Gradient> g = lpvChange(r);
+    const Gradient& t = g[block.y * r.lpv()->change().width() + block.x];
+    ASSERT_EQ(t.measured, 1.0f);
+    const double gpuBefore = t.change >= 0.0f ? t.larger - t.change : t.larger;
+    const double cpuBefore = cpuLuminance(kept, before, second.eye, *r.probe());
+    const double misplaced = cpuLuminance(kept, now, second.eye, *r.probe());
+    std::printf("[ lpv gradient ] camera moved 1.5 cells: kept light %.6g on the GPU, %.6g on the CPU at its own "
+                "placement, %.6g at the new one; now %.6g\n", gpuBefore, cpuBefore, misplaced, t.larger);
+    EXPECT_NEAR(gpuBefore, cpuBefore, 1e-4 * cpuBefore);
+    EXPECT_GT(std::abs(misplaced - cpuBefore), 0.05 * cpuBefore);
 }
 
 // A light that grows by 5% a frame for 16 frames: with the gradients (each texel measures the exact
