@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 #include <gtest/gtest.h>
 
@@ -16,8 +17,8 @@
 namespace penumbra::test {
 namespace {
 
-// Cornell at 64x48, LPV with a small RSM, unfiltered indirect light.
-RenderSettings cornellLpv() {
+// 64x48, LPV with a small RSM, unfiltered indirect light.
+RenderSettings smallLpv() {
     RenderSettings s;
     s.width = 64;
     s.height = 48;
@@ -49,6 +50,7 @@ std::vector<float> centreLuminance(TestRenderer& r) {
     return out;
 }
 
+// Whether the last frame measured (and published) the gradients.
 bool ranGradient(const TestRenderer& r) {
     const std::vector<PassDesc>& passes = r.passes();
     return std::any_of(passes.begin(), passes.end(), [](const PassDesc& p) { return p.name == "lpv.gradient"; });
@@ -59,7 +61,7 @@ bool ranGradient(const TestRenderer& r) {
 // against the restarting frame's volume.
 TEST_F(GpuTest, LpvGradientOfAStillLightIsZero) {
     const Scene scene = makeBuiltinScene("cornell");
-    TestRenderer r(ctx(), scene, cornellLpv());
+    TestRenderer r(ctx(), scene, smallLpv());
     int measured = 0, nonzero = 0;
     size_t blocks = 0;
     auto count = [&] {
@@ -100,7 +102,7 @@ TEST_F(GpuTest, LpvGradientOfAStillLightIsZero) {
 // at the block's centre pixel (the same function of the same volumes).
 TEST_F(GpuTest, LpvGradientOfABrighterLightIsItsRatio) {
     const Scene scene = makeBuiltinScene("cornell");
-    TestRenderer r(ctx(), scene, cornellLpv());
+    TestRenderer r(ctx(), scene, smallLpv());
     for (int n = 0; n < 2; ++n) r.render(FrameInputs{scene.cameras[0], scene.lights});
     const std::vector<float> before = centreLuminance(r);
     r.render(FrameInputs{scene.cameras[0], scaled(scene.lights, 1.05f)});
@@ -149,7 +151,7 @@ double cpuLuminance(const std::vector<glm::vec4>& accum, const gpu::LpvPush& pla
 // the same volume is clearly off.
 TEST_F(GpuTest, LpvGradientReadsTheKeptVolumeAtItsOwnPlacement) {
     const Scene scene = makeBuiltinScene("street");
-    RenderSettings s = cornellLpv();
+    RenderSettings s = smallLpv();
     const Camera first = scene.cameras[0];
     const glm::uvec2 block(3, 3), pixel = block * uint32_t(LPV_CHANGE_BLOCK) + uint32_t(LPV_CHANGE_BLOCK / 2);
     TestRenderer r(ctx(), scene, s);
@@ -188,7 +190,7 @@ TEST_F(GpuTest, LpvHistoryFollowsAGrowingLightAsItsModelSays) {
     const int frames = 16;
     const double g = 1.05;
     auto run = [&](float lagTolerance, bool temporal) {
-        RenderSettings s = cornellLpv();
+        RenderSettings s = smallLpv();
         s.giTemporal = temporal;
         s.temporalGi.lagTolerance = lagTolerance;
         return meanUnderGrowingLight(ctx(), scene, s, frames, g);
