@@ -5,12 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstring>
 
 #include <gtest/gtest.h>
 
 #include "gpu_fixture.h"
-#include "test_renderer.h"
+#include "temporal_gradient.h"
 
 namespace penumbra::test {
 namespace {
@@ -27,28 +26,13 @@ RenderSettings cornellRsm() {
     return s;
 }
 
-struct Gradient {
-    float change, larger, squared, measured;
-};
-
-std::vector<Gradient> readChange(TestRenderer& r) {
-    vk::Image& image = r.rsmGather()->change();
-    const std::vector<uint8_t> bytes = r.commands().readImage(image, 16);
-    std::vector<Gradient> out(size_t(image.width()) * image.height());
-    for (size_t i = 0; i < out.size(); ++i) std::memcpy(&out[i], bytes.data() + 16 * i, sizeof(Gradient));
-    return out;
-}
-
-std::vector<Light> scaled(std::vector<Light> lights, float factor) {
-    for (Light& l : lights) l.intensity *= factor;
-    return lights;
-}
+std::vector<Gradient> rsmChange(TestRenderer& r) { return readChange(r, r.rsmGather()->change()); }
 
 TEST_F(GpuTest, RsmGradientOfAStillLightIsZero) {
     const Scene scene = makeBuiltinScene("cornell");
     TestRenderer r(ctx(), scene, cornellRsm());
     for (int n = 0; n < 3; ++n) r.render(FrameInputs{scene.cameras[0], scene.lights});
-    const std::vector<Gradient> g = readChange(r);
+    const std::vector<Gradient> g = rsmChange(r);
     int measured = 0, nonzero = 0;
     for (const Gradient& t : g) {
         if (t.measured != 1.0f) continue;
@@ -72,7 +56,7 @@ TEST_F(GpuTest, RsmGradientOfABrighterLightIsItsRatio) {
     r.render(FrameInputs{scene.cameras[0], scaled(scene.lights, 1.05f)});
     const double expected = 1.0 - 1.0 / 1.05;
     std::vector<double> ratios;
-    for (const Gradient& t : readChange(r))
+    for (const Gradient& t : rsmChange(r))
         if (t.measured == 1.0f && t.larger > 0.0f) ratios.push_back(t.change / t.larger);
     ASSERT_GT(ratios.size(), 20u);
     std::sort(ratios.begin(), ratios.end());
@@ -82,27 +66,6 @@ TEST_F(GpuTest, RsmGradientOfABrighterLightIsItsRatio) {
     EXPECT_NEAR(median, expected, 1e-4);
     EXPECT_NEAR(ratios.front(), expected, 5e-3);
     EXPECT_NEAR(ratios.back(), expected, 5e-3);
-}
-
-// The mean indirect light of an image.
-double meanGreen(const std::vector<float>& img) {
-    double sum = 0.0;
-    for (size_t i = 1; i < img.size(); i += 4) sum += img[i];
-    return sum / double(img.size() / 4);
-}
-
-// The history's share of its light under a light that grows by g per frame, frame n blending at
-// alpha_n = max(1 / frames, minWeight, (host's change weight), detected / lagTolerance), frames the
-// history's span (accumulate.comp): h_n / I_n after `frames` frames.
-double modelShare(int frames, double g, double minWeight, double detected, double lagTolerance) {
-    const double change = 1.0 - 1.0 / g, host = std::pow(change / 0.5, 2.0);  // temporal_gi_technique.cpp
-    double share = 1.0, span = 1.0;  // the first frame starts the history
-    for (int n = 2; n <= frames; ++n) {
-        const double alpha = std::max({1.0 / (span + 1.0), minWeight, host, std::min(detected / lagTolerance, 1.0)});
-        share = alpha + (1.0 - alpha) * share / g;
-        span = 1.0 / alpha;
-    }
-    return share;
 }
 
 // A light that grows by 5% a frame for 16 frames: with the gradients the history keeps up to within
@@ -117,10 +80,7 @@ TEST_F(GpuTest, HistoryFollowsAGrowingLightAsItsModelSays) {
         RenderSettings s = cornellRsm();
         s.giTemporal = temporal;
         s.temporalGi.lagTolerance = lagTolerance;
-        TestRenderer r(ctx(), scene, s);
-        for (int n = temporal ? 1 : frames; n <= frames; ++n)
-            r.render(FrameInputs{scene.cameras[0], scaled(scene.lights, float(std::pow(g, n - 1)))});
-        return meanGreen(r.readHdr());
+        return meanUnderGrowingLight(ctx(), scene, s, frames, g);
     };
     const double truth = run(0.1f, false), detected = 1.0 - 1.0 / g;
     const double withGradients = run(0.1f, true) / truth, without = run(1000.0f, true) / truth;

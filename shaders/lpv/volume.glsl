@@ -12,7 +12,8 @@ uint lightIndex(uint cascade, uint channel, ivec3 c) {
 uint geometryIndex(uint cascade, ivec3 c) { return cascade * cellsPerVolume() + cellIndex(c); }
 
 // Position in cell units of cascade k (cell i spans [i, i + 1); its centre is at i + 0.5).
-vec3 gridCoord(uint k, vec3 x) { return (x - pc.cascades[k].origin) / pc.cascades[k].cellSize; }
+vec3 gridCoord(GpuLpvCascade cascade, vec3 x) { return (x - cascade.origin) / cascade.cellSize; }
+vec3 gridCoord(uint k, vec3 x) { return gridCoord(pc.cascades[k], x); }
 
 // During injection (lpv.h) the fixed-point sums (lpv/fixed_point.glsl) take buffers that are free
 // until the first propagation step: the light's (4 int64 per colour and cell, at 4 x lightIndex) the

@@ -322,6 +322,7 @@ struct VisibilityResolvePush {
 // per cell at (c * cells + cell), its cell k sitting at the light cells' corner k (half a cell off).
 #define LPV_MAX_CASCADES 4
 #define LPV_FACE_COLUMNS 4  // lpv/face_transmittance.comp: segments per side of a cell face
+#define LPV_CHANGE_BLOCK 8  // lpv/gradient.comp: one change texel (core/names.h GiChange) per 8x8 pixels
 
 struct GpuLpvCascade {
     vec3 origin;     // world position of the grid's min corner

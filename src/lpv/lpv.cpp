@@ -26,6 +26,10 @@ constexpr uint64_t kSplatCorners = 8;
 constexpr uint64_t kAtomicMaxBytes = 2 * sizeof(uint32_t);
 constexpr uint64_t kAtomicAddBytes = 2 * sizeof(int64_t);
 
+// The change image: the RSM's format (core/names.h GiChange), so that temporal_gi reads both alike.
+constexpr VkFormat kChangeFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
+using CascadePlacement = std::array<gpu::GpuLpvCascade, LPV_MAX_CASCADES>;
+
 // Bytes of a texel of the image published as `name`.
 uint64_t texelBytesOf(const FrameGraph& graph, const char* name) {
     return vk::texelBytes(graph.imageOf(graph.image(name)).format());
@@ -119,6 +123,12 @@ LightPropagationVolume::LightPropagationVolume(vk::Allocator& alloc, uint32_t wi
                                  {LPV_GATHER_GBUFFER_DEPTH, kTex}, {LPV_GATHER_SUM, kSsbo},
                                  {LPV_GATHER_GEOMETRY, kSsbo}, {LPV_GATHER_IRRADIANCE, kImg}},
                                 push);
+    gradient_ = vk::ComputeKernel(ctx, "lpv/gradient.comp",
+                                  {{LPV_GRADIENT_FRAME, kUbo}, {LPV_GRADIENT_GBUFFER_NORMAL, kTex},
+                                   {LPV_GRADIENT_GBUFFER_DEPTH, kTex}, {LPV_GRADIENT_SUM, kSsbo},
+                                   {LPV_GRADIENT_KEPT_SUM, kSsbo}, {LPV_GRADIENT_KEPT_CASCADES, kUbo},
+                                   {LPV_GRADIENT_CHANGE, kImg}},
+                                  push);
     pointSampler_ = vk::Sampler(ctx, {VK_FILTER_NEAREST, VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE, false, false});
 
     const VkDeviceSize light = lpvLightVolumeBytes(settings_.resolution, cascadeCount_);
@@ -138,6 +148,11 @@ LightPropagationVolume::LightPropagationVolume(vk::Allocator& alloc, uint32_t wi
     push_.rsmResolution = settings_.rsmResolution;
     push_.vplResolution = settings_.vplResolution;
     setSettings(settings_);
+}
+
+uint64_t lpvGradientBytes(uint64_t width, uint64_t height) {
+    const uint64_t block = LPV_CHANGE_BLOCK, blocks = (width + block - 1) / block * ((height + block - 1) / block);
+    return blocks * vk::texelBytes(kChangeFormat) + vk::kMaxFramesInFlight * sizeof(CascadePlacement);
 }
 
 void LightPropagationVolume::update(const glm::vec3& eye) {
@@ -160,7 +175,8 @@ void LightPropagationVolume::setSettings(const LpvSettings& settings) {
     push_.voxelFaces = voxels() ? 1u : 0u;
 }
 
-void LightPropagationVolume::addTo(FrameGraph& graph, uint32_t rsmLayers, uint64_t occupancyGeneration) {
+void LightPropagationVolume::addTo(FrameGraph& graph, uint32_t rsmLayers, uint64_t occupancyGeneration,
+                                   const GiAccumulation* accumulation, uint32_t slot) {
     // The sky's bounce: the camera's sky-lit surfels join the RSM's VPLs (while a sky is on).
     const uint32_t step = settings_.cameraGeometryStep;
     const uint32_t skySurfels =
@@ -174,13 +190,41 @@ void LightPropagationVolume::addTo(FrameGraph& graph, uint32_t rsmLayers, uint64
         push_.vplCount = layers_ * n * n + skySurfels;
         push_.layerCount = layers_;
     }
+    // The gradient compares with the kept volume only in a frame that adds to the history it kept it for.
+    const bool keep = accumulation != nullptr;
+    const bool kept = keep && keepLastSum();
+    const bool measure = kept && accumulation->accumulating;
+    if (!keep) kept_.valid = false;
     if (layers_ > 0) addDownsample(graph);
     if (layers_ > 0 && skySurfels_ > 0) addSkySurfels(graph);
     addInjection(graph);
     addCameraGeometry(graph);
     addResolve(graph);
     addPropagation(graph, occupancyGeneration);
+    if (measure) addGradient(graph, slot);
     addGather(graph);
+    if (keep) {
+        kept_ = {true, settings_.resolution, cascadeCount_, {}};
+        std::copy_n(push_.cascades, cascadeCount_, kept_.cascades.begin());
+    }
+}
+
+// While a history is kept, the sum buffers swap: this frame fills one, the other keeps last frame's.
+// Made on the first such frame (the device budget counts them while --gi-temporal is on).
+bool LightPropagationVolume::keepLastSum() {
+    if (!keptAccum_) {
+        keptAccum_ = vk::Buffer(alloc_, accum_.size(), kVolumeUsage, false, "lpv-light-sum");
+        keptCascades_ = vk::BufferRing(alloc_, sizeof(CascadePlacement), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
+                                       "lpv-kept-cascades");
+        change_ = vk::Image(alloc_, {kChangeFormat, vk::divUp(width_, uint32_t(LPV_CHANGE_BLOCK)),
+                                     vk::divUp(height_, uint32_t(LPV_CHANGE_BLOCK)), 1,
+                                     VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
+                                         VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
+                                     "lpv-change"});
+    }
+    std::swap(accum_, keptAccum_);
+    // The same grids (a size change builds a new volume, so this holds; checked all the same).
+    return kept_.valid && kept_.resolution == settings_.resolution && kept_.cascadeCount == cascadeCount_;
 }
 
 void LightPropagationVolume::setVpls(vk::CommandContext& cmd, const std::vector<gpu::GpuVpl>& vpls) {
@@ -336,6 +380,32 @@ void LightPropagationVolume::addPropagation(FrameGraph& graph, uint64_t occupanc
                 run(c, propagate_, push, {vk::divUp(r, 4), vk::divUp(r, 4), vk::divUp(r * cascadeCount_, 4)});
             });
     }
+}
+
+// Temporal gradients (lpv/gradient.comp): per block of the change image, the centre pixel's irradiance
+// from this frame's volume and from the kept one, at its own placement (the cascades follow the
+// camera); published with names::kGiChange, which temporal_gi weighs its history by.
+void LightPropagationVolume::addGradient(FrameGraph& graph, uint32_t slot) {
+    keptCascades_.select(slot);
+    keptCascades_.write(kept_.cascades.data(), sizeof(CascadePlacement));
+    const VkSampler point = pointSampler_.handle();
+    const ImageHandle change = graph.import(change_);
+    const glm::uvec3 groups{vk::divUp(change_.width(), 8u), vk::divUp(change_.height(), 8u), 1};
+    // Per block: a pixel's depth and normal read, a change texel written; both summed volumes read once.
+    const uint64_t blockBytes = texelBytesOf(graph, "gbuffer.depth") + texelBytesOf(graph, "gbuffer.normal") +
+                                vk::texelBytes(kChangeFormat);
+    graph.pass("lpv.gradient")
+        .pipeline(gradient_.pipeline)
+        .uniform(LPV_GRADIENT_FRAME, graph.buffer("frame"))
+        .sampled(LPV_GRADIENT_GBUFFER_NORMAL, graph.image("gbuffer.normal"), point)
+        .sampled(LPV_GRADIENT_GBUFFER_DEPTH, graph.image("gbuffer.depth"), point)
+        .storageBuffer(LPV_GRADIENT_SUM, graph.import(accum_))
+        .storageBuffer(LPV_GRADIENT_KEPT_SUM, graph.import(keptAccum_))
+        .uniform(LPV_GRADIENT_KEPT_CASCADES, graph.import(keptCascades_.current()))
+        .storageImage(LPV_GRADIENT_CHANGE, change)
+        .bytes(uint64_t(change_.width()) * change_.height() * blockBytes + accum_.size() + keptAccum_.size())
+        .record([this, push = push_, groups](PassContext& c) { run(c, gradient_, push, groups); });
+    graph.publish(names::kGiChangeImage, change);
 }
 
 void LightPropagationVolume::addGather(FrameGraph& graph) {

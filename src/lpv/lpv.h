@@ -10,6 +10,8 @@
 //   lpv.resolve           the sums -> light volume A and the geometry volume (floats)
 //   lpv.faces             (--lpv-geometry voxels) the open share of every cell face, from "occupancy"
 //   lpv.propagate[i]      6 neighbours x 5 faces, occlusion from the geometry volume (or the faces), running sum
+//   lpv.gradient          (a GI history on) the change of each 8x8 block's irradiance since the kept
+//                         volume of last frame: temporal gradients (core/names.h GiChange)
 //   lpv.gather            per pixel irradiance from the summed volume (trilinear, cascades summed)
 // Cascades: nested grids of the same resolution, each twice as coarse: fit to the scene for scenes
 // under 20 m, else around the camera (snapped to whole cells). Light goes about one cell per step, so
@@ -27,6 +29,7 @@
 
 #include "lpv/lpv_settings.h"
 #include "core/frame_graph.h"
+#include "core/names.h"
 #include "shared/types.h"
 #include "scene/scene.h"
 
@@ -49,6 +52,10 @@ inline uint64_t lpvLightVolumeBytes(uint64_t resolution, uint64_t cascades) {
 inline uint64_t lpvGeometryVolumeBytes(uint64_t resolution, uint64_t cascades) {
     return resolution * resolution * resolution * cascades * sizeof(glm::vec4);
 }
+// The temporal gradients' change image (one RGBA32F texel per LPV_CHANGE_BLOCK^2 pixels) and the
+// kept volume's cascade placement (one host-written copy per frame in flight); the kept light sum
+// itself is a second sum buffer (2 x lpvLightVolumeBytes).
+uint64_t lpvGradientBytes(uint64_t width, uint64_t height);
 inline uint64_t lpvVplBytes(uint64_t n, uint64_t rsmLayers) { return std::max<uint64_t>(rsmLayers, 1) * n * n * sizeof(gpu::GpuVpl); }
 
 class LightPropagationVolume {
@@ -62,7 +69,11 @@ public:
     // publishes "gi.irradiance".
     // `occupancyGeneration` (OccupancyVolume::generation, --lpv-geometry voxels): the faces are made
     // again only when it or the cascades changed.
-    void addTo(FrameGraph& graph, uint32_t rsmLayers, uint64_t occupancyGeneration = 0);
+    // `accumulation` (the temporal-GI module's word; null: no history): while a history is kept, each
+    // frame keeps its summed volume, and a frame that adds to the history after one that kept a
+    // volume publishes "gi.change" (names::kGiChange); `slot` selects the host-written copies.
+    void addTo(FrameGraph& graph, uint32_t rsmLayers, uint64_t occupancyGeneration = 0,
+               const GiAccumulation* accumulation = nullptr, uint32_t slot = 0);
     // Per-frame values (occlusion, blend band, debug slice); sizes and the pass count must not change.
     void setSettings(const LpvSettings& settings);
 
@@ -83,6 +94,9 @@ public:
     const vk::Buffer& injected() const { return volumeA_; }
     const vk::Buffer& faces() const { return faces_; }  // --lpv-geometry voxels
     const vk::Buffer& vpls() const { return vpls_; }
+    // The temporal gradients of the last frame that measured them (names::kGiChange).
+    vk::Image& change() { return change_; }
+    GiChange& changeTexel() { return changeTexel_; }
 
 private:
     void addDownsample(FrameGraph& graph);
@@ -91,6 +105,8 @@ private:
     void addCameraGeometry(FrameGraph& graph);
     void addSkySurfels(FrameGraph& graph);
     void addPropagation(FrameGraph& graph, uint64_t occupancyGeneration = 0);
+    bool keepLastSum();  // swaps the sum buffers; true: the other holds a volume of the same grids
+    void addGradient(FrameGraph& graph, uint32_t slot);
     void addGather(FrameGraph& graph);
     static void run(PassContext& c, const vk::ComputeKernel& kernel, const gpu::LpvPush& push, glm::uvec3 groups);
 
@@ -108,6 +124,19 @@ private:
     vk::Buffer faces_;  // --lpv-geometry voxels: per cell the open share of its -x, -y, -z faces
     std::optional<std::pair<uint64_t, std::array<gpu::GpuLpvCascade, LPV_MAX_CASCADES>>> facesOf_;  // what they show
     vk::Image irradiance_;
+    // Temporal gradients (lpv/gradient.comp). The sum buffer is cleared and refilled every frame (the
+    // injection's fixed-point sums live in it first), so no frame reads the last one's: a second sum
+    // buffer swaps with it each frame a history is kept, and holds the last frame's sum at no copy.
+    vk::ComputeKernel gradient_;
+    vk::Buffer keptAccum_;
+    vk::BufferRing keptCascades_;  // the kept volume's GpuLpvCascade[LPV_MAX_CASCADES] (uniform)
+    vk::Image change_;
+    GiChange changeTexel_{LPV_CHANGE_BLOCK};
+    struct Kept {
+        bool valid = false;
+        uint32_t resolution = 0, cascadeCount = 0;
+        std::array<gpu::GpuLpvCascade, LPV_MAX_CASCADES> cascades{};
+    } kept_;  // what keptAccum_ holds
 };
 
 }  // namespace penumbra

@@ -1,7 +1,8 @@
 // Light propagation volumes as a technique: injects the RSM (names::kRsmLayerCount and the "rsm.*"
 // images), blocked by the occupancy volume when one is published (names::kOccupancyState), and
 // contributes the volume's irradiance under names::kIrradianceContribution; publishes its cascades'
-// boxes (names::kLpvCascadeBoxes).
+// boxes (names::kLpvCascadeBoxes) and, while a GI history is kept (names::kGiAccumulation), its
+// temporal gradients (names::kGiChange).
 #pragma once
 #include "core/technique.h"
 #include "lpv/lpv.h"

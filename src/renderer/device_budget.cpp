@@ -285,6 +285,13 @@ void addLpvDemands(std::vector<Demand>& d, const RenderSettings& s, const Scene&
                      [=](uint64_t r) { return lpvLightVolumeBytes(r, cascades); }, true});
     d.push_back({Knob::LpvRes, s.lpv.resolution, 4, "the LPV's light sum (near and far) " + of,
                  [=](uint64_t r) { return 2 * lpvLightVolumeBytes(r, cascades); }, true});
+    if (s.giTemporal) {  // the temporal gradients: last frame's light sum kept, and the change image
+        d.push_back({Knob::LpvRes, s.lpv.resolution, 4, "the LPV's kept light sum (temporal gradients) " + of,
+                     [=](uint64_t r) { return 2 * lpvLightVolumeBytes(r, cascades); }, true});
+        const uint64_t h = s.height;
+        d.push_back({Knob::Width, s.width, 1, fmt::format("the LPV's temporal gradients ({}x{})", s.width, h),
+                     [=](uint64_t w) { return lpvGradientBytes(w, h); }});
+    }
     const int geometryVolumes = s.lpv.geometry == LpvGeometry::Voxels ? 2 : 1;  // geometry, and the voxels' faces
     for (int i = 0; i < geometryVolumes; ++i)
         d.push_back({Knob::LpvRes, s.lpv.resolution, 4, "an LPV geometry volume " + of,
