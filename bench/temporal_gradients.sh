@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# A GI technique's temporal gradients (--gi-lag-tolerance) on one machine, sun only (--sky none); the
+# A GI technique's temporal gradients (--rsm-lag-tolerance, --lpv-lag-tolerance) on one machine, sun only (--sky none); the
 # technique is GI=rsm (the default) or GI=lpv in the environment:
 # - lag: Sponza's nave under the strip's moving sun (0.55 degrees a frame), 320x180 indirect light;
 #   frames 36 and 71 of the sequence against the converged still image of that instant (64 frames
@@ -28,7 +28,7 @@ metric() { "$new" compare "$1" "$2" --json | python3 -c "import json,sys; print(
   first=1
   for tol in $tolerances; do
     # shellcheck disable=SC2086
-    "$new" render $strip --gi-lag-tolerance "$tol" --sequence 72 -o "$tmp/seq_%04d.exr" >/dev/null 2>&1
+    "$new" render $strip "--$gi-lag-tolerance" "$tol" --sequence 72 -o "$tmp/seq_%04d.exr" >/dev/null 2>&1
     [ $first = 1 ] || echo ','
     first=0
     echo "\"$tol\": {\"frame36\": $(metric "$tmp/seq_0036.exr" "$tmp/still_36_0063.exr"), \"frame71\": $(metric "$tmp/seq_0071.exr" "$tmp/still_71_0063.exr")}"
@@ -39,7 +39,7 @@ metric() { "$new" compare "$1" "$2" --json | python3 -c "import json,sys; print(
   for m in "cornell|cornell" "vc-sun|$vc_lit $vc_sun_path" "sponza-sun|$sponza $sponza_sun_path" "sponza-camera|$sponza $sponza_camera_path"; do
     for tol in $tolerances; do
       # shellcheck disable=SC2086
-      "$new" $stab ${m#*|} --gi-lag-tolerance "$tol" --json "$tmp/st.json" >/dev/null 2>&1
+      "$new" $stab ${m#*|} "--$gi-lag-tolerance" "$tol" --json "$tmp/st.json" >/dev/null 2>&1
       [ $first = 1 ] || echo ','
       first=0
       echo "\"${m%%|*} $tol\": $(python3 -c "import json; print(json.load(open('$tmp/st.json'))['techniques'][0]['indirect_flicker_rms'])")"

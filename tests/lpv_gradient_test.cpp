@@ -192,7 +192,7 @@ TEST_F(GpuTest, LpvHistoryFollowsAGrowingLightAsItsModelSays) {
     auto run = [&](float lagTolerance, bool temporal) {
         RenderSettings s = smallLpv();
         s.giTemporal = temporal;
-        s.temporalGi.lagTolerance = lagTolerance;
+        s.lpv.lagTolerance = lagTolerance;
         return meanUnderGrowingLight(ctx(), scene, s, frames, g);
     };
     const double truth = run(0.1f, false), detected = 1.0 - 1.0 / g;

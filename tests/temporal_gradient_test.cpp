@@ -79,7 +79,7 @@ TEST_F(GpuTest, HistoryFollowsAGrowingLightAsItsModelSays) {
     auto run = [&](float lagTolerance, bool temporal) {
         RenderSettings s = cornellRsm();
         s.giTemporal = temporal;
-        s.temporalGi.lagTolerance = lagTolerance;
+        s.rsm.lagTolerance = lagTolerance;
         return meanUnderGrowingLight(ctx(), scene, s, frames, g);
     };
     const double truth = run(0.1f, false), detected = 1.0 - 1.0 / g;

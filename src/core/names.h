@@ -70,12 +70,15 @@ struct GiAccumulation {
 };
 
 // How much a GI technique's light changed since the last frame, where the technique can measure it
-// (the RSM's temporal gradients): published with the image "gi.change", whose texel covers
-// `pixels` x `pixels` pixels and holds (r) the change of a sample's luminance, (g) the larger of its
-// two luminances, (b) change^2 / larger and (a) 1 where a sample was measured. The temporal-GI
-// module weighs its history by it.
+// (temporal gradients): published with the image "gi.change", whose texel covers `pixels` x `pixels`
+// pixels and holds (r) the change of a sample's luminance, (g) the larger of its two luminances, (b)
+// change^2 / larger and (a) 1 where a sample was measured. The temporal-GI module weighs its history
+// by it: a relative change of c in a frame, beyond what the samples' spread explains, weighs the new
+// frame at least c / lagTolerance, the technique's own reading of its measure (a sampled estimate's
+// gradients also hold the sampling's change; an exact one's hold the light's alone).
 struct GiChange {
     uint32_t pixels = 0;
+    float lagTolerance = 1.0f;
 };
 
 // The sky, published by the lighting module's update for every technique that lights with it or

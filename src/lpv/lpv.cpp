@@ -169,6 +169,7 @@ void LightPropagationVolume::run(PassContext& c, const vk::ComputeKernel& kernel
 
 void LightPropagationVolume::setSettings(const LpvSettings& settings) {
     settings_ = settings;
+    changeTexel_.lagTolerance = settings.lagTolerance;
     push_.occlusion = settings.occlusion ? 1u : 0u;
     push_.blendCells = settings.blendCells;
     push_.cameraGeometryStep = settings.cameraGeometryStep;

@@ -36,6 +36,9 @@ OptionTable makeTable() {
         .rebuild({"none"});
     t.integer("--lpv-camera-geometry-step", "camera_geometry_step", [](S& s) -> auto& { return s.cameraGeometryStep; },
               1, 64, kFrame, "Camera occluders: one surfel per step x step pixels");
+    t.real("--lpv-lag-tolerance", "lag_tolerance", [](S& s) -> auto& { return s.lagTolerance; }, 1e-3, 1e3, kFrame,
+           "The LPV's temporal gradients: a relative change of c in a frame weighs the new frame of the GI history "
+           "at least c / this (lower: less lag, more flicker)");
     t.real("--lpv-blend-cells", "blend_cells", [](S& s) -> auto& { return s.blendCells; }, 0.0, 16.0, kFrame,
            "Cascade border blend band, in cells");
     t.integer("--lpv-slice-axis", "slice_axis", [](S& s) -> auto& { return s.sliceAxis; }, 0, 2, kFrame,

@@ -21,6 +21,10 @@ struct LpvSettings {
     bool cameraGeometry = true;     // also inject occluders seen by the camera (G-buffer; surfels)
     uint32_t cameraGeometryStep = 4;  // one camera surfel per step x step pixels
     float blendCells = 2.0f;        // cascade border blend band, in cells
+    // The temporal gradients' reading (core/names.h GiChange): a relative change of c in a frame weighs
+    // the new frame of the GI history at least c / lagTolerance. The volume holds no sampling noise, so
+    // its gradients are the light's change alone and can be taken nearly whole (docs/motion.md).
+    float lagTolerance = 0.2f;
     uint32_t sliceAxis = 2;         // debug AOVs lpv-slice / gv-slice: axis (0 x, 1 y, 2 z)
     uint32_t sliceIndex = 8;        // and cell index along it
 };

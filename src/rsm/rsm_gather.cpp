@@ -134,6 +134,7 @@ void RsmGather::setSettings(const RsmSettings& s) {
     if (s.samples > kMaxRsmSamples) throw vk::VulkanError(fmt::format("{{rsm.samples}} {}: at most {}", s.samples,
                                                                      kMaxRsmSamples));
     settings_ = s;
+    changeTexel_.lagTolerance = s.lagTolerance;
     pattern_ = rsmSamplePattern(s);
     RsmSettings perFrame = s;
     perFrame.samples = std::min(s.frameSamples, s.samples);

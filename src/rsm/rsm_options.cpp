@@ -16,6 +16,9 @@ OptionTable makeTable() {
               "RSM resolution per light");
     t.integer("--rsm-samples", "samples", [](S& s) -> auto& { return s.samples; }, 1, kMaxRsmSamples, kFrame,
               "RSM gather samples per pixel");
+    t.real("--rsm-lag-tolerance", "lag_tolerance", [](S& s) -> auto& { return s.lagTolerance; }, 1e-3, 1e3, kFrame,
+           "The RSM's temporal gradients: a relative change of c in a frame beyond their noise weighs the new frame "
+           "of the GI history at least c / this (lower: less lag, more flicker)");
     t.integer("--rsm-frame-samples", "frame_samples", [](S& s) -> auto& { return s.frameSamples; }, 1,
               kMaxRsmSamples, kFrame,
               "RSM gather samples per pixel in a frame that adds to the GI history ({frame.gi_temporal}; at most "

@@ -49,6 +49,11 @@ struct RsmSettings {
     // a new pattern each frame, so each frame needs only a share of the estimate (at most `samples`).
     // A frame that starts a history (the first, a cut, a light's jump) takes `samples`.
     uint32_t frameSamples = 64;
+    // The temporal gradients' reading (core/names.h GiChange): a relative change of c in a frame, beyond
+    // what the gradients' spread explains, weighs the new frame at least c / lagTolerance. A moving light
+    // re-samples the RSM, so the gradients also hold sampling changes; at 3 a fast sun over Sponza
+    // flickers within 1.5x of the path tracer (docs/motion.md). Lower: less lag, more flicker.
+    float lagTolerance = 3.0f;
     float radius = 0.25f;        // r_max in RSM uv units
     uint32_t seed = 1;           // the sample pattern is generated once from it (reproducible)
     RsmMode mode = RsmMode::Interpolated;

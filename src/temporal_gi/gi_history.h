@@ -21,7 +21,7 @@ struct GiBlend {
     float changeWeight = 0.0f;
     ImageHandle change;       // none: nothing measured this frame
     uint32_t changePixels = 0;
-    float lagTolerance = 3.0f;
+    float lagTolerance = 1.0f;  // the technique's (core/names.h GiChange)
 };
 
 class GiHistory {

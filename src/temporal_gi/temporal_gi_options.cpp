@@ -13,9 +13,6 @@ OptionTable makeTable() {
     t.real("--gi-reset-angle", "reset_angle", [](S& s) -> auto& { return s.resetAngle; }, 0.01, 180.0, kFrame,
            "Degrees a light turns in one frame that restart the GI history; a smaller turn raises the new "
            "frame's weight to (turn / angle)^2");
-    t.real("--gi-lag-tolerance", "lag_tolerance", [](S& s) -> auto& { return s.lagTolerance; }, 1e-3, 1e3, kFrame,
-           "Where the GI measures its light's change (RSM's temporal gradients), a relative change of c in a "
-           "frame beyond the measurement's noise weighs the new frame at least c / this (lower: less lag, more noise)");
     t.integer("--gi-filter-iterations", "filter_iterations", [](S& s) -> auto& { return s.filterIterations; }, 0, 6,
               kFrame, "Iterations of the edge-aware a-trous filter of the accumulated GI (0: none)");
     t.real("--gi-filter-sigma", "luminance_sigma", [](S& s) -> auto& { return s.luminanceSigma; }, 0.1, 1000.0,

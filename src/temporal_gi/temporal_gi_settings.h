@@ -14,11 +14,6 @@ struct TemporalGiSettings {
     // share of the scene's size, in the same measure) restarts the history; a smaller change raises
     // the new frame's weight to (change / resetAngle)^2, so a slow sun keeps most of its history.
     float resetAngle = 10.0f;
-    // Where the GI technique measures how much its light changed (the RSM's temporal gradients), a
-    // relative change of c in a frame, beyond what the measurement's noise explains, weighs the new
-    // frame at least c / lagTolerance. Lower follows a moving light more closely and keeps fewer
-    // frames; at 3 a fast sun over Sponza flickers within 1.5x of the path tracer (docs/motion.md).
-    float lagTolerance = 3.0f;
     // Iterations of the edge-aware a-trous filter (3x3 taps 1, 2, 4, 8 ... pixels apart: four reach 15
     // pixels); 0: none.
     uint32_t filterIterations = 4;

@@ -97,7 +97,7 @@ void TemporalGiTechnique::addPasses(const FrameContext& f) {
     if (change && f.graph.has(names::kGiChangeImage)) {
         blend.change = f.graph.image(names::kGiChangeImage);
         blend.changePixels = change->pixels;
-        blend.lagTolerance = settings_.lagTolerance;
+        blend.lagTolerance = change->lagTolerance;
     }
     const GiHistoryImages history = history_.addTo(f.graph, now, blend);
     const ImageHandle out = settings_.filterIterations == 0
