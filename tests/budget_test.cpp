@@ -161,5 +161,21 @@ TEST(DeviceBudget, EveryDemandsAdviceFits) {
     }
 }
 
+// The occupancy volume under a sky, on a scene of single-sided walls: the voxel bits and the sky's
+// four facing bits a voxel, one storage buffer, which at 1024 voxels a side (640 MiB) exceeds
+// lavapipe's storage-buffer range; the suggested --rsm-voxel-res fits.
+TEST(DeviceBudget, OccupancyVolumeWithFacingBitsAdviceFits) {
+    const Scene scene = cornell();
+    RenderSettings s;
+    s.lighting.sky.kind = SkyKind::Uniform;
+    s.rsm.voxelResolution = 1024;
+    ASSERT_NO_THROW(validateSettings(s));
+    const std::string why = refusal(s, scene, scene.lights, false);
+    EXPECT_NE(why.find("the sky's facing bits"), std::string::npos) << why;
+    EXPECT_GE(followAdvice(s, scene, scene.lights, false,
+                           rsmOptions().flagOf<RsmSettings>([](RsmSettings& x) -> auto& { return x.voxelResolution; })),
+              1);
+}
+
 }  // namespace
 }  // namespace penumbra

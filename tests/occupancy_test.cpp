@@ -161,3 +161,65 @@ TEST_F(OccupancyTest, VoxelsAreExactlyThoseTheTrianglesMeet) {
     }
 }
 
+
+// The sky's facing bits (voxel/types.h) against the same brute force: a voxel blocks quadrant q of the
+// upward rays where a triangle meeting it is double-sided or faces the quadrant's middle direction
+// (+-1, 1, +-1); the random triangles are single-sided, one wall in four double-sided here.
+TEST_F(OccupancyTest, SkyFacingBitsAreThoseOfTheTrianglesThatMeetTheVoxel) {
+    for (uint32_t seed : {4u, 5u}) {
+        Scene scene = randomTriangles(seed);
+        Material twoSided;
+        twoSided.doubleSided = true;
+        scene.materials.push_back(twoSided);
+        for (size_t k = 0; k < scene.draws.size(); k += 4)
+            if (scene.draws[k].material == 0) scene.draws[k].material = uint32_t(scene.materials.size() - 1);
+        ASSERT_TRUE(hasSingleSidedSurfaces(scene));
+        vk::Allocator alloc(ctx());
+        vk::CommandContext cmd(alloc);
+        SceneGpu meshes(cmd, scene);
+        OccupancyVolume volume(alloc, meshes, 40);
+        FrameGraph graph(ctx());
+        volume.addTo(graph);
+        cmd.submitAndWait([&](VkCommandBuffer c) { graph.execute(c, nullptr); });
+        const gpu::GpuOccupancyGrid g = volume.grid();
+        const size_t voxels = size_t(g.dims.x) * g.dims.y * g.dims.z;
+        ASSERT_GT(g.skyFirstWord, g.firstBrickWord);
+        EXPECT_EQ(volume.buffer().size(), OccupancyVolume::bytes(scene.bounds, 40, true));
+        const std::vector<uint8_t> bytes = cmd.readBuffer(volume.buffer(), volume.buffer().size());
+        const size_t header = sizeof(gpu::GpuOccupancyGrid) / 4;
+        auto gpuFacing = [&](size_t i) { return (u32(bytes, header + g.skyFirstWord + i / 8) >> (4 * (i % 8))) & 0xFu; };
+
+        std::vector<uint8_t> surely(voxels, 0), maybe(voxels, 0);  // facing bits, as in the test above
+        const double size = g.voxelSize, half = 0.5 * size, slack = 1e-3 * size;
+        for (const Draw& d : scene.draws) {
+            const Material& m = scene.materials[d.material];
+            if (m.alphaMode == AlphaMode::Blend) continue;
+            Tri t;
+            for (int k = 0; k < 3; ++k) t[k] = glm::dvec3(scene.vertices[scene.indices[d.firstIndex + k]].position);
+            const glm::dvec3 n = glm::cross(t[1] - t[0], t[2] - t[0]);
+            if (glm::length(n) == 0.0) continue;
+            uint8_t facing = 0;
+            for (uint32_t q = 0; q < 4; ++q)
+                if (m.doubleSided || glm::dot(n, glm::dvec3(q & 1 ? 1 : -1, 1, q & 2 ? 1 : -1)) > 0.0) facing |= 1 << q;
+            for (uint32_t z = 0; z < g.dims.z; ++z)
+                for (uint32_t y = 0; y < g.dims.y; ++y)
+                    for (uint32_t x = 0; x < g.dims.x; ++x) {
+                        const glm::dvec3 c = glm::dvec3(g.origin) + size * (glm::dvec3(x, y, z) + 0.5);
+                        const size_t i = x + g.dims.x * (y + size_t(g.dims.y) * z);
+                        if (triangleMeetsBox(t, c, half - slack)) surely[i] |= facing;
+                        if (triangleMeetsBox(t, c, half + slack)) maybe[i] |= facing;
+                    }
+        }
+        size_t missing = 0, extra = 0, partial = 0;
+        for (size_t i = 0; i < voxels; ++i) {
+            const uint32_t bits = gpuFacing(i);
+            missing += (surely[i] & ~bits) != 0;
+            extra += (bits & ~maybe[i]) != 0;
+            partial += bits != 0 && bits != 0xFu;
+        }
+        std::printf("[ occupancy ] seed %u: %zu voxels block some quadrants but not all\n", seed, partial);
+        EXPECT_GT(partial, 500u) << "single-sided triangles leave some quadrants open";
+        EXPECT_EQ(missing, 0u) << "seed " << seed;
+        EXPECT_EQ(extra, 0u) << "seed " << seed;
+    }
+}

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "enclosed_plane.h"
 #include "gpu_fixture.h"
 #include "readback.h"
 #include "reference/ray_scene.h"
@@ -133,6 +134,27 @@ TEST_F(SkyLightTest, NothingOfAUniformSkyReachesInsideTheClosedRoom) {
     }
     EXPECT_EQ(surfaces, 64u * 48u) << "the room's walls fill the view";
     EXPECT_LE(most, 1e-3f * open);
+}
+
+// The light's rule of single-sided triangles (the shadow maps'), by the voxels' facing bits: a box
+// whose fronts face inward around an open plane (a sky dome) lets the whole sky in, pi L as on the
+// open plane and within that test's tolerance; the same box with its fronts facing outward (a closed
+// shed) hides it all. The path tracer's answer is the same (sky_reference_test.cpp).
+TEST_F(SkyLightTest, ASingleSidedEnclosureHidesTheSkyOnlyWhereItsFrontsFaceTheSky) {
+    for (const bool inward : {true, false}) {
+        const std::vector<float> e = skyIrradiance(enclosedPlane(inward), uniformSky(1.0f));
+        ASSERT_EQ(e.size(), 64u * 48u * 4u);
+        size_t checked = 0;
+        for (size_t i = 0; i < e.size(); i += 4) {
+            if (e[i + 3] < 0.5f || std::abs(position_[i / 4].y) > 0.05) continue;  // the plane's pixels
+            ++checked;
+            for (int c = 0; c < 3; ++c) {
+                if (inward) EXPECT_NEAR(e[i + c], float(M_PI), 1e-3f) << "pixel " << i / 4;
+                else EXPECT_LE(e[i + c], 1e-3f * float(M_PI)) << "pixel " << i / 4;
+            }
+        }
+        EXPECT_EQ(checked, 64u * 48u) << "the plane fills the view (fronts " << (inward ? "inward)" : "outward)");
+    }
 }
 
 TEST_F(SkyLightTest, WithoutVisibilityTheRoomSeesTheWholeSky) {

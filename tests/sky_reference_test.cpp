@@ -1,9 +1,13 @@
 // The path tracer under a sky (core/sky.h): a uniform sky over an open plane gives it irradiance
-// pi L (the plane's radiance albedo L), sampled by MIS; camera rays that escape see the sky. CPU only.
+// pi L (the plane's radiance albedo L), sampled by MIS; camera rays that escape see the sky; a
+// single-sided enclosure hides the sky only where its fronts face the sky, in both halves of the MIS.
+// CPU only.
 #include <cmath>
+#include <cstdio>
 
 #include <gtest/gtest.h>
 
+#include "enclosed_plane.h"
 #include "reference/path_tracer.h"
 #include "scene/builders.h"
 
@@ -41,6 +45,37 @@ TEST(ReferenceSky, UniformSkyOverAnOpenPlaneGivesPiL) {
             EXPECT_GT(standardError, 0.0);
             EXPECT_NEAR(sum[c] / n, expected, 5.0 * standardError + 1e-6) << "channel " << c;
             EXPECT_NEAR(sum[c] / n, expected, 0.01 * expected) << "channel " << c;
+        }
+    }
+}
+
+// Under a uniform sky of radiance 1 the plane's direct light is albedo / pi x E. Inside a box whose
+// fronts face inward (a sky dome) the light's rule lets every sky direction in: E = pi, which needs
+// both halves of the MIS (the sky's sample and the scatter ray, which the dome stops by the viewer's
+// rule) to see through it. Inside the same box with its fronts facing outward (a closed shed)
+// every sky direction leaves through a roof or wall whose front faces the sky: E = 0 in both halves,
+// though the scatter ray sees through the box's backs.
+TEST(ReferenceSky, ASingleSidedEnclosureHidesTheSkyOnlyWhereItsFrontsFaceTheSky) {
+    for (const bool inward : {true, false}) {
+        const Scene scene = enclosedPlane(inward);
+        const ReferenceImage img = renderReference(scene, scene.cameras[0], skySettings(256, 0, glm::vec3(1.0f)));
+        glm::dvec3 sum(0.0), variance(0.0);
+        for (size_t i = 0; i < img.direct.size(); ++i) {
+            ASSERT_TRUE(img.covered[i]) << "the plane fills the view";
+            sum += glm::dvec3(img.direct[i]);
+            variance += glm::dvec3(img.directVar[i]);
+        }
+        const double n = double(img.direct.size()), toIrradiance = M_PI / 0.5;
+        for (int c = 0; c < 3; ++c) {
+            const double e = sum[c] / n * toIrradiance, standardError = std::sqrt(variance[c]) / n * toIrradiance;
+            std::printf("[ sky ] fronts %s: irradiance %.5f, standard error %.5f\n", inward ? "inward" : "outward", e,
+                        standardError);
+            if (inward) {
+                EXPECT_NEAR(e, M_PI, 5.0 * standardError + 1e-6) << "channel " << c;
+                EXPECT_NEAR(e, M_PI, 0.01 * M_PI) << "channel " << c;
+            } else {
+                EXPECT_EQ(e, 0.0) << "channel " << c;
+            }
         }
     }
 }

@@ -5,7 +5,9 @@
 // the share of the sky's radiance, so a change of the sky alone (a moving sun) re-weighs the rays
 // without tracing them again. With a phase (geometry moving under a still view) a texel is traced
 // when it is its turn or when its receiver is not the one its mask was traced for.
-// The rays of texels SKY_TILE apart share a rotation; a SKY_TILE^2 block holds them all.
+// The rays of texels SKY_TILE apart share a rotation; a SKY_TILE^2 block holds them all. A
+// single-sided triangle blocks a ray only where its front faces the sky (the voxels' facing bits,
+// src/voxel/occupancy_volume.h): a sky dome whose fronts face inward lets the sky in.
 #extension GL_GOOGLE_include_directive : require
 #include "sky_light/types.h"
 #include "core/reconstruct.glsl"
@@ -42,7 +44,7 @@ void main() {
     for (uint k = 0u; k < pc.rays; ++k) {
         const vec3 d = rayDirection(r.n, k, pc.rays, rank);
         // Rays below the horizon meet the black half of the sky whatever they cross: not traced.
-        if (d.y > 0.0 && segmentClear(start, start + d * reach, 0.5)) clear |= 1u << k;
+        if (d.y > 0.0 && skySegmentClear(start, start + d * reach, 0.5)) clear |= 1u << k;
     }
     imageStore(outClearRays, texel, uvec4(clear, depthBits, 0u, 0u));
 }

@@ -9,12 +9,27 @@ layout(set = 0, binding = OCCUPANCY_BINDING, std430) readonly buffer OccupancyBi
 
 float occupancyVoxelSize() { return occupancy.grid.voxelSize; }
 
-bool voxelOccupied(ivec3 c) {
+// Which rays a walk asks about: OCCUPANCY_EVERY_RAY (every voxel with a surface blocks), or the sky's
+// azimuth quadrant of an upward ray (occupancySkyQuadrant).
+const uint OCCUPANCY_EVERY_RAY = 0xFFFFFFFFu;
+
+// The sky's facing bit of an upward ray along d: bit 0 for d.x > 0, bit 1 for d.z > 0.
+uint occupancySkyQuadrant(vec3 d) { return (d.x > 0.0 ? 1u : 0u) + (d.z > 0.0 ? 2u : 0u); }
+
+// Whether voxel c blocks the rays `quadrant` stands for; without facing bits (no single-sided
+// triangle in the scene) every occupied voxel blocks every ray.
+bool voxelBlocks(ivec3 c, uint quadrant) {
     const ivec3 dims = ivec3(occupancy.grid.dims);
     if (any(lessThan(c, ivec3(0))) || any(greaterThanEqual(c, dims))) return false;  // outside: empty
     const uint index = uint(c.x) + uint(dims.x) * (uint(c.y) + uint(dims.y) * uint(c.z));
-    return (occupancy.bits[index >> 5u] & (1u << (index & 31u))) != 0u;
+    if (quadrant == OCCUPANCY_EVERY_RAY || occupancy.grid.skyFirstWord == 0u)
+        return (occupancy.bits[index >> 5u] & (1u << (index & 31u))) != 0u;
+    const uint word = occupancy.grid.skyFirstWord + index / OCCUPANCY_SKY_VOXELS_PER_WORD;
+    const uint bit = (index % OCCUPANCY_SKY_VOXELS_PER_WORD) * OCCUPANCY_SKY_QUADRANTS + quadrant;
+    return (occupancy.bits[word] & (1u << bit)) != 0u;
 }
+
+bool voxelOccupied(ivec3 c) { return voxelBlocks(c, OCCUPANCY_EVERY_RAY); }
 
 bool brickOccupied(ivec3 b) {
     const ivec3 bricks = ivec3(occupancy.grid.dims) / OCCUPANCY_BRICK;
@@ -33,6 +48,7 @@ struct VoxelRay {
     bool inBrick;    // walking the voxels of an occupied brick
     ivec3 cell, brick;
     vec3 tNext;      // inBrick: t at the next voxel boundary of each axis
+    uint quadrant;   // the rays the voxels are asked about (voxelBlocks)
     bool clear, done;
 };
 
@@ -56,7 +72,7 @@ void rayStep(inout VoxelRay r) {
         r.done = r.t >= 1.0;
         return;
     }
-    if (voxelOccupied(r.cell)) {
+    if (voxelBlocks(r.cell, r.quadrant)) {
         r.clear = false;
         r.done = true;
         return;
@@ -73,12 +89,13 @@ void rayStep(inout VoxelRay r) {
     r.inBrick = all(equal(r.cell / OCCUPANCY_BRICK, r.brick)) && all(greaterThanEqual(r.cell, ivec3(0)));
 }
 
-// Whether the segment from world point a to world point b crosses no occupied voxel, leaving out
-// `skip` voxels at each end (the shells of the surfaces the ends lie on or near: a surface occupies
-// every voxel it touches). Four steps per loop iteration: lavapipe ends a shader's loops silently
-// after 65535 iterations in all (llvmpipe's LP_MAX_TGSI_LOOP_ITERATIONS), which a gather's hundreds
-// of walks would reach.
-bool segmentClear(vec3 a, vec3 b, float skip) {
+// Whether the segment from world point a to world point b crosses no voxel that blocks `quadrant`'s
+// rays, leaving out `skip` voxels at each end (the shells of the surfaces the ends lie on or near: a
+// surface occupies every voxel it touches). Four steps per loop iteration: lavapipe ends a shader's
+// loops silently after 65535 iterations in all (llvmpipe's LP_MAX_TGSI_LOOP_ITERATIONS), which a
+// gather's hundreds of walks would reach. The bricks' bits are the voxel bits', a superset of any
+// quadrant's: a brick empty for every ray is crossed in one step.
+bool segmentClearFor(vec3 a, vec3 b, float skip, uint quadrant) {
     if (occupancy.grid.dims.x == 0u) return true;  // no volume bound
     const vec3 pa = (a - occupancy.grid.origin) / occupancy.grid.voxelSize;
     const vec3 pb = (b - occupancy.grid.origin) / occupancy.grid.voxelSize;
@@ -92,6 +109,7 @@ bool segmentClear(vec3 a, vec3 b, float skip) {
     r.invD = 1.0 / mix(vec3(1.0), r.d, r.moves);
     r.t = 0.0;
     r.inBrick = false;
+    r.quadrant = quadrant;
     r.clear = true;
     r.done = false;
     for (int i = 0; i < 1024 && !r.done; ++i) {  // at most 4096 steps: ends even if rounding stalls it
@@ -99,4 +117,11 @@ bool segmentClear(vec3 a, vec3 b, float skip) {
     }
     return r.clear;
 }
+
+// Whether the segment crosses no occupied voxel (every surface blocks).
+bool segmentClear(vec3 a, vec3 b, float skip) { return segmentClearFor(a, b, skip, OCCUPANCY_EVERY_RAY); }
+
+// Whether the sky's light reaches a along the upward segment a -> b: voxels block by the facing of
+// their single-sided triangles (the shadow maps' rule), by the quadrant of b - a.
+bool skySegmentClear(vec3 a, vec3 b, float skip) { return segmentClearFor(a, b, skip, occupancySkyQuadrant(b - a)); }
 #endif

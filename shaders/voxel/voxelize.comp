@@ -27,7 +27,22 @@ struct Walk {
     vec3 normal;      // in (u, v, w) order
     ivec2 lo, size;   // its columns' box on (u, v), clamped to the grid
     vec2 wRange;      // its extent along w
+    uint skyFacing;   // the sky's azimuth quadrants it blocks (skyFacing())
 };
+
+// The quadrants of upward rays a triangle of material m and front normal n (world space) blocks, a
+// bit each (voxel/types.h). Double-sided: every one. Single-sided: those whose middle direction
+// (+-1, 1, +-1) / sqrt(3), the mean upward direction of the quadrant, runs along the front
+// (dot > 0: the light behind it sees its front); src/voxel/occupancy_volume.h states the error.
+uint skyFacing(GpuMaterial m, vec3 n) {
+    if (m.doubleSided != 0u) return (1u << OCCUPANCY_SKY_QUADRANTS) - 1u;
+    uint bits = 0u;
+    for (uint q = 0u; q < OCCUPANCY_SKY_QUADRANTS; ++q) {
+        const vec3 middle = vec3((q & 1u) != 0u ? 1.0 : -1.0, 1.0, (q & 2u) != 0u ? 1.0 : -1.0);
+        if (dot(n, middle) > 0.0) bits |= 1u << q;
+    }
+    return bits;
+}
 
 // The triangle `drawn` (index into the drawn triangles) set up for the walk; false when it occupies
 // nothing (blended, degenerate, or outside the grid).
@@ -37,6 +52,8 @@ bool setup(uint drawn, out Walk walk) {
     const vec3 n3 = cross(tri.p[1] - tri.p[0], tri.p[2] - tri.p[0]);
     const vec3 a = abs(n3);
     if (max(a.x, max(a.y, a.z)) <= 0.0) return false;
+    const bool mirrored = instances[visDrawn[drawn].x].mirrored != 0u;  // its world-space winding flips
+    walk.skyFacing = skyFacing(materials[tri.material], mirrored ? -n3 : n3);
     walk.axes = a.z >= a.x && a.z >= a.y ? ivec3(0, 1, 2) : (a.y >= a.x ? ivec3(2, 0, 1) : ivec3(1, 2, 0));
     const ivec3 dims = ivec3(occupancy.grid.dims);
     vec3 lo = vec3(1e30), hi = vec3(-1e30);
@@ -56,7 +73,8 @@ bool setup(uint drawn, out Walk walk) {
     return true;
 }
 
-void setVoxel(ivec3 uvw, ivec3 axes) {
+// The voxel's bit, and its facing bits where the volume has them and the triangle blocks any quadrant.
+void setVoxel(ivec3 uvw, ivec3 axes, uint skyFacing) {
     ivec3 c;
     c[axes.x] = uvw.x;
     c[axes.y] = uvw.y;
@@ -64,6 +82,9 @@ void setVoxel(ivec3 uvw, ivec3 axes) {
     const uvec3 dims = occupancy.grid.dims;
     const uint index = uint(c.x) + dims.x * (uint(c.y) + dims.y * uint(c.z));
     atomicOr(occupancy.bits[index >> 5u], 1u << (index & 31u));
+    if (occupancy.grid.skyFirstWord == 0u || skyFacing == 0u) return;
+    const uint shift = (index % OCCUPANCY_SKY_VOXELS_PER_WORD) * OCCUPANCY_SKY_QUADRANTS;
+    atomicOr(occupancy.bits[occupancy.grid.skyFirstWord + index / OCCUPANCY_SKY_VOXELS_PER_WORD], skyFacing << shift);
 }
 
 // Whether the triangle (voxel units) meets the unit voxel whose lower corner is `corner`: no
@@ -112,7 +133,7 @@ void walkColumn(Walk walk, int column) {
     const int w0 = max(int(floor(max(w - spread, walk.wRange.x))), 0);
     const int w1 = min(int(floor(min(w + spread, walk.wRange.y))), gridW - 1);
     for (int k = w0; k <= w1; ++k)
-        if (triangleMeetsVoxel(walk.v[0], walk.v[1], walk.v[2], vec3(cell, k))) setVoxel(ivec3(cell, k), walk.axes);
+        if (triangleMeetsVoxel(walk.v[0], walk.v[1], walk.v[2], vec3(cell, k))) setVoxel(ivec3(cell, k), walk.axes, walk.skyFacing);
 }
 
 void main() {

@@ -155,10 +155,21 @@ struct Tracer {
         glm::vec3 indirect{0.0f};  // everything reflected on the way
     };
 
+    // The sky along a surface's scatter direction with path weight `next`, weighted against
+    // skyLight()'s sample of it; `seen` is the share of it that reaches the surface.
+    glm::vec3 skyScattered(const SurfacePoint& s, const glm::vec3& next, const glm::vec3& dir, float seen) const {
+        const float scatterPdf = std::max(0.0f, glm::dot(s.shadingNormal, dir)) / kPi;
+        return next * sky.radiance(dir) * (seen * powerHeuristic(scatterPdf, sky.pdf(dir)));
+    }
+
     // The light of a path from the camera's surface s: every vertex is lit by next-event estimation
     // (the sky by MIS), `bounces` scatters add further vertices; with a sky the last vertex's scatter
     // ray is traced too, for the sky it sees. In a scene with translucent surfaces each bounce ray
     // draws its own seed for them.
+    // The sky's light follows the light's rule for single-sided triangles in both halves of the MIS
+    // (skyLight()'s shadow ray, and here the scatter direction's own transmittance), while the path
+    // goes on by the viewer's: a dome whose fronts face inward lets the sky in and is seen from
+    // inside. Without single-sided triangles the two rules agree, and the escaping ray is the test.
     PathLight path(SurfacePoint s, reference::Pcg32& rng, uint64_t& count) const {
         PathLight out;
         glm::vec3 throughput(1.0f);
@@ -174,15 +185,19 @@ struct Tracer {
                 s.strand >= 0 ? s.position
                               : s.position + eps * (glm::dot(dir, s.geometricNormal) >= 0.0f ? s.geometricNormal
                                                                                               : -s.geometricNormal);
+            const bool skyByLight = sky.enabled() && s.strand < 0 && rays.singleSided();
+            if (skyByLight) {
+                ++count;
+                const float seen = rays.transmittance(origin, dir, std::numeric_limits<float>::infinity());
+                if (seen > 0.0f) term += skyScattered(s, next, dir, seen);
+                if (b >= bounces) break;
+            }
             const reference::RayQuery query{rays.translucent() ? rng.next() : 0u, s.strand, false};
             ++count;
             const std::optional<Hit> hit =
                 rays.intersect(origin, dir, 0.0f, std::numeric_limits<float>::infinity(), query);
             if (!hit) {
-                if (sky.enabled() && s.strand < 0) {
-                    const float scatterPdf = std::max(0.0f, glm::dot(s.shadingNormal, dir)) / kPi;
-                    term += next * sky.radiance(dir) * powerHeuristic(scatterPdf, sky.pdf(dir));
-                }
+                if (sky.enabled() && s.strand < 0 && !skyByLight) term += skyScattered(s, next, dir, 1.0f);
                 break;
             }
             if (b >= bounces) break;

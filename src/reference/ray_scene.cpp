@@ -167,6 +167,7 @@ RayScene::RayScene(const Scene& scene) : scene_(scene) {
         const Material& m = scene.materials[tris_.material[k]];
         (m.doubleSided && m.alphaMode == AlphaMode::Opaque ? opaque : filtered).push_back(uint32_t(k));
         translucent_ |= m.alphaMode == AlphaMode::Blend;
+        singleSided_ |= !m.doubleSided;
     }
     // Filter callbacks cost a call per candidate hit: only the triangles that need one get one.
     opaqueToTriangle_ = opaque;

@@ -75,6 +75,9 @@ public:
     static constexpr float kOpaqueTransmittance = 1e-6f;
     // The scene has strands or BLEND triangles: a pixel's paths must each trace their own camera ray.
     bool translucent() const { return translucent_; }
+    // The scene has single-sided triangles: a light's ray and a viewer's ray along the same line may
+    // then see different surfaces (intersect() against transmittance()).
+    bool singleSided() const { return singleSided_; }
     // The surface at a hit of a ray with direction `dir`. With a footprint (camera rays) the texture
     // is mip-mapped over it (texture.h says why); else bilinear at full resolution.
     SurfacePoint surface(const Hit& hit, const glm::vec3& dir, const PixelFootprint* footprint = nullptr) const;
@@ -100,7 +103,7 @@ private:
     const Scene& scene_;
     Triangles tris_;
     Strands strands_;
-    bool translucent_ = false;
+    bool translucent_ = false, singleSided_ = false;
     // Embree ignores a curve's hits nearer than 2 radii to the ray origin (its self-intersection
     // avoidance, a build option), which would lose the strands next to a ray leaving a strand: every
     // ray starts this far behind its origin, with tmin moved as far.

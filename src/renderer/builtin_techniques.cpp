@@ -37,14 +37,6 @@ HairCasterSettings hairCasters(const RenderSettings& s) {
 // unresolved `auto` (a caller that never looked at the lights: tests, the library) is no sky.
 bool skyOn(const RenderSettings& s) { return s.lighting.sky.kind != SkyKind::None && s.lighting.sky.kind != SkyKind::Auto; }
 
-// The occupancy volume: the RSM gather's visibility, what blocks LPV's propagation, or what hides
-// the sky.
-bool occupancyUsed(const RenderSettings& s) {
-    return (skyOn(s) && s.skyLight.visibility == SkyVisibility::Voxels) ||
-           (s.gi == GiMode::Rsm && s.rsm.visibility == RsmVisibility::Voxels) ||
-           (s.gi == GiMode::Lpv && s.lpv.geometry == LpvGeometry::Voxels);
-}
-
 // The GI techniques' settings in one string (their option rows' values): the temporal history
 // restarts when they change, since it holds another estimator's frames.
 std::string giEstimator(const RenderSettings& s) {
@@ -60,6 +52,12 @@ T& as(Technique& t) {
 }
 
 }  // namespace
+
+bool occupancyUsed(const RenderSettings& s) {
+    return (skyOn(s) && s.skyLight.visibility == SkyVisibility::Voxels) ||
+           (s.gi == GiMode::Rsm && s.rsm.visibility == RsmVisibility::Voxels) ||
+           (s.gi == GiMode::Lpv && s.lpv.geometry == LpvGeometry::Voxels);
+}
 
 void addBuiltinTechniques(TechniqueRegistry& r) {
     using S = const RenderSettings&;

@@ -28,6 +28,8 @@
 #include "rsm/rsm_pass.h"
 #include "sky_light/sky_light_technique.h"
 #include "temporal_gi/temporal_gi_technique.h"
+#include "renderer/technique_registry.h"
+#include "voxel/occupancy_volume.h"
 #include "shadow/shadow_options.h"
 #include "shadow/shadow_layout.h"
 #include "shared/types.h"
@@ -41,7 +43,7 @@ constexpr uint64_t kHairPointBytes = sizeof(gpu::GpuHairPoint);
 constexpr uint64_t kStrandRecordBytes = sizeof(gpu::GpuStrand);
 
 // The options a refusal names and can suggest a value of (None: the scene's own data).
-enum class Knob { None, Width, Height, ShadowRes, Cascades, RsmRes, LpvRsmRes, LpvVplRes, LpvRes, DsmRes, DsmNodes };
+enum class Knob { None, Width, Height, ShadowRes, Cascades, RsmRes, VoxelRes, LpvRsmRes, LpvVplRes, LpvRes, DsmRes, DsmNodes };
 
 struct KnobRow {
     const OptionRow* row = nullptr;
@@ -71,6 +73,9 @@ KnobRow knobRow(Knob k) {
     case Knob::RsmRes:
         return {row(rsm, rsm.flagOf<RsmSettings>([](RsmSettings& x) -> auto& { return x.resolution; })),
                 [](R& s, uint64_t v) { s.rsm.resolution = uint32_t(v); }};
+    case Knob::VoxelRes:
+        return {row(rsm, rsm.flagOf<RsmSettings>([](RsmSettings& x) -> auto& { return x.voxelResolution; })),
+                [](R& s, uint64_t v) { s.rsm.voxelResolution = uint32_t(v); }};
     case Knob::LpvRsmRes:
         return {row(lpv, lpv.flagOf<L>([](L& x) -> auto& { return x.rsmResolution; })),
                 [](R& s, uint64_t v) { s.lpv.rsmResolution = uint32_t(v); }};
@@ -357,6 +362,13 @@ std::vector<Demand> frameDemands(const vk::DeviceLimits& lim, const RenderSettin
         d.push_back({Knob::RsmRes, s.rsm.resolution, 8, fmt::format("the RSM's flux CDF ({} layer(s))", rsmLayers),
                      [=](uint64_t r) { return RsmFluxSampler::cdfBytes(uint32_t(r), uint32_t(rsmLayers)); }, true});
     if (s.gi == GiMode::Lpv) addLpvDemands(d, s, scene, uint32_t(rsmLayers));
+    if (occupancyUsed(s) || s.lighting.sky.kind == SkyKind::Auto) {  // an unresolved auto: an upper bound
+        const bool facing = hasSingleSidedSurfaces(scene);  // the sky's facing bits, 4 a voxel
+        const Bounds bounds = scene.bounds;
+        d.push_back({Knob::VoxelRes, s.rsm.voxelResolution, 8,
+                     facing ? "the occupancy volume (its voxel bits and the sky's facing bits)" : "the occupancy volume",
+                     [=](uint64_t r) { return OccupancyVolume::bytes(bounds, uint32_t(r), facing); }, true});
+    }
     addDsmDemands(d, lim, s, lights);
     const uint64_t strands = scene.strands.size(), points = scene.strandPoints.size() + 2 * strands;
     if (strands)

@@ -61,5 +61,8 @@ struct TechniqueRegistration {
 
 // The built-in modules' entries (renderer/builtin_techniques.cpp).
 void addBuiltinTechniques(TechniqueRegistry& registry);
+// Whether the occupancy volume is built: the RSM gather's visibility, what blocks LPV's propagation,
+// or what hides the sky read it (the device budget counts it then).
+bool occupancyUsed(const RenderSettings& s);
 
 }  // namespace penumbra

@@ -56,6 +56,10 @@ Scene makeRoom() {
     addBox(s, {0.5f, 0.375f, -0.5f}, {0.8f, 0.375f, 0.5f}, glm::radians(10.0f), addMaterial(s, {0.45f, 0.3f, 0.2f}));
     addBox(s, {-2.4f, 1.0f, -1.8f}, {0.5f, 1.0f, 0.6f}, 0.0f, white);  // cabinet
     addBox(s, {1.8f, 0.4f, 1.2f}, {0.9f, 0.4f, 0.4f}, 0.0f, addMaterial(s, {0.60f, 0.15f, 0.12f}));  // sofa
+    // Closed to any light from outside (a sky, a sun), as walls with two faces are: a single-sided
+    // wall blocks a light only where its front faces the light (the shadow maps' rule), and these
+    // fronts face inward.
+    for (Material& m : s.materials) m.doubleSided = true;
 
     Light lamp;
     lamp.type = LightType::Point;

@@ -10,7 +10,37 @@ namespace {
 
 constexpr uint32_t kChunkCapacity = 1u << 18;  // large-triangle chunks listed per build (2 MiB)
 
+// Words of the voxel bits and the bricks' bits; then, with facing bits, where those start and end.
+struct OccupancyWords {
+    uint64_t skyFirst = 0, total = 0;
+};
+
+OccupancyWords occupancyWords(const gpu::GpuOccupancyGrid& grid, bool skyFacing) {
+    const glm::uvec3 bricks = glm::uvec3(grid.dims) / uint32_t(OCCUPANCY_BRICK);
+    const uint64_t brickCount = uint64_t(bricks.x) * bricks.y * bricks.z;
+    OccupancyWords w;
+    w.total = uint64_t(grid.firstBrickWord) + (brickCount + 31) / 32;
+    if (!skyFacing) return w;
+    const uint64_t voxels = uint64_t(grid.dims.x) * grid.dims.y * grid.dims.z;
+    w.skyFirst = w.total;
+    w.total += (voxels + OCCUPANCY_SKY_VOXELS_PER_WORD - 1) / OCCUPANCY_SKY_VOXELS_PER_WORD;
+    return w;
+}
+
 }  // namespace
+
+bool hasSingleSidedSurfaces(const Scene& scene) {
+    for (const Draw& d : scene.draws) {
+        if (d.indexCount == 0 || d.material >= scene.materials.size()) continue;
+        const Material& m = scene.materials[d.material];
+        if (!m.doubleSided && m.alphaMode != AlphaMode::Blend) return true;  // blended ones are not voxels
+    }
+    return false;
+}
+
+uint64_t OccupancyVolume::bytes(const Bounds& bounds, uint32_t resolution, bool skyFacing) {
+    return sizeof(gpu::GpuOccupancyGrid) + occupancyWords(occupancyGrid(bounds, resolution), skyFacing).total * 4;
+}
 
 gpu::GpuOccupancyGrid occupancyGrid(const Bounds& bounds, uint32_t resolution) {
     const glm::vec3 extent = glm::max(bounds.max - bounds.min, glm::vec3(1e-3f));
@@ -20,7 +50,7 @@ gpu::GpuOccupancyGrid occupancyGrid(const Bounds& bounds, uint32_t resolution) {
     const glm::uvec3 dims = (fit + uint32_t(OCCUPANCY_BRICK - 1)) / uint32_t(OCCUPANCY_BRICK) * uint32_t(OCCUPANCY_BRICK);
     const glm::vec3 origin = bounds.center() - 0.5f * voxel * glm::vec3(dims);
     const uint64_t voxels = uint64_t(dims.x) * dims.y * dims.z;
-    return {origin, voxel, dims, uint32_t((voxels + 31) / 32)};
+    return {origin, voxel, dims, uint32_t((voxels + 31) / 32), 0, 0, 0, 0};
 }
 
 OccupancyVolume::OccupancyVolume(vk::Allocator& alloc, SceneGpu& scene, uint32_t resolution)
@@ -35,10 +65,11 @@ OccupancyVolume::OccupancyVolume(vk::Allocator& alloc, SceneGpu& scene, uint32_t
                                 std::vector<vk::Binding>{{BRICKS_OCCUPANCY, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER}}, 0);
     const glm::uvec3 bricks = glm::uvec3(grid_.dims) / uint32_t(OCCUPANCY_BRICK);
     brickCount_ = bricks.x * bricks.y * bricks.z;
-    const VkDeviceSize words = VkDeviceSize(grid_.firstBrickWord) + (brickCount_ + 31) / 32;
+    const OccupancyWords words = occupancyWords(grid_, hasSingleSidedSurfaces(scene.scene()));
+    grid_.skyFirstWord = uint32_t(words.skyFirst);
     const VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT;
-    buffer_ = vk::Buffer(alloc, sizeof(gpu::GpuOccupancyGrid) + words * 4, usage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                         false, "occupancy");
+    buffer_ = vk::Buffer(alloc, sizeof(gpu::GpuOccupancyGrid) + words.total * 4,
+                         usage | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, false, "occupancy");
     chunks_ = vk::Buffer(alloc, sizeof(glm::uvec4) + sizeof(glm::uvec2) * kChunkCapacity,
                          usage | VK_BUFFER_USAGE_INDIRECT_BUFFER_BIT, false, "occupancy-chunks");
 }
