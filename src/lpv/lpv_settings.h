@@ -24,7 +24,7 @@ struct LpvSettings {
     // The temporal gradients' reading (core/names.h GiChange): a relative change of c in a frame weighs
     // the new frame of the GI history at least c / lagTolerance. The volume holds no sampling noise, so
     // its gradients are the light's change alone and can be taken nearly whole (docs/motion.md).
-    float lagTolerance = 0.2f;
+    float lagTolerance = 0.1f;
     uint32_t sliceAxis = 2;         // debug AOVs lpv-slice / gv-slice: axis (0 x, 1 y, 2 z)
     uint32_t sliceIndex = 8;        // and cell index along it
 };
