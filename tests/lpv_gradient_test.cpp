@@ -186,25 +186,14 @@ TEST_F(GpuTest, LpvGradientReadsTheKeptVolumeAtItsOwnPlacement) {
 // 1 - 1 / 1.05, with no spread to discount) the history keeps up as the model says with that change
 // detected (0.95 at a tolerance of 0.1); without them (a tolerance of 1000) it holds clearly less.
 TEST_F(GpuTest, LpvHistoryFollowsAGrowingLightAsItsModelSays) {
-    const Scene scene = makeBuiltinScene("cornell");
-    const int frames = 16;
-    const double g = 1.05;
-    auto run = [&](float lagTolerance, bool temporal) {
+    const GrowingLightShares r = growingLightShares(ctx(), makeBuiltinScene("cornell"), [](float lagTolerance) {
         RenderSettings s = smallLpv();
-        s.giTemporal = temporal;
         s.lpv.lagTolerance = lagTolerance;
-        return meanUnderGrowingLight(ctx(), scene, s, frames, g);
-    };
-    const double truth = run(0.1f, false), detected = 1.0 - 1.0 / g;
-    const double withGradients = run(0.1f, true) / truth, without = run(1000.0f, true) / truth;
-    const double modelWith = modelShare(frames, g, 0.05, detected, 0.1);
-    const double modelWithout = modelShare(frames, g, 0.05, detected, 1000.0);
-    std::printf("[ lpv gradient ] light growing 5%% a frame, history / truth after %d frames: %.4f (model %.4f) "
-                "with the gradients, %.4f (model %.4f) without\n", frames, withGradients, modelWith, without,
-                modelWithout);
-    EXPECT_NEAR(withGradients, modelWith, 0.01);
-    EXPECT_NEAR(without, modelWithout, 0.01);
-    EXPECT_GT(withGradients - without, 0.15);
+        return s;
+    }, "lpv");
+    EXPECT_NEAR(r.withGradients, r.modelWith, 0.01);
+    EXPECT_NEAR(r.without, r.modelWithout, 0.01);
+    EXPECT_GT(r.withGradients - r.without, 0.15);
 }
 
 }  // namespace

@@ -94,19 +94,30 @@ TEST(OccupancyGrid, CubicVoxelsWithAMarginAroundTheBoundsInWholeBricks) {
 
 class OccupancyTest : public GpuTest {};
 
+// The occupancy volume of `scene` at `resolution`, built on the GPU and read back whole.
+struct BuiltVolume {
+    gpu::GpuOccupancyGrid grid;
+    std::vector<uint8_t> bytes;
+};
+
+BuiltVolume buildVolume(vk::Context& ctx, const Scene& scene, uint32_t resolution) {
+    vk::Allocator alloc(ctx);
+    vk::CommandContext cmd(alloc);
+    SceneGpu meshes(cmd, scene);
+    OccupancyVolume volume(alloc, meshes, resolution);
+    FrameGraph graph(ctx);
+    volume.addTo(graph);
+    cmd.submitAndWait([&](VkCommandBuffer c) { graph.execute(c, nullptr); });
+    return {volume.grid(), cmd.readBuffer(volume.buffer(), volume.buffer().size())};
+}
+
 TEST_F(OccupancyTest, VoxelsAreExactlyThoseTheTrianglesMeet) {
     for (uint32_t seed : {1u, 2u, 3u}) {
         Scene scene = randomTriangles(seed);
-        vk::Allocator alloc(ctx());
-        vk::CommandContext cmd(alloc);
-        SceneGpu meshes(cmd, scene);
-        OccupancyVolume volume(alloc, meshes, 40);
-        FrameGraph graph(ctx());
-        volume.addTo(graph);
-        cmd.submitAndWait([&](VkCommandBuffer c) { graph.execute(c, nullptr); });
-        const gpu::GpuOccupancyGrid g = volume.grid();
+        const BuiltVolume built = buildVolume(ctx(), scene, 40);
+        const gpu::GpuOccupancyGrid& g = built.grid;
+        const std::vector<uint8_t>& bytes = built.bytes;
         const size_t voxels = size_t(g.dims.x) * g.dims.y * g.dims.z;
-        const std::vector<uint8_t> bytes = cmd.readBuffer(volume.buffer(), volume.buffer().size());
         gpu::GpuOccupancyGrid header;
         std::memcpy(&header, bytes.data(), sizeof(header));
         EXPECT_EQ(header.dims, g.dims);
@@ -174,18 +185,12 @@ TEST_F(OccupancyTest, SkyFacingBitsAreThoseOfTheTrianglesThatMeetTheVoxel) {
         for (size_t k = 0; k < scene.draws.size(); k += 4)
             if (scene.draws[k].material == 0) scene.draws[k].material = uint32_t(scene.materials.size() - 1);
         ASSERT_TRUE(hasSingleSidedSurfaces(scene));
-        vk::Allocator alloc(ctx());
-        vk::CommandContext cmd(alloc);
-        SceneGpu meshes(cmd, scene);
-        OccupancyVolume volume(alloc, meshes, 40);
-        FrameGraph graph(ctx());
-        volume.addTo(graph);
-        cmd.submitAndWait([&](VkCommandBuffer c) { graph.execute(c, nullptr); });
-        const gpu::GpuOccupancyGrid g = volume.grid();
+        const BuiltVolume built = buildVolume(ctx(), scene, 40);
+        const gpu::GpuOccupancyGrid& g = built.grid;
+        const std::vector<uint8_t>& bytes = built.bytes;
         const size_t voxels = size_t(g.dims.x) * g.dims.y * g.dims.z;
         ASSERT_GT(g.skyFirstWord, g.firstBrickWord);
-        EXPECT_EQ(volume.buffer().size(), OccupancyVolume::bytes(scene.bounds, 40, true));
-        const std::vector<uint8_t> bytes = cmd.readBuffer(volume.buffer(), volume.buffer().size());
+        EXPECT_EQ(bytes.size(), OccupancyVolume::bytes(scene.bounds, 40, true));
         const size_t header = sizeof(gpu::GpuOccupancyGrid) / 4;
         auto gpuFacing = [&](size_t i) { return (u32(bytes, header + g.skyFirstWord + i / 8) >> (4 * (i % 8))) & 0xFu; };
 

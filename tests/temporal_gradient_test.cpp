@@ -73,25 +73,14 @@ TEST_F(GpuTest, RsmGradientOfABrighterLightIsItsRatio) {
 // half of the light. The image's mean against the single-frame estimate at the last intensity, and
 // against the model with the exact change 1 - 1 / 1.05.
 TEST_F(GpuTest, HistoryFollowsAGrowingLightAsItsModelSays) {
-    const Scene scene = makeBuiltinScene("cornell");
-    const int frames = 16;
-    const double g = 1.05;
-    auto run = [&](float lagTolerance, bool temporal) {
+    const GrowingLightShares r = growingLightShares(ctx(), makeBuiltinScene("cornell"), [](float lagTolerance) {
         RenderSettings s = cornellRsm();
-        s.giTemporal = temporal;
         s.rsm.lagTolerance = lagTolerance;
-        return meanUnderGrowingLight(ctx(), scene, s, frames, g);
-    };
-    const double truth = run(0.1f, false), detected = 1.0 - 1.0 / g;
-    const double withGradients = run(0.1f, true) / truth, without = run(1000.0f, true) / truth;
-    const double modelWith = modelShare(frames, g, 0.05, detected, 0.1);
-    const double modelWithout = modelShare(frames, g, 0.05, detected, 1000.0);
-    std::printf("[ rsm gradient ] light growing 5%% a frame, history / truth after %d frames: %.4f (model %.4f) "
-                "with the gradients, %.4f (model %.4f) without\n", frames, withGradients, modelWith, without,
-                modelWithout);
-    EXPECT_NEAR(withGradients, modelWith, 0.01);
-    EXPECT_NEAR(without, modelWithout, 0.01);
-    EXPECT_GT(modelWith, 0.93);
+        return s;
+    }, "rsm");
+    EXPECT_NEAR(r.withGradients, r.modelWith, 0.01);
+    EXPECT_NEAR(r.without, r.modelWithout, 0.01);
+    EXPECT_GT(r.modelWith, 0.93);
 }
 
 }  // namespace
