@@ -3,12 +3,12 @@
 // pixels, the irradiance at the block's centre receiver from the kept volume (last frame's sum, at
 // last frame's cascade placement) and from this frame's, and their luminances' change. The LPV has no
 // sampling noise: a still light gives bit-identical volumes, so its change is exactly 0, and a
-// light's change shows whole. Written as the RSM's: (change, larger, change^2 / larger, 1), or 0
-// where the centre pixel holds no surface.
+// light's change shows whole (shared/gi_change.glsl), or 0 where the centre pixel holds no surface.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"
 #include "lpv/bindings.h"
 #include "core/reconstruct.glsl"
+#include "shared/gi_change.glsl"
 #include "shared/luminance.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -44,10 +44,7 @@ void main() {
     bool hair;
     vec4 change = vec4(0.0);
     if (lpvReceiver(pixel, x, n, hair)) {
-        const float now = luminance(lpvIrradiance(kNow, x, n, hair));
-        const float before = luminance(lpvIrradiance(kKept, x, n, hair));
-        const float delta = now - before, larger = max(now, before);
-        change = vec4(delta, larger, larger > 0.0 ? delta * delta / larger : 0.0, 1.0);
+        change = giChangeTexel(luminance(lpvIrradiance(kNow, x, n, hair)), luminance(lpvIrradiance(kKept, x, n, hair)));
     }
     imageStore(outChange, block, change);
 }

@@ -12,6 +12,7 @@
 #include "core/reconstruct.glsl"
 #include "shared/hash.glsl"
 #include "shared/luminance.glsl"
+#include "shared/gi_change.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -397,9 +398,7 @@ void storeGradient(Receiver r, float before, vec3 e) {
     const vec2 uv = c.xy / c.w * 0.5 + 0.5;
     if (any(lessThan(uv, vec2(0.0))) || any(greaterThanEqual(uv, vec2(1.0)))) return;
     const ivec2 texel = ivec2(uv * vec2(frame.width, frame.height)) / int(pc.lowResFactor * pc.gradientPhase);
-    const float now = luminance(e);
-    const float change = now - before, larger = max(now, before);
-    imageStore(outIrradiance, texel, vec4(change, larger, larger > 0.0 ? change * change / larger : 0.0, 1.0));
+    imageStore(outIrradiance, texel, giChangeTexel(luminance(e), before));
 }
 
 // Receivers share out their samples: `lanes` (push sampling.w: 1, 2, 4 or 8) invocations of a

@@ -6,7 +6,7 @@
 // alpha = max(1 / frames, minWeight, changeWeight, detected). frames counts the frames the history
 // spans, so a new history is a plain mean of its first frames; changeWeight is the host's measure of
 // how much the lights changed (src/temporal_gi/temporal_gi_technique.cpp); detected, the GI
-// technique's own measure per pixel, where it publishes one (the RSM's temporal gradients). The history also carries the
+// technique's own measure per pixel, where it publishes one (temporal gradients). The history also carries the
 // luminance's first two moments, from which the spatial filter knows each pixel's noise.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"

@@ -2,9 +2,9 @@
 // The history weight that the GI technique's measured change asks for, per change texel
 // (core/names.h GiChange): over the 5x5 texels around it, the mean of their relative changes (each
 // weighed by its luminance), less the part that their spread can explain, over GiAccumulatePush's
-// lagTolerance. A moving light re-samples its RSM, so a gradient also holds the sampling's change,
-// zero on average and different from sample to sample; a change of the light's own is alike in all
-// of them. Only a mean beyond kChangeSignificance standard errors counts; 0 where fewer than three
+// lagTolerance (the technique's). A sampled estimate's gradient also holds the sampling's change (a
+// moving light re-samples the RSM), zero on average and different from sample to sample; a change of
+// the light's own is alike in all of them. Only a mean beyond kChangeSignificance standard errors counts; 0 where fewer than three
 // texels were measured.
 #extension GL_GOOGLE_include_directive : require
 #include "shared/types.h"

@@ -76,7 +76,9 @@ struct GiAccumulation {
 // by it: a relative change of c in a frame, beyond what the samples' spread explains, weighs the new
 // frame at least c / lagTolerance, the technique's own reading of its measure (a sampled estimate's
 // gradients also hold the sampling's change; an exact one's hold the light's alone).
+// Its texels are written by shaders/shared/gi_change.glsl, in kFormat.
 struct GiChange {
+    static constexpr VkFormat kFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
     uint32_t pixels = 0;
     float lagTolerance = 1.0f;
 };

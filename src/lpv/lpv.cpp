@@ -26,8 +26,6 @@ constexpr uint64_t kSplatCorners = 8;
 constexpr uint64_t kAtomicMaxBytes = 2 * sizeof(uint32_t);
 constexpr uint64_t kAtomicAddBytes = 2 * sizeof(int64_t);
 
-// The change image: the RSM's format (core/names.h GiChange), so that temporal_gi reads both alike.
-constexpr VkFormat kChangeFormat = VK_FORMAT_R32G32B32A32_SFLOAT;
 using CascadePlacement = std::array<gpu::GpuLpvCascade, LPV_MAX_CASCADES>;
 
 // Bytes of a texel of the image published as `name`.
@@ -152,7 +150,7 @@ LightPropagationVolume::LightPropagationVolume(vk::Allocator& alloc, uint32_t wi
 
 uint64_t lpvGradientBytes(uint64_t width, uint64_t height) {
     const uint64_t block = LPV_CHANGE_BLOCK, blocks = (width + block - 1) / block * ((height + block - 1) / block);
-    return blocks * vk::texelBytes(kChangeFormat) + vk::kMaxFramesInFlight * sizeof(CascadePlacement);
+    return blocks * vk::texelBytes(GiChange::kFormat) + vk::kMaxFramesInFlight * sizeof(CascadePlacement);
 }
 
 void LightPropagationVolume::update(const glm::vec3& eye) {
@@ -217,7 +215,7 @@ bool LightPropagationVolume::keepLastSum() {
         keptAccum_ = vk::Buffer(alloc_, accum_.size(), kVolumeUsage, false, "lpv-light-sum");
         keptCascades_ = vk::BufferRing(alloc_, sizeof(CascadePlacement), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT,
                                        "lpv-kept-cascades");
-        change_ = vk::Image(alloc_, {kChangeFormat, vk::divUp(width_, uint32_t(LPV_CHANGE_BLOCK)),
+        change_ = vk::Image(alloc_, {GiChange::kFormat, vk::divUp(width_, uint32_t(LPV_CHANGE_BLOCK)),
                                      vk::divUp(height_, uint32_t(LPV_CHANGE_BLOCK)), 1,
                                      VK_IMAGE_USAGE_STORAGE_BIT | VK_IMAGE_USAGE_SAMPLED_BIT |
                                          VK_IMAGE_USAGE_TRANSFER_SRC_BIT,
@@ -394,7 +392,7 @@ void LightPropagationVolume::addGradient(FrameGraph& graph, uint32_t slot) {
     const glm::uvec3 groups{vk::divUp(change_.width(), 8u), vk::divUp(change_.height(), 8u), 1};
     // Per block: a pixel's depth and normal read, a change texel written; both summed volumes read once.
     const uint64_t blockBytes = texelBytesOf(graph, "gbuffer.depth") + texelBytesOf(graph, "gbuffer.normal") +
-                                vk::texelBytes(kChangeFormat);
+                                vk::texelBytes(GiChange::kFormat);
     graph.pass("lpv.gradient")
         .pipeline(gradient_.pipeline)
         .uniform(LPV_GRADIENT_FRAME, graph.buffer("frame"))

@@ -108,7 +108,7 @@ RsmGather::RsmGather(vk::Allocator& alloc, vk::CommandContext& cmd, uint32_t wid
         for (vk::Buffer& b : gradientSamples_)
             b = vk::Buffer(alloc, sizeof(gpu::GpuGradientSample) * blocksWidth_ * blocksHeight_,
                            VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false, "rsm-gradient-samples");
-        change_ = vk::Image(alloc, {kIrradianceFormat, blocksWidth_, blocksHeight_, 1,
+        change_ = vk::Image(alloc, {GiChange::kFormat, blocksWidth_, blocksHeight_, 1,
                                     use | VK_IMAGE_USAGE_TRANSFER_DST_BIT, "rsm-change"});
         changeTexel_.pixels = 2 * f;
     } else {
@@ -144,7 +144,7 @@ void RsmGather::setSettings(const RsmSettings& s) {
 uint64_t RsmGather::gradientBytes(uint32_t width, uint32_t height, uint32_t lowResFactor) {
     const uint64_t cells = 2 * std::max(1u, lowResFactor);
     const uint64_t blocks = (width + cells - 1) / cells * ((height + cells - 1) / cells);
-    return blocks * (2 * sizeof(gpu::GpuGradientSample) + vk::texelBytes(kIrradianceFormat));
+    return blocks * (2 * sizeof(gpu::GpuGradientSample) + vk::texelBytes(GiChange::kFormat));
 }
 
 // Push constants shared by the gather and interpolation passes; sizes are the low-resolution grid's
