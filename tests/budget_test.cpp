@@ -11,6 +11,7 @@
 #include "lpv/lpv_options.h"
 #include "renderer/device_budget.h"
 #include "renderer/render_options.h"
+#include "sky_light/sky_light_options.h"
 #include "rsm/rsm_options.h"
 #include "scene/scene.h"
 #include "shadow/shadow_options.h"
@@ -168,12 +169,27 @@ TEST(DeviceBudget, OccupancyVolumeWithFacingBitsAdviceFits) {
     const Scene scene = cornell();
     RenderSettings s;
     s.lighting.sky.kind = SkyKind::Uniform;
+    s.skyLight.visibility = SkyVisibility::Voxels;
     s.rsm.voxelResolution = 1024;
     ASSERT_NO_THROW(validateSettings(s));
     const std::string why = refusal(s, scene, scene.lights, false);
     EXPECT_NE(why.find("the sky's facing bits"), std::string::npos) << why;
     EXPECT_GE(followAdvice(s, scene, scene.lights, false,
                            rsmOptions().flagOf<RsmSettings>([](RsmSettings& x) -> auto& { return x.voxelResolution; })),
+              1);
+}
+
+TEST(DeviceBudget, SkyMapsAdviceFits) {
+    const Scene scene = cornell();
+    RenderSettings s;
+    s.lighting.sky.kind = SkyKind::Uniform;
+    s.skyLight.mapCount = 256;
+    s.skyLight.mapResolution = 2048;
+    ASSERT_NO_THROW(validateSettings(s));
+    const std::string why = refusal(s, scene, scene.lights, false);
+    EXPECT_NE(why.find("the sky visibility maps"), std::string::npos) << why;
+    EXPECT_GE(followAdvice(s, scene, scene.lights, false,
+                           skyLightOptions().flagOf<SkyLightSettings>([](SkyLightSettings& x) -> auto& { return x.mapResolution; })),
               1);
 }
 

@@ -25,6 +25,7 @@ layout(set = 0, binding = LIGHTING_BACKGROUND_SKY) uniform sampler2D skyBackgrou
 // Velocity: which instance a pixel shows (visibility IDs, frame.visibilityIds) and where it was.
 #define MOTION_FIRST_BINDING LIGHTING_MOTION_FIRST
 #include "core/motion.glsl"
+#include "sky/radiance.glsl"
 
 #include "shadow/shadow_lookup.glsl"
 #include "dsm/dsm_lookup.glsl"  // bindings 8-11: translucent casters (hair, blended meshes)
@@ -90,23 +91,9 @@ vec2 pixelVelocity(ivec2 pixel, vec3 p) {
     return vec2(pixel) + 0.5 - (clip.xy / clip.w * 0.5 + 0.5) * vec2(frame.width, frame.height);
 }
 
-// The sky seen through `pixel`: bilinear in the equirectangular texture, wrapping in azimuth,
-// clamped at the poles (texel fetches: a sampler cannot wrap one axis and clamp the other).
+// The sky seen through `pixel`.
 vec3 backgroundRadiance(ivec2 pixel) {
-    vec3 d = normalize(pixelWorldPosition(frame, pixel, 0.5) - frame.eye);
-    ivec2 size = textureSize(skyBackground, 0);
-    float theta = acos(clamp(d.y, -1.0, 1.0)), phi = atan(d.x, -d.z);
-    vec2 t = vec2((phi + PI) / (2.0 * PI), theta / PI) * vec2(size) - 0.5;
-    ivec2 i0 = ivec2(floor(t));
-    vec2 f = t - vec2(i0);
-    vec3 sum = vec3(0.0);
-    for (int k = 0; k < 4; ++k) {
-        ivec2 o = ivec2(k & 1, k >> 1);
-        ivec2 texel = ivec2((i0.x + o.x + size.x) % size.x, clamp(i0.y + o.y, 0, size.y - 1));
-        float w = (o.x == 1 ? f.x : 1.0 - f.x) * (o.y == 1 ? f.y : 1.0 - f.y);
-        sum += w * texelFetch(skyBackground, texel, 0).rgb;
-    }
-    return sum;
+    return skyTextureRadiance(skyBackground, normalize(pixelWorldPosition(frame, pixel, 0.5) - frame.eye));
 }
 
 vec4 aovValue(Shading s, uint aov, ivec2 pixel) {

@@ -14,8 +14,8 @@ layout(set = 0, binding = SKY_WEIGH_GBUFFER_DEPTH) uniform sampler2D gDepth;
 layout(set = 0, binding = SKY_WEIGH_CLEAR_RAYS, rg32ui) uniform readonly uimage2D clearRays;
 layout(set = 0, binding = SKY_WEIGH_OUT, rgba16f) uniform writeonly image2D outShare;
 layout(push_constant) uniform Push { SkyLightPush pc; };
-#define SKY_SH_BINDING SKY_WEIGH_SKY_SH
-#include "sky_light/sky_sh.glsl"
+#include "sky/radiance.glsl"
+layout(set = 0, binding = SKY_WEIGH_SKY_RADIANCE) uniform sampler2D skyRadianceMap;
 #include "sky_light/surface.glsl"
 #include "sky_light/rays.glsl"
 
@@ -34,9 +34,9 @@ void main() {
     uint clear = 0u;
     for (uint k = 0u; k < pc.rays; ++k) {
         const vec3 d = rayDirection(r.n, k, pc.rays, rank);
-        // Weighted by the sky above the horizon only: the truncated series rings below it, where
-        // the ground blocks the rays, and would count that as hidden sky.
-        const vec3 l = d.y > 0.0 ? skyRadiance(d) : vec3(0.0);
+        // Weighted by the sky's own radiance (its SH would move weight from the horizon to the
+        // zenith), above the horizon only: below it the ground blocks the rays.
+        const vec3 l = d.y > 0.0 ? skyTextureRadiance(skyRadianceMap, d) : vec3(0.0);
         total += l;
         if ((mask & (1u << k)) != 0u) {
             seen += l;

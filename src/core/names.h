@@ -134,6 +134,8 @@ inline constexpr HostName<SkyLight> kSkyLight{"sky.light"};
 // vec4 coefficients[9] of Y00, Y1-1, Y10, Y11, Y2-2, Y2-1, Y20, Y21, Y22 (core/sky.h's basis), RGB
 // in .xyz; published by the lighting module's update, before any technique's passes.
 inline constexpr BufferName kSkySh{"sky.sh"};
+// The same radiance as an equirectangular RGBA16F image (shaders/sky/radiance.glsl reads it).
+inline constexpr ImageName kSkyRadiance{"sky.radiance"};
 inline constexpr ImageName kSkyIrradiance{"sky.irradiance"};
 
 // Shared services.

@@ -119,6 +119,7 @@ ImageHandle GpuSky::addTo(FrameGraph& graph) {
     const ImageHandle background = graph.import(background_);
     const BufferHandle sh = graph.import(sh_);
     graph.publish(names::kSkySh, sh);
+    graph.publish(names::kSkyRadiance, background);
     if (pending_ == Pending::Upload) addUpload(graph, background, sh);
     if (pending_ == Pending::Analytic) addAnalytic(graph, background, sh);
     pending_ = Pending::None;

@@ -26,6 +26,7 @@
 #include "rsm/rsm_gather.h"
 #include "rsm/rsm_options.h"
 #include "rsm/rsm_pass.h"
+#include "sky_light/sky_light_options.h"
 #include "sky_light/sky_light_technique.h"
 #include "temporal_gi/temporal_gi_technique.h"
 #include "renderer/technique_registry.h"
@@ -43,7 +44,9 @@ constexpr uint64_t kHairPointBytes = sizeof(gpu::GpuHairPoint);
 constexpr uint64_t kStrandRecordBytes = sizeof(gpu::GpuStrand);
 
 // The options a refusal names and can suggest a value of (None: the scene's own data).
-enum class Knob { None, Width, Height, ShadowRes, Cascades, RsmRes, VoxelRes, LpvRsmRes, LpvVplRes, LpvRes, DsmRes, DsmNodes };
+enum class Knob {
+    None, Width, Height, ShadowRes, Cascades, RsmRes, VoxelRes, LpvRsmRes, LpvVplRes, LpvRes, DsmRes, DsmNodes, SkyMapRes
+};
 
 struct KnobRow {
     const OptionRow* row = nullptr;
@@ -91,6 +94,12 @@ KnobRow knobRow(Knob k) {
     case Knob::DsmNodes:
         return {row(dsm, dsm.flagOf<DsmSettings>([](DsmSettings& x) -> auto& { return x.poolNodes; })),
                 [](R& s, uint64_t v) { s.dsm.poolNodes = v; }};
+    case Knob::SkyMapRes: {
+        const OptionTable& sky = skyLightOptions();
+        using K = SkyLightSettings;
+        return {row(sky, sky.flagOf<K>([](K& x) -> auto& { return x.mapResolution; })),
+                [](R& s, uint64_t v) { s.skyLight.mapResolution = uint32_t(v); }};
+    }
     case Knob::None: break;
     }
     return {};
@@ -327,6 +336,15 @@ std::vector<Demand> frameDemands(const vk::DeviceLimits& lim, const RenderSettin
     if (s.lighting.sky.kind != SkyKind::None)  // an unresolved auto counted as a sky: the estimate stays an upper bound
         d.push_back({Knob::Width, w, 1, fmt::format("the sky light's {}x{} visibility and irradiance", w, h),
                      [=](uint64_t v) { return SkyLightTechnique::bytes(v, h, s.skyLight.traceStep); }});
+    if (s.lighting.sky.kind != SkyKind::None && s.skyLight.visibility == SkyVisibility::Maps) {
+        const uint32_t maps = s.skyLight.mapCount;
+        d.push_back({Knob::SkyMapRes, s.skyLight.mapResolution, 64,
+                     fmt::format("the sky visibility maps ({} layers of R32F)", maps),
+                     [=](uint64_t r) { return SkyLightTechnique::mapBytes(r, maps); }});
+        d.push_back({Knob::SkyMapRes, s.skyLight.mapResolution, 64,
+                     fmt::format("the compute rasterizer's depth buffer for the sky maps ({} layers)", maps),
+                     [=](uint64_t r) { return ComputeRaster::depthBytes(r * r, maps); }, true});
+    }
     if (s.giTemporal && s.gi != GiMode::None)
         d.push_back({Knob::Width, w, 1, fmt::format("the GI history and filter ({}x{})", w, h),
                      [=](uint64_t v) { return TemporalGiTechnique::bytes(v, h); }});

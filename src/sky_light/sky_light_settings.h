@@ -5,25 +5,33 @@
 namespace penumbra {
 
 enum class SkyVisibility {
+    Maps,    // depth maps of the scene seen from directions spread over the sky
     Voxels,  // rays through the occupancy volume (its resolution: --rsm-voxel-res)
     None,    // no occlusion: every surface sees its whole hemisphere of sky
 };
 
 struct SkyLightSettings {
-    SkyVisibility visibility = SkyVisibility::Voxels;
-    // Rays per traced receiver (at most 32, the bits of its clear-ray mask); neighbouring receivers
-    // turn their set by different angles, and the filter averages a 4x4 block's 16 sets back together.
+    SkyVisibility visibility = SkyVisibility::Maps;
+    // Maps: directions over the upper hemisphere (equal solid angles), one orthographic depth map of
+    // the whole scene each, drawn once and again only when casters move.
+    uint32_t mapCount = 64;
+    uint32_t mapResolution = 512;
+    // Where a receiver looks itself up: this many map texels off its surface, along its normal.
+    float mapOffset = 1.5f;
+    // Voxels: rays per traced receiver (at most 32, the bits of its clear-ray mask); neighbouring
+    // receivers turn their set by different angles, and the filter averages a 4x4 block's 16 sets back
+    // together.
     uint32_t rays = 8;
+    // Voxels: where the rays start, this many voxels off the surface along its normal, out of the
+    // voxels the surface itself occupies (half a voxel leaves many rays inside them; further off
+    // misses the occluders near the receiver).
+    float startOffset = 1.0f;
     // Camera pixels between traced receivers, per axis: the sky's visibility changes slowly across a
-    // surface, so one receiver of each 2x2 block serves them all at a quarter of the rays.
+    // surface, so one receiver of each 2x2 block serves them all at a quarter of the work.
     uint32_t traceStep = 2;
     // Traced receivers either side that the filter averages over (on the pixel's own surface); 2
     // covers a 4x4 block of ray sets from every pixel.
     uint32_t filterRadius = 2;
-    // Where the rays start: this many voxels off the surface along its normal, out of the voxels
-    // the surface itself occupies (half a voxel leaves many rays inside them; further off misses
-    // the occluders near the receiver).
-    float startOffset = 1.0f;
 };
 
 }  // namespace penumbra
