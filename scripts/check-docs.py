@@ -14,7 +14,7 @@ Reads README.md and every docs/**/*.md:
   `./build/penumbra`) runs too.
 
 Commands run at small sizes: `./build/penumbra` there is a wrapper that replaces the image size
-with 64x36, caps path counts, frames and strands (SMALL below) and shortens the long defaults of
+with 64x36, caps path counts, frames, strands and sky maps (SMALL below) and shortens the long defaults of
 eval, stability and bench (SHORT); a doc that writes a size documents the full-size run. A command naming ../shared/assets is skipped, and says so, where the
 assets are absent (a fresh CI machine has none); the block's other commands still run.
 
@@ -39,7 +39,8 @@ CODE_SPAN = re.compile(r"`(\./build/penumbra [^`]+)`")
 GALLERY = re.compile(r"^## Gallery", re.M)
 # The wrapper's caps: option -> the largest value the doc test runs.
 SMALL = {"--spp": 16, "--frames": 4, "--warmup": 1, "--strands": 2000, "--reference-max-spp": 64,
-         "--sequence": 3, "--shadow-res": 512, "--rsm-res": 256, "--lpv-rsm-res": 512, "--lpv-vpl-res": 128}
+         "--sequence": 3, "--shadow-res": 512, "--rsm-res": 256, "--lpv-rsm-res": 512, "--lpv-vpl-res": 128,
+         "--sky-maps": 8}
 SIZE = ["--width", "64", "--height", "36"]
 SIZED = {"render", "bench", "stability", "reference", "eval", "view"}
 # Defaults of a long run, given where the command leaves them out: frames per technique and still frames.
@@ -187,6 +188,8 @@ if args:
             out += ["--shadow-res", str(small["--shadow-res"])]
         if "lpv" in args and "--lpv-rsm-res" not in given:
             out += ["--lpv-rsm-res", str(small["--lpv-rsm-res"])]
+        if "--sky-maps" not in given:  # the sky's 64 views of a large scene, on a CPU device
+            out += ["--sky-maps", str(small["--sky-maps"])]
 os.execv(real, [real] + out)
 """
 

@@ -61,6 +61,10 @@ protected:
         readSurfaces(r);
         return out;
     }
+    // Cornell's sliding box under a uniform sky, the view still: after the box moves, each of
+    // `frames` frames runs `pass` once, the next none, and the result then equals that of a renderer
+    // that saw the box there first.
+    void slidingBoxCatchesUp(SkyVisibility visibility, const std::string& pass, int frames);
     std::vector<float> direct_;  // the last frame's direct AOV
     // The last frame's surfaces: world position and the normal the camera sees (zero: none).
     std::vector<glm::dvec3> position_, normal_;
@@ -97,6 +101,38 @@ double relativeL1(const std::vector<float>& a, const std::vector<float>& b) {
     double differs = 0.0, sum = 1e-30;
     for (size_t i = 0; i < a.size(); ++i) differs += std::abs(a[i] - b[i]), sum += std::abs(b[i]);
     return differs / sum;
+}
+
+void SkyLightTest::slidingBoxCatchesUp(SkyVisibility visibility, const std::string& pass, int frames) {
+    const Scene scene = makeBuiltinScene("cornell-moving");
+    RenderSettings s;
+    s.lighting.sky = uniformSky(1.0f);
+    s.skyLight.visibility = visibility;
+    s.width = 64, s.height = 48, s.giTemporal = false;
+    const SceneMotion motion(scene, scene.cameras.at(0), scene.lights, {}, {});
+    auto frame = [&](double t) {
+        const ScenePose pose = motion.at(t);
+        return FrameInputs{pose.camera, pose.lights, pose.instances, {}, {}};
+    };
+    auto runs = [&pass](const TestRenderer& r) {
+        return std::count_if(r.passes().begin(), r.passes().end(), [&pass](const PassDesc& p) { return p.name == pass; });
+    };
+    TestRenderer moving(ctx(), scene, s);
+    moving.render(frame(0.0));
+    const std::vector<float> before = irradiance(moving);
+    for (int k = 0; k < frames; ++k) {
+        moving.render(frame(0.75));
+        EXPECT_EQ(runs(moving), 1) << "frame " << k;
+    }
+    const std::vector<float> after = irradiance(moving);
+    moving.render(frame(0.75));
+    EXPECT_EQ(runs(moving), 0);
+    TestRenderer fresh(ctx(), scene, s);
+    fresh.render(frame(0.75));
+    const std::vector<float> expected = irradiance(fresh);
+    ASSERT_EQ(after.size(), expected.size());
+    EXPECT_GT(relativeL1(after, before), 1e-3) << "the box changes the sky's light";
+    EXPECT_LE(relativeL1(after, expected), 1e-6);
 }
 
 }  // namespace
@@ -245,67 +281,23 @@ TEST_F(SkyLightTest, AMovingSunReweighsTheRaysWithoutTracingThemAgain) {
 }
 
 TEST_F(SkyLightTest, GeometryMovingUnderAStillViewIsTracedAgainOverFourFrames) {
-    // Cornell's sliding box under a uniform sky, the view still: after the box moves, each of four
-    // frames traces one texel of every 2x2 block, the fifth traces none, and the result then equals
-    // that of a renderer that saw the box there first.
-    const Scene scene = makeBuiltinScene("cornell-moving");
-    RenderSettings s;
-    s.lighting.sky = uniformSky(1.0f);
-    s.skyLight.visibility = SkyVisibility::Voxels;
-    s.width = 64, s.height = 48, s.giTemporal = false;
-    const SceneMotion motion(scene, scene.cameras.at(0), scene.lights, {}, {});
-    auto frame = [&](double t) {
-        const ScenePose pose = motion.at(t);
-        return FrameInputs{pose.camera, pose.lights, pose.instances, {}, {}};
-    };
-    auto traced = [](const TestRenderer& r) {
-        return std::count_if(r.passes().begin(), r.passes().end(), [](const PassDesc& p) { return p.name == "sky.trace"; });
-    };
-    TestRenderer moving(ctx(), scene, s);
-    moving.render(frame(0.0));
-    const std::vector<float> before = irradiance(moving);
-    for (int k = 0; k < 4; ++k) {
-        moving.render(frame(0.75));
-        EXPECT_EQ(traced(moving), 1) << "frame " << k;
-    }
-    const std::vector<float> after = irradiance(moving);
-    moving.render(frame(0.75));
-    EXPECT_EQ(traced(moving), 0);
-    TestRenderer fresh(ctx(), scene, s);
-    fresh.render(frame(0.75));
-    const std::vector<float> expected = irradiance(fresh);
-    ASSERT_EQ(after.size(), expected.size());
-    EXPECT_GT(relativeL1(after, before), 1e-3) << "the box changes the sky's light";
-    EXPECT_LE(relativeL1(after, expected), 1e-6);
+    // With the voxels, each of four frames traces one texel of every 2x2 block.
+    slidingBoxCatchesUp(SkyVisibility::Voxels, "sky.trace", 4);
 }
 
 TEST_F(SkyLightTest, MovedGeometryDrawsTheMapsAgain) {
-    // Cornell's sliding box under a uniform sky, the view still: the frame after the box moves draws
-    // every sky map again and equals a renderer that saw the box there first; the next draws none.
-    const Scene scene = makeBuiltinScene("cornell-moving");
-    RenderSettings s;
-    s.lighting.sky = uniformSky(1.0f);
-    s.width = 64, s.height = 48, s.giTemporal = false;
-    const SceneMotion motion(scene, scene.cameras.at(0), scene.lights, {}, {});
-    auto frame = [&](double t) {
-        const ScenePose pose = motion.at(t);
-        return FrameInputs{pose.camera, pose.lights, pose.instances, {}, {}};
-    };
-    auto drawn = [](const TestRenderer& r) {
-        return std::count_if(r.passes().begin(), r.passes().end(), [](const PassDesc& p) { return p.name == "sky.maps.setup"; });
-    };
-    TestRenderer moving(ctx(), scene, s);
-    moving.render(frame(0.0));
-    const std::vector<float> before = irradiance(moving);
-    moving.render(frame(0.75));
-    EXPECT_EQ(drawn(moving), 1);
-    const std::vector<float> after = irradiance(moving);
-    moving.render(frame(0.75));
-    EXPECT_EQ(drawn(moving), 0);
-    TestRenderer fresh(ctx(), scene, s);
-    fresh.render(frame(0.75));
-    const std::vector<float> expected = irradiance(fresh);
-    ASSERT_EQ(after.size(), expected.size());
-    EXPECT_GT(relativeL1(after, before), 1e-3) << "the box changes the sky's light";
-    EXPECT_LE(relativeL1(after, expected), 1e-6);
+    // With the maps, the frame after the box moves draws every map again.
+    slidingBoxCatchesUp(SkyVisibility::Maps, "sky.maps.setup", 1);
+}
+
+TEST(SkyVisibility, AutoTakesTheMapsUpToTheirBudgetAndTheRaysBeyond) {
+    SkyLightSettings s;  // auto, 64 maps
+    EXPECT_EQ(resolveSkyVisibility(s, 300000), SkyVisibility::Maps);
+    EXPECT_EQ(resolveSkyVisibility(s, 300001), SkyVisibility::Voxels);
+    s.mapCount = 32;  // half the maps: twice the triangles
+    EXPECT_EQ(resolveSkyVisibility(s, 600000), SkyVisibility::Maps);
+    s.visibility = SkyVisibility::Maps;  // asked for: kept
+    EXPECT_EQ(resolveSkyVisibility(s, 100000000), SkyVisibility::Maps);
+    s.visibility = SkyVisibility::None;
+    EXPECT_EQ(resolveSkyVisibility(s, 1), SkyVisibility::None);
 }

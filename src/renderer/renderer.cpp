@@ -97,6 +97,7 @@ Renderer::Renderer(vk::Context& ctx, const Scene& scene, const RenderSettings& s
 }
 
 void Renderer::init() {
+    settings_ = resolved(settings_);
     if (settings_.width == 0 || settings_.height == 0 || settings_.width > 16384 || settings_.height > 16384)
         throw vk::VulkanError(fmt::format("image size {}x{} is out of range (1..16384)", settings_.width,
                                           settings_.height));
@@ -158,7 +159,14 @@ uint32_t Renderer::shadowLayerCount() const {
     return layers ? uint32_t(layers->layers.size()) : 0u;
 }
 
-SettingsChange Renderer::apply(const RenderSettings& settings) {
+// The settings with what an Auto stands for in this scene.
+RenderSettings Renderer::resolved(RenderSettings s) const {
+    s.skyLight.visibility = resolveSkyVisibility(s.skyLight, scene_.meshes().drawnTriangleCount());
+    return s;
+}
+
+SettingsChange Renderer::apply(const RenderSettings& requested) {
+    const RenderSettings settings = resolved(requested);
     const SettingsDiff diff = diffSettings(settings_, settings);
     if (diff.change == SettingsChange::None) return diff.change;
     if (diff.change != SettingsChange::PerFrame) finish();  // what is rebuilt may be in use by the frames in flight

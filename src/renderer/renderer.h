@@ -69,6 +69,7 @@ public:
 
     // Takes new settings; returns the largest class of what changed. Per-frame values apply to the
     // next frame; structure and size changes wait for the frames in flight, then rebuild what they own.
+    // An Auto choice is resolved for the scene (settings() holds what it stands for).
     SettingsChange apply(const RenderSettings& settings);
 
     // Records and submits one frame, waiting only for the frame slot it reuses (frames in flight).
@@ -128,6 +129,7 @@ public:
 private:
     struct FrameSlot;
     void init();
+    RenderSettings resolved(RenderSettings s) const;
     void build(uint32_t parts);
     bool layoutChanged(const std::vector<Light>& lights) const;
     FrameSlot& acquireSlot();

@@ -11,13 +11,15 @@ OptionTable makeTable() {
     using S = SkyLightSettings;
     OptionTableBuilder<S> t("sky_light", "Sky light: the visible sky's irradiance per pixel");
     t.choice("--sky-visibility", "visibility", [](S& s) -> auto& { return s.visibility; },
-             std::vector<std::pair<std::string, SkyVisibility>>{{"maps", SkyVisibility::Maps},
+             std::vector<std::pair<std::string, SkyVisibility>>{{"auto", SkyVisibility::Auto},
+                                                                {"maps", SkyVisibility::Maps},
                                                                 {"voxels", SkyVisibility::Voxels},
                                                                 {"none", SkyVisibility::None}},
              kStructure,
              "What hides the sky from a surface: depth maps of the scene from directions over the sky, rays "
              "through the occupancy volume ({rsm.voxel_resolution}), or nothing (every surface sees its whole "
-             "hemisphere)")
+             "hemisphere); auto: the maps, or the rays where the maps would draw more than 19.2M triangles "
+             "in all (64 maps of a 300k-triangle scene)")
         .rebuild({"camera", "gi"});  // the occupancy volume comes and goes with it
     t.integer("--sky-maps", "maps", [](S& s) -> auto& { return s.mapCount; }, 4, 256, kSizes,
               "Sky visibility maps: directions spread evenly over the upper hemisphere, one depth map each")
