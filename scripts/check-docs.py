@@ -188,8 +188,8 @@ if args:
             out += ["--shadow-res", str(small["--shadow-res"])]
         if "lpv" in args and "--lpv-rsm-res" not in given:
             out += ["--lpv-rsm-res", str(small["--lpv-rsm-res"])]
-        if "--sky-maps" not in given:  # the sky's 64 views of a large scene, on a CPU device
-            out += ["--sky-maps", str(small["--sky-maps"])]
+    if args[0] in ("render", "bench", "stability", "view") and "--sky-maps" not in given:
+        out += ["--sky-maps", str(small["--sky-maps"])]  # the sky's 64 views of a large scene, on a CPU device
 os.execv(real, [real] + out)
 """
 
