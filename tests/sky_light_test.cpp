@@ -65,7 +65,7 @@ protected:
     // `frames` frames runs `pass` once, the next none, and the result then equals that of a renderer
     // that saw the box there first.
     void slidingBoxCatchesUp(SkyVisibility visibility, const std::string& pass, int frames);
-    std::vector<float> direct_;  // the last frame's direct AOV
+    std::vector<float> direct_;  // the last frame's output AOV (direct unless the settings say)
     // The last frame's surfaces: world position and the normal the camera sees (zero: none).
     std::vector<glm::dvec3> position_, normal_;
 };
@@ -191,6 +191,21 @@ TEST_F(SkyLightTest, ASingleSidedEnclosureHidesTheSkyOnlyWhereItsFrontsFaceTheSk
         }
         EXPECT_EQ(checked, 64u * 48u) << "the plane fills the view (fronts " << (inward ? "inward)" : "outward)");
     }
+}
+
+TEST_F(SkyLightTest, TheSkyAovIsTheSkyLightsIrradiance) {
+    // `--aov sky` shows the sky light's irradiance at every surface pixel, unchanged.
+    RenderSettings s;
+    s.aov = Aov::Sky;
+    const std::vector<float> e = skyIrradiance(makeBuiltinScene("street"), uniformSky(1.0f), s);
+    ASSERT_EQ(e.size(), direct_.size());
+    size_t surfaces = 0;
+    for (size_t i = 0; i < e.size(); i += 4) {
+        if (normal_[i / 4] == glm::dvec3(0.0)) continue;  // the background
+        ++surfaces;
+        for (int c = 0; c < 3; ++c) EXPECT_EQ(direct_[i + c], e[i + c]) << "pixel " << i / 4;
+    }
+    EXPECT_GT(surfaces, 64u * 48u / 2);
 }
 
 TEST_F(SkyLightTest, WithoutVisibilityTheRoomSeesTheWholeSky) {

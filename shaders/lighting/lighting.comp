@@ -113,6 +113,7 @@ vec4 aovValue(Shading s, uint aov, ivec2 pixel) {
     if (aov == AOV_CASCADE) return vec4(shadowLayerColour(pixel), 1.0);
     if (aov == AOV_TRANSMITTANCE) return vec4(vec3(firstDeepShadowTransmittance(s.p, s.n, s.hair)), 1.0);
     if (aov == AOV_VELOCITY) return vec4(pixelVelocity(pixel, s.p), 0.0, 1.0);
+    if (aov == AOV_SKY) return vec4(texelFetch(skyIrradiance, min(pixel, textureSize(skyIrradiance, 0) - 1), 0).rgb, 1.0);
     return vec4(vec3(s.firstShadow), 1.0);
 }
 

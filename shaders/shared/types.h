@@ -42,7 +42,8 @@ using uint = uint32_t;
 #define AOV_RSM_FLUX 14    // debug: the RSM's flux (exposed and tone-mapped like radiance)
 #define AOV_SHADOW_MAP 15  // debug: layer --aov-layer of the shadow-map array's depth
 #define AOV_VELOCITY 16    // screen-space motion since the previous frame, pixels (xy: now minus then)
-#define AOV_COUNT 17
+#define AOV_SKY 17         // debug: the visible sky's irradiance at each surface (src/sky_light; 0 without a sky)
+#define AOV_COUNT 18
 
 #define ALPHA_OPAQUE 0
 #define ALPHA_MASK 1

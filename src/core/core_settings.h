@@ -26,6 +26,7 @@ enum class Aov {
     RsmFlux = AOV_RSM_FLUX,
     ShadowMap = AOV_SHADOW_MAP,
     Velocity = AOV_VELOCITY,
+    Sky = AOV_SKY,
 };
 
 // The camera's G-buffer (lighting/gbuffer_pass.h): visibility buffer + compute resolve, or classic raster.

@@ -112,7 +112,7 @@ Light parseLight(const std::string& value) {
 std::vector<std::string> aovNames() {
     return {"direct",   "albedo",    "normal",   "depth",   "shadow",        "final",
             "indirect", "lpv-slice", "gv-slice", "cascade", "transmittance", "dsm-lists",
-            "rsm-depth", "rsm-normal", "rsm-flux", "shadow-map", "velocity"};
+            "rsm-depth", "rsm-normal", "rsm-flux", "shadow-map", "velocity", "sky"};
 }
 
 Aov parseAov(const std::string& value) {

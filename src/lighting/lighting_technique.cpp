@@ -53,7 +53,8 @@ gpu::TonemapPush LightingTechnique::tonemapParams(const FrameContext& f) const {
         case Aov::Final:
         case Aov::Indirect:
         case Aov::LpvSlice:
-        case Aov::RsmFlux: {
+        case Aov::RsmFlux:
+        case Aov::Sky: {
             const float compensation = std::exp2(f.core.exposureCompensation);
             if (f.core.autoExposure) return {compensation, 0.0f, TONEMAP_ACES, 1};
             return {f.core.exposure * compensation, 0.0f, TONEMAP_ACES, 0};

@@ -30,7 +30,7 @@ const std::vector<std::pair<std::string, Aov>> kAovs{
     {"indirect", Aov::Indirect},     {"lpv-slice", Aov::LpvSlice},  {"gv-slice", Aov::GvSlice},
     {"cascade", Aov::Cascade},       {"transmittance", Aov::Transmittance}, {"dsm-lists", Aov::DsmLists},
     {"rsm-depth", Aov::RsmDepth},    {"rsm-normal", Aov::RsmNormal}, {"rsm-flux", Aov::RsmFlux},
-    {"shadow-map", Aov::ShadowMap},  {"velocity", Aov::Velocity}};
+    {"shadow-map", Aov::ShadowMap},  {"velocity", Aov::Velocity},   {"sky", Aov::Sky}};
 
 // `--shadow pcf,dsm`: the opaque casters' filter and, optionally, deep shadow maps (dsm) or deep
 // opacity maps (dom) for hair and blended meshes. One filter at most: `pcf,vsm` would keep the last.
