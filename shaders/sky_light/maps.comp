@@ -3,10 +3,9 @@
 // evenly over the upper hemisphere (an orthographic shadow map per direction, by the compute
 // rasterizer). A traced receiver looks itself up in every map that its hemisphere holds and weighs
 // each lit one by the sky's radiance from that direction and the cosine: the share of the sky's
-// radiance it sees, per channel, as weigh.comp gives it for the voxel rays (upsample.comp multiplies it
-// by the open sky's irradiance). The maps hold the
-// triangles themselves (alpha-masked ones tested, one-sided ones by the light's rule), so thin walls
-// neither leak nor grow.
+// radiance it sees, per channel, as weigh.comp gives it for the voxel rays (upsample.comp multiplies
+// it by the open sky's irradiance). The maps hold the triangles themselves (alpha-masked ones tested,
+// one-sided ones by the light's rule), so thin walls neither leak nor grow.
 #extension GL_GOOGLE_include_directive : require
 #include "sky_light/types.h"
 #include "core/reconstruct.glsl"
