@@ -33,7 +33,13 @@ float litInMap(uint k, vec3 q) {
     return texelFetch(skyMaps, ivec3(t, int(k)), 0).r >= min(clip.z, 1.0) ? 1.0 : 0.0;
 }
 
+// Each direction's radiance, the same for every receiver: fetched once per workgroup.
+shared vec3 directionRadiance[SKY_MAX_MAPS];
+
 void main() {
+    for (uint k = gl_LocalInvocationIndex; k < pc.mapCount; k += gl_WorkGroupSize.x * gl_WorkGroupSize.y)
+        directionRadiance[k] = skyTextureRadiance(skyRadianceMap, directions[k].direction);
+    barrier();
     const ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
     if (any(greaterThanEqual(texel, imageSize(outShare)))) return;
     const SkyReceiver r = skyReceiver(min(tracedPixel(texel, pc.traceStep), ivec2(frame.width, frame.height) - 1));
@@ -52,7 +58,7 @@ void main() {
         if (c <= 0.0) continue;
         // The sky's own radiance, not its SH: the series' smoothing moves weight from the horizon to
         // the zenith, which a street's walls see through their slot of sky.
-        const vec3 l = skyTextureRadiance(skyRadianceMap, d) * c;
+        const vec3 l = directionRadiance[k] * c;
         const float v = litInMap(k, q);
         total += l;
         seen += l * v;

@@ -54,6 +54,7 @@ namespace penumbra::gpu {
 // every rotation, which the filter averages back together.
 #define SKY_TILE 4
 #define SKY_MAX_RAYS 32  // the bits of a clear-ray mask
+#define SKY_MAX_MAPS 256  // --sky-maps' upper bound (maps.comp keeps each direction's radiance in shared memory)
 #define SKY_TRACE_EVERY_TEXEL 0xFFFFFFFFu  // SkyLightPush.tracePhase: no subset
 
 // One direction of the sky maps (maps.comp): towards the sky, and the orthographic view of the

@@ -21,7 +21,7 @@ OptionTable makeTable() {
              "hemisphere); auto: the maps, or the rays where the maps would draw more than 19.2M triangles "
              "in all (64 maps of a 300k-triangle scene)")
         .rebuild({"camera", "gi"});  // the occupancy volume comes and goes with it
-    t.integer("--sky-maps", "maps", [](S& s) -> auto& { return s.mapCount; }, 4, 256, kSizes,
+    t.integer("--sky-maps", "maps", [](S& s) -> auto& { return s.mapCount; }, 4, SKY_MAX_MAPS, kSizes,
               "Sky visibility maps: directions spread evenly over the upper hemisphere, one depth map each")
         .rebuild({"camera"});
     t.integer("--sky-map-res", "map_resolution", [](S& s) -> auto& { return s.mapResolution; }, 64, 2048, kSizes,
