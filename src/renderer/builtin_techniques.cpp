@@ -133,6 +133,9 @@ void addBuiltinTechniques(TechniqueRegistry& r) {
     sky.enabled = skyOn;
     sky.create = [](B b, S s) { return std::make_unique<SkyLightTechnique>(b, s.skyLight); };
     sky.apply = [](Technique& t, S s) { as<SkyLightTechnique>(t).setSettings(s.skyLight); };
+    sky.resolve = [](RenderSettings& s, const Scene& scene) {
+        s.skyLight.visibility = resolveSkyVisibility(s.skyLight, scene.drawnTriangleCount());
+    };
     r.add(std::move(sky));
 
     TechniqueEntry lighting{"lighting", 80, {}, kPartCamera};

@@ -312,8 +312,9 @@ void addLpvDemands(std::vector<Demand>& d, const RenderSettings& s, const Scene&
                      [=](uint64_t r) { return lpvGeometryVolumeBytes(r, cascades); }, true});
 }
 
-std::vector<Demand> frameDemands(const vk::DeviceLimits& lim, const RenderSettings& s, const Scene& scene,
+std::vector<Demand> frameDemands(const vk::DeviceLimits& lim, const RenderSettings& requested, const Scene& scene,
                                  const std::vector<Light>& lights, const LayerCounts& layers, bool computeRaster) {
+    const RenderSettings s = resolveForScene(requested, scene);  // what the renderer will build
     std::vector<Demand> d;
     const uint64_t w = s.width, h = s.height;
     // The HDR image (RGBA32F) is the largest single image; the rest: G-buffer (albedo 4, normal 8, depth
@@ -336,8 +337,7 @@ std::vector<Demand> frameDemands(const vk::DeviceLimits& lim, const RenderSettin
     if (s.lighting.sky.kind != SkyKind::None)  // an unresolved auto counted as a sky: the estimate stays an upper bound
         d.push_back({Knob::Width, w, 1, fmt::format("the sky light's {}x{} visibility and irradiance", w, h),
                      [=](uint64_t v) { return SkyLightTechnique::bytes(v, h, s.skyLight.traceStep); }});
-    if (s.lighting.sky.kind != SkyKind::None &&
-        resolveSkyVisibility(s.skyLight, scene.drawnTriangleCount()) == SkyVisibility::Maps) {
+    if (s.lighting.sky.kind != SkyKind::None && s.skyLight.visibility == SkyVisibility::Maps) {
         const uint32_t maps = s.skyLight.mapCount;
         d.push_back({Knob::SkyMapRes, s.skyLight.mapResolution, 64,
                      fmt::format("the sky visibility maps ({} layers of R32F)", maps),
@@ -381,9 +381,7 @@ std::vector<Demand> frameDemands(const vk::DeviceLimits& lim, const RenderSettin
         d.push_back({Knob::RsmRes, s.rsm.resolution, 8, fmt::format("the RSM's flux CDF ({} layer(s))", rsmLayers),
                      [=](uint64_t r) { return RsmFluxSampler::cdfBytes(uint32_t(r), uint32_t(rsmLayers)); }, true});
     if (s.gi == GiMode::Lpv) addLpvDemands(d, s, scene, uint32_t(rsmLayers));
-    RenderSettings resolvedSky = s;
-    resolvedSky.skyLight.visibility = resolveSkyVisibility(s.skyLight, scene.drawnTriangleCount());
-    if (occupancyUsed(resolvedSky) || s.lighting.sky.kind == SkyKind::Auto) {  // an unresolved auto: an upper bound
+    if (occupancyUsed(s) || s.lighting.sky.kind == SkyKind::Auto) {  // an unresolved auto: an upper bound
         const bool facing = hasSingleSidedSurfaces(scene);  // the sky's facing bits, 4 a voxel
         const Bounds bounds = scene.bounds;
         d.push_back({Knob::VoxelRes, s.rsm.voxelResolution, 8,

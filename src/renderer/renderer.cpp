@@ -159,11 +159,7 @@ uint32_t Renderer::shadowLayerCount() const {
     return layers ? uint32_t(layers->layers.size()) : 0u;
 }
 
-// The settings with what an Auto stands for in this scene.
-RenderSettings Renderer::resolved(RenderSettings s) const {
-    s.skyLight.visibility = resolveSkyVisibility(s.skyLight, scene_.meshes().drawnTriangleCount());
-    return s;
-}
+RenderSettings Renderer::resolved(const RenderSettings& s) const { return resolveForScene(s, scene_.scene()); }
 
 SettingsChange Renderer::apply(const RenderSettings& requested) {
     const RenderSettings settings = resolved(requested);

@@ -129,7 +129,7 @@ public:
 private:
     struct FrameSlot;
     void init();
-    RenderSettings resolved(RenderSettings s) const;
+    RenderSettings resolved(const RenderSettings& s) const;  // every Auto choice made for the scene
     void build(uint32_t parts);
     bool layoutChanged(const std::vector<Light>& lights) const;
     FrameSlot& acquireSlot();

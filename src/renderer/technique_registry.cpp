@@ -47,4 +47,10 @@ std::vector<const TechniqueEntry*> TechniqueRegistry::buildOrder() const {
     return out;
 }
 
+RenderSettings resolveForScene(RenderSettings s, const Scene& scene) {
+    for (const TechniqueEntry& e : TechniqueRegistry::instance().entries())
+        if (e.resolve) e.resolve(s, scene);
+    return s;
+}
+
 }  // namespace penumbra

@@ -33,6 +33,8 @@ struct TechniqueEntry {
     // FrameParts that it takes in place instead of being rebuilt, and how (shadow filters).
     uint32_t adjustParts = 0;
     std::function<void(Technique&, const RenderSettings&, const std::vector<Light>&)> adjust;
+    // Its settings' Auto choices replaced by what they stand for in `scene`; null: it has none.
+    std::function<void(RenderSettings&, const Scene&)> resolve;
     // The module's option table and where in RenderSettings the struct its rows write lives: its
     // options join the CLI, --help, the JSON settings, the viewer and the settings-change classes.
     const OptionTable* options = nullptr;
@@ -58,6 +60,9 @@ private:
 struct TechniqueRegistration {
     explicit TechniqueRegistration(TechniqueEntry entry) { TechniqueRegistry::instance().add(std::move(entry)); }
 };
+
+// `s` with every entry's Auto choices resolved for `scene` (the renderer's and the budget's view).
+RenderSettings resolveForScene(RenderSettings s, const Scene& scene);
 
 // The built-in modules' entries (renderer/builtin_techniques.cpp).
 void addBuiltinTechniques(TechniqueRegistry& registry);
