@@ -19,14 +19,9 @@ namespace {
 
 // 64x48, LPV with a small RSM, unfiltered indirect light.
 RenderSettings smallLpv() {
-    RenderSettings s;
-    s.width = 64;
-    s.height = 48;
-    s.gi = GiMode::Lpv;
+    RenderSettings s = unfilteredIndirect(GiMode::Lpv);
     s.lpv.rsmResolution = 256;
     s.lpv.vplResolution = 64;
-    s.aov = Aov::Indirect;
-    s.temporalGi.filterIterations = 0;
     return s;
 }
 

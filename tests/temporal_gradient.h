@@ -26,6 +26,17 @@ inline std::vector<Gradient> readChange(TestRenderer& r, vk::Image& image) {
     return out;
 }
 
+// 64x48 frames of `gi` whose output is the unfiltered indirect light: what the gradient tests read.
+inline RenderSettings unfilteredIndirect(GiMode gi) {
+    RenderSettings s;
+    s.width = 64;
+    s.height = 48;
+    s.gi = gi;
+    s.aov = Aov::Indirect;
+    s.temporalGi.filterIterations = 0;
+    return s;
+}
+
 inline std::vector<Light> scaled(std::vector<Light> lights, float factor) {
     for (Light& l : lights) l.intensity *= factor;
     return lights;

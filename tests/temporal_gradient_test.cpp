@@ -16,13 +16,8 @@ namespace {
 
 // Cornell at 64x48, the default RSM gather (low resolution, interpolated), unfiltered indirect light.
 RenderSettings cornellRsm() {
-    RenderSettings s;
-    s.width = 64;
-    s.height = 48;
-    s.gi = GiMode::Rsm;
+    RenderSettings s = unfilteredIndirect(GiMode::Rsm);
     s.rsm.resolution = 128;
-    s.aov = Aov::Indirect;
-    s.temporalGi.filterIterations = 0;
     return s;
 }
 

@@ -116,14 +116,14 @@ void GpuSky::set(const AnalyticSkyModel& model) {
 }
 
 ImageHandle GpuSky::addTo(FrameGraph& graph) {
-    const ImageHandle background = graph.import(background_);
+    const ImageHandle radiance = graph.import(background_);
     const BufferHandle sh = graph.import(sh_);
     graph.publish(names::kSkySh, sh);
-    graph.publish(names::kSkyRadiance, background);
-    if (pending_ == Pending::Upload) addUpload(graph, background, sh);
-    if (pending_ == Pending::Analytic) addAnalytic(graph, background, sh);
+    graph.publish(names::kSkyRadiance, radiance);
+    if (pending_ == Pending::Upload) addUpload(graph, radiance, sh);
+    if (pending_ == Pending::Analytic) addAnalytic(graph, radiance, sh);
     pending_ = Pending::None;
-    return background;
+    return radiance;
 }
 
 void GpuSky::addUpload(FrameGraph& graph, ImageHandle skyImage, BufferHandle sh) {
